@@ -1,0 +1,159 @@
+// The coupled quasi-steady bearing model (MODEL.md sections 1-7 and 9): one residual
+// F(u) = 0 over the unknowns of the effects a scene enables, with its exact sparse
+// Jacobian. Unknowns and residual rows are scaled so that tolerances read physically:
+//   rigid body   ĉ = c/σ_ref (clearances), γ̂ = γ/γ_ref;  rows: forces / F_ext, moments / (F_ext r_o)
+//   pressure     p̂ = p/p_ref;   rows: Fischer–Burmeister of (p̂, ŵ), ŵ = flow balance / its scale
+//   temperature  T̂ = T − T_ambient in kelvin;  rows: heat balance / a node conductance (kelvin)
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "twb/model/film_mesh.h"
+#include "twb/model/sparse_assembly.h"
+#include "twb/model/unknown_layout.h"
+#include "twb/physics/roelands_viscosity.h"
+#include "twb/physics/statistical_contact.h"
+#include "twb/scene/scene.h"
+
+namespace twb {
+
+struct FilmTotals;
+
+enum class ComponentId { carrier = 0, washer = 1, gear = 2 };
+
+// A film between two components. Its gap is a plane in the unknowns (MODEL.md section 1):
+//   h = c + s·(γx·y − γy·x) − tilt·x
+// film 1 (carrier–washer): c = c1 = z_w,              s = +1, tilt = 0
+// film 2 (washer–gear):    c = c2 = z_g − z_w − t_w,  s = −1, tilt = γ_tilt
+struct Film {
+  int number = 1;
+  FilmMesh mesh;
+  ComponentId lower, upper;
+  int clearance_unknown = 0;  // 0 for c1, 3 for c2 within the rigid block
+  double sign = 1.0;
+  double imposed_tilt = 0.0;
+  bool sliding = false;
+  double sigma = 0.0;             // combined RMS roughness
+  double shear_weight = 0.0;      // [(σ_moving/σ)² − (σ_fixed/σ)²], eq [3]
+  Index pressure_offset = -1;     // interior nodes (radial 1..Nr-2), -1 without hydrodynamics
+  Index temperature_offset = -1;  // film-node temperatures, -1 without thermal
+};
+
+// A component's temperature field: T(r, θ) on a polar grid, or T(r) when it rotates
+// relative to the load frame (MODEL.md section 7).
+struct ComponentHeat {
+  ComponentId id;
+  FilmMesh grid;
+  bool axisymmetric = false;
+  double thickness = 0.0, conductivity = 0.0, capacity_per_area = 0.0;  // ρ c t
+  bool loses_to_ambient = false;
+  Index offset = -1;
+  int node_count() const { return axisymmetric ? grid.radial_nodes() : grid.node_count(); }
+  // Area a temperature node stands for.
+  double node_area(int i) const {
+    return grid.node_area(i) * (axisymmetric ? grid.circumferential_nodes() : 1);
+  }
+};
+
+// Rigid-body position in physical units.
+struct RigidPosition {
+  double c1 = 0, gamma_x = 0, gamma_y = 0, c2 = 0;
+};
+
+// Everything reported per solved state (MODEL.md section 9).
+struct BearingState {
+  double load = 0, speed = 0;
+  double washer_mean_temperature = 0;  // K, area-weighted
+  double max_film_temperature = 0;     // K, hottest film node
+  double hmin_over_sigma = 0;          // sliding film, exact minimum of its plane
+  double gamma_x_ratio = 0, gamma_y_ratio = 0;
+  double fluid_force = 0, contact_force = 0;  // sliding film, N
+  double fluid_share = 0, contact_share = 0;
+  double torque = 0, f_eff = 0;
+  double stribeck = 0;  // Z N / P: Pa·s · rev/s / Pa
+  double friction_coefficient = 0;
+  bool friction_clamped = false;
+  double heat_generated = 0, heat_to_ambient = 0, energy_error = 0;
+  double force_balance_error = 0, moment_balance_error = 0;  // relative to the load
+  double complementarity_error = 0;  // max |min(p̂, ŵ)|
+  RigidPosition position;
+};
+
+class BearingModel {
+ public:
+  explicit BearingModel(const Scene& scene);
+
+  const Scene& scene() const { return scene_; }
+  const UnknownLayout& layout() const { return layout_; }
+  Index size() const { return layout_.size(); }
+  const SparsePattern& pattern() const { return pattern_; }
+  const std::vector<Film>& films() const { return films_; }
+  const std::vector<ComponentHeat>& components() const { return components_; }
+
+  // Residual and (if jacobian is non-empty) Jacobian values in pattern().
+  void evaluate(std::span<const double> u, std::span<double> residual, std::span<double> jacobian) const;
+
+  // The paper's cold start: both films at h_min/σ = cold_start_film, washer tilted half
+  // way, ambient temperature, no pressure.
+  std::vector<double> cold_start() const;
+
+  BearingState describe(std::span<const double> u) const;
+
+  // Changes the external load; the pattern and every scale except F_ext-based ones are kept.
+  void set_load(double load);
+  double load() const { return load_; }
+
+  // Scales (physical value = scale · unknown).
+  double clearance_scale() const { return sigma_ref_; }
+  double tilt_scale() const { return gamma_ref_; }
+  double pressure_scale() const { return p_ref_; }
+
+  RigidPosition position(std::span<const double> u) const;
+
+  // Film-node gap h at node (i, j) of a film, physical.
+  double film_gap(const Film& film, const RigidPosition& q, double r, double theta) const;
+
+  // Pressure (Pa) at node (i, j) of the sliding film; 0 on edges and without hydrodynamics.
+  double pressure_at(std::span<const double> u, const Film& film, int i, int j) const;
+  double temperature_of(std::span<const double> u, Index k) const;
+
+ private:
+  struct Totals;  // per-film integrals gathered during assembly
+  void assemble(std::span<const double> u, Assembler& a, Totals* totals) const;
+  void assemble_film_loads(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const;
+  void assemble_reynolds(std::span<const double> u, const Film& film, Assembler& a) const;
+  void assemble_heat(std::span<const double> u, Assembler& a, const Totals& totals) const;
+  void assemble_rigid_balance(Assembler& a, const Totals& totals) const;
+
+  // Viscosity temperature (K) at film node (i, j) and its gradient in the unknowns.
+  double viscosity_temperature(std::span<const double> u, const Film& film, int i, int j, LinearForm* form) const;
+  // Temperature (K) of a component's face at radius r, circumferential node j, with gradient.
+  double face_temperature(std::span<const double> u, ComponentId id, double r, int j, LinearForm* form) const;
+  ValueSlope viscosity(double temperature) const;
+  const ComponentHeat* component(ComponentId id) const;
+  const Film& sliding_film() const;
+
+  Scene scene_;
+  double load_ = 0;
+  std::vector<Film> films_;
+  std::vector<ComponentHeat> components_;
+  UnknownLayout layout_;
+  Index rigid_offset_ = 0;
+  // One summit population for both films (scene.asperities; MODEL.md section 4).
+  std::optional<StatisticalContact> contact_;
+  RoelandsViscosity roelands_{};
+  double sigma_ref_ = 0, gamma_ref_ = 0, p_ref_ = 0, h_ref_ = 0, mu_ref_ = 0;
+  std::vector<double> flow_scale_;  // per interior pressure node: p_ref · reference conductance
+  std::vector<std::vector<double>> film_row_scale_;  // per film, per node: 1 / reference conductance
+  std::vector<std::vector<double>> component_row_scale_;
+  GaussRule smooth_rule_, contact_rule_;
+  SparsePattern pattern_;
+
+};
+
+}  // namespace twb

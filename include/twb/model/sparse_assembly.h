@@ -1,0 +1,72 @@
+// Residual and Jacobian assembly with a fixed sparsity pattern.
+//
+// The Jacobian pattern is found once by a structural pass of the same assembly code
+// (every term registers every entry it could ever touch, whatever the state), so
+// KLU's symbolic analysis stays valid for the life of the model. Numeric passes then
+// add into that pattern; an entry outside it is a programming error and throws.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace twb {
+
+using Index = std::int64_t;  // sunindextype on Debian 12's SUNDIALS
+
+// Row-compressed (CSR) matrix with sorted columns in every row.
+struct SparsePattern {
+  Index rows = 0, cols = 0;
+  std::vector<Index> row_start;  // rows + 1
+  std::vector<Index> column;     // nnz
+  Index nnz() const { return Index(column.size()); }
+  // Position of (r, c) in column/value arrays, or -1.
+  Index find(Index r, Index c) const;
+};
+
+// One sparse linear combination: the gradient of a local quantity with respect to
+// the global unknowns, e.g. dh/du at a quadrature point.
+struct LinearForm {
+  std::vector<std::pair<Index, double>> terms;
+  void add(Index col, double coefficient) { if (col >= 0) terms.emplace_back(col, coefficient); }
+  void clear() { terms.clear(); }
+};
+
+class Assembler {
+ public:
+  enum class Mode { structure, values };
+
+  // Structure mode: records entries of an n×n matrix.
+  explicit Assembler(Index n);
+  // Value mode into an existing pattern; jacobian may be empty for residual-only passes.
+  Assembler(const SparsePattern* pattern, std::span<double> residual, std::span<double> jacobian);
+
+  Mode mode() const { return mode_; }
+  bool wants_jacobian() const { return mode_ == Mode::structure || !jacobian_.empty(); }
+
+  void add_residual(Index row, double value) {
+    if (mode_ == Mode::values && row >= 0) residual_[row] += value;
+  }
+  double residual_value(Index row) const { return mode_ == Mode::values ? residual_[row] : 0.0; }
+  void set_residual(Index row, double value) {
+    if (mode_ == Mode::values) residual_[row] = value;
+  }
+  void add_derivative(Index row, Index col, double value);
+  // d(row) += scale · form
+  void add_form(Index row, double scale, const LinearForm& form);
+  // Multiply every Jacobian entry of a row by a: used to turn an accumulated flow
+  // balance into the complementarity row that wraps it.
+  void scale_row(Index row, double a);
+
+  SparsePattern finish_structure() const;
+
+ private:
+  Mode mode_;
+  Index n_ = 0;
+  std::vector<std::pair<Index, Index>> entries_;
+  const SparsePattern* pattern_ = nullptr;
+  std::span<double> residual_, jacobian_;
+};
+
+}  // namespace twb

@@ -1,0 +1,130 @@
+// The validated scene: everything a run needs, in SI units (temperatures in kelvin).
+// Produced only by the scene loader (scene_loader.h); every layer after it reads this.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace twb {
+
+// Which film carries the relative speed (MODEL.md section 2). Film 1 lies between
+// carrier and washer (washer stuck to the gear), film 2 between washer and gear
+// (washer stuck to the carrier).
+enum class SlidingFilm { carrier_washer, washer_gear };
+
+enum class CavitationModel { reynolds };
+
+// Which temperature sets the oil viscosity at a film node (MODEL.md section 7).
+enum class ViscosityTemperature { surface_mean, film_node };
+
+enum class ViscosityModel { roelands, constant };
+
+enum class FrictionLaw { constant, empirical };
+
+enum class StudyType { point, load_sweep, distress_map, transient };
+
+struct Effects {
+  bool hydrodynamics = false;
+  CavitationModel cavitation = CavitationModel::reynolds;
+  bool flow_factors = false;
+  bool asperity_contact = false;
+  bool thermal = false;
+  ViscosityTemperature viscosity_temperature = ViscosityTemperature::surface_mean;
+};
+
+struct Material {
+  double youngs_modulus = 201e9;  // Pa
+  double poisson_ratio = 0.296;
+  double yield_strength = 0.993e9;  // Pa
+  double conductivity = 60.5;       // W/(m K)
+  double density = 7850.0;          // kg/m^3
+  double specific_heat = 470.0;     // J/(kg K)
+};
+
+// Roughness of one component's face(s) touching a film.
+struct Roughness {
+  double ra = 0.45e-6;     // m, arithmetic mean roughness (delta in the paper)
+  double rq = 0.515e-6;    // m, RMS roughness (sigma in the paper)
+};
+
+struct Component {
+  double inner_radius = 0.0;  // m
+  double outer_radius = 0.0;  // m
+  double thickness = 0.0;     // m
+  double tilt = 0.0;          // rad, imposed tilt about y (gear only)
+  Material material;
+  Roughness roughness;
+};
+
+// Statistical summit parameters of the combined surface (MODEL.md section 4).
+struct AsperityParameters {
+  double summit_radius = 20e-6;        // m
+  double summit_sigma = 0.0;           // m, summit-height standard deviation
+  double summit_density = 0.0;         // 1/m^2
+  double eta_r_sigma = 0.05;           // the dimensionless product eta*R*sigma_s used for defaults
+};
+
+struct Lubricant {
+  double conductivity = 0.145;  // W/(m K)
+  ViscosityModel viscosity_model = ViscosityModel::roelands;
+  double mu_infinity = 6.31e-5;  // Pa s, Roelands
+  double g0 = 3.545;             // Roelands
+  double s0 = 1.053;             // Roelands
+  double constant_viscosity = 0.06081;  // Pa s, when viscosity_model == constant
+};
+
+struct Operating {
+  double load = 0.0;       // N, external axial load on the gear
+  double speed = 0.0;      // rad/s, relative angular speed of the sliding film
+  SlidingFilm sliding = SlidingFilm::carrier_washer;
+  double ambient = 297.15;  // K
+};
+
+struct Friction {
+  FrictionLaw law = FrictionLaw::empirical;
+  double coefficient = 0.1;  // used when law == constant
+};
+
+struct MeshSettings {
+  int radial_nodes = 9;            // including both edges
+  int circumferential_nodes = 66;  // distinct nodes (periodic)
+  int contact_quadrature = 8;      // Gauss points per direction per cell for contact integrals
+};
+
+struct SolverSettings {
+  double residual_tolerance = 1e-10;  // max-norm of the scaled residual
+  double step_tolerance = 1e-14;
+  int max_iterations = 200;
+  double cold_start_film = 3.0;  // h_min/sigma of the cold start (the paper's)
+};
+
+struct Study {
+  StudyType type = StudyType::point;
+  // load_sweep
+  double load_start = 0.0;  // N
+  double load_end = 0.0;    // N
+  int load_steps = 0;       // number of states, ends included
+  // distress_map
+  std::vector<double> speeds;  // rad/s
+};
+
+struct Output {
+  std::string directory = "results";
+  bool fields = false;  // write p, h, T, contact pressure on the polar grid
+};
+
+struct Scene {
+  std::string source;  // path of the scene file, for messages
+  Effects effects;
+  Component carrier, washer, gear;
+  AsperityParameters asperities;
+  Lubricant lubricant;
+  Operating operating;
+  Friction friction;
+  MeshSettings mesh;
+  SolverSettings solver;
+  Study study;
+  Output output;
+};
+
+}  // namespace twb

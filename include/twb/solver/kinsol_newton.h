@@ -1,0 +1,60 @@
+// Newton's method on a BearingModel with SUNDIALS KINSOL: line search globalization,
+// the model's exact sparse Jacobian in CSR, factored by KLU (symbolic analysis once,
+// numeric refactorization afterwards; SUNDIALS falls back to a full factorization when
+// the reciprocal condition estimate says the old pivot order has gone bad).
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "twb/model/bearing_model.h"
+#include "twb/solver/sundials_context.h"
+
+namespace twb {
+
+struct NewtonSettings {
+  double residual_tolerance = 1e-10;  // max-norm of the scaled residual
+  double step_tolerance = 1e-14;
+  int max_iterations = 200;
+  double max_step = 0.0;  // scaled L2 norm; 0 keeps KINSOL's default
+};
+
+struct NewtonReport {
+  bool converged = false;
+  int flag = 0;
+  long iterations = 0;
+  long residual_evaluations = 0;
+  long jacobian_evaluations = 0;
+  long backtracks = 0;
+  double residual_norm = 0.0;  // max-norm of the scaled residual at the returned state
+  std::string message;
+};
+
+class KinsolNewton {
+ public:
+  explicit KinsolNewton(const BearingModel& model);
+  ~KinsolNewton();
+  KinsolNewton(const KinsolNewton&) = delete;
+  KinsolNewton& operator=(const KinsolNewton&) = delete;
+
+  // Solves in place from u. Never throws on non-convergence: the report says so.
+  NewtonReport solve(std::vector<double>& u, const NewtonSettings& settings);
+
+  const BearingModel& model() const { return model_; }
+  // Callback state, public for the C trampolines.
+  struct Callbacks;
+
+ private:
+  const BearingModel& model_;
+  SundialsContext ctx_;
+  Vector y_, scale_;
+  Matrix jac_;
+  LinearSolver klu_;
+  void* kin_ = nullptr;
+  std::unique_ptr<Callbacks> callbacks_;
+};
+
+double max_norm(std::span<const double> v);
+
+}  // namespace twb

@@ -1,0 +1,43 @@
+// A steady state of the bearing at the model's current load, from a given start or
+// from the paper's cold start, with globalization beyond KINSOL's line search: when
+// Newton fails, the load is ramped up from a fraction the cold start can reach, each
+// step warm-started from the last, halving the step on failure (Cantera's pattern of
+// damped Newton first, a continuation fallback second). Failure is reported, not hidden.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "twb/solver/kinsol_newton.h"
+
+namespace twb {
+
+struct SteadyReport {
+  bool converged = false;
+  std::string strategy;  // "newton", "load ramp"
+  int newton_solves = 0;
+  long iterations = 0, jacobian_evaluations = 0, residual_evaluations = 0;
+  double residual_norm = 0.0;
+  double wall_ms = 0.0;
+  std::string message;
+};
+
+class SteadySolver {
+ public:
+  SteadySolver(BearingModel& model, NewtonSettings settings);
+
+  // From u (a warm start), falling back to a load ramp from the cold start.
+  SteadyReport solve(std::vector<double>& u);
+  // From the paper's cold start.
+  SteadyReport solve_cold(std::vector<double>& u);
+
+ private:
+  void account(SteadyReport& rep, const NewtonReport& n) const;
+  SteadyReport ramp(std::vector<double>& u, SteadyReport rep);
+
+  BearingModel& model_;
+  NewtonSettings settings_;
+  KinsolNewton newton_;
+};
+
+}  // namespace twb

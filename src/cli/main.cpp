@@ -1,0 +1,114 @@
+// The twb command: `twb check SCENE` and `twb run SCENE`.
+// Exit status: 0 success (a distress found is a result), 2 invalid input,
+// 3 solver failure, 4 internal error.
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "twb/model/bearing_model.h"
+#include "twb/results/atomic_file.h"
+#include "twb/results/run_record.h"
+#include "twb/results/states_table.h"
+#include "twb/scene/input_error.h"
+#include "twb/scene/scene_loader.h"
+#include "twb/solver/sundials_context.h"
+#include "twb/study/study_runner.h"
+
+namespace {
+
+constexpr int exit_invalid_input = 2;
+constexpr int exit_solver_failure = 3;
+constexpr int exit_internal_error = 4;
+
+std::string unknowns_table(const twb::UnknownLayout& layout) {
+  std::string out = "unknowns:\n";
+  for (const auto& b : layout.blocks())
+    out += fmt::format("  {:<44} {:>6}   ({})\n", b.name, b.size, b.effect);
+  out += fmt::format("  {:<44} {:>6}\n", "total", layout.size());
+  return out;
+}
+
+int check(const std::string& path, const std::vector<std::string>& overrides) {
+  const twb::Scene scene = twb::load_scene(path, overrides);
+  const twb::BearingModel model(scene);
+  std::cout << twb::describe_scene(scene) << "\n" << unknowns_table(model.layout())
+            << fmt::format("jacobian nonzeros: {}\n", model.pattern().nnz());
+  return 0;
+}
+
+int run(const std::string& path, const std::vector<std::string>& overrides, std::string out_dir, bool quiet) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const twb::Scene scene = twb::load_scene(path, overrides);
+  if (out_dir.empty()) out_dir = scene.output.directory;
+  twb::BearingModel model(scene);
+  const double setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (!quiet) std::cerr << fmt::format("twb: {} unknowns, {} Jacobian nonzeros\n", model.size(), model.pattern().nnz());
+
+  twb::StudyOutcome outcome =
+      twb::run_study(model, quiet ? twb::ProgressReport{} : [](const std::string& s) { std::cerr << s << "\n"; });
+  outcome.timings.setup_ms = setup_ms;
+  outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  const std::filesystem::path dir(out_dir);
+  twb::write_file_atomically(dir / "states.csv", twb::states_csv(outcome.states));
+  const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message
+                                                    : (outcome.message.empty() ? "ok" : outcome.message);
+  twb::write_file_atomically(dir / "run.json", twb::run_json(path, twb::describe_scene(scene), model.layout(),
+                                                             outcome.timings, verdict));
+  std::cout << twb::states_summary(outcome.states);
+  std::cout << fmt::format("results: {}  ({} states, {:.1f} ms)\n", dir.string(), outcome.states.size(),
+                           outcome.timings.total_ms);
+  if (!outcome.message.empty()) std::cerr << "twb: " << outcome.message << "\n";
+  return outcome.solver_failed ? exit_solver_failure : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"twb: thrust washer bearings in mixed lubrication (Jackson & Green 2006)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string(TWB_VERSION));
+
+  std::string scene_path, out_dir;
+  std::vector<std::string> overrides;
+  bool quiet = false;
+
+  auto* check_cmd = app.add_subcommand("check", "validate a scene, print it resolved (SI) and its unknowns");
+  check_cmd->add_option("scene", scene_path, "scene file (YAML)")->required();
+  check_cmd->add_option("--set", overrides, "override a key: path=value, e.g. operating.load=\"800 N\"");
+
+  auto* run_cmd = app.add_subcommand("run", "run the scene's study and write the results directory");
+  run_cmd->add_option("scene", scene_path, "scene file (YAML)")->required();
+  run_cmd->add_option("--out", out_dir, "results directory (default: the scene's output.directory)");
+  run_cmd->add_option("--set", overrides, "override a key: path=value, e.g. operating.load=\"800 N\"");
+  run_cmd->add_flag("-q,--quiet", quiet, "no progress on stderr");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : exit_invalid_input;
+  }
+
+  try {
+    if (*check_cmd) return check(scene_path, overrides);
+    return run(scene_path, overrides, out_dir, quiet);
+  } catch (const twb::InputError& e) {
+    std::cerr << e.what() << "\n";
+    return exit_invalid_input;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "twb: error: " << e.what() << "\n";
+    return exit_invalid_input;
+  } catch (const twb::SolverFailure& e) {
+    std::cerr << "twb: solver failure: " << e.what() << "\n";
+    return exit_solver_failure;
+  } catch (const std::exception& e) {
+    std::cerr << "twb: internal error: " << e.what() << "\n";
+    return exit_internal_error;
+  }
+}

@@ -1,0 +1,30 @@
+// Per-film integrals gathered while assembling, for friction (which needs the film's
+// total contact force before heat can be finished) and for reporting.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "twb/model/bearing_model.h"
+
+namespace twb {
+
+struct FilmTotals {
+  double fluid_force = 0, contact_force = 0, moment_x = 0, moment_y = 0;
+  std::array<double, 3> contact_force_rigid{};  // d(contact force)/d(ĉ, γ̂x, γ̂y)
+  double contact_torque_per_f = 0;              // ∫ p_c r dA: friction torque divided by f
+  double viscous_torque = 0;
+  double viscous_heat = 0;
+  // ∫ p_c V N_a dA per node and its gradient in (ĉ, γ̂x, γ̂y): friction heat is f times it.
+  std::vector<double> contact_power;
+  std::vector<std::array<double, 3>> contact_power_rigid;
+  double friction_coefficient = 0, friction_slope = 0;
+  bool friction_clamped = false;
+  double friction_heat = 0;
+};
+
+struct BearingModel::Totals {
+  std::vector<FilmTotals> film;
+};
+
+}  // namespace twb

@@ -1,0 +1,277 @@
+#include "twb/model/bearing_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "assembly_totals.h"
+#include "twb/physics/asperity_contact.h"
+
+namespace twb {
+
+std::string fmt_film_block(int number, const char* what) {
+  return "film " + std::to_string(number) + " " + what;
+}
+
+namespace {
+
+double combined_sigma(const Component& a, const Component& b) {
+  return std::hypot(a.roughness.rq, b.roughness.rq);
+}
+
+// Conductance of the path from a film node to one bounding component per unit area:
+// half the oil film plus, on the washer side, half the washer (eqs [26], [27]).
+double body_resistance(const Scene& s, ComponentId id) {
+  return id == ComponentId::washer ? s.washer.thickness / (2.0 * s.washer.material.conductivity) : 0.0;
+}
+
+}  // namespace
+
+BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.operating.load) {
+  const Effects& fx = scene_.effects;
+  const int nr = scene_.mesh.radial_nodes, nt = scene_.mesh.circumferential_nodes;
+  const bool film1_slides = scene_.operating.sliding == SlidingFilm::carrier_washer;
+
+  // Film 1 covers the washer annulus; film 2 the overlap of washer and gear (MODEL.md 1).
+  const double r2_in = std::max(scene_.washer.inner_radius, scene_.gear.inner_radius);
+  const double r2_out = std::min(scene_.washer.outer_radius, scene_.gear.outer_radius);
+  if (!(r2_out > r2_in)) throw std::invalid_argument("washer and gear annuli do not overlap");
+
+  Film f1{1, FilmMesh(scene_.washer.inner_radius, scene_.washer.outer_radius, nr, nt),
+          ComponentId::carrier, ComponentId::washer};
+  f1.clearance_unknown = 0;
+  f1.sign = 1.0;
+  f1.sliding = film1_slides;
+  f1.sigma = combined_sigma(scene_.carrier, scene_.washer);
+  Film f2{2, FilmMesh(r2_in, r2_out, nr, nt), ComponentId::washer, ComponentId::gear};
+  f2.clearance_unknown = 3;
+  f2.sign = -1.0;
+  f2.imposed_tilt = scene_.gear.tilt;
+  f2.sliding = !film1_slides;
+  f2.sigma = combined_sigma(scene_.washer, scene_.gear);
+  // Eq [3]: the moving surface is "1". In the load frame the carrier is fixed, so on
+  // film 1 the washer moves; on film 2 the gear moves against the stuck washer.
+  auto weight = [](double moving, double fixed) {
+    const double s2 = moving * moving + fixed * fixed;
+    return (moving * moving - fixed * fixed) / s2;
+  };
+  f1.shear_weight = weight(scene_.washer.roughness.rq, scene_.carrier.roughness.rq);
+  f2.shear_weight = weight(scene_.gear.roughness.rq, scene_.washer.roughness.rq);
+  films_ = {f1, f2};
+
+  rigid_offset_ = layout_.add("rigid body (z_w, gamma_x, gamma_y, z_g)", "mechanics", 4);
+  for (auto& f : films_) {
+    if (fx.hydrodynamics && f.sliding)
+      f.pressure_offset = layout_.add(fmt_film_block(f.number, "pressure"), "hydrodynamics",
+                                      Index(nr - 2) * nt);
+  }
+  if (fx.thermal) {
+    for (auto& f : films_)
+      f.temperature_offset = layout_.add(fmt_film_block(f.number, "film-node temperature"), "thermal",
+                                         Index(nr) * nt);
+    auto add_component = [&](ComponentId id, const Component& c, const FilmMesh& grid, bool axisymmetric,
+                             bool ambient, const char* name) {
+      ComponentHeat h{id, grid, axisymmetric, c.thickness, c.material.conductivity,
+                      c.material.density * c.material.specific_heat * c.thickness, ambient};
+      h.offset = layout_.add(std::string(name) + (axisymmetric ? " temperature T(r)" : " temperature T(r, theta)"),
+                             "thermal", h.node_count(), true);
+      components_.push_back(h);
+    };
+    // The carrier is fixed in the load frame; the gear always rotates; the washer
+    // rotates with the gear when film 1 slides (MODEL.md section 7).
+    add_component(ComponentId::carrier, scene_.carrier, films_[0].mesh, false, true, "carrier");
+    add_component(ComponentId::washer, scene_.washer, films_[0].mesh, film1_slides, false, "washer");
+    add_component(ComponentId::gear, scene_.gear,
+                  FilmMesh(scene_.gear.inner_radius, scene_.gear.outer_radius, nr, nt), true, true, "gear");
+  }
+
+  if (fx.asperity_contact) {
+    const Material& m1 = scene_.washer.material;
+    const Material& m2 = scene_.carrier.material;
+    const double e_eff = JacksonGreenAsperity::effective_modulus(m1.youngs_modulus, m1.poisson_ratio,
+                                                                 m2.youngs_modulus, m2.poisson_ratio);
+    // The softer material yields first (MODEL.md section 4).
+    const Material& soft = (m1.yield_strength <= m2.yield_strength) ? m1 : m2;
+    JacksonGreenAsperity asperity(e_eff, soft.yield_strength, soft.poisson_ratio,
+                                  scene_.asperities.summit_radius);
+    contact_.emplace(asperity, scene_.asperities.summit_density, scene_.asperities.summit_sigma);
+  }
+  roelands_ = RoelandsViscosity{scene_.lubricant.mu_infinity, scene_.lubricant.g0, scene_.lubricant.s0};
+
+  // Reference scales.
+  sigma_ref_ = films_[0].sigma;
+  gamma_ref_ = scene_.gear.tilt > 0 ? scene_.gear.tilt : sigma_ref_ / scene_.washer.outer_radius;
+  const Film& sf = sliding_film();
+  p_ref_ = scene_.operating.load / sf.mesh.area();
+  h_ref_ = scene_.solver.cold_start_film * sf.sigma;
+  mu_ref_ = viscosity(scene_.operating.ambient).value;
+  smooth_rule_ = GaussRule::legendre(3);
+  contact_rule_ = GaussRule::legendre(scene_.mesh.contact_quadrature);
+
+  if (sf.pressure_offset >= 0) {
+    const FilmMesh& m = sf.mesh;
+    const double g = std::pow(h_ref_, 3) / (12.0 * mu_ref_);
+    flow_scale_.resize((nr - 2) * nt);
+    for (int i = 1; i < nr - 1; ++i) {
+      const double r = m.radius(i);
+      const double diag = g * ((r - 0.5 * m.dr()) * m.dtheta() / m.dr() + (r + 0.5 * m.dr()) * m.dtheta() / m.dr() +
+                               2.0 * m.dr() / (r * m.dtheta()));
+      for (int j = 0; j < nt; ++j) flow_scale_[(i - 1) * nt + j] = p_ref_ * diag;
+    }
+  }
+
+  if (fx.thermal) {
+    const double k_oil = scene_.lubricant.conductivity;
+    film_row_scale_.resize(films_.size());
+    component_row_scale_.resize(components_.size());
+    std::vector<double> attached_conductance(components_.size(), 0.0);  // W/K/m² from films, reference
+    for (std::size_t f = 0; f < films_.size(); ++f) {
+      const Film& film = films_[f];
+      const double g_lo = 1.0 / (h_ref_ / (2 * k_oil) + body_resistance(scene_, film.lower));
+      const double g_up = 1.0 / (h_ref_ / (2 * k_oil) + body_resistance(scene_, film.upper));
+      film_row_scale_[f].resize(film.mesh.node_count());
+      for (int i = 0; i < nr; ++i)
+        for (int j = 0; j < nt; ++j)
+          film_row_scale_[f][film.mesh.node(i, j)] = 1.0 / (film.mesh.node_area(i) * (g_lo + g_up));
+      for (std::size_t c = 0; c < components_.size(); ++c) {
+        if (components_[c].id == film.lower) attached_conductance[c] += g_lo;
+        if (components_[c].id == film.upper) attached_conductance[c] += g_up;
+      }
+    }
+    for (std::size_t c = 0; c < components_.size(); ++c) {
+      const ComponentHeat& h = components_[c];
+      const FilmMesh& g = h.grid;
+      const double kt = h.conductivity * h.thickness;
+      component_row_scale_[c].resize(h.node_count());
+      for (int i = 0; i < g.radial_nodes(); ++i) {
+        double diag = 0.0;  // in-plane conduction to radial neighbours (full ring if axisymmetric)
+        const double ring = h.axisymmetric ? 2 * std::numbers::pi : g.dtheta();
+        if (i > 0) diag += kt * (g.radius(i) - 0.5 * g.dr()) * ring / g.dr();
+        if (i < g.radial_nodes() - 1) diag += kt * (g.radius(i) + 0.5 * g.dr()) * ring / g.dr();
+        const double area = h.node_area(i);
+        diag += area * (attached_conductance[c] + (h.loses_to_ambient ? h.conductivity / h.thickness : 0.0));
+        for (int j = 0; j < (h.axisymmetric ? 1 : g.circumferential_nodes()); ++j)
+          component_row_scale_[c][h.axisymmetric ? i : g.node(i, j)] = 1.0 / diag;
+      }
+    }
+  }
+
+  Assembler structure(layout_.size());
+  std::vector<double> u = cold_start();
+  assemble(u, structure, nullptr);
+  pattern_ = structure.finish_structure();
+}
+
+const Film& BearingModel::sliding_film() const { return films_[0].sliding ? films_[0] : films_[1]; }
+
+const ComponentHeat* BearingModel::component(ComponentId id) const {
+  for (const auto& c : components_)
+    if (c.id == id) return &c;
+  return nullptr;
+}
+
+void BearingModel::set_load(double load) {
+  if (!(load > 0)) throw std::invalid_argument("load must be positive");
+  load_ = load;
+}
+
+ValueSlope BearingModel::viscosity(double temperature) const {
+  if (scene_.lubricant.viscosity_model == ViscosityModel::constant)
+    return {scene_.lubricant.constant_viscosity, 0.0};
+  return roelands_(temperature);
+}
+
+RigidPosition BearingModel::position(std::span<const double> u) const {
+  const double* q = u.data() + rigid_offset_;
+  return {q[0] * sigma_ref_, q[1] * gamma_ref_, q[2] * gamma_ref_, q[3] * sigma_ref_};
+}
+
+double BearingModel::film_gap(const Film& film, const RigidPosition& q, double r, double theta) const {
+  const double x = r * std::cos(theta), y = r * std::sin(theta);
+  const double c = film.clearance_unknown == 0 ? q.c1 : q.c2;
+  return c + film.sign * (q.gamma_x * y - q.gamma_y * x) - film.imposed_tilt * x;
+}
+
+double BearingModel::pressure_at(std::span<const double> u, const Film& film, int i, int j) const {
+  if (film.pressure_offset < 0 || i <= 0 || i >= film.mesh.radial_nodes() - 1) return 0.0;
+  const int nt = film.mesh.circumferential_nodes();
+  return p_ref_ * u[film.pressure_offset + Index(i - 1) * nt + film.mesh.wrap(j)];
+}
+
+double BearingModel::temperature_of(std::span<const double> u, Index k) const {
+  return scene_.operating.ambient + u[k];
+}
+
+double BearingModel::face_temperature(std::span<const double> u, ComponentId id, double r, int j,
+                                      LinearForm* form) const {
+  const ComponentHeat* c = component(id);
+  if (!c) return scene_.operating.ambient;
+  const auto w = c->grid.radial_weights(r);
+  const int nt = c->grid.circumferential_nodes();
+  const Index k0 = c->offset + (c->axisymmetric ? w.i0 : Index(w.i0) * nt + c->grid.wrap(j));
+  const Index k1 = c->offset + (c->axisymmetric ? w.i1 : Index(w.i1) * nt + c->grid.wrap(j));
+  if (form) {
+    form->add(k0, w.w0);
+    form->add(k1, w.w1);
+  }
+  return scene_.operating.ambient + w.w0 * u[k0] + w.w1 * u[k1];
+}
+
+double BearingModel::viscosity_temperature(std::span<const double> u, const Film& film, int i, int j,
+                                           LinearForm* form) const {
+  if (!scene_.effects.thermal) return scene_.operating.ambient;
+  if (scene_.effects.viscosity_temperature == ViscosityTemperature::film_node) {
+    const Index k = film.temperature_offset + film.mesh.node(i, j);
+    if (form) form->add(k, 1.0);
+    return temperature_of(u, k);
+  }
+  // The paper's rule: the mean of the two bounding surfaces (MODEL.md section 7).
+  LinearForm lo, up;
+  const double r = film.mesh.radius(i);
+  const double t = 0.5 * (face_temperature(u, film.lower, r, j, &lo) + face_temperature(u, film.upper, r, j, &up));
+  if (form) {
+    for (auto [k, c] : lo.terms) form->add(k, 0.5 * c);
+    for (auto [k, c] : up.terms) form->add(k, 0.5 * c);
+  }
+  return t;
+}
+
+std::vector<double> BearingModel::cold_start() const {
+  std::vector<double> u(layout_.size(), 0.0);
+  const double h0 = scene_.solver.cold_start_film;
+  const double gamma_y = 0.5 * scene_.gear.tilt;
+  // Minimum of a plane c − a·x over an annulus is c − |a|·r_o.
+  const double c1 = h0 * films_[0].sigma + std::abs(gamma_y) * films_[0].mesh.outer_radius();
+  const double c2 = h0 * films_[1].sigma + std::abs(scene_.gear.tilt - gamma_y) * films_[1].mesh.outer_radius();
+  u[rigid_offset_ + 0] = c1 / sigma_ref_;
+  u[rigid_offset_ + 1] = 0.0;
+  u[rigid_offset_ + 2] = gamma_y / gamma_ref_;
+  u[rigid_offset_ + 3] = c2 / sigma_ref_;
+  return u;
+}
+
+void BearingModel::evaluate(std::span<const double> u, std::span<double> residual,
+                            std::span<double> jacobian) const {
+  Assembler a(&pattern_, residual, jacobian);
+  assemble(u, a, nullptr);
+}
+
+void BearingModel::assemble(std::span<const double> u, Assembler& a, Totals* totals) const {
+  Totals local;
+  Totals& t = totals ? *totals : local;
+  t.film.assign(films_.size(), FilmTotals{});
+  for (std::size_t f = 0; f < films_.size(); ++f) {
+    if (films_[f].pressure_offset >= 0) assemble_reynolds(u, films_[f], a);
+    assemble_film_loads(u, films_[f], a, t.film[f]);
+  }
+  assemble_rigid_balance(a, t);
+  if (scene_.effects.thermal) assemble_heat(u, a, t);
+}
+
+void BearingModel::assemble_rigid_balance(Assembler& a, const Totals&) const {
+  // Film loads were added with their signs already; only the external load remains: eq [37].
+  a.add_residual(rigid_offset_ + 3, -1.0);
+}
+
+}  // namespace twb

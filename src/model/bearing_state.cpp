@@ -1,0 +1,92 @@
+// The reported quantities of a solved state (MODEL.md section 9).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "assembly_totals.h"
+
+namespace twb {
+
+BearingState BearingModel::describe(std::span<const double> u) const {
+  std::vector<double> residual(size());
+  Assembler a(&pattern_, residual, {});
+  Totals t;
+  assemble(u, a, &t);
+
+  BearingState s;
+  s.load = load_;
+  s.speed = scene_.operating.speed;
+  s.position = position(u);
+  const std::size_t fs = films_[0].sliding ? 0 : 1;
+  const Film& film = films_[fs];
+  const FilmTotals& ft = t.film[fs];
+
+  // Exact minimum of the sliding film's plane over its annulus: c − |∇h|·r_o.
+  const double c = film.clearance_unknown == 0 ? s.position.c1 : s.position.c2;
+  const double ga = -film.sign * s.position.gamma_y - film.imposed_tilt;
+  const double gb = film.sign * s.position.gamma_x;
+  s.hmin_over_sigma = (c - std::hypot(ga, gb) * film.mesh.outer_radius()) / film.sigma;
+  const double tilt = scene_.gear.tilt > 0 ? scene_.gear.tilt : 1.0;
+  s.gamma_x_ratio = s.position.gamma_x / tilt;
+  s.gamma_y_ratio = s.position.gamma_y / tilt;
+
+  s.fluid_force = ft.fluid_force;
+  s.contact_force = ft.contact_force;
+  s.fluid_share = ft.fluid_force / load_;
+  s.contact_share = ft.contact_force / load_;
+  s.friction_coefficient = ft.friction_coefficient;
+  s.friction_clamped = ft.friction_clamped;
+  s.torque = ft.friction_coefficient * ft.contact_torque_per_f + ft.viscous_torque;
+  // Eq [43] with the washer's radii.
+  const double ri = scene_.washer.inner_radius, ro = scene_.washer.outer_radius;
+  s.f_eff = 1.5 * s.torque * (ro * ro - ri * ri) / (load_ * (ro * ro * ro - ri * ri * ri));
+
+  // Temperatures.
+  const double t0 = scene_.operating.ambient;
+  s.washer_mean_temperature = t0;
+  s.max_film_temperature = t0;
+  double mean_visc_t = 0.0, area_sum = 0.0;
+  const FilmMesh& m = film.mesh;
+  for (int i = 0; i < m.radial_nodes(); ++i)
+    for (int j = 0; j < m.circumferential_nodes(); ++j) {
+      mean_visc_t += m.node_area(i) * viscosity_temperature(u, film, i, j, nullptr);
+      area_sum += m.node_area(i);
+    }
+  mean_visc_t /= area_sum;
+  if (scene_.effects.thermal) {
+    for (const Film& f : films_)
+      for (int n = 0; n < f.mesh.node_count(); ++n)
+        s.max_film_temperature = std::max(s.max_film_temperature, temperature_of(u, f.temperature_offset + n));
+    for (const ComponentHeat& comp : components_) {
+      double sum = 0, area = 0, loss = 0;
+      const int nt = comp.axisymmetric ? 1 : comp.grid.circumferential_nodes();
+      for (int i = 0; i < comp.grid.radial_nodes(); ++i)
+        for (int j = 0; j < nt; ++j) {
+          const double tk = u[comp.offset + i * nt + j];
+          sum += comp.node_area(i) * tk;
+          area += comp.node_area(i);
+          if (comp.loses_to_ambient) loss += comp.node_area(i) * comp.conductivity / comp.thickness * tk;
+        }
+      if (comp.id == ComponentId::washer) s.washer_mean_temperature = t0 + sum / area;
+      s.heat_to_ambient += loss;
+    }
+  }
+  s.heat_generated = ft.viscous_heat + ft.friction_heat;
+  if (scene_.effects.thermal)
+    s.energy_error = std::abs(s.heat_generated - s.heat_to_ambient) / std::max(s.heat_generated, 1e-300);
+
+  // Stribeck number Z·N/P: viscosity at the mean film temperature, N in rev/s, P the
+  // load over the washer area (MODEL.md section 9).
+  const double washer_area = std::numbers::pi * (ro * ro - ri * ri);
+  s.stribeck = viscosity(mean_visc_t).value * (s.speed / (2 * std::numbers::pi)) / (load_ / washer_area);
+
+  // Balances, from the residual rows (forces already scaled by the load).
+  s.force_balance_error = std::max(std::abs(residual[rigid_offset_ + 0]), std::abs(residual[rigid_offset_ + 3]));
+  s.moment_balance_error = std::max(std::abs(residual[rigid_offset_ + 1]), std::abs(residual[rigid_offset_ + 2]));
+  if (film.pressure_offset >= 0)
+    for (Index k = film.pressure_offset; k < film.pressure_offset + Index(flow_scale_.size()); ++k)
+      s.complementarity_error = std::max(s.complementarity_error, std::abs(residual[k]));
+  return s;
+}
+
+}  // namespace twb

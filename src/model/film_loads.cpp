@@ -1,0 +1,219 @@
+// Loads a film puts on its bounding bodies, integrated over each cell of its polar
+// grid: fluid and contact force with their moments (eqs [31]-[33]), friction and
+// viscous torque (eq [39]), and the heat generated (eqs [19], [20]) spread onto the
+// film nodes with the bilinear hats (MODEL.md sections 3, 4, 6).
+//
+// Contact, friction and shear vary steeply near the tight rim, within a fraction of a
+// cell, so cells near contact use a high-order Gauss rule on the exact plane h(x, y)
+// rather than nodal values times node areas.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "assembly_totals.h"
+#include "twb/physics/average_gap.h"
+#include "twb/physics/friction_law.h"
+
+namespace twb {
+
+namespace {
+
+// Minimum of the plane h = c + a·x + b·y over the polar cell [r0, r1] × [t0, t1]:
+// linear along rays, so the minimum is at a corner or on an arc where the direction
+// (cos θ, sin θ) is opposite to (a, b).
+double cell_minimum(double c, double a, double b, double r0, double r1, double t0, double t1) {
+  auto h = [&](double r, double t) { return c + r * (a * std::cos(t) + b * std::sin(t)); };
+  double m = std::min({h(r0, t0), h(r0, t1), h(r1, t0), h(r1, t1)});
+  if (a != 0.0 || b != 0.0) {
+    double ts = std::atan2(-b, -a);
+    const double two_pi = 2.0 * std::numbers::pi;
+    while (ts < t0) ts += two_pi;
+    while (ts - two_pi >= t0) ts -= two_pi;
+    if (ts <= t1) m = std::min({m, h(r0, ts), h(r1, ts)});
+  }
+  return m;
+}
+
+}  // namespace
+
+void BearingModel::assemble_film_loads(std::span<const double> u, const Film& film, Assembler& a,
+                                       FilmTotals& tot) const {
+  const bool structural = a.mode() == Assembler::Mode::structure;
+  const bool jac = a.wants_jacobian();
+  const FilmMesh& m = film.mesh;
+  const int nr = m.radial_nodes(), nt = m.circumferential_nodes();
+  const RigidPosition q = position(u);
+  const double c = film.clearance_unknown == 0 ? q.c1 : q.c2;
+  const double pa = -film.sign * q.gamma_y - film.imposed_tilt;  // h = c + pa·x + pb·y
+  const double pb = film.sign * q.gamma_x;
+  const std::array<Index, 3> rigid_cols{rigid_offset_ + film.clearance_unknown, rigid_offset_ + 1,
+                                        rigid_offset_ + 2};
+  const bool hydro = film.pressure_offset >= 0;
+  const bool heat = film.sliding && scene_.effects.thermal;
+  const bool contact = contact_.has_value();
+  const double omega = film.sliding ? scene_.operating.speed : 0.0;
+  const bool flow_factor_gap = scene_.effects.flow_factors;
+  const double cutoff = contact ? contact_->contact_pressure_cutoff_gap() : 0.0;
+
+  // Rows of the rigid-body balance this film loads (eqs [34]-[37]): the washer sees
+  // film 1 from below (+) and film 2 from above (−); the gear sees film 2 (+).
+  const double f_ref = load_, m_ref = load_ * scene_.washer.outer_radius;
+  struct RowSign { Index row; double force, mx, my; };
+  std::vector<RowSign> rows;
+  if (film.number == 1) {
+    rows = {{rigid_offset_ + 0, 1.0 / f_ref, 0, 0}, {rigid_offset_ + 1, 0, 1.0 / m_ref, 0},
+            {rigid_offset_ + 2, 0, 0, 1.0 / m_ref}};
+  } else {
+    rows = {{rigid_offset_ + 0, -1.0 / f_ref, 0, 0}, {rigid_offset_ + 1, 0, -1.0 / m_ref, 0},
+            {rigid_offset_ + 2, 0, 0, -1.0 / m_ref}, {rigid_offset_ + 3, 1.0 / f_ref, 0, 0}};
+  }
+
+  // Node viscosity temperatures and their gradients, computed once per node.
+  std::vector<double> node_t(m.node_count());
+  std::vector<LinearForm> node_t_form(m.node_count());
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < nt; ++j)
+      node_t[m.node(i, j)] = viscosity_temperature(u, film, i, j, jac ? &node_t_form[m.node(i, j)] : nullptr);
+
+  if (film.sliding) {
+    tot.contact_power.assign(m.node_count(), 0.0);
+    tot.contact_power_rigid.assign(m.node_count(), {0.0, 0.0, 0.0});
+  }
+
+  for (int i = 0; i < nr - 1; ++i) {
+    for (int j = 0; j < nt; ++j) {
+      const std::array<int, 4> ci{i, i + 1, i, i + 1};
+      const std::array<int, 4> cj{j, j, j + 1, j + 1};
+      std::array<int, 4> node;
+      std::array<double, 4> p_node{}, t_node{};
+      std::array<Index, 4> p_col{-1, -1, -1, -1};
+      for (int k = 0; k < 4; ++k) {
+        node[k] = m.node(ci[k], cj[k]);
+        t_node[k] = node_t[node[k]];
+        if (hydro && ci[k] > 0 && ci[k] < nr - 1) {
+          p_col[k] = film.pressure_offset + Index(ci[k] - 1) * nt + m.wrap(cj[k]);
+          p_node[k] = p_ref_ * u[p_col[k]];
+        }
+      }
+      const double r0 = m.radius(i), r1 = m.radius(i + 1);
+      const double t0 = m.angle(j), t1 = t0 + m.dtheta();
+      const bool near_contact = contact && (structural || cell_minimum(c, pa, pb, r0, r1, t0, t1) < cutoff);
+      const GaussRule& rule = near_contact ? contact_rule_ : smooth_rule_;
+
+      // Local accumulators: value, d/d(rigid 3), d/d(corner pressure 4), d/d(corner T 4).
+      std::array<double, 3> load_val{};  // F, Mx, My
+      std::array<std::array<double, 3>, 3> load_rigid{};
+      std::array<std::array<double, 4>, 3> load_p{};
+      std::array<double, 4> vheat{};
+      std::array<std::array<double, 3>, 4> vheat_rigid{};
+      std::array<std::array<double, 4>, 4> vheat_t{};
+
+      for (std::size_t gs = 0; gs < rule.points.size(); ++gs) {
+        for (std::size_t gt = 0; gt < rule.points.size(); ++gt) {
+          const double s = rule.points[gs], tt = rule.points[gt];
+          const double r = r0 + s * m.dr(), th = t0 + tt * m.dtheta();
+          const double x = r * std::cos(th), y = r * std::sin(th);
+          const double w = rule.weights[gs] * rule.weights[gt] * r * m.dr() * m.dtheta();
+          const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
+          const double h = c + pa * x + pb * y;
+          const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
+
+          double pc = 0, dpc = 0;
+          if (near_contact) {
+            const ValueSlope v = contact_->pressure(h);
+            pc = v.value;
+            dpc = v.slope;
+          }
+          double p = 0;
+          for (int k = 0; k < 4; ++k) p += N[k] * p_node[k];
+          const double total = p + pc;
+          const std::array<double, 3> arm{1.0, y, -x};  // F, Mx = Σ F y, My = −Σ F x
+          for (int qd = 0; qd < 3; ++qd) {
+            load_val[qd] += w * total * arm[qd];
+            for (int d = 0; d < 3; ++d) load_rigid[qd][d] += w * dpc * dh[d] * arm[qd];
+            for (int k = 0; k < 4; ++k) load_p[qd][k] += w * N[k] * p_ref_ * arm[qd];
+          }
+          tot.fluid_force += w * p;
+          tot.contact_force += w * pc;
+          for (int d = 0; d < 3; ++d) tot.contact_force_rigid[d] += w * dpc * dh[d];
+
+          if (!film.sliding) continue;
+          const double v_slide = omega * r;
+          double tv = 0;
+          for (int k = 0; k < 4; ++k) tv += N[k] * t_node[k];
+          const ValueSlope mu = viscosity(tv);
+          // Shear acts over the average gap, which stays positive where h closes (MODEL.md 3, 6).
+          const ValueSlope gap = average_gap(h, film.sigma);
+          const double tau = mu.value * v_slide / gap.value;
+          tot.viscous_torque += w * tau * r;
+          tot.contact_torque_per_f += w * pc * r;
+          const double qv = tau * v_slide;  // μ V² / h̄T
+          tot.viscous_heat += w * qv;
+          const double dqv_dh = -qv / gap.value * gap.slope;
+          const double dqv_dt = mu.slope * v_slide * v_slide / gap.value;
+          for (int k = 0; k < 4; ++k) {
+            const double wn = w * N[k];
+            vheat[k] += wn * qv;
+            for (int d = 0; d < 3; ++d) vheat_rigid[k][d] += wn * dqv_dh * dh[d];
+            for (int l = 0; l < 4; ++l) vheat_t[k][l] += wn * dqv_dt * N[l];
+            tot.contact_power[node[k]] += wn * pc * v_slide;
+            for (int d = 0; d < 3; ++d) tot.contact_power_rigid[node[k]][d] += wn * dpc * v_slide * dh[d];
+          }
+        }
+      }
+      (void)flow_factor_gap;
+
+      // Scatter the cell's loads into the rigid-body rows.
+      tot.moment_x += load_val[1];
+      tot.moment_y += load_val[2];
+      for (const RowSign& rs : rows) {
+        const std::array<double, 3> coef{rs.force, rs.mx, rs.my};
+        for (int qd = 0; qd < 3; ++qd) {
+          if (coef[qd] == 0.0) continue;
+          a.add_residual(rs.row, coef[qd] * load_val[qd]);
+          if (!jac) continue;
+          for (int d = 0; d < 3; ++d) a.add_derivative(rs.row, rigid_cols[d], coef[qd] * load_rigid[qd][d]);
+          for (int k = 0; k < 4; ++k) a.add_derivative(rs.row, p_col[k], coef[qd] * load_p[qd][k]);
+        }
+      }
+      // Viscous heat into the film-node rows (friction heat is added once f is known).
+      if (heat) {
+        for (int k = 0; k < 4; ++k) {
+          const Index row = film.temperature_offset + node[k];
+          const double sc = film_row_scale_[film.number - 1][node[k]];
+          a.add_residual(row, sc * vheat[k]);
+          if (!jac) continue;
+          for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], sc * vheat_rigid[k][d]);
+          for (int l = 0; l < 4; ++l) a.add_form(row, sc * vheat_t[k][l], node_t_form[node[l]]);
+        }
+      }
+    }
+  }
+
+  if (!film.sliding) return;
+  // Boundary friction f·p_cont (MODEL.md section 6). The empirical law [18] depends on
+  // the film's total contact force, so f couples every heat row to the rigid body.
+  if (scene_.friction.law == FrictionLaw::constant) {
+    tot.friction_coefficient = scene_.friction.coefficient;
+    tot.friction_slope = 0.0;
+  } else {
+    const FrictionLawResult fr = empirical_friction(tot.contact_force);
+    tot.friction_coefficient = fr.coefficient;
+    tot.friction_slope = fr.slope;
+    tot.friction_clamped = fr.clamped;
+  }
+  for (double cp : tot.contact_power) tot.friction_heat += tot.friction_coefficient * cp;
+  if (!heat) return;
+  for (int n = 0; n < m.node_count(); ++n) {
+    const Index row = film.temperature_offset + n;
+    const double sc = film_row_scale_[film.number - 1][n];
+    a.add_residual(row, sc * tot.friction_coefficient * tot.contact_power[n]);
+    if (!jac) continue;
+    for (int d = 0; d < 3; ++d)
+      a.add_derivative(row, rigid_cols[d],
+                       sc * (tot.friction_coefficient * tot.contact_power_rigid[n][d] +
+                             tot.friction_slope * tot.contact_power[n] * tot.contact_force_rigid[d]));
+  }
+}
+
+}  // namespace twb

@@ -1,0 +1,123 @@
+// Heat balance of carrier, washer and gear with zero-capacity film nodes (MODEL.md
+// section 7). Every row says: heat in − heat out = 0 (W), scaled by a reference
+// conductance so that its value reads in kelvin.
+//
+// Heat leaves a film node towards each bounding component through
+// R = h̄T/(2 K_oil) + r_body (eqs [26], [27]; the average gap keeps R positive where the
+// nominal film closes). A face temperature on a component's grid is a linear
+// interpolation in r; the heat it receives is spread with the same weights, so the
+// exchange between grids is conservative.
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "assembly_totals.h"
+#include "twb/physics/average_gap.h"
+
+namespace twb {
+
+namespace {
+double body_resistance_of(const Scene& s, ComponentId id) {
+  return id == ComponentId::washer ? s.washer.thickness / (2.0 * s.washer.material.conductivity) : 0.0;
+}
+}  // namespace
+
+void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const Totals&) const {
+  const bool jac = a.wants_jacobian();
+  const double k_oil = scene_.lubricant.conductivity;
+  const double t0 = scene_.operating.ambient;
+  const RigidPosition q = position(u);
+
+  auto component_index = [&](Index k) -> std::pair<std::size_t, Index> {
+    for (std::size_t c = 0; c < components_.size(); ++c)
+      if (k >= components_[c].offset && k < components_[c].offset + components_[c].node_count())
+        return {c, k - components_[c].offset};
+    return {components_.size(), -1};
+  };
+
+  // Film nodes and their exchange with the bounding components.
+  for (const Film& film : films_) {
+    const FilmMesh& m = film.mesh;
+    const std::array<Index, 3> rigid_cols{rigid_offset_ + film.clearance_unknown, rigid_offset_ + 1,
+                                          rigid_offset_ + 2};
+    for (int i = 0; i < m.radial_nodes(); ++i) {
+      const double r = m.radius(i);
+      const double area = m.node_area(i);
+      for (int j = 0; j < m.circumferential_nodes(); ++j) {
+        const int n = m.node(i, j);
+        const Index row = film.temperature_offset + n;
+        const double scale = film_row_scale_[film.number - 1][n];
+        const double th = m.angle(j), x = r * std::cos(th), y = r * std::sin(th);
+        const double h = film_gap(film, q, r, th);
+        const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
+        const ValueSlope gap = average_gap(h, film.sigma);
+        const double tf = temperature_of(u, row);
+
+        for (ComponentId side : {film.lower, film.upper}) {
+          LinearForm face;
+          const double ts = face_temperature(u, side, r, j, &face);
+          const double res = gap.value / (2.0 * k_oil) + body_resistance_of(scene_, side);
+          const double flow = area * (tf - ts) / res;  // W from the film node into the component
+          const double dflow_dh = -flow / res * gap.slope / (2.0 * k_oil);
+          a.add_residual(row, -scale * flow);
+          if (jac) {
+            a.add_derivative(row, row, -scale * area / res);
+            a.add_form(row, scale * area / res, face);
+            for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], -scale * dflow_dh * dh[d]);
+          }
+          for (auto [k, wgt] : face.terms) {
+            const auto [c, local] = component_index(k);
+            const double cs = component_row_scale_[c][local];
+            a.add_residual(k, cs * wgt * flow);
+            if (!jac) continue;
+            a.add_derivative(k, row, cs * wgt * area / res);
+            a.add_form(k, -cs * wgt * area / res, face);
+            for (int d = 0; d < 3; ++d) a.add_derivative(k, rigid_cols[d], cs * wgt * dflow_dh * dh[d]);
+          }
+        }
+      }
+    }
+  }
+
+  // In-plane conduction of each component (eq [21]) and, for carrier and gear, 1-D
+  // conduction across the thickness to the ambient (eqs [25], [28]).
+  for (std::size_t c = 0; c < components_.size(); ++c) {
+    const ComponentHeat& comp = components_[c];
+    const FilmMesh& g = comp.grid;
+    const double kt = comp.conductivity * comp.thickness;
+    const int nr = g.radial_nodes(), nt = comp.axisymmetric ? 1 : g.circumferential_nodes();
+    auto index = [&](int i, int j) -> Index { return comp.axisymmetric ? i : Index(i) * g.circumferential_nodes() + g.wrap(j); };
+    auto conduct = [&](Index la, Index lb, double conductance) {
+      const Index ka = comp.offset + la, kb = comp.offset + lb;
+      const double flow = conductance * (u[ka] - u[kb]);  // W from a to b
+      const double sa = component_row_scale_[c][la], sb = component_row_scale_[c][lb];
+      a.add_residual(ka, -sa * flow);
+      a.add_residual(kb, sb * flow);
+      if (!jac) return;
+      a.add_derivative(ka, ka, -sa * conductance);
+      a.add_derivative(ka, kb, sa * conductance);
+      a.add_derivative(kb, ka, sb * conductance);
+      a.add_derivative(kb, kb, -sb * conductance);
+    };
+    const double ring = comp.axisymmetric ? 2.0 * std::numbers::pi : g.dtheta();
+    for (int i = 0; i < nr; ++i) {
+      for (int j = 0; j < nt; ++j) {
+        if (i + 1 < nr) conduct(index(i, j), index(i + 1, j), kt * (g.radius(i) + 0.5 * g.dr()) * ring / g.dr());
+        if (!comp.axisymmetric) {
+          const double width = (i == 0 || i == nr - 1) ? 0.5 * g.dr() : g.dr();
+          conduct(index(i, j), index(i, j + 1), kt * width / (g.radius(i) * g.dtheta()));
+        }
+        if (comp.loses_to_ambient) {
+          const Index k = comp.offset + index(i, j);
+          const double gamb = comp.node_area(i) * comp.conductivity / comp.thickness;
+          const double s = component_row_scale_[c][index(i, j)];
+          a.add_residual(k, -s * gamb * u[k]);
+          if (jac) a.add_derivative(k, k, -s * gamb);
+        }
+      }
+    }
+  }
+  (void)t0;
+}
+
+}  // namespace twb

@@ -1,0 +1,146 @@
+#include "twb/solver/kinsol_newton.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <kinsol/kinsol.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+namespace twb {
+
+double max_norm(std::span<const double> v) {
+  double m = 0.0;
+  for (double x : v) {
+    if (!std::isfinite(x)) return INFINITY;
+    m = std::max(m, std::abs(x));
+  }
+  return m;
+}
+
+struct KinsolNewton::Callbacks {
+  const BearingModel* model;
+  std::vector<double> jac_values;
+  std::string last_error;
+};
+
+namespace {
+
+// Trampolines: no exception may cross into C. A non-finite residual is recoverable
+// (the line search shortens the step); anything else thrown is unrecoverable and its
+// message is kept for the report.
+int residual_fn(N_Vector y, N_Vector f, void* data) {
+  auto* cb = static_cast<KinsolNewton::Callbacks*>(data);
+  try {
+    const auto n = std::size_t(N_VGetLength(y));
+    std::span<const double> u(N_VGetArrayPointer(y), n);
+    std::span<double> r(N_VGetArrayPointer(f), n);
+    cb->model->evaluate(u, r, {});
+    for (double x : r)
+      if (!std::isfinite(x)) return 1;
+    return 0;
+  } catch (const std::exception& e) {
+    cb->last_error = e.what();
+    return -1;
+  }
+}
+
+int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector) {
+  auto* cb = static_cast<KinsolNewton::Callbacks*>(data);
+  try {
+    const BearingModel& m = *cb->model;
+    const SparsePattern& p = m.pattern();
+    const auto n = std::size_t(N_VGetLength(y));
+    std::vector<double> r(n);
+    cb->jac_values.resize(std::size_t(p.nnz()));
+    m.evaluate(std::span<const double>(N_VGetArrayPointer(y), n), r, cb->jac_values);
+    // SUNDIALS zeroes the whole matrix, index arrays included, before each call.
+    sunindextype* rowptr = SUNSparseMatrix_IndexPointers(J);
+    sunindextype* cols = SUNSparseMatrix_IndexValues(J);
+    double* vals = SUNSparseMatrix_Data(J);
+    std::copy(p.row_start.begin(), p.row_start.end(), rowptr);
+    std::copy(p.column.begin(), p.column.end(), cols);
+    std::copy(cb->jac_values.begin(), cb->jac_values.end(), vals);
+    for (double v : cb->jac_values)
+      if (!std::isfinite(v)) return 1;
+    return 0;
+  } catch (const std::exception& e) {
+    cb->last_error = e.what();
+    return -1;
+  }
+}
+
+void error_handler(int, const char*, const char*, char* msg, void* data) {
+  static_cast<KinsolNewton::Callbacks*>(data)->last_error = msg;
+}
+
+void check(int flag, const char* call) {
+  if (flag < 0) throw SolverFailure(std::string(call) + " failed", flag);
+}
+
+}  // namespace
+
+KinsolNewton::KinsolNewton(const BearingModel& model)
+    : model_(model), ctx_(make_context()), callbacks_(std::make_unique<Callbacks>()) {
+  callbacks_->model = &model_;
+  const sunindextype n = model_.size();
+  y_.reset(N_VNew_Serial(n, ctx_.get()));
+  scale_.reset(N_VNew_Serial(n, ctx_.get()));
+  N_VConst(1.0, scale_.get());
+  jac_.reset(SUNSparseMatrix(n, n, model_.pattern().nnz(), CSR_MAT, ctx_.get()));
+  klu_.reset(SUNLinSol_KLU(y_.get(), jac_.get(), ctx_.get()));
+  if (!y_ || !scale_ || !jac_ || !klu_) throw SolverFailure("could not allocate the Newton solver", -1);
+  kin_ = KINCreate(ctx_.get());
+  if (!kin_) throw SolverFailure("KINCreate failed", -1);
+  check(KINInit(kin_, residual_fn, y_.get()), "KINInit");
+  check(KINSetUserData(kin_, callbacks_.get()), "KINSetUserData");
+  check(KINSetErrHandlerFn(kin_, error_handler, callbacks_.get()), "KINSetErrHandlerFn");
+  check(KINSetLinearSolver(kin_, klu_.get(), jac_.get()), "KINSetLinearSolver");
+  check(KINSetJacFn(kin_, jacobian_fn), "KINSetJacFn");
+  // A fresh exact Jacobian every iteration: quadratic convergence is worth one KLU
+  // refactorization per step on this small system.
+  check(KINSetMaxSetupCalls(kin_, 1), "KINSetMaxSetupCalls");
+}
+
+KinsolNewton::~KinsolNewton() { KINFree(&kin_); }
+
+NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s) {
+  NewtonReport rep;
+  const std::size_t n = u.size();
+  std::copy(u.begin(), u.end(), N_VGetArrayPointer(y_.get()));
+  check(KINSetFuncNormTol(kin_, s.residual_tolerance), "KINSetFuncNormTol");
+  check(KINSetScaledStepTol(kin_, s.step_tolerance), "KINSetScaledStepTol");
+  check(KINSetNumMaxIters(kin_, s.max_iterations), "KINSetNumMaxIters");
+  if (s.max_step > 0) check(KINSetMaxNewtonStep(kin_, s.max_step), "KINSetMaxNewtonStep");
+  callbacks_->last_error.clear();
+
+  const int flag = KINSol(kin_, y_.get(), KIN_LINESEARCH, scale_.get(), scale_.get());
+  rep.flag = flag;
+  KINGetNumNonlinSolvIters(kin_, &rep.iterations);
+  KINGetNumFuncEvals(kin_, &rep.residual_evaluations);
+  KINGetNumJacEvals(kin_, &rep.jacobian_evaluations);
+  KINGetNumBacktrackOps(kin_, &rep.backtracks);
+
+  std::vector<double> trial(N_VGetArrayPointer(y_.get()), N_VGetArrayPointer(y_.get()) + n);
+  std::vector<double> r(n);
+  try {
+    model_.evaluate(trial, r, {});
+    rep.residual_norm = max_norm(r);
+  } catch (const std::exception&) {
+    rep.residual_norm = INFINITY;
+  }
+  // KIN_STEP_LT_STPTOL may be a stall: only the residual says whether it converged.
+  rep.converged = flag >= 0 && rep.residual_norm <= s.residual_tolerance;
+  if (rep.converged) {
+    u = trial;
+  } else {
+    char* name = KINGetReturnFlagName(flag);
+    rep.message = std::string(name ? name : "KINSOL failure") +
+                  (callbacks_->last_error.empty() ? "" : ": " + callbacks_->last_error);
+    free(name);
+  }
+  return rep;
+}
+
+}  // namespace twb

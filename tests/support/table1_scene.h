@@ -1,0 +1,33 @@
+// The paper's Table 1 case built in code, for tests that must not depend on the scene
+// loader; the loader's own tests check that configs/jackson_green_2006.yaml resolves
+// to the same values.
+#pragma once
+
+#include <cmath>
+
+#include "twb/scene/scene.h"
+
+namespace twb::testing {
+
+inline Scene table1_scene(bool hydrodynamics, bool flow_factors, bool contact, bool thermal,
+                          double speed = 545.0, double load = 500.0) {
+  Scene s;
+  s.source = "table1 (in code)";
+  s.effects.hydrodynamics = hydrodynamics;
+  s.effects.flow_factors = flow_factors;
+  s.effects.asperity_contact = contact;
+  s.effects.thermal = thermal;
+  s.washer = {11.1e-3 / 2, 22.7e-3 / 2, 0.635e-3, 0.0, {}, {}};
+  s.gear = {15.6e-3 / 2, 22.7e-3 / 2, 10e-3, 2e-3, {}, {}};
+  s.carrier = {11.1e-3 / 2, 22.7e-3 / 2, 10e-3, 0.0, {}, {}};
+  const double sigma = std::hypot(0.515e-6, 0.515e-6);
+  s.asperities.summit_radius = 20e-6;
+  s.asperities.summit_sigma = sigma;
+  s.asperities.eta_r_sigma = 0.05;
+  s.asperities.summit_density = 0.05 / (20e-6 * sigma);
+  s.operating.load = load;
+  s.operating.speed = speed;
+  return s;
+}
+
+}  // namespace twb::testing
