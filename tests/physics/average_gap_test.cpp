@@ -1,0 +1,77 @@
+// Average gap, MODEL.md section 3 / paper eq [6].
+#include "twb/physics/average_gap.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <boost/math/quadrature/exp_sinh.hpp>
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <gtest/gtest.h>
+
+namespace {
+
+constexpr double sigma = 0.728e-6;  // m, combined roughness of Table 1 surfaces
+
+// The definition: integral over delta > -h of (h + delta) G(delta), G = N(0, sigma^2),
+// integrated numerically (independent of the closed form). Substituting x = h + delta
+// >= 0 gives int_0^inf x G(x - h) dx on a half line, for Boost's exp_sinh quadrature.
+double average_gap_by_quadrature(double h) {
+  const auto integrand = [h](double x) {
+    const double z = (x - h) / sigma;
+    return x * std::exp(-0.5 * z * z) / (sigma * std::sqrt(2.0 * std::numbers::pi));
+  };
+  // Split at the Gaussian's peak (if inside) so both pieces are well resolved.
+  if (h > 0) {
+    boost::math::quadrature::tanh_sinh<double> finite;
+    boost::math::quadrature::exp_sinh<double> half_line;
+    return finite.integrate(integrand, 0.0, h, 1e-15) +
+           half_line.integrate(integrand, h, std::numeric_limits<double>::infinity(), 1e-15);
+  }
+  boost::math::quadrature::exp_sinh<double> half_line;
+  return half_line.integrate(integrand, 0.0, std::numeric_limits<double>::infinity(), 1e-15);
+}
+
+TEST(AverageGap, MatchesQuadratureOfItsDefinition) {
+  for (double H : {-5.0, -3.0, -1.0, -0.2, 0.0, 0.5, 1.0, 2.0, 3.0, 6.0}) {
+    const double h = H * sigma;
+    const double exact = average_gap_by_quadrature(h);
+    EXPECT_NEAR(twb::average_gap(h, sigma).value / exact, 1.0, 1e-12) << "H = " << H;
+  }
+}
+
+TEST(AverageGap, MatchesIndependentHighPrecisionValues) {
+  // h_T/sigma from mpmath quadrature of the definition, 30 digits.
+  const auto relative_to = [](double H, double reference_over_sigma) {
+    return twb::average_gap(H * sigma, sigma).value / (reference_over_sigma * sigma);
+  };
+  EXPECT_NEAR(relative_to(-3.0, 0.000382154317047723596), 1.0, 1e-12);
+  EXPECT_NEAR(relative_to(0.0, 0.398942280401432678), 1.0, 1e-14);
+  EXPECT_NEAR(relative_to(0.5, 0.697796557401306030), 1.0, 1e-14);
+}
+
+TEST(AverageGap, SlopeIsOpenedFractionAndMatchesCentralDifferences) {
+  // Step 1e-4 sigma: truncation ~ (1e-4)^2 relative, roundoff ~1e-12: bound 1e-7.
+  for (double H : {-4.0, -1.0, 0.0, 0.8, 2.5, 5.0}) {
+    const double h = H * sigma, step = 1e-4 * sigma;
+    const double fd = (twb::average_gap(h + step, sigma).value -
+                       twb::average_gap(h - step, sigma).value) / (2 * step);
+    const double slope = twb::average_gap(h, sigma).slope;
+    EXPECT_NEAR(slope, fd, 1e-7 * fd) << "H = " << H;
+    EXPECT_NEAR(slope, 0.5 * (1 + std::erf(H / std::numbers::sqrt2)), 1e-15);
+  }
+}
+
+TEST(AverageGap, AlwaysPositiveAndEqualsGapWhenOpen) {
+  for (double H = -8.0; H <= 20.0; H += 0.01) {
+    const double h = H * sigma;
+    const double gap = twb::average_gap(h, sigma).value;
+    ASSERT_GT(gap, 0.0) << "H = " << H;
+    ASSERT_GE(gap, h) << "H = " << H;  // (h + delta) > h over the wetted part
+    if (H >= 3.0) {
+      ASSERT_LT((gap - h) / h, 1.3e-4) << "H = " << H;
+    }
+  }
+}
+
+}  // namespace
