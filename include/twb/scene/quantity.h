@@ -1,0 +1,52 @@
+// Physical quantities written in scene files ("22.7 mm", "5200 rpm", "24 degC"),
+// converted once, at load time, to the SI unit the model works in. Units are those
+// of udunits2; a bare number is taken to be in SI already.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace twb {
+
+// The SI unit a scene value is converted to, and how to talk about it in messages.
+struct SiUnit {
+  std::string_view symbol;   // udunits2 spelling of the SI unit, e.g. "rad/s"
+  std::string_view kind;     // what the value is, e.g. "an angular speed"
+  std::string_view example;  // a valid value, e.g. "545 rad/s"
+};
+
+namespace si {
+inline constexpr SiUnit length{"m", "a length", "22.7 mm"};
+// udunits2 treats the radian as dimensionless: any dimensionless number is an angle.
+inline constexpr SiUnit angle{"rad", "an angle", "2 mrad"};
+inline constexpr SiUnit angular_speed{"rad/s", "an angular speed", "545 rad/s"};
+inline constexpr SiUnit force{"N", "a force", "1000 N"};
+inline constexpr SiUnit temperature{"K", "a temperature", "24 degC"};
+inline constexpr SiUnit stress{"Pa", "a pressure or stress", "201 GPa"};
+inline constexpr SiUnit conductivity{"W/(m K)", "a thermal conductivity", "60.5 W/(m K)"};
+inline constexpr SiUnit density{"kg/m^3", "a density", "7850 kg/m^3"};
+inline constexpr SiUnit specific_heat{"J/(kg K)", "a specific heat", "470 J/(kg K)"};
+inline constexpr SiUnit viscosity{"Pa s", "a dynamic viscosity", "0.06 Pa s"};
+inline constexpr SiUnit areal_density{"1/m^2", "a number per unit area", "1e11 1/m^2"};
+inline constexpr SiUnit dimensionless{"1", "a dimensionless number", "0.296"};
+}  // namespace si
+
+// A text that is not a quantity of the expected kind. The message says what was wrong
+// and what was expected, but not where: the scene loader adds the location.
+class QuantityError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// "22.7 mm" with si::length -> 0.0227. The text is a number, optionally followed by
+// whitespace and a udunits2 unit. Temperatures convert with their offset
+// ("24 degC" -> 297.15). Throws QuantityError for an unparseable number, a non-finite
+// number, an unknown unit or a unit of the wrong dimension.
+double to_si(std::string_view text, const SiUnit& expected);
+
+// The dimension of a udunits2 unit expression, for messages: "length", "a force", ...
+// "dimensionless" for pure numbers and angles, empty if unknown or unparseable.
+std::string dimension_name(std::string_view unit);
+
+}  // namespace twb

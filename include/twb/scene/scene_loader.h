@@ -1,0 +1,22 @@
+// Scene files (YAML, docs/scenes.md) to the validated Scene of scene.h, and back.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "twb/scene/scene.h"
+
+namespace twb {
+
+// Reads, converts to SI and validates the scene file at `path`, then applies `overrides`:
+// "dotted.path=value" texts from `twb run --set` (e.g. "operating.load=800 N",
+// "effects=[hydrodynamics, asperity_contact]"), validated exactly like the file.
+// Throws InputError (input_error.h) for any defect, naming the file, line and column, or
+// the override.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The resolved scene as a scene file: every default filled in, values in SI written as
+// "value unit" strings, so that loading the text back gives the same Scene.
+std::string describe_scene(const Scene& scene);
+
+}  // namespace twb

@@ -1,0 +1,69 @@
+// How the bearing is run: its oil (lubricant), load, speed and surroundings
+// (operating), and its boundary friction law (friction). MODEL.md sections 2, 5, 6.
+#include <fmt/format.h>
+
+#include "scene_names.h"
+#include "scene_sections.h"
+
+namespace twb::scene_io {
+namespace {
+
+// Roelands' law raises (1 + T/135 degC) to a fractional power: it is undefined at and
+// below -135 degC.
+constexpr double kRoelandsLowestTemperature = 138.15;  // K, -135 degC
+
+void read_lubricant(const MapReader& scene, Scene& out) {
+  const MapReader oil = scene.map("lubricant", {"conductivity", "viscosity"});
+  Lubricant& l = out.lubricant;
+  l.conductivity = oil.quantity("conductivity", si::conductivity, positive, l.conductivity);
+
+  const MapReader viscosity = oil.map("viscosity", {"model", "mu_infinity", "G0", "S0", "value"});
+  l.viscosity_model = read_choice(viscosity, "model", kViscosityModels, l.viscosity_model);
+  if (l.viscosity_model == ViscosityModel::roelands) {
+    viscosity.restrict_to({"model", "mu_infinity", "G0", "S0"}, "with model: roelands");
+    l.mu_infinity = viscosity.quantity("mu_infinity", si::viscosity, positive, l.mu_infinity);
+    l.g0 = viscosity.quantity("G0", si::dimensionless, positive, l.g0);
+    l.s0 = viscosity.quantity("S0", si::dimensionless, positive, l.s0);
+  } else {
+    viscosity.restrict_to({"model", "value"}, "with model: constant");
+    l.constant_viscosity = viscosity.quantity("value", si::viscosity, positive, l.constant_viscosity);
+  }
+}
+
+void read_operating(const MapReader& scene, Scene& out) {
+  const MapReader operating(scene.get("operating", "a map with load, speed, sliding, ambient"),
+                            {"load", "speed", "sliding", "ambient"});
+  Operating& o = out.operating;
+  o.load = operating.quantity("load", si::force,
+                              {.low = 0.0, .low_open = true,
+                               .reason = "a bearing without load has no steady state"});
+  o.speed = operating.quantity("speed", si::angular_speed, non_negative);
+  o.sliding = read_choice(operating, "sliding", kSlidingFilms, o.sliding);
+  const Range ambient_range =
+      out.lubricant.viscosity_model == ViscosityModel::roelands
+          ? Range{.low = kRoelandsLowestTemperature, .low_open = true,
+                  .reason = "Roelands' viscosity law needs T > -135 degC"}
+          : Range{.low = 0.0, .low_open = true, .reason = "an absolute temperature"};
+  o.ambient = operating.quantity("ambient", si::temperature, ambient_range, o.ambient);
+}
+
+void read_friction(const MapReader& scene, Scene& out) {
+  const MapReader friction = scene.map("friction", {"law", "coefficient"});
+  Friction& f = out.friction;
+  f.law = read_choice(friction, "law", kFrictionLaws, f.law);
+  if (f.law == FrictionLaw::constant) {
+    f.coefficient = friction.quantity("coefficient", si::dimensionless, non_negative, f.coefficient);
+  } else {
+    friction.restrict_to({"law"}, "with law: empirical");
+  }
+}
+
+}  // namespace
+
+void read_operation(const MapReader& scene, Scene& out) {
+  read_lubricant(scene, out);
+  read_operating(scene, out);
+  read_friction(scene, out);
+}
+
+}  // namespace twb::scene_io

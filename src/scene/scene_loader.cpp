@@ -1,0 +1,80 @@
+#include "twb/scene/scene_loader.h"
+
+#include <cerrno>
+#include <cstring>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "scene_node.h"
+#include "scene_overrides.h"
+#include "scene_sections.h"
+#include "scene_source.h"
+#include "twb/scene/input_error.h"
+
+namespace twb {
+namespace {
+
+std::string read_file(const std::string& path) {
+  if (std::filesystem::is_directory(path))
+    throw InputError(path, 0, 0, fmt::format("cannot read the scene file '{}': it is a directory", path), "");
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError(path, 0, 0,
+                     fmt::format("cannot open the scene file '{}': {}", path, std::strerror(errno)), "");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string line_at(const scene_io::Origin& file, int line) {
+  return line >= 0 && static_cast<std::size_t>(line) < file.lines.size()
+             ? file.lines[static_cast<std::size_t>(line)]
+             : std::string();
+}
+
+YAML::Node parse_yaml(const scene_io::Origin& file, const std::string& text) {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::Exception& error) {
+    const int line = std::max(error.mark.line, 0);
+    throw InputError(file.name, line + 1, std::max(error.mark.column, 0) + 1,
+                     fmt::format("YAML syntax error: {}", error.msg), line_at(file, line));
+  }
+  if (documents.size() > 1) {
+    // A second document would be ignored silently: most likely a stray '---'.
+    const YAML::Mark mark = documents[1].Mark();
+    const int line = std::max(mark.line, 0);
+    throw InputError(file.name, line + 1, std::max(mark.column, 0) + 1,
+                     fmt::format("the file holds {} YAML documents; a scene is one document "
+                                 "(remove the '---' separators)",
+                                 documents.size()),
+                     line_at(file, line));
+  }
+  return documents.empty() ? YAML::Node() : documents.front();
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  const std::string text = read_file(path);
+  scene_io::Origin file{.name = path, .is_file = true, .lines = scene_io::split_lines(text)};
+  YAML::Node root = parse_yaml(file, text);
+
+  scene_io::Provenance provenance(&file);
+  std::deque<scene_io::Origin> override_origins;
+  scene_io::apply_overrides(root, overrides, override_origins, provenance);
+
+  // An empty document has no mark; errors about it still point at the file's first line.
+  const YAML::Mark root_mark = root.Mark().line >= 0 ? root.Mark() : YAML::Mark();
+  Scene scene = scene_io::read_scene(scene_io::Node(root, "", &file, root_mark, &provenance));
+  scene.source = path;
+  return scene;
+}
+
+}  // namespace twb

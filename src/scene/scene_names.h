@@ -1,0 +1,43 @@
+// How the scene file spells the choices of scene.h; shared by the reader and the writer
+// so that what is written loads back.
+#pragma once
+
+#include <string_view>
+
+#include "scene_node.h"
+#include "twb/scene/scene.h"
+
+namespace twb::scene_io {
+
+inline constexpr EnumNames<SlidingFilm, 2> kSlidingFilms{
+    {"carrier_washer", "washer_gear"}, {SlidingFilm::carrier_washer, SlidingFilm::washer_gear}};
+
+inline constexpr EnumNames<CavitationModel, 1> kCavitationModels{{"reynolds"},
+                                                                 {CavitationModel::reynolds}};
+
+inline constexpr EnumNames<ViscosityTemperature, 2> kViscosityTemperatures{
+    {"surface_mean", "film_node"},
+    {ViscosityTemperature::surface_mean, ViscosityTemperature::film_node}};
+
+inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
+    {"roelands", "constant"}, {ViscosityModel::roelands, ViscosityModel::constant}};
+
+inline constexpr EnumNames<FrictionLaw, 2> kFrictionLaws{
+    {"empirical", "constant"}, {FrictionLaw::empirical, FrictionLaw::constant}};
+
+inline constexpr EnumNames<StudyType, 4> kStudyTypes{
+    {"point", "load_sweep", "distress_map", "transient"},
+    {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient}};
+
+// Effects in the order the model stacks them.
+inline constexpr std::string_view kHydrodynamics = "hydrodynamics";
+inline constexpr std::string_view kFlowFactors = "flow_factors";
+inline constexpr std::string_view kAsperityContact = "asperity_contact";
+inline constexpr std::string_view kThermal = "thermal";
+inline constexpr std::array<std::string_view, 4> kEffectNames{kHydrodynamics, kFlowFactors,
+                                                              kAsperityContact, kThermal};
+
+// The three bodies, in stacking order along z.
+inline constexpr std::array<std::string_view, 3> kComponentNames{"carrier", "washer", "gear"};
+
+}  // namespace twb::scene_io

@@ -1,0 +1,145 @@
+#include "scene_overrides.h"
+
+#include <cctype>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "twb/scene/input_error.h"
+
+namespace twb::scene_io {
+namespace {
+
+struct Segment {
+  std::string key;
+  int column;  // 1-based, in the override text
+};
+
+bool is_key_character(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+
+[[noreturn]] void malformed(const std::string& text, int column, const std::string& why) {
+  throw InputError("--set", 0, column,
+                   fmt::format("'{}' is not a valid override: {}; write path=value, e.g. "
+                               "operating.load=800 N",
+                               text, why),
+                   text);
+}
+
+std::vector<Segment> split_path(const std::string& text, std::size_t equals) {
+  std::vector<Segment> segments;
+  std::size_t start = 0;
+  while (true) {
+    std::size_t end = text.find('.', start);
+    if (end == std::string::npos || end > equals) end = equals;
+    const std::string key = text.substr(start, end - start);
+    if (key.empty()) malformed(text, static_cast<int>(start) + 1, "a path segment is empty");
+    for (std::size_t i = 0; i < key.size(); ++i)
+      if (!is_key_character(key[i]))
+        malformed(text, static_cast<int>(start + i) + 1,
+                  fmt::format("'{}' is not a key name (letters, digits, '_')", key));
+    segments.push_back({key, static_cast<int>(start) + 1});
+    if (end == equals) return segments;
+    start = end + 1;
+  }
+}
+
+std::string describe(const YAML::Node& node) {
+  if (node.IsScalar()) return fmt::format("the value '{}'", node.Scalar());
+  if (node.IsSequence()) return "a list";
+  return "not a map";
+}
+
+// yaml-cpp shares one node between an anchor and its aliases ("washer: *steel"). An
+// override names one path, so it must not edit the shared node in place: maps on the
+// path that are shared are replaced by private copies, and the value is inserted anew.
+int occurrences(const YAML::Node& tree, const YAML::Node& target, int depth) {
+  if (tree.is(target)) return 1;
+  // Anchors may nest but cannot recurse into themselves in a well-formed tree; the depth
+  // bound only protects against a pathological one.
+  if (depth > 64 || !(tree.IsMap() || tree.IsSequence())) return 0;
+  int count = 0;
+  if (tree.IsMap()) {
+    for (const auto& entry : tree) count += occurrences(entry.second, target, depth + 1);
+  } else {
+    for (const auto& item : tree) count += occurrences(item, target, depth + 1);
+  }
+  return count;
+}
+
+YAML::Node private_copy(const YAML::Node& map) {
+  YAML::Node copy(YAML::NodeType::Map);
+  // force_insert keeps repeated keys, so the reader still reports them.
+  for (const auto& entry : map) copy.force_insert(entry.first, entry.second);
+  return copy;
+}
+
+void replace(YAML::Node& map, const std::string& key, const YAML::Node& value) {
+  while (map.remove(key)) {
+  }
+  map.force_insert(key, value);
+}
+
+}  // namespace
+
+void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides,
+                     std::deque<Origin>& origins, Provenance& provenance) {
+  for (const std::string& text : overrides) {
+    const std::size_t equals = text.find('=');
+    if (equals == std::string::npos) malformed(text, 0, "it has no '='");
+    const std::vector<Segment> segments = split_path(text, equals);
+
+    std::size_t value_start = text.find_first_not_of(" \t", equals + 1);
+    if (value_start == std::string::npos) value_start = text.size();
+    std::string path;
+    for (const Segment& segment : segments) path += (path.empty() ? "" : ".") + segment.key;
+
+    Origin& origin = origins.emplace_back();
+    origin.name = fmt::format("--set {}", path);
+    origin.is_file = false;
+    origin.lines = {text};
+    origin.key_column = segments.back().column;
+    origin.value_column = static_cast<int>(value_start) + 1;
+
+    YAML::Node value;
+    try {
+      value = YAML::Load(text.substr(value_start));
+    } catch (const YAML::Exception& error) {
+      throw InputError(origin.name, 0, origin.value_column + std::max(error.mark.column, 0),
+                       fmt::format("YAML syntax error in the value: {}", error.msg), text);
+    }
+
+    // An empty file, or an empty section, becomes a map to hold the override.
+    if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+    // A root that is not a map is reported by the scene reader, at the file.
+    if (!root.IsMap()) return;
+
+    YAML::Node parent;
+    parent.reset(root);
+    std::string parent_path;
+    for (std::size_t i = 0; i + 1 < segments.size(); ++i) {
+      const std::string& key = segments[i].key;
+      const std::string child_path = parent_path.empty() ? key : parent_path + "." + key;
+      const YAML::Node child = std::as_const(parent)[key];
+      if (!child.IsDefined() || child.IsNull()) {
+        replace(parent, key, YAML::Node(YAML::NodeType::Map));
+        provenance.assign(child_path, &origin);
+      } else if (!child.IsMap()) {
+        throw InputError(origin.name, 0, segments[i + 1].column,
+                         fmt::format("'{}' is {} in the scene, not a map: it has no key '{}'",
+                                     child_path, describe(child), segments[i + 1].key),
+                         text);
+      } else if (occurrences(root, child, 0) > 1) {
+        replace(parent, key, private_copy(child));
+      }
+      const YAML::Node next = std::as_const(parent)[key];
+      parent.reset(next);
+      parent_path = child_path;
+    }
+    replace(parent, segments.back().key, value);
+    provenance.assign(path, &origin);
+  }
+}
+
+}  // namespace twb::scene_io

@@ -1,0 +1,22 @@
+// The readers of the scene file's top-level sections, one per physical topic. Each
+// validates its section completely and fills its part of the Scene; docs/scenes.md
+// documents what they accept.
+#pragma once
+
+#include "scene_node.h"
+#include "twb/scene/scene.h"
+
+namespace twb::scene_io {
+
+Effects read_effects(const MapReader& scene);
+// geometry, materials, surfaces (with the asperity parameters)
+void read_bodies(const MapReader& scene, Scene& out);
+// lubricant, operating, friction
+void read_operation(const MapReader& scene, Scene& out);
+// mesh, solver, study, output
+void read_numerics(const MapReader& scene, Scene& out);
+
+// The whole scene from the root of the (overridden) YAML tree.
+Scene read_scene(const Node& root);
+
+}  // namespace twb::scene_io

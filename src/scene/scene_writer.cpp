@@ -1,0 +1,173 @@
+// describe_scene: the resolved scene written back as a scene file, so a run's inputs can be
+// stored beside its results and replayed exactly.
+#include <fmt/format.h>
+
+#include "scene_names.h"
+#include "twb/scene/scene_loader.h"
+
+namespace twb {
+namespace {
+
+using namespace scene_io;
+
+// Shortest text that parses back to the same double, then the SI unit.
+std::string quantity(double value, std::string_view unit) {
+  return unit == "1" ? fmt::format("{}", value) : fmt::format("{} {}", value, unit);
+}
+
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+class Writer {
+ public:
+  void line(int indent, std::string_view text) {
+    out_ += std::string(static_cast<std::size_t>(2 * indent), ' ');
+    out_ += text;
+    out_ += '\n';
+  }
+  void entry(int indent, std::string_view key, const std::string& value, std::string_view comment = {}) {
+    line(indent, comment.empty() ? fmt::format("{}: {}", key, value)
+                                 : fmt::format("{}: {}  # {}", key, value, comment));
+  }
+  std::string text() && { return std::move(out_); }
+
+ private:
+  std::string out_;
+};
+
+void write_effects(Writer& w, const Effects& e) {
+  w.line(0, "effects:");
+  if (e.hydrodynamics)
+    w.line(1, fmt::format("- hydrodynamics: {{cavitation: {}}}", kCavitationModels.name(e.cavitation)));
+  if (e.flow_factors) w.line(1, "- flow_factors");
+  if (e.asperity_contact) w.line(1, "- asperity_contact");
+  if (e.thermal)
+    w.line(1, fmt::format("- thermal: {{viscosity_temperature: {}}}",
+                          kViscosityTemperatures.name(e.viscosity_temperature)));
+}
+
+void write_geometry(Writer& w, const Scene& s) {
+  w.line(0, "geometry:");
+  w.line(1, "carrier:  # its face covers the washer annulus");
+  w.entry(2, "thickness", quantity(s.carrier.thickness, "m"));
+  w.line(1, "washer:");
+  w.entry(2, "inner_diameter", quantity(2 * s.washer.inner_radius, "m"));
+  w.entry(2, "outer_diameter", quantity(2 * s.washer.outer_radius, "m"));
+  w.entry(2, "thickness", quantity(s.washer.thickness, "m"));
+  w.line(1, "gear:");
+  w.entry(2, "inner_diameter", quantity(2 * s.gear.inner_radius, "m"));
+  w.entry(2, "outer_diameter", quantity(2 * s.gear.outer_radius, "m"));
+  w.entry(2, "thickness", quantity(s.gear.thickness, "m"));
+  w.entry(2, "tilt", quantity(s.gear.tilt, "rad"));
+}
+
+void write_materials(Writer& w, const Scene& s) {
+  w.line(0, "materials:");
+  for (const auto& [name, component] :
+       {std::pair{"carrier", &s.carrier}, std::pair{"washer", &s.washer}, std::pair{"gear", &s.gear}}) {
+    const Material& m = component->material;
+    w.line(1, fmt::format("{}:", name));
+    w.entry(2, "youngs_modulus", quantity(m.youngs_modulus, "Pa"));
+    w.entry(2, "poisson_ratio", quantity(m.poisson_ratio, "1"));
+    w.entry(2, "yield_strength", quantity(m.yield_strength, "Pa"));
+    w.entry(2, "conductivity", quantity(m.conductivity, "W/(m K)"));
+    w.entry(2, "density", quantity(m.density, "kg/m^3"));
+    w.entry(2, "specific_heat", quantity(m.specific_heat, "J/(kg K)"));
+  }
+}
+
+void write_surfaces(Writer& w, const Scene& s) {
+  w.line(0, "surfaces:");
+  for (const auto& [name, component] :
+       {std::pair{"carrier", &s.carrier}, std::pair{"washer", &s.washer}, std::pair{"gear", &s.gear}}) {
+    w.line(1, fmt::format("{}:", name));
+    w.entry(2, "Ra", quantity(component->roughness.ra, "m"));
+    w.entry(2, "Rq", quantity(component->roughness.rq, "m"));
+  }
+  const AsperityParameters& a = s.asperities;
+  w.line(1, "asperities:");
+  w.entry(2, "summit_radius", quantity(a.summit_radius, "m"));
+  w.entry(2, "summit_sigma", quantity(a.summit_sigma, "m"));
+  // The density is written rather than eta_R_sigma: the file may hold only one of them.
+  w.entry(2, "summit_density", quantity(a.summit_density, "1/m^2"),
+          fmt::format("eta_R_sigma = {}", a.eta_r_sigma));
+}
+
+void write_operation(Writer& w, const Scene& s) {
+  const Lubricant& l = s.lubricant;
+  w.line(0, "lubricant:");
+  w.entry(1, "conductivity", quantity(l.conductivity, "W/(m K)"));
+  w.line(1, "viscosity:");
+  w.entry(2, "model", std::string(kViscosityModels.name(l.viscosity_model)));
+  if (l.viscosity_model == ViscosityModel::roelands) {
+    w.entry(2, "mu_infinity", quantity(l.mu_infinity, "Pa s"));
+    w.entry(2, "G0", quantity(l.g0, "1"));
+    w.entry(2, "S0", quantity(l.s0, "1"));
+  } else {
+    w.entry(2, "value", quantity(l.constant_viscosity, "Pa s"));
+  }
+
+  const Operating& o = s.operating;
+  w.line(0, "operating:");
+  w.entry(1, "load", quantity(o.load, "N"));
+  w.entry(1, "speed", quantity(o.speed, "rad/s"));
+  w.entry(1, "sliding", std::string(kSlidingFilms.name(o.sliding)));
+  w.entry(1, "ambient", quantity(o.ambient, "K"), fmt::format("{:.2f} degC", o.ambient - 273.15));
+
+  w.line(0, "friction:");
+  w.entry(1, "law", std::string(kFrictionLaws.name(s.friction.law)));
+  if (s.friction.law == FrictionLaw::constant)
+    w.entry(1, "coefficient", quantity(s.friction.coefficient, "1"));
+}
+
+void write_numerics(Writer& w, const Scene& s) {
+  w.line(0, "mesh:");
+  w.entry(1, "radial_nodes", fmt::format("{}", s.mesh.radial_nodes));
+  w.entry(1, "circumferential_nodes", fmt::format("{}", s.mesh.circumferential_nodes));
+  w.entry(1, "contact_quadrature", fmt::format("{}", s.mesh.contact_quadrature));
+
+  w.line(0, "solver:");
+  w.entry(1, "residual_tolerance", quantity(s.solver.residual_tolerance, "1"));
+  w.entry(1, "step_tolerance", quantity(s.solver.step_tolerance, "1"));
+  w.entry(1, "max_iterations", fmt::format("{}", s.solver.max_iterations));
+  w.entry(1, "cold_start_film", quantity(s.solver.cold_start_film, "1"));
+
+  w.line(0, "study:");
+  w.entry(1, "type", std::string(kStudyTypes.name(s.study.type)));
+  if (s.study.type == StudyType::load_sweep) {
+    w.entry(1, "load_start", quantity(s.study.load_start, "N"));
+    w.entry(1, "load_end", quantity(s.study.load_end, "N"));
+    w.entry(1, "load_steps", fmt::format("{}", s.study.load_steps));
+  } else if (s.study.type == StudyType::distress_map) {
+    std::string speeds;
+    for (double speed : s.study.speeds) speeds += (speeds.empty() ? "" : ", ") + quantity(speed, "rad/s");
+    w.entry(1, "speeds", fmt::format("[{}]", speeds));
+  }
+
+  w.line(0, "output:");
+  w.entry(1, "directory", quoted(s.output.directory));
+  w.entry(1, "fields", s.output.fields ? "true" : "false");
+}
+
+}  // namespace
+
+std::string describe_scene(const Scene& scene) {
+  Writer w;
+  w.line(0, "# The resolved scene: every default filled in, every value in SI.");
+  if (!scene.source.empty()) w.line(0, fmt::format("# Read from {}", scene.source));
+  write_effects(w, scene.effects);
+  write_geometry(w, scene);
+  write_materials(w, scene);
+  write_surfaces(w, scene);
+  write_operation(w, scene);
+  write_numerics(w, scene);
+  return std::move(w).text();
+}
+
+}  // namespace twb

@@ -1,0 +1,104 @@
+// The malformed scene fixtures and what their errors must say: shared by the loader's
+// table-driven test and the `twb check` CLI test.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "scene_test_support.h"
+
+namespace twb::testing {
+
+struct MalformedCase {
+  std::string name;  // tests/scene/data/malformed/<name>.yaml
+  int line;          // 1-based
+  int column;        // 1-based; 0 where yaml-cpp's own position is not meaningful
+  std::vector<std::string> message_contains;
+};
+
+// gtest prints a parameter by its bytes otherwise.
+inline void PrintTo(const MalformedCase& c, std::ostream* os) { *os << c.name; }
+
+inline std::string malformed_path(const MalformedCase& c) {
+  return source_path("tests/scene/data/malformed/" + c.name + ".yaml");
+}
+
+// Lines and columns point at the defect itself: the offending key for key errors, the
+// value for value errors, the map (its '{' or first key) for a missing key.
+inline const std::vector<MalformedCase>& malformed_cases() {
+  static const std::vector<MalformedCase> cases{
+    {"unknown_key", 5, 62, {"unknown key 'thicknes' in 'geometry.washer'", "did you mean 'thickness'?", "Allowed: inner_diameter, outer_diameter, thickness"}},
+    {"unknown_top_level_key", 12, 1, {"unknown key 'meshes' at the top level", "did you mean 'mesh'?", "Allowed: effects, geometry"}},
+    {"unknown_key_without_suggestion", 13, 3, {"unknown key 'banana' in 'solver'", "Allowed: residual_tolerance, step_tolerance, max_iterations, cold_start_film"}},
+    {"unknown_effect_option", 3, 21, {"unknown key 'cavitaton'", "did you mean 'cavitation'?", "Allowed: cavitation"}},
+    {"option_of_effect_without_options", 4, 20, {"unknown key 'order'", "takes no options"}},
+    {"key_not_applicable_to_law", 14, 3, {"key 'coefficient' in 'friction' does not apply with law: empirical", "allowed with law: empirical: law"}},
+    {"key_not_applicable_to_study", 12, 22, {"key 'load_start' in 'study' does not apply with type: point", "allowed with type: point: type"}},
+    {"key_not_applicable_to_viscosity_model", 13, 50, {"key 'G0' in 'lubricant.viscosity' does not apply with model: constant", "allowed with model: constant: model, value"}},
+    {"summit_density_and_eta_r_sigma", 15, 18, {"surfaces.asperities.eta_R_sigma", "either summit_density or eta_R_sigma, not both"}},
+    {"wrong_dimension_speed", 9, 10, {"operating.speed: '22.7 mm' has the dimension of length, expected an angular speed convertible to rad/s"}},
+    {"wrong_dimension_load", 8, 9, {"operating.load: '500 kg' has the dimension of mass, expected a force convertible to N"}},
+    {"wrong_dimension_ambient", 11, 12, {"operating.ambient: '24 m' has the dimension of length, expected a temperature convertible to K"}},
+    {"wrong_dimension_tilt", 6, 84, {"geometry.gear.tilt: '2 mm' has the dimension of length, expected an angle convertible to rad"}},
+    {"wrong_dimension_reciprocal", 9, 10, {"operating.speed: '10 s' has the dimension of time, expected an angular speed convertible to rad/s"}},
+    {"wrong_dimension_youngs_modulus", 13, 28, {"materials.washer.youngs_modulus: '201 kN' has the dimension of force, expected a pressure or stress convertible to Pa"}},
+    {"unknown_unit", 4, 24, {"geometry.carrier.thickness: '10 mmm' has an unknown unit 'mmm'", "expected a length convertible to m"}},
+    {"unparseable_number", 8, 9, {"operating.load: '5O0 N' is not a number", "expected a force", "e.g. '1000 N'"}},
+    {"number_glued_to_unit", 4, 24, {"geometry.carrier.thickness: '10mm' is not a number", "a number, optionally followed by a space and a unit"}},
+    {"nan_value", 14, 21, {"materials.gear.youngs_modulus: 'nan' is not a finite number"}},
+    {"infinite_value", 8, 9, {"operating.load: '.inf' is not a finite number"}},
+    {"negative_thickness", 5, 73, {"geometry.washer.thickness: '-0.635 mm' (= -0.000635 m) is out of range; must be > 0 m"}},
+    {"negative_diameter", 6, 51, {"geometry.gear.outer_diameter: '-22.7 mm' (= -0.0227 m) is out of range; must be > 0 m"}},
+    {"poisson_ratio_too_large", 13, 28, {"materials.carrier.poisson_ratio: '0.5' is out of range; must be in (0, 0.5)"}},
+    {"poisson_ratio_zero", 14, 20, {"materials.washer.poisson_ratio: '0' is out of range; must be in (0, 0.5)"}},
+    {"inner_diameter_not_below_outer", 5, 28, {"geometry.washer.inner_diameter: '22.7 mm' must be less than outer_diameter '22.7 mm'"}},
+    {"annuli_do_not_overlap", 6, 26, {"geometry.gear.inner_diameter", "does not overlap the washer annulus", "must overlap"}},
+    {"radial_nodes_too_few", 12, 22, {"mesh.radial_nodes: 2 is out of range; must be >= 3"}},
+    {"circumferential_nodes_too_few", 13, 26, {"mesh.circumferential_nodes: 7 is out of range; must be >= 8"}},
+    {"residual_tolerance_zero", 13, 23, {"solver.residual_tolerance: '0' is out of range; must be > 0"}},
+    {"step_tolerance_negative", 12, 26, {"solver.step_tolerance: '-1e-14' is out of range; must be > 0"}},
+    {"load_zero", 8, 9, {"operating.load: '0 N' is out of range; must be > 0 N", "a bearing without load has no steady state"}},
+    {"speed_negative", 9, 10, {"operating.speed: '-545 rad/s' is out of range; must be >= 0 rad/s"}},
+    {"tilt_too_large", 6, 84, {"geometry.gear.tilt: '100 mrad' (= 0.1 rad) is out of range; must be in [0, 0.1) rad"}},
+    {"tilt_negative", 6, 84, {"geometry.gear.tilt: '-0.002' is out of range; must be in [0, 0.1) rad"}},
+    {"ambient_below_roelands_limit", 11, 12, {"operating.ambient: '-140 degC'", "(= 133.15 K) is out of range; must be > 138.15 K", "Roelands"}},
+    {"sweep_end_not_above_start", 15, 13, {"study.load_end: '100 N' must be greater than load_start '2000 N'"}},
+    {"sweep_steps_too_few", 12, 76, {"study.load_steps: 1 is out of range; must be >= 2"}},
+    {"distress_map_without_speeds", 14, 11, {"study.speeds: the list is empty", "give at least one speed"}},
+    {"distress_map_speed_wrong_dimension", 12, 49, {"study.speeds[1]: '545 mm' has the dimension of length, expected an angular speed"}},
+    {"empty_effects_list", 2, 10, {"effects: the list is empty", "allowed: hydrodynamics, flow_factors, asperity_contact, thermal"}},
+    {"missing_required_key", 5, 11, {"missing required key 'outer_diameter' in 'geometry.washer'", "allowed: inner_diameter, outer_diameter, thickness"}},
+    {"missing_required_key_block", 8, 3, {"missing required key 'speed' in 'operating'", "an angular speed", "allowed: load, speed, sliding, ambient"}},
+    {"missing_required_section", 2, 1, {"missing required key 'operating' at the top level", "allowed: effects, geometry"}},
+    {"missing_gear", 4, 3, {"missing required key 'gear' in 'geometry'", "allowed: carrier, washer, gear"}},
+    {"empty_required_value", 8, 3, {"operating.load: expected a force", "got no value"}},
+    {"map_where_scalar_expected", 8, 9, {"operating.load: expected a force", "got a map"}},
+    {"list_where_map_expected", 5, 11, {"'geometry.washer' must be a map (allowed keys: inner_diameter, outer_diameter, thickness); got a list"}},
+    {"scalar_where_list_expected", 2, 10, {"effects: expected a list of effects (hydrodynamics, flow_factors, asperity_contact, thermal); got the value 'hydrodynamics'"}},
+    {"scalar_where_map_expected", 12, 7, {"'mesh' must be a map (allowed keys: radial_nodes, circumferential_nodes, contact_quadrature); got the value '17'"}},
+    {"not_a_whole_number", 12, 22, {"mesh.radial_nodes: '9.5' is not a whole number", "expected a whole number >= 3"}},
+    {"not_a_boolean", 12, 18, {"output.fields: 'yes' is not a boolean; allowed: true, false"}},
+    {"empty_output_directory", 13, 14, {"output.directory: must not be empty"}},
+    {"duplicate_key", 10, 3, {"duplicate key 'load' in 'operating' (first given on line 8)", "each key may appear once"}},
+    {"duplicate_section", 13, 1, {"duplicate key 'mesh' at the top level", "each key may appear once"}},
+    {"duplicate_key_in_flow_map", 4, 31, {"duplicate key 'thickness' in 'geometry.carrier'"}},
+    {"flow_factors_without_hydrodynamics", 2, 11, {"effects[0]: effect 'flow_factors' needs 'hydrodynamics'"}},
+    {"thermal_without_heat_source", 3, 5, {"effects[0]: effect 'thermal' needs 'hydrodynamics' or 'asperity_contact'", "nothing generates heat"}},
+    {"unknown_effect", 2, 11, {"effects[0]: unknown effect 'hydrodinamics'", "did you mean 'hydrodynamics'?", "Allowed: hydrodynamics, flow_factors, asperity_contact, thermal"}},
+    {"duplicate_effect", 2, 44, {"effects[2]: effect 'hydrodynamics' is listed twice"}},
+    {"unknown_sliding_film", 10, 12, {"operating.sliding: unknown value 'carrier-washer'", "did you mean 'carrier_washer'? Allowed: carrier_washer, washer_gear"}},
+    {"unknown_friction_law", 12, 17, {"friction.law: unknown value 'emprical'", "did you mean 'empirical'? Allowed: empirical, constant"}},
+    {"unknown_study_type", 13, 9, {"study.type: unknown value 'parameter_scan'", "allowed: point, load_sweep, distress_map, transient"}},
+    {"unknown_viscosity_model", 14, 12, {"lubricant.viscosity.model: unknown value 'roeland'", "did you mean 'roelands'? Allowed: roelands, constant"}},
+    {"unknown_cavitation_model", 3, 33, {"unknown value 'jfo'", "allowed: reynolds"}},
+    {"unknown_viscosity_temperature", 5, 38, {"unknown value 'film'", "allowed: surface_mean, film_node"}},
+    {"yaml_unclosed_flow_sequence", 3, 0, {"YAML syntax error"}},
+    {"yaml_bad_indentation", 9, 0, {"YAML syntax error"}},
+    {"yaml_tab_indentation", 9, 0, {"YAML syntax error", "tab"}},
+    {"scene_not_a_map", 2, 1, {"the scene must be a map (allowed keys: effects, geometry", "got a list"}},
+  };
+  return cases;
+}
+
+}  // namespace twb::testing

@@ -1,0 +1,204 @@
+// Defaults, describe_scene's round trip, and the file-level errors of load_scene.
+#include <cmath>
+#include <ostream>
+
+#include <gtest/gtest.h>
+
+#include "scene_test_support.h"
+#include "twb/scene/scene_loader.h"
+
+namespace twb {
+namespace {
+
+using testing::kMinimalScene;
+using testing::load_error;
+using testing::source_path;
+using testing::TempScene;
+
+void expect_same_material(const Material& a, const Material& b) {
+  EXPECT_EQ(a.youngs_modulus, b.youngs_modulus);
+  EXPECT_EQ(a.poisson_ratio, b.poisson_ratio);
+  EXPECT_EQ(a.yield_strength, b.yield_strength);
+  EXPECT_EQ(a.conductivity, b.conductivity);
+  EXPECT_EQ(a.density, b.density);
+  EXPECT_EQ(a.specific_heat, b.specific_heat);
+}
+
+void expect_same_component(const Component& a, const Component& b) {
+  EXPECT_EQ(a.inner_radius, b.inner_radius);
+  EXPECT_EQ(a.outer_radius, b.outer_radius);
+  EXPECT_EQ(a.thickness, b.thickness);
+  EXPECT_EQ(a.tilt, b.tilt);
+  expect_same_material(a.material, b.material);
+  EXPECT_EQ(a.roughness.ra, b.roughness.ra);
+  EXPECT_EQ(a.roughness.rq, b.roughness.rq);
+}
+
+// Every field but `source`. eta_R_sigma is recomputed from the written summit density,
+// which may move it by an ulp or two.
+void expect_same_scene(const Scene& a, const Scene& b) {
+  EXPECT_EQ(a.effects.hydrodynamics, b.effects.hydrodynamics);
+  EXPECT_EQ(a.effects.cavitation, b.effects.cavitation);
+  EXPECT_EQ(a.effects.flow_factors, b.effects.flow_factors);
+  EXPECT_EQ(a.effects.asperity_contact, b.effects.asperity_contact);
+  EXPECT_EQ(a.effects.thermal, b.effects.thermal);
+  EXPECT_EQ(a.effects.viscosity_temperature, b.effects.viscosity_temperature);
+  expect_same_component(a.carrier, b.carrier);
+  expect_same_component(a.washer, b.washer);
+  expect_same_component(a.gear, b.gear);
+  EXPECT_EQ(a.asperities.summit_radius, b.asperities.summit_radius);
+  EXPECT_EQ(a.asperities.summit_sigma, b.asperities.summit_sigma);
+  EXPECT_EQ(a.asperities.summit_density, b.asperities.summit_density);
+  EXPECT_NEAR(a.asperities.eta_r_sigma, b.asperities.eta_r_sigma, 1e-14 * a.asperities.eta_r_sigma);
+  EXPECT_EQ(a.lubricant.conductivity, b.lubricant.conductivity);
+  EXPECT_EQ(a.lubricant.viscosity_model, b.lubricant.viscosity_model);
+  EXPECT_EQ(a.lubricant.mu_infinity, b.lubricant.mu_infinity);
+  EXPECT_EQ(a.lubricant.g0, b.lubricant.g0);
+  EXPECT_EQ(a.lubricant.s0, b.lubricant.s0);
+  EXPECT_EQ(a.lubricant.constant_viscosity, b.lubricant.constant_viscosity);
+  EXPECT_EQ(a.operating.load, b.operating.load);
+  EXPECT_EQ(a.operating.speed, b.operating.speed);
+  EXPECT_EQ(a.operating.sliding, b.operating.sliding);
+  EXPECT_EQ(a.operating.ambient, b.operating.ambient);
+  EXPECT_EQ(a.friction.law, b.friction.law);
+  EXPECT_EQ(a.friction.coefficient, b.friction.coefficient);
+  EXPECT_EQ(a.mesh.radial_nodes, b.mesh.radial_nodes);
+  EXPECT_EQ(a.mesh.circumferential_nodes, b.mesh.circumferential_nodes);
+  EXPECT_EQ(a.mesh.contact_quadrature, b.mesh.contact_quadrature);
+  EXPECT_EQ(a.solver.residual_tolerance, b.solver.residual_tolerance);
+  EXPECT_EQ(a.solver.step_tolerance, b.solver.step_tolerance);
+  EXPECT_EQ(a.solver.max_iterations, b.solver.max_iterations);
+  EXPECT_EQ(a.solver.cold_start_film, b.solver.cold_start_film);
+  EXPECT_EQ(a.study.type, b.study.type);
+  EXPECT_EQ(a.study.load_start, b.study.load_start);
+  EXPECT_EQ(a.study.load_end, b.study.load_end);
+  EXPECT_EQ(a.study.load_steps, b.study.load_steps);
+  EXPECT_EQ(a.study.speeds, b.study.speeds);
+  EXPECT_EQ(a.output.directory, b.output.directory);
+  EXPECT_EQ(a.output.fields, b.output.fields);
+}
+
+TEST(SceneDefaults, OmittedKeysTakeTheDefaultsOfSceneH) {
+  const TempScene file(kMinimalScene);
+  const Scene scene = load_scene(file.path());
+  const Scene defaults;
+  expect_same_material(scene.washer.material, defaults.washer.material);
+  EXPECT_EQ(scene.gear.roughness.rq, defaults.gear.roughness.rq);
+  EXPECT_EQ(scene.gear.tilt, 0.0);
+  EXPECT_EQ(scene.lubricant.viscosity_model, ViscosityModel::roelands);
+  EXPECT_EQ(scene.lubricant.mu_infinity, defaults.lubricant.mu_infinity);
+  EXPECT_EQ(scene.operating.sliding, SlidingFilm::carrier_washer);
+  EXPECT_EQ(scene.operating.ambient, 297.15);
+  EXPECT_EQ(scene.friction.law, FrictionLaw::empirical);
+  EXPECT_EQ(scene.mesh.radial_nodes, 9);
+  EXPECT_EQ(scene.solver.max_iterations, 200);
+  EXPECT_EQ(scene.study.type, StudyType::point);
+  EXPECT_EQ(scene.output.directory, "results");
+  EXPECT_FALSE(scene.effects.flow_factors);
+  EXPECT_FALSE(scene.effects.thermal);
+  EXPECT_EQ(scene.asperities.summit_sigma, std::hypot(0.515e-6, 0.515e-6));
+}
+
+TEST(SceneDefaults, SummitDensityGivenDirectlySetsEtaRSigma) {
+  const TempScene file(std::string(kMinimalScene) +
+                       "surfaces: {asperities: {summit_radius: 10 um, summit_sigma: 0.5 um, "
+                       "summit_density: 1e10 1/m^2}}\n");
+  const Scene scene = load_scene(file.path());
+  EXPECT_EQ(scene.asperities.summit_density, 1e10);
+  EXPECT_NEAR(scene.asperities.eta_r_sigma, 1e10 * 10e-6 * 0.5e-6, 1e-15);
+}
+
+struct RoundTripCase {
+  std::string name;
+  std::string text;
+};
+void PrintTo(const RoundTripCase& c, std::ostream* os) { *os << c.name; }
+
+class DescribeRoundTrip : public ::testing::TestWithParam<RoundTripCase> {};
+
+TEST_P(DescribeRoundTrip, DescribedSceneLoadsBackIdentically) {
+  const TempScene original(GetParam().text);
+  const Scene first = load_scene(original.path());
+  const std::string text = describe_scene(first);
+  const TempScene described(text, "_described");
+  const Scene second = load_scene(described.path());
+  SCOPED_TRACE(text);
+  expect_same_scene(first, second);
+  // Apart from the header comments, describing is idempotent.
+  const auto body = [](const std::string& described) { return described.substr(described.find("\neffects:")); };
+  EXPECT_EQ(body(describe_scene(second)), body(text));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, DescribeRoundTrip,
+    ::testing::Values(
+        RoundTripCase{"minimal", kMinimalScene},
+        RoundTripCase{"constant_viscosity_and_friction_load_sweep",
+                      std::string(kMinimalScene) +
+                          "lubricant: {viscosity: {model: constant, value: 30 mPa s}}\n"
+                          "friction: {law: constant, coefficient: 0.15}\n"
+                          "study: {type: load_sweep, load_start: 100 N, load_end: 2 kN, load_steps: 20}\n"
+                          "output: {directory: 'out dir/with \"quotes\" # and hash', fields: true}\n"},
+        RoundTripCase{"distress_map_custom_surfaces_film_2",
+                      std::string(testing::kSceneBodies) +
+                          "study: {type: distress_map, speeds: [136 rad/s, 5200 rpm]}\n"
+                          "surfaces: {asperities: {summit_density: 3e11 1/m^2}, gear: {Rq: 0.3 um}}\n"
+                          "materials: {washer: {youngs_modulus: 110 GPa, poisson_ratio: 0.34}}\n"
+                          "operating: {load: 800 N, speed: 953 rad/s, sliding: washer_gear, ambient: 80 degC}\n"}),
+    [](const auto& info) { return info.param.name; });
+
+TEST(DescribeScene, PaperSceneRoundTripsAndNamesItsSource) {
+  const std::string path = source_path("configs/jackson_green_2006.yaml");
+  const Scene first = load_scene(path);
+  const std::string text = describe_scene(first);
+  EXPECT_NE(text.find(path), std::string::npos);
+  EXPECT_NE(text.find("load: 500 N"), std::string::npos);
+  EXPECT_NE(text.find("ambient: 297.15 K"), std::string::npos);
+  const TempScene described(text, "_described");
+  expect_same_scene(first, load_scene(described.path()));
+}
+
+TEST(SceneFile, MissingFileIsNamed) {
+  const InputError error = load_error("/no/such/dir/scene.yaml");
+  EXPECT_EQ(error.file(), "/no/such/dir/scene.yaml");
+  EXPECT_EQ(error.line(), 0);
+  EXPECT_NE(std::string(error.what()).find("cannot open the scene file '/no/such/dir/scene.yaml'"),
+            std::string::npos)
+      << error.what();
+}
+
+TEST(SceneFile, DirectoryIsNotAScene) {
+  const InputError error = load_error(source_path("configs"));
+  EXPECT_NE(std::string(error.what()).find("is a directory"), std::string::npos) << error.what();
+}
+
+TEST(SceneFile, EmptyFileNeedsTheRequiredKeys) {
+  const TempScene file("# nothing here\n");
+  const InputError error = load_error(file.path());
+  EXPECT_EQ(error.line(), 1);
+  EXPECT_NE(std::string(error.what()).find("missing required key 'effects' at the top level"),
+            std::string::npos)
+      << error.what();
+}
+
+TEST(SceneFile, ASecondYamlDocumentIsRejected) {
+  const TempScene file(std::string(kMinimalScene) + "---\nmesh: {radial_nodes: 17}\n");
+  const InputError error = load_error(file.path());
+  EXPECT_EQ(error.line(), 8);
+  EXPECT_NE(std::string(error.what()).find("2 YAML documents"), std::string::npos) << error.what();
+}
+
+TEST(InputErrorFormat, QuotesTheLineWithACaretUnderTheColumn) {
+  const InputError error("configs/bad.yaml", 12, 11, "unknown key 'thicknes'", "  washer: {thicknes: 0.635 mm}");
+  EXPECT_STREQ(error.what(),
+               "configs/bad.yaml:12:11: error: unknown key 'thicknes'\n"
+               "   12 |   washer: {thicknes: 0.635 mm}\n"
+               "      |           ^");
+  EXPECT_EQ(error.file(), "configs/bad.yaml");
+  EXPECT_EQ(error.line(), 12);
+  EXPECT_EQ(error.column(), 11);
+  EXPECT_EQ(error.message(), "unknown key 'thicknes'");
+}
+
+}  // namespace
+}  // namespace twb
