@@ -106,7 +106,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   p_ref_ = scene_.operating.load / sf.mesh.area();
   h_ref_ = scene_.solver.cold_start_film * sf.sigma;
   mu_ref_ = viscosity(scene_.operating.ambient).value;
-  smooth_rule_ = GaussRule::legendre(3);
+  smooth_rule_ = GaussRule::legendre(4);
   contact_rule_ = GaussRule::legendre(scene_.mesh.contact_quadrature);
 
   if (sf.pressure_offset >= 0) {

@@ -52,7 +52,6 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
   const bool heat = film.sliding && scene_.effects.thermal;
   const bool contact = contact_.has_value();
   const double omega = film.sliding ? scene_.operating.speed : 0.0;
-  const bool flow_factor_gap = scene_.effects.flow_factors;
   const double cutoff = contact ? contact_->contact_pressure_cutoff_gap() : 0.0;
 
   // Rows of the rigid-body balance this film loads (eqs [34]-[37]): the washer sees
@@ -98,7 +97,6 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       const double r0 = m.radius(i), r1 = m.radius(i + 1);
       const double t0 = m.angle(j), t1 = t0 + m.dtheta();
       const bool near_contact = contact && (structural || cell_minimum(c, pa, pb, r0, r1, t0, t1) < cutoff);
-      const GaussRule& rule = near_contact ? contact_rule_ : smooth_rule_;
 
       // Local accumulators: value, d/d(rigid 3), d/d(corner pressure 4), d/d(corner T 4).
       std::array<double, 3> load_val{};  // F, Mx, My
@@ -108,36 +106,59 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       std::array<std::array<double, 3>, 4> vheat_rigid{};
       std::array<std::array<double, 4>, 4> vheat_t{};
 
-      for (std::size_t gs = 0; gs < rule.points.size(); ++gs) {
-        for (std::size_t gt = 0; gt < rule.points.size(); ++gt) {
-          const double s = rule.points[gs], tt = rule.points[gt];
+      // Contact: the high-order rule where contact can exist (elsewhere p_c < 1e-30 p(0),
+      // so skipping is invisible to Newton).
+      if (near_contact) {
+        for (std::size_t gs = 0; gs < contact_rule_.points.size(); ++gs) {
+          for (std::size_t gt = 0; gt < contact_rule_.points.size(); ++gt) {
+            const double s = contact_rule_.points[gs], tt = contact_rule_.points[gt];
+            const double r = r0 + s * m.dr(), th = t0 + tt * m.dtheta();
+            const double x = r * std::cos(th), y = r * std::sin(th);
+            const double w = contact_rule_.weights[gs] * contact_rule_.weights[gt] * r * m.dr() * m.dtheta();
+            const double h = c + pa * x + pb * y;
+            const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
+            const ValueSlope v = contact_->pressure(h);
+            const std::array<double, 3> arm{1.0, y, -x};  // F, Mx = Σ F y, My = −Σ F x
+            for (int qd = 0; qd < 3; ++qd) {
+              load_val[qd] += w * v.value * arm[qd];
+              for (int d = 0; d < 3; ++d) load_rigid[qd][d] += w * v.slope * dh[d] * arm[qd];
+            }
+            tot.contact_force += w * v.value;
+            for (int d = 0; d < 3; ++d) tot.contact_force_rigid[d] += w * v.slope * dh[d];
+            if (!film.sliding) continue;
+            const double v_slide = omega * r;
+            tot.contact_torque_per_f += w * v.value * r;
+            const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
+            for (int k = 0; k < 4; ++k) {
+              tot.contact_power[node[k]] += w * N[k] * v.value * v_slide;
+              for (int d = 0; d < 3; ++d) tot.contact_power_rigid[node[k]][d] += w * N[k] * v.slope * v_slide * dh[d];
+            }
+          }
+        }
+      }
+
+      // Fluid pressure (bilinear between nodes) and viscous shear: one fixed rule on
+      // every cell, so the residual stays smooth as contact comes and goes.
+      for (std::size_t gs = 0; (hydro || film.sliding) && gs < smooth_rule_.points.size(); ++gs) {
+        for (std::size_t gt = 0; gt < smooth_rule_.points.size(); ++gt) {
+          const double s = smooth_rule_.points[gs], tt = smooth_rule_.points[gt];
           const double r = r0 + s * m.dr(), th = t0 + tt * m.dtheta();
           const double x = r * std::cos(th), y = r * std::sin(th);
-          const double w = rule.weights[gs] * rule.weights[gt] * r * m.dr() * m.dtheta();
+          const double w = smooth_rule_.weights[gs] * smooth_rule_.weights[gt] * r * m.dr() * m.dtheta();
           const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
+          if (hydro) {
+            double p = 0;
+            for (int k = 0; k < 4; ++k) p += N[k] * p_node[k];
+            const std::array<double, 3> arm{1.0, y, -x};
+            for (int qd = 0; qd < 3; ++qd) {
+              load_val[qd] += w * p * arm[qd];
+              for (int k = 0; k < 4; ++k) load_p[qd][k] += w * N[k] * p_ref_ * arm[qd];
+            }
+            tot.fluid_force += w * p;
+          }
+          if (!film.sliding) continue;
           const double h = c + pa * x + pb * y;
           const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
-
-          double pc = 0, dpc = 0;
-          if (near_contact) {
-            const ValueSlope v = contact_->pressure(h);
-            pc = v.value;
-            dpc = v.slope;
-          }
-          double p = 0;
-          for (int k = 0; k < 4; ++k) p += N[k] * p_node[k];
-          const double total = p + pc;
-          const std::array<double, 3> arm{1.0, y, -x};  // F, Mx = Σ F y, My = −Σ F x
-          for (int qd = 0; qd < 3; ++qd) {
-            load_val[qd] += w * total * arm[qd];
-            for (int d = 0; d < 3; ++d) load_rigid[qd][d] += w * dpc * dh[d] * arm[qd];
-            for (int k = 0; k < 4; ++k) load_p[qd][k] += w * N[k] * p_ref_ * arm[qd];
-          }
-          tot.fluid_force += w * p;
-          tot.contact_force += w * pc;
-          for (int d = 0; d < 3; ++d) tot.contact_force_rigid[d] += w * dpc * dh[d];
-
-          if (!film.sliding) continue;
           const double v_slide = omega * r;
           double tv = 0;
           for (int k = 0; k < 4; ++k) tv += N[k] * t_node[k];
@@ -146,7 +167,6 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           const ValueSlope gap = average_gap(h, film.sigma);
           const double tau = mu.value * v_slide / gap.value;
           tot.viscous_torque += w * tau * r;
-          tot.contact_torque_per_f += w * pc * r;
           const double qv = tau * v_slide;  // μ V² / h̄T
           tot.viscous_heat += w * qv;
           const double dqv_dh = -qv / gap.value * gap.slope;
@@ -156,12 +176,9 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
             vheat[k] += wn * qv;
             for (int d = 0; d < 3; ++d) vheat_rigid[k][d] += wn * dqv_dh * dh[d];
             for (int l = 0; l < 4; ++l) vheat_t[k][l] += wn * dqv_dt * N[l];
-            tot.contact_power[node[k]] += wn * pc * v_slide;
-            for (int d = 0; d < 3; ++d) tot.contact_power_rigid[node[k]][d] += wn * dpc * v_slide * dh[d];
           }
         }
       }
-      (void)flow_factor_gap;
 
       // Scatter the cell's loads into the rigid-body rows.
       tot.moment_x += load_val[1];

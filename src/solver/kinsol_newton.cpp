@@ -22,7 +22,8 @@ double max_norm(std::span<const double> v) {
 struct KinsolNewton::Callbacks {
   const BearingModel* model;
   std::vector<double> jac_values;
-  std::string last_error;
+  std::string last_error;      // KINSOL's own message
+  std::string callback_error;  // what a callback threw
 };
 
 namespace {
@@ -37,11 +38,15 @@ int residual_fn(N_Vector y, N_Vector f, void* data) {
     std::span<const double> u(N_VGetArrayPointer(y), n);
     std::span<double> r(N_VGetArrayPointer(f), n);
     cb->model->evaluate(u, r, {});
-    for (double x : r)
-      if (!std::isfinite(x)) return 1;
+    for (std::size_t k = 0; k < n; ++k)
+      if (!std::isfinite(r[k])) {
+        if (getenv("TWB_DEBUG")) fprintf(stderr, "non-finite residual in %s (row %zu) u=%g\n", cb->model->layout().block_of(k).name.c_str(), k, u[k]);
+        if (getenv("TWB_DEBUG")) { auto q = cb->model->position(u); fprintf(stderr, " c1 %g gx %g gy %g c2 %g\n", q.c1, q.gamma_x, q.gamma_y, q.c2);}
+        return 1;
+      }
     return 0;
   } catch (const std::exception& e) {
-    cb->last_error = e.what();
+    cb->callback_error = e.what();
     return -1;
   }
 }
@@ -66,7 +71,7 @@ int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vecto
       if (!std::isfinite(v)) return 1;
     return 0;
   } catch (const std::exception& e) {
-    cb->last_error = e.what();
+    cb->callback_error = e.what();
     return -1;
   }
 }
@@ -87,10 +92,23 @@ KinsolNewton::KinsolNewton(const BearingModel& model)
   const sunindextype n = model_.size();
   y_.reset(N_VNew_Serial(n, ctx_.get()));
   scale_.reset(N_VNew_Serial(n, ctx_.get()));
-  N_VConst(1.0, scale_.get());
+  // KINSOL measures a Newton step as ‖D·δu‖₂ and caps it at max_step. Weighting the
+  // rigid body fully and the field unknowns lightly makes that cap a limit on how far
+  // one step may move the washer and gear (in σ), where the exponential contact law
+  // punishes overshoot; temperatures (K) and pressures (p_ref) may move freely.
+  double* d = N_VGetArrayPointer(scale_.get());
+  for (sunindextype k = 0; k < n; ++k) d[k] = 1e-3;
+  for (const auto& b : model_.layout().blocks())
+    if (b.effect == "mechanics")
+      for (Index k = b.offset; k < b.offset + b.size; ++k) d[k] = 1.0;
+  residual_scale_.reset(N_VNew_Serial(n, ctx_.get()));
+  N_VConst(1.0, residual_scale_.get());
   jac_.reset(SUNSparseMatrix(n, n, model_.pattern().nnz(), CSR_MAT, ctx_.get()));
   klu_.reset(SUNLinSol_KLU(y_.get(), jac_.get(), ctx_.get()));
   if (!y_ || !scale_ || !jac_ || !klu_) throw SolverFailure("could not allocate the Newton solver", -1);
+  // SUNDIALS defaults KLU to COLAMD, which fills the factors of this arrow-shaped matrix
+  // (dense rigid-body border) about six-fold; AMD on A + Aᵀ orders the border last.
+  check(SUNLinSol_KLUSetOrdering(klu_.get(), 0), "SUNLinSol_KLUSetOrdering");
   kin_ = KINCreate(ctx_.get());
   if (!kin_) throw SolverFailure("KINCreate failed", -1);
   check(KINInit(kin_, residual_fn, y_.get()), "KINInit");
@@ -114,8 +132,9 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   check(KINSetNumMaxIters(kin_, s.max_iterations), "KINSetNumMaxIters");
   if (s.max_step > 0) check(KINSetMaxNewtonStep(kin_, s.max_step), "KINSetMaxNewtonStep");
   callbacks_->last_error.clear();
+  callbacks_->callback_error.clear();
 
-  const int flag = KINSol(kin_, y_.get(), KIN_LINESEARCH, scale_.get(), scale_.get());
+  const int flag = KINSol(kin_, y_.get(), KIN_LINESEARCH, scale_.get(), residual_scale_.get());
   rep.flag = flag;
   KINGetNumNonlinSolvIters(kin_, &rep.iterations);
   KINGetNumFuncEvals(kin_, &rep.residual_evaluations);
@@ -137,7 +156,8 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   } else {
     char* name = KINGetReturnFlagName(flag);
     rep.message = std::string(name ? name : "KINSOL failure") +
-                  (callbacks_->last_error.empty() ? "" : ": " + callbacks_->last_error);
+                  (callbacks_->last_error.empty() ? "" : ": " + callbacks_->last_error) +
+                  (callbacks_->callback_error.empty() ? "" : " (" + callbacks_->callback_error + ")");
     free(name);
   }
   return rep;

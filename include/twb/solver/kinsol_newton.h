@@ -17,7 +17,7 @@ struct NewtonSettings {
   double residual_tolerance = 1e-10;  // max-norm of the scaled residual
   double step_tolerance = 1e-14;
   int max_iterations = 200;
-  double max_step = 0.0;  // scaled L2 norm; 0 keeps KINSOL's default
+  double max_step = 2.0;  // largest rigid-body move per Newton step, in units of σ (and γ_ref)
 };
 
 struct NewtonReport {
@@ -48,7 +48,7 @@ class KinsolNewton {
  private:
   const BearingModel& model_;
   SundialsContext ctx_;
-  Vector y_, scale_;
+  Vector y_, scale_, residual_scale_;
   Matrix jac_;
   LinearSolver klu_;
   void* kin_ = nullptr;
