@@ -24,6 +24,8 @@ struct KinsolNewton::Callbacks {
   std::vector<double> jac_values;
   std::string last_error;      // KINSOL's own message
   std::string callback_error;  // what a callback threw
+  const PseudoTimeShift* shift = nullptr;
+  std::vector<Index> diagonal;  // position of (k, k) in the pattern
 };
 
 namespace {
@@ -38,6 +40,8 @@ int residual_fn(N_Vector y, N_Vector f, void* data) {
     std::span<const double> u(N_VGetArrayPointer(y), n);
     std::span<double> r(N_VGetArrayPointer(f), n);
     cb->model->evaluate(u, r, {});
+    if (cb->shift)
+      for (std::size_t k = 0; k < n; ++k) r[k] += cb->shift->inverse_step * (u[k] - cb->shift->anchor[k]);
     for (std::size_t k = 0; k < n; ++k)
       if (!std::isfinite(r[k])) {
         if (getenv("TWB_DEBUG")) fprintf(stderr, "non-finite residual in %s (row %zu) u=%g\n", cb->model->layout().block_of(k).name.c_str(), k, u[k]);
@@ -60,6 +64,8 @@ int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vecto
     std::vector<double> r(n);
     cb->jac_values.resize(std::size_t(p.nnz()));
     m.evaluate(std::span<const double>(N_VGetArrayPointer(y), n), r, cb->jac_values);
+    if (cb->shift)
+      for (Index k : cb->diagonal) cb->jac_values[std::size_t(k)] += cb->shift->inverse_step;
     // SUNDIALS zeroes the whole matrix, index arrays included, before each call.
     sunindextype* rowptr = SUNSparseMatrix_IndexPointers(J);
     sunindextype* cols = SUNSparseMatrix_IndexValues(J);
@@ -89,6 +95,7 @@ void check(int flag, const char* call) {
 KinsolNewton::KinsolNewton(const BearingModel& model)
     : model_(model), ctx_(make_context()), callbacks_(std::make_unique<Callbacks>()) {
   callbacks_->model = &model_;
+  for (Index k = 0; k < model_.size(); ++k) callbacks_->diagonal.push_back(model_.pattern().find(k, k));
   const sunindextype n = model_.size();
   y_.reset(N_VNew_Serial(n, ctx_.get()));
   scale_.reset(N_VNew_Serial(n, ctx_.get()));
@@ -123,7 +130,7 @@ KinsolNewton::KinsolNewton(const BearingModel& model)
 
 KinsolNewton::~KinsolNewton() { KINFree(&kin_); }
 
-NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s) {
+NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s, const PseudoTimeShift* shift) {
   NewtonReport rep;
   const std::size_t n = u.size();
   std::copy(u.begin(), u.end(), N_VGetArrayPointer(y_.get()));
@@ -133,6 +140,7 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   if (s.max_step > 0) check(KINSetMaxNewtonStep(kin_, s.max_step), "KINSetMaxNewtonStep");
   callbacks_->last_error.clear();
   callbacks_->callback_error.clear();
+  callbacks_->shift = shift;
 
   const int flag = KINSol(kin_, y_.get(), KIN_LINESEARCH, scale_.get(), residual_scale_.get());
   rep.flag = flag;
@@ -145,6 +153,8 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   std::vector<double> r(n);
   try {
     model_.evaluate(trial, r, {});
+    if (shift)
+      for (std::size_t k = 0; k < n; ++k) r[k] += shift->inverse_step * (trial[k] - shift->anchor[k]);
     rep.residual_norm = max_norm(r);
   } catch (const std::exception&) {
     rep.residual_norm = INFINITY;

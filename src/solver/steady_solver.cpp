@@ -1,6 +1,7 @@
 #include "twb/solver/steady_solver.h"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 
 namespace twb {
@@ -23,16 +24,70 @@ void SteadySolver::account(SteadyReport& rep, const NewtonReport& n) const {
   if (!n.converged) rep.message = n.message;
 }
 
-SteadyReport SteadySolver::solve(std::vector<double>& u) {
-  const auto t0 = std::chrono::steady_clock::now();
-  SteadyReport rep;
-  rep.strategy = "newton";
+double SteadySolver::residual_norm(const std::vector<double>& u) const {
+  std::vector<double> r(u.size());
+  model_.evaluate(u, r, {});
+  return max_norm(r);
+}
+
+bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep) {
   std::vector<double> trial = u;
   const NewtonReport n = newton_.solve(trial, settings_);
   account(rep, n);
   if (n.converged) {
     u = trial;
+    return true;
+  }
+  // Pseudo-transient continuation with switched evolution relaxation: Δτ grows as the
+  // residual falls (Mulder & van Leer), shrinks when a pseudo-step fails.
+  rep.strategy = "pseudo-transient";
+  NewtonSettings inner = settings_;
+  inner.max_iterations = 25;
+  std::vector<double> state = u;
+  double norm = residual_norm(state);
+  if (!std::isfinite(norm)) return false;
+  double dtau = 1e-2;
+  for (int step = 0; step < 400; ++step) {
+    PseudoTimeShift shift{1.0 / dtau, state};
+    trial = state;
+    const NewtonReport ns = newton_.solve(trial, inner, &shift);
+    account(rep, ns);
+    if (!ns.converged) {
+      dtau *= 0.25;
+      if (dtau < 1e-10) break;
+      continue;
+    }
+    const double next = residual_norm(trial);
+    state = trial;
+    if (next <= settings_.residual_tolerance) {
+      u = state;
+      return true;
+    }
+    dtau *= std::clamp(norm / next, 0.5, 10.0);
+    norm = next;
+    if (dtau > 1e3) {
+      trial = state;
+      const NewtonReport nf = newton_.solve(trial, settings_);
+      account(rep, nf);
+      if (nf.converged) {
+        u = trial;
+        return true;
+      }
+    }
+  }
+  rep.message = "pseudo-transient continuation did not reach a steady state: " + rep.message;
+  return false;
+}
+
+SteadyReport SteadySolver::solve(std::vector<double>& u) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SteadyReport rep;
+  rep.strategy = "newton";
+  std::vector<double> trial = u;
+  if (reach(trial, rep)) {
+    u = trial;
     rep.converged = true;
+    rep.message.clear();
   } else {
     rep = ramp(u, rep);
   }
@@ -54,9 +109,7 @@ SteadyReport SteadySolver::ramp(std::vector<double>& u, SteadyReport rep) {
   for (double fraction = 0.5; fraction >= 1.0 / 64.0; fraction *= 0.5) {
     model_.set_load(target * fraction);
     state = model_.cold_start();
-    const NewtonReport n = newton_.solve(state, settings_);
-    account(rep, n);
-    if (n.converged) {
+    if (reach(state, rep)) {
       reached = target * fraction;
       break;
     }
@@ -72,9 +125,7 @@ SteadyReport SteadySolver::ramp(std::vector<double>& u, SteadyReport rep) {
     const double next = std::min(target, reached + step);
     model_.set_load(next);
     std::vector<double> trial = state;
-    const NewtonReport n = newton_.solve(trial, settings_);
-    account(rep, n);
-    if (n.converged) {
+    if (reach(trial, rep)) {
       state = trial;
       reached = next;
       step *= 1.5;

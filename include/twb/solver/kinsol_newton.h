@@ -31,6 +31,15 @@ struct NewtonReport {
   std::string message;
 };
 
+// A pseudo-time shift: solve F(u) + (u − anchor)/Δτ = 0 instead of F(u) = 0, i.e. one
+// implicit Euler step of u' = −F(u) in the scaled unknowns (pseudo-transient
+// continuation). Large Δτ recovers Newton; small Δτ makes the system diagonally
+// dominant and Newton's basin large.
+struct PseudoTimeShift {
+  double inverse_step = 0.0;  // 1/Δτ
+  std::vector<double> anchor;
+};
+
 class KinsolNewton {
  public:
   explicit KinsolNewton(const BearingModel& model);
@@ -39,7 +48,8 @@ class KinsolNewton {
   KinsolNewton& operator=(const KinsolNewton&) = delete;
 
   // Solves in place from u. Never throws on non-convergence: the report says so.
-  NewtonReport solve(std::vector<double>& u, const NewtonSettings& settings);
+  NewtonReport solve(std::vector<double>& u, const NewtonSettings& settings,
+                     const PseudoTimeShift* shift = nullptr);
 
   const BearingModel& model() const { return model_; }
   // Callback state, public for the C trampolines.
