@@ -267,6 +267,23 @@ void BearingModel::assemble(std::span<const double> u, Assembler& a, Totals* tot
   }
   assemble_rigid_balance(a, t);
   if (scene_.effects.thermal) assemble_heat(u, a, t);
+  orient_rows(a);
+}
+
+// Rows are assembled as "what pushes − what resists" (forces F1 − F2, heat gained −
+// heat lost), whose derivatives in their own unknown are negative: a thicker film
+// carries less, a hotter node loses more. Negating them makes every diagonal positive,
+// so that u' = −F(u) is the stable physical relaxation (pseudo-transient continuation
+// relies on it, and it is the sign of ρ c t dT/dt = gains − losses).
+void BearingModel::orient_rows(Assembler& a) const {
+  if (a.mode() != Assembler::Mode::values) return;
+  for (const UnknownBlock& b : layout_.blocks()) {
+    if (b.effect == "hydrodynamics") continue;  // complementarity rows already rise with p̂
+    for (Index k = b.offset; k < b.offset + b.size; ++k) {
+      a.set_residual(k, -a.residual_value(k));
+      a.scale_row(k, -1.0);
+    }
+  }
 }
 
 void BearingModel::assemble_rigid_balance(Assembler& a, const Totals&) const {

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 
+#include <fmt/format.h>
 #include <kinsol/kinsol.h>
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
@@ -41,7 +43,7 @@ int residual_fn(N_Vector y, N_Vector f, void* data) {
     std::span<double> r(N_VGetArrayPointer(f), n);
     cb->model->evaluate(u, r, {});
     if (cb->shift)
-      for (std::size_t k = 0; k < n; ++k) r[k] += cb->shift->inverse_step * (u[k] - cb->shift->anchor[k]);
+      for (std::size_t k = 0; k < n; ++k) r[k] += cb->shift->coefficient(k) * (u[k] - cb->shift->anchor[k]);
     for (std::size_t k = 0; k < n; ++k)
       if (!std::isfinite(r[k])) {
         if (getenv("TWB_DEBUG")) fprintf(stderr, "non-finite residual in %s (row %zu) u=%g\n", cb->model->layout().block_of(k).name.c_str(), k, u[k]);
@@ -65,7 +67,8 @@ int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vecto
     cb->jac_values.resize(std::size_t(p.nnz()));
     m.evaluate(std::span<const double>(N_VGetArrayPointer(y), n), r, cb->jac_values);
     if (cb->shift)
-      for (Index k : cb->diagonal) cb->jac_values[std::size_t(k)] += cb->shift->inverse_step;
+      for (std::size_t k = 0; k < cb->diagonal.size(); ++k)
+        cb->jac_values[std::size_t(cb->diagonal[k])] += cb->shift->coefficient(k);
     // SUNDIALS zeroes the whole matrix, index arrays included, before each call.
     sunindextype* rowptr = SUNSparseMatrix_IndexPointers(J);
     sunindextype* cols = SUNSparseMatrix_IndexValues(J);
@@ -104,7 +107,8 @@ KinsolNewton::KinsolNewton(const BearingModel& model)
   // one step may move the washer and gear (in σ), where the exponential contact law
   // punishes overshoot; temperatures (K) and pressures (p_ref) may move freely.
   double* d = N_VGetArrayPointer(scale_.get());
-  for (sunindextype k = 0; k < n; ++k) d[k] = 1e-3;
+  const double field_weight = std::getenv("TWB_FIELDW") ? std::atof(std::getenv("TWB_FIELDW")) : 1e-3;
+  for (sunindextype k = 0; k < n; ++k) d[k] = field_weight;
   for (const auto& b : model_.layout().blocks())
     if (b.effect == "mechanics")
       for (Index k = b.offset; k < b.offset + b.size; ++k) d[k] = 1.0;
@@ -126,6 +130,7 @@ KinsolNewton::KinsolNewton(const BearingModel& model)
   // A fresh exact Jacobian every iteration: quadratic convergence is worth one KLU
   // refactorization per step on this small system.
   check(KINSetMaxSetupCalls(kin_, 1), "KINSetMaxSetupCalls");
+  if (const char* level = std::getenv("TWB_KINSOL_PRINT")) KINSetPrintLevel(kin_, std::atoi(level));
 }
 
 KinsolNewton::~KinsolNewton() { KINFree(&kin_); }
@@ -154,18 +159,24 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   try {
     model_.evaluate(trial, r, {});
     if (shift)
-      for (std::size_t k = 0; k < n; ++k) r[k] += shift->inverse_step * (trial[k] - shift->anchor[k]);
+      for (std::size_t k = 0; k < n; ++k) r[k] += shift->coefficient(k) * (trial[k] - shift->anchor[k]);
     rep.residual_norm = max_norm(r);
   } catch (const std::exception&) {
     rep.residual_norm = INFINITY;
   }
   // KIN_STEP_LT_STPTOL may be a stall: only the residual says whether it converged.
   rep.converged = flag >= 0 && rep.residual_norm <= s.residual_tolerance;
-  if (rep.converged) {
-    u = trial;
-  } else {
+  u = trial;  // the final iterate, converged or not: callers keep their own copies
+  if (!rep.converged) {
+    // Say where the residual is largest: the block names the physics that failed.
+    std::size_t worst = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      if (!(std::abs(r[k]) <= std::abs(r[worst]))) worst = k;
+    rep.worst_block = model_.layout().block_of(Index(worst)).name;
+    rep.worst_row = Index(worst);
     char* name = KINGetReturnFlagName(flag);
     rep.message = std::string(name ? name : "KINSOL failure") +
+                  fmt::format(" (largest residual {:.3g} in {}, row {})", r[worst], rep.worst_block, worst) +
                   (callbacks_->last_error.empty() ? "" : ": " + callbacks_->last_error) +
                   (callbacks_->callback_error.empty() ? "" : " (" + callbacks_->callback_error + ")");
     free(name);

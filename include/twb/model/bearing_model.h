@@ -129,6 +129,7 @@ class BearingModel {
   void assemble_reynolds(std::span<const double> u, const Film& film, Assembler& a) const;
   void assemble_heat(std::span<const double> u, Assembler& a, const Totals& totals) const;
   void assemble_rigid_balance(Assembler& a, const Totals& totals) const;
+  void orient_rows(Assembler& a) const;
 
   // Viscosity temperature (K) at film node (i, j) and its gradient in the unknowns.
   double viscosity_temperature(std::span<const double> u, const Film& film, int i, int j, LinearForm* form) const;

@@ -17,7 +17,7 @@ struct NewtonSettings {
   double residual_tolerance = 1e-10;  // max-norm of the scaled residual
   double step_tolerance = 1e-14;
   int max_iterations = 200;
-  double max_step = 2.0;  // largest rigid-body move per Newton step, in units of σ (and γ_ref)
+  double max_step = 20.0;  // largest rigid-body move per Newton step, in units of σ (and γ_ref)
 };
 
 struct NewtonReport {
@@ -28,6 +28,8 @@ struct NewtonReport {
   long jacobian_evaluations = 0;
   long backtracks = 0;
   double residual_norm = 0.0;  // max-norm of the scaled residual at the returned state
+  std::string worst_block;     // where the residual is largest, when not converged
+  Index worst_row = -1;
   std::string message;
 };
 
@@ -38,6 +40,10 @@ struct NewtonReport {
 struct PseudoTimeShift {
   double inverse_step = 0.0;  // 1/Δτ
   std::vector<double> anchor;
+  // Per-unknown weights (e.g. |∂F_k/∂u_k|), so every unknown relaxes at the same rate
+  // in pseudo-time; empty means 1.
+  std::vector<double> weight;
+  double coefficient(std::size_t k) const { return inverse_step * (weight.empty() ? 1.0 : weight[k]); }
 };
 
 class KinsolNewton {
@@ -47,7 +53,8 @@ class KinsolNewton {
   KinsolNewton(const KinsolNewton&) = delete;
   KinsolNewton& operator=(const KinsolNewton&) = delete;
 
-  // Solves in place from u. Never throws on non-convergence: the report says so.
+  // Solves in place from u; u holds the final iterate even when the report says it did
+  // not converge. Never throws on non-convergence.
   NewtonReport solve(std::vector<double>& u, const NewtonSettings& settings,
                      const PseudoTimeShift* shift = nullptr);
 

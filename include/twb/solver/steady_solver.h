@@ -36,8 +36,10 @@ class SteadySolver {
   void account(SteadyReport& rep, const NewtonReport& n) const;
   SteadyReport ramp(std::vector<double>& u, SteadyReport rep);
   // Newton, then pseudo-transient continuation from u; true when u is now a steady state.
-  bool reach(std::vector<double>& u, SteadyReport& rep);
+  bool reach(std::vector<double>& u, SteadyReport& rep, bool newton_first);
+  SteadyReport solve_from(std::vector<double>& u, bool newton_first);
   double residual_norm(const std::vector<double>& u) const;
+  std::vector<double> diagonal_weights(const std::vector<double>& u) const;
 
   BearingModel& model_;
   NewtonSettings settings_;
