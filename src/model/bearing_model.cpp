@@ -96,6 +96,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
     JacksonGreenAsperity asperity(e_eff, soft.yield_strength, soft.poisson_ratio,
                                   scene_.asperities.summit_radius);
     contact_.emplace(asperity, scene_.asperities.summit_density, scene_.asperities.summit_sigma);
+    contact_cutoff_ = contact_->cutoff_gap(1e-20);
   }
   roelands_ = RoelandsViscosity{scene_.lubricant.mu_infinity, scene_.lubricant.g0, scene_.lubricant.s0};
 

@@ -21,9 +21,11 @@ namespace {
 // Minimum of the plane h = c + a·x + b·y over the polar cell [r0, r1] × [t0, t1]:
 // linear along rays, so the minimum is at a corner or on an arc where the direction
 // (cos θ, sin θ) is opposite to (a, b).
-double cell_minimum(double c, double a, double b, double r0, double r1, double t0, double t1) {
+double cell_minimum(double c, double a, double b, double r0, double r1, double t0, double t1, double c0,
+                    double s0, double c1, double s1) {
   auto h = [&](double r, double t) { return c + r * (a * std::cos(t) + b * std::sin(t)); };
-  double m = std::min({h(r0, t0), h(r0, t1), h(r1, t0), h(r1, t1)});
+  const double e0 = a * c0 + b * s0, e1 = a * c1 + b * s1;
+  double m = std::min({c + r0 * e0, c + r0 * e1, c + r1 * e0, c + r1 * e1});
   if (a != 0.0 || b != 0.0) {
     double ts = std::atan2(-b, -a);
     const double two_pi = 2.0 * std::numbers::pi;
@@ -52,7 +54,23 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
   const bool heat = film.sliding && scene_.effects.thermal;
   const bool contact = contact_.has_value();
   const double omega = film.sliding ? scene_.operating.speed : 0.0;
-  const double cutoff = contact ? contact_->contact_pressure_cutoff_gap() : 0.0;
+  const double cutoff = contact_cutoff_;
+  // Angles of nodes and of the rule's points within a cell: every Gauss point's
+  // cos/sin follows by the addition theorem, without calling sincos per point.
+  std::vector<double> cos_node(nt + 1), sin_node(nt + 1);
+  for (int j = 0; j <= nt; ++j) {
+    cos_node[j] = std::cos(m.angle(j));
+    sin_node[j] = std::sin(m.angle(j));
+  }
+  auto rule_angles = [&](const GaussRule& rule, std::vector<double>& cq, std::vector<double>& sq) {
+    for (double t : rule.points) {
+      cq.push_back(std::cos(t * m.dtheta()));
+      sq.push_back(std::sin(t * m.dtheta()));
+    }
+  };
+  std::vector<double> cos_c, sin_c, cos_s, sin_s;
+  rule_angles(contact_rule_, cos_c, sin_c);
+  rule_angles(smooth_rule_, cos_s, sin_s);
 
   // Rows of the rigid-body balance this film loads (eqs [34]-[37]): the washer sees
   // film 1 from below (+) and film 2 from above (−); the gear sees film 2 (+).
@@ -96,7 +114,9 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       }
       const double r0 = m.radius(i), r1 = m.radius(i + 1);
       const double t0 = m.angle(j), t1 = t0 + m.dtheta();
-      const bool near_contact = contact && (structural || cell_minimum(c, pa, pb, r0, r1, t0, t1) < cutoff);
+      const bool near_contact =
+          contact && (structural || cell_minimum(c, pa, pb, r0, r1, t0, t1, cos_node[j], sin_node[j],
+                                                 cos_node[j + 1], sin_node[j + 1]) < cutoff);
 
       // Local accumulators: value, d/d(rigid 3), d/d(corner pressure 4), d/d(corner T 4).
       std::array<double, 3> load_val{};  // F, Mx, My
@@ -106,14 +126,15 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       std::array<std::array<double, 3>, 4> vheat_rigid{};
       std::array<std::array<double, 4>, 4> vheat_t{};
 
-      // Contact: the high-order rule where contact can exist (elsewhere p_c < 1e-30 p(0),
-      // so skipping is invisible to Newton).
+      // Contact: the high-order rule where contact can exist (elsewhere p_c < 1e-20 p(0),
+      // whose force is below 1e-12 of any load: skipping is invisible to Newton).
       if (near_contact) {
         for (std::size_t gs = 0; gs < contact_rule_.points.size(); ++gs) {
           for (std::size_t gt = 0; gt < contact_rule_.points.size(); ++gt) {
             const double s = contact_rule_.points[gs], tt = contact_rule_.points[gt];
-            const double r = r0 + s * m.dr(), th = t0 + tt * m.dtheta();
-            const double x = r * std::cos(th), y = r * std::sin(th);
+            const double r = r0 + s * m.dr();
+            const double x = r * (cos_node[j] * cos_c[gt] - sin_node[j] * sin_c[gt]);
+            const double y = r * (sin_node[j] * cos_c[gt] + cos_node[j] * sin_c[gt]);
             const double w = contact_rule_.weights[gs] * contact_rule_.weights[gt] * r * m.dr() * m.dtheta();
             const double h = c + pa * x + pb * y;
             const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
@@ -142,8 +163,9 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       for (std::size_t gs = 0; (hydro || film.sliding) && gs < smooth_rule_.points.size(); ++gs) {
         for (std::size_t gt = 0; gt < smooth_rule_.points.size(); ++gt) {
           const double s = smooth_rule_.points[gs], tt = smooth_rule_.points[gt];
-          const double r = r0 + s * m.dr(), th = t0 + tt * m.dtheta();
-          const double x = r * std::cos(th), y = r * std::sin(th);
+          const double r = r0 + s * m.dr();
+          const double x = r * (cos_node[j] * cos_s[gt] - sin_node[j] * sin_s[gt]);
+          const double y = r * (sin_node[j] * cos_s[gt] + cos_node[j] * sin_s[gt]);
           const double w = smooth_rule_.weights[gs] * smooth_rule_.weights[gt] * r * m.dr() * m.dtheta();
           const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
           if (hydro) {

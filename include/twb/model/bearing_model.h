@@ -147,6 +147,7 @@ class BearingModel {
   Index rigid_offset_ = 0;
   // One summit population for both films (scene.asperities; MODEL.md section 4).
   std::optional<StatisticalContact> contact_;
+  double contact_cutoff_ = 0.0;  // gap above which contact is negligible (p < 1e-20 p(0))
   RoelandsViscosity roelands_{};
   double sigma_ref_ = 0, gamma_ref_ = 0, p_ref_ = 0, h_ref_ = 0, mu_ref_ = 0;
   std::vector<double> flow_scale_;  // per interior pressure node: p_ref · reference conductance

@@ -64,6 +64,8 @@ class StatisticalContact {
 
   // The gap above which p < 1e-30 p(0): callers may skip contact integration there.
   double contact_pressure_cutoff_gap() const { return cutoff_gap_; }
+  // The gap above which p < relative_level · p(0).
+  double cutoff_gap(double relative_level) const { return find_cutoff_gap(relative_level); }
 
   double mean_summit_offset() const { return mean_summit_offset_; }  // y_s, m
   double summit_density() const { return summit_density_; }
