@@ -5,8 +5,8 @@
 // evaluates the exact Jacobian once and refactors it once (KINSOL max setup calls = 1;
 // the symbolic analysis is done once per solver), so factorizations = Jacobians.
 //
-//   ./build/benchmarks/steady_state_benchmark --benchmark_repetitions=5 \
-//       --benchmark_report_aggregates_only=true
+//   ./build/benchmarks/steady_state_benchmark --benchmark_repetitions=5
+//   (add --benchmark_report_aggregates_only=true for medians only)
 #include <benchmark/benchmark.h>
 
 #include <stdexcept>

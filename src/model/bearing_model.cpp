@@ -158,6 +158,19 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
     }
   }
 
+  viscosity_forms_.resize(films_.size());
+  if (fx.thermal) {
+    const std::vector<double> zero(layout_.size(), 0.0);
+    for (const Film& f : films_) {
+      auto& forms = viscosity_forms_[f.number - 1];
+      forms.resize(f.mesh.node_count());
+      for (int i = 0; i < nr; ++i)
+        for (int j = 0; j < nt; ++j) viscosity_temperature(zero, f, i, j, &forms[f.mesh.node(i, j)]);
+    }
+  } else {
+    for (const Film& f : films_) viscosity_forms_[f.number - 1].resize(f.mesh.node_count());
+  }
+
   Assembler structure(layout_.size());
   std::vector<double> u = cold_start();
   assemble(u, structure, nullptr);
@@ -217,6 +230,12 @@ double BearingModel::face_temperature(std::span<const double> u, ComponentId id,
     form->add(k1, w.w1);
   }
   return scene_.operating.ambient + w.w0 * u[k0] + w.w1 * u[k1];
+}
+
+double BearingModel::apply(const LinearForm& form, std::span<const double> u) const {
+  double t = scene_.operating.ambient;
+  for (const auto& [k, c] : form.terms) t += c * u[k];
+  return t;
 }
 
 double BearingModel::viscosity_temperature(std::span<const double> u, const Film& film, int i, int j,

@@ -87,10 +87,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
 
   // Node viscosity temperatures and their gradients, computed once per node.
   std::vector<double> node_t(m.node_count());
-  std::vector<LinearForm> node_t_form(m.node_count());
-  for (int i = 0; i < nr; ++i)
-    for (int j = 0; j < nt; ++j)
-      node_t[m.node(i, j)] = viscosity_temperature(u, film, i, j, jac ? &node_t_form[m.node(i, j)] : nullptr);
+  for (int n = 0; n < m.node_count(); ++n) node_t[n] = apply(viscosity_temperature_form(film, n), u);
 
   if (film.sliding) {
     tot.contact_power.assign(m.node_count(), 0.0);
@@ -223,7 +220,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           a.add_residual(row, sc * vheat[k]);
           if (!jac) continue;
           for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], sc * vheat_rigid[k][d]);
-          for (int l = 0; l < 4; ++l) a.add_form(row, sc * vheat_t[k][l], node_t_form[node[l]]);
+          for (int l = 0; l < 4; ++l) a.add_form(row, sc * vheat_t[k][l], viscosity_temperature_form(film, node[l]));
         }
       }
     }

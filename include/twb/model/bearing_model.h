@@ -133,6 +133,12 @@ class BearingModel {
 
   // Viscosity temperature (K) at film node (i, j) and its gradient in the unknowns.
   double viscosity_temperature(std::span<const double> u, const Film& film, int i, int j, LinearForm* form) const;
+  // The same gradient, which depends only on the grids: built once, shared by every
+  // evaluation (the value is T_ambient + form · u).
+  const LinearForm& viscosity_temperature_form(const Film& film, int node) const {
+    return viscosity_forms_[film.number - 1][node];
+  }
+  double apply(const LinearForm& form, std::span<const double> u) const;
   // Temperature (K) of a component's face at radius r, circumferential node j, with gradient.
   double face_temperature(std::span<const double> u, ComponentId id, double r, int j, LinearForm* form) const;
   ValueSlope viscosity(double temperature) const;
@@ -155,6 +161,7 @@ class BearingModel {
   std::vector<std::vector<double>> component_row_scale_;
   GaussRule smooth_rule_, contact_rule_;
   SparsePattern pattern_;
+  std::vector<std::vector<LinearForm>> viscosity_forms_;  // per film, per node
 
 };
 
