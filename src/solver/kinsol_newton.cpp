@@ -46,8 +46,6 @@ int residual_fn(N_Vector y, N_Vector f, void* data) {
       for (std::size_t k = 0; k < n; ++k) r[k] += cb->shift->coefficient(k) * (u[k] - cb->shift->anchor[k]);
     for (std::size_t k = 0; k < n; ++k)
       if (!std::isfinite(r[k])) {
-        if (getenv("TWB_DEBUG")) fprintf(stderr, "non-finite residual in %s (row %zu) u=%g\n", cb->model->layout().block_of(k).name.c_str(), k, u[k]);
-        if (getenv("TWB_DEBUG")) { auto q = cb->model->position(u); fprintf(stderr, " c1 %g gx %g gy %g c2 %g\n", q.c1, q.gamma_x, q.gamma_y, q.c2);}
         return 1;
       }
     return 0;
@@ -107,8 +105,7 @@ KinsolNewton::KinsolNewton(const BearingModel& model)
   // one step may move the washer and gear (in σ), where the exponential contact law
   // punishes overshoot; temperatures (K) and pressures (p_ref) may move freely.
   double* d = N_VGetArrayPointer(scale_.get());
-  const double field_weight = std::getenv("TWB_FIELDW") ? std::atof(std::getenv("TWB_FIELDW")) : 1e-3;
-  for (sunindextype k = 0; k < n; ++k) d[k] = field_weight;
+  for (sunindextype k = 0; k < n; ++k) d[k] = 1e-3;
   for (const auto& b : model_.layout().blocks())
     if (b.effect == "mechanics")
       for (Index k = b.offset; k < b.offset + b.size; ++k) d[k] = 1.0;
@@ -130,6 +127,7 @@ KinsolNewton::KinsolNewton(const BearingModel& model)
   // A fresh exact Jacobian every iteration: quadratic convergence is worth one KLU
   // refactorization per step on this small system.
   check(KINSetMaxSetupCalls(kin_, 1), "KINSetMaxSetupCalls");
+  // TWB_KINSOL_PRINT=1..3 shows KINSOL's own iteration log on stdout (diagnostics).
   if (const char* level = std::getenv("TWB_KINSOL_PRINT")) KINSetPrintLevel(kin_, std::atoi(level));
 }
 
