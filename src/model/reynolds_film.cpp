@@ -6,10 +6,16 @@
 // w is the net volumetric outflow of a node's control volume: Couette outflow minus
 // Poiseuille inflow. Where the film ruptures (p = 0, diverging gap) more oil leaves
 // than enters, so w ≥ 0 there, and w = 0 wherever p > 0.
+//
+// The discretization itself (control volumes, faces, the face flux and which balances
+// it enters) is ReynoldsOperator's; this file evaluates the face quantities of the
+// bearing's film (conductance, carried gap) with their slopes in the unknowns and
+// assembles the chain rule into the Jacobian.
 #include <array>
 #include <cmath>
 
 #include "twb/model/bearing_model.h"
+#include "twb/model/reynolds_operator.h"
 #include "twb/physics/average_gap.h"
 #include "twb/physics/flow_factors.h"
 
@@ -44,10 +50,9 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
   const bool factors = scene_.effects.flow_factors;
   const double sigma = film.sigma;
 
-  auto p_col = [&](int i, int j) -> Index {
-    return (i > 0 && i < nr - 1) ? film.pressure_offset + Index(i - 1) * nt + m.wrap(j) : -1;
-  };
-  auto p_val = [&](int i, int j) { Index k = p_col(i, j); return k >= 0 ? p_ref_ * u[k] : 0.0; };
+  const ReynoldsOperator op(m);
+  auto p_col = [&](int k) -> Index { return k >= 0 ? film.pressure_offset + k : -1; };
+  auto p_val = [&](int k) { return k >= 0 ? p_ref_ * u[p_col(k)] : 0.0; };
 
   std::vector<double> node_t(m.node_count());
   std::vector<LinearForm> node_t_form(m.node_count());
@@ -70,84 +75,56 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
     return Conductance{g, dg_dh, -g * mu.slope / mu.value};
   };
 
-  // A face flux Q (m³/s) from node A to node B, and its gradient: rigid (via h at the
-  // face), the two pressures, the two node temperatures.
-  auto add_face = [&](int ia, int ja, int ib, int jb, double q_val, const std::array<double, 3>& dq_rigid,
-                      double dq_dpa, double dq_dpb, double dq_dta, double dq_dtb) {
-    const Index ra = p_col(ia, ja), rb = p_col(ib, jb);
-    const Index na = m.node(ia, ja), nb = m.node(ib, jb);
-    for (auto [row, sign] : {std::pair{ra, 1.0}, std::pair{rb, -1.0}}) {
-      if (row < 0) continue;
-      a.add_residual(row, sign * q_val);
-      if (!jac) continue;
-      for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], sign * dq_rigid[d]);
-      a.add_derivative(row, ra, sign * dq_dpa * p_ref_);
-      a.add_derivative(row, rb, sign * dq_dpb * p_ref_);
-      a.add_form(row, sign * dq_dta, node_t_form[na]);
-      a.add_form(row, sign * dq_dtb, node_t_form[nb]);
-    }
+  // The gap the moving surface drags across a circumferential face: h̄T + σ φs with flow
+  // factors, h without (MODEL.md section 3); its slope in h.
+  auto carried_gap = [&](double h) {
+    if (!factors) return ValueSlope{h, 1.0};
+    const ValueSlope gap = average_gap(h, sigma);
+    const ValueSlope phis = shear_flow_factor_Phi_s(h / sigma);
+    return ValueSlope{gap.value + sigma * film.shear_weight * phis.value,
+                      gap.slope + film.shear_weight * phis.slope};
   };
 
-  // Radial faces between (i, j) and (i+1, j), at r_{i+1/2}.
-  for (int i = 0; i < nr - 1; ++i) {
-    const double rf = m.radius(i) + 0.5 * m.dr();
-    for (int j = 0; j < nt; ++j) {
-      if (p_col(i, j) < 0 && p_col(i + 1, j) < 0) continue;
-      const double th = m.angle(j), x = rf * std::cos(th), y = rf * std::sin(th);
-      const double h = c + pa * x + pb * y;
-      const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
-      const double tf = 0.5 * (node_t[m.node(i, j)] + node_t[m.node(i + 1, j)]);
-      const Conductance g = conductance(h, tf);
-      const double geom = rf * m.dtheta() / m.dr();
-      const double dp = p_val(i + 1, j) - p_val(i, j);
-      const double qf = -g.g * geom * dp;
-      std::array<double, 3> dq{};
-      for (int d = 0; d < 3; ++d) dq[d] = -g.dg_dh * geom * dp * dh[d];
-      const double dq_dt = -g.dg_dt * geom * dp * 0.5;
-      add_face(i, j, i + 1, j, qf, dq, g.g * geom, -g.g * geom, dq_dt, dq_dt);
+  // Each face flux Q (m³/s) from node A to node B with its gradient, by the chain rule:
+  // the rigid unknowns through h at the face midpoint, the two pressures, and the two
+  // node temperatures through μ at the mean of theirs. The operator owns the stencil,
+  // the face geometry and which control volumes a flux leaves and enters.
+  op.for_each_face([&](const ReynoldsFace& f) {
+    const bool circumferential = f.kind == ReynoldsFace::Kind::circumferential;
+    const double x = f.r * std::cos(f.theta), y = f.r * std::sin(f.theta);
+    const double h = c + pa * x + pb * y;
+    const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
+    const Index na = m.node(f.ia, f.ja), nb = m.node(f.ib, f.jb);
+    const Conductance g = conductance(h, 0.5 * (node_t[na] + node_t[nb]));
+    const ValueSlope carried = circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
+    const ReynoldsFaceFlux flow = ReynoldsOperator::flux(f, omega, g.g, carried.value, p_val(f.a), p_val(f.b));
+    const double dq_dh = flow.dq_dg * g.dg_dh + flow.dq_dcarried * carried.slope;
+    const double dq_dt = flow.dq_dg * g.dg_dt * 0.5;
+    const Index ra = p_col(f.a), rb = p_col(f.b);
+    for (const auto [node, sign] : f.ends()) {
+      const Index row = p_col(node);
+      if (row < 0) continue;
+      a.add_residual(row, sign * flow.q);
+      if (!jac) continue;
+      for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], sign * dq_dh * dh[d]);
+      a.add_derivative(row, ra, sign * flow.dq_dpa * p_ref_);
+      a.add_derivative(row, rb, sign * flow.dq_dpb * p_ref_);
+      a.add_form(row, sign * dq_dt, node_t_form[na]);
+      a.add_form(row, sign * dq_dt, node_t_form[nb]);
     }
-  }
-
-  // Circumferential faces between (i, j) and (i, j+1), at θ_{j+1/2}: Poiseuille plus
-  // Couette (V/2)(h̄T + σ φs) with V = ω r (or h without flow factors).
-  for (int i = 1; i < nr - 1; ++i) {
-    const double r = m.radius(i);
-    for (int j = 0; j < nt; ++j) {
-      const double th = m.angle(j) + 0.5 * m.dtheta(), x = r * std::cos(th), y = r * std::sin(th);
-      const double h = c + pa * x + pb * y;
-      const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
-      const double tf = 0.5 * (node_t[m.node(i, j)] + node_t[m.node(i, j + 1)]);
-      const Conductance g = conductance(h, tf);
-      const double geom = m.dr() / (r * m.dtheta());
-      const double dp = p_val(i, j + 1) - p_val(i, j);
-      ValueSlope carried{h, 1.0};
-      if (factors) {
-        const ValueSlope gap = average_gap(h, sigma);
-        const ValueSlope phis = shear_flow_factor_Phi_s(h / sigma);
-        carried = {gap.value + sigma * film.shear_weight * phis.value, gap.slope + film.shear_weight * phis.slope};
-      }
-      const double couette = 0.5 * omega * r * m.dr();
-      const double qf = -g.g * geom * dp + couette * carried.value;
-      std::array<double, 3> dq{};
-      for (int d = 0; d < 3; ++d) dq[d] = (-g.dg_dh * geom * dp + couette * carried.slope) * dh[d];
-      const double dq_dt = -g.dg_dt * geom * dp * 0.5;
-      add_face(i, j, i, j + 1, qf, dq, g.g * geom, -g.g * geom, dq_dt, dq_dt);
-    }
-  }
+  });
 
   // Wrap each node's flow balance in the complementarity function.
   if (a.mode() != Assembler::Mode::values) return;
-  for (int i = 1; i < nr - 1; ++i) {
-    for (int j = 0; j < nt; ++j) {
-      const Index row = p_col(i, j);
-      const double scale = flow_scale_[row - film.pressure_offset];
-      const double w_hat = a.residual_value(row) / scale;
-      const FischerBurmeister fb = fischer_burmeister(u[row], w_hat);
-      a.set_residual(row, fb.value);
-      if (!jac) continue;
-      a.scale_row(row, fb.db / scale);
-      a.add_derivative(row, row, fb.da);
-    }
+  for (int k = 0; k < op.interior_count(); ++k) {
+    const Index row = p_col(k);
+    const double scale = flow_scale_[k];
+    const double w_hat = a.residual_value(row) / scale;
+    const FischerBurmeister fb = fischer_burmeister(u[row], w_hat);
+    a.set_residual(row, fb.value);
+    if (!jac) continue;
+    a.scale_row(row, fb.db / scale);
+    a.add_derivative(row, row, fb.da);
   }
 }
 
