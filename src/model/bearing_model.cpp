@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "assembly_totals.h"
+#include "twb/model/reynolds_operator.h"
 #include "twb/physics/asperity_contact.h"
 
 namespace twb {
@@ -111,14 +112,14 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   contact_rule_ = GaussRule::legendre(scene_.mesh.contact_quadrature);
 
   if (sf.pressure_offset >= 0) {
-    const FilmMesh& m = sf.mesh;
+    // The Poiseuille diagonal of a uniform reference film: ŵ then reads like p̂.
+    const ReynoldsOperator op(sf.mesh);
     const double g = std::pow(h_ref_, 3) / (12.0 * mu_ref_);
-    flow_scale_.resize((nr - 2) * nt);
+    flow_scale_.resize(op.interior_count());
     for (int i = 1; i < nr - 1; ++i) {
-      const double r = m.radius(i);
-      const double diag = g * ((r - 0.5 * m.dr()) * m.dtheta() / m.dr() + (r + 0.5 * m.dr()) * m.dtheta() / m.dr() +
-                               2.0 * m.dr() / (r * m.dtheta()));
-      for (int j = 0; j < nt; ++j) flow_scale_[(i - 1) * nt + j] = p_ref_ * diag;
+      const double diag =
+          g * (op.radial_geometry(i - 1) + op.radial_geometry(i) + 2.0 * op.circumferential_geometry(i));
+      for (int j = 0; j < nt; ++j) flow_scale_[op.interior_index(i, j)] = p_ref_ * diag;
     }
   }
 
