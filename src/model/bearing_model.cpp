@@ -191,6 +191,11 @@ void BearingModel::set_load(double load) {
   load_ = load;
 }
 
+void BearingModel::set_speed(double speed) {
+  if (!(speed >= 0) || !std::isfinite(speed)) throw std::invalid_argument("speed must be finite and non-negative");
+  scene_.operating.speed = speed;
+}
+
 ValueSlope BearingModel::viscosity(double temperature) const {
   if (scene_.lubricant.viscosity_model == ViscosityModel::constant)
     return {scene_.lubricant.constant_viscosity, 0.0};

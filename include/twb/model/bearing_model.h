@@ -107,6 +107,9 @@ class BearingModel {
   // Changes the external load; the pattern and every scale except F_ext-based ones are kept.
   void set_load(double load);
   double load() const { return load_; }
+  // Changes the sliding speed (rad/s); the pattern and all scales are kept.
+  void set_speed(double speed);
+  double speed() const { return scene_.operating.speed; }
 
   // Scales (physical value = scale · unknown).
   double clearance_scale() const { return sigma_ref_; }

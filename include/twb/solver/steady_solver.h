@@ -1,9 +1,9 @@
 // A steady state of the bearing at the model's current load, from a given start or
 // from the paper's cold start, with globalization beyond KINSOL's line search
 // (Cantera's pattern: damped Newton first, pseudo-time steps when it fails, then
-// Newton again). When even that fails, the load is ramped up from a fraction the cold
-// start reaches, each step warm-started from the last and halved on failure. Failure
-// is reported, not hidden.
+// Newton again). When even that fails, the speed is ramped up from rest, then the
+// load from a fraction the cold start reaches, each step warm-started from the last
+// and halved on failure. Failure is reported, not hidden.
 #pragma once
 
 #include <string>
@@ -15,7 +15,7 @@ namespace twb {
 
 struct SteadyReport {
   bool converged = false;
-  std::string strategy;  // "newton", "pseudo-transient", "load ramp"
+  std::string strategy;  // "newton", "pseudo-transient", "speed ramp", "load ramp"
   int newton_solves = 0;
   long iterations = 0, jacobian_evaluations = 0, residual_evaluations = 0;
   double residual_norm = 0.0;
@@ -35,6 +35,7 @@ class SteadySolver {
  private:
   void account(SteadyReport& rep, const NewtonReport& n) const;
   SteadyReport ramp(std::vector<double>& u, SteadyReport rep);
+  bool speed_ramp(std::vector<double>& u, SteadyReport& rep);
   // Newton, then pseudo-transient continuation from u; true when u is now a steady state.
   bool reach(std::vector<double>& u, SteadyReport& rep, bool newton_first);
   SteadyReport solve_from(std::vector<double>& u, bool newton_first);
