@@ -114,7 +114,12 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   if (sf.pressure_offset >= 0) {
     // The Poiseuille diagonal of a uniform reference film: ŵ then reads like p̂.
     const ReynoldsOperator op(sf.mesh);
-    const double g = std::pow(h_ref_, 3) / (12.0 * mu_ref_);
+    // Reference gap: the sliding film's mean cold-start gap (its clearance), a thickness
+    // set by the geometry. A σ-based one (3σ) makes smooth surfaces' flux terms 1e8
+    // times the scale, so rounding alone would exceed the solver tolerance.
+    const std::vector<double> start = cold_start();
+    const double h_flow = start[rigid_offset_ + sf.clearance_unknown] * sigma_ref_;
+    const double g = std::pow(h_flow, 3) / (12.0 * mu_ref_);
     flow_scale_.resize(op.interior_count());
     for (int i = 1; i < nr - 1; ++i) {
       const double diag =
