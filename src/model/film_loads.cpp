@@ -71,6 +71,15 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
   std::vector<double> cos_c, sin_c, cos_s, sin_s;
   rule_angles(contact_rule_, cos_c, sin_c);
   rule_angles(smooth_rule_, cos_s, sin_s);
+  // A Gauss point (gs, gt) of cell (i, j): local coordinates, position, weight r dr dθ.
+  struct Point { double s, t, r, x, y, w; };
+  auto point = [&](const GaussRule& rule, const std::vector<double>& cq, const std::vector<double>& sq, int i,
+                   int j, std::size_t gs, std::size_t gt) {
+    const double s = rule.points[gs], r = m.radius(i) + s * m.dr();
+    return Point{s, rule.points[gt], r, r * (cos_node[j] * cq[gt] - sin_node[j] * sq[gt]),
+                 r * (sin_node[j] * cq[gt] + cos_node[j] * sq[gt]),
+                 rule.weights[gs] * rule.weights[gt] * r * m.dr() * m.dtheta()};
+  };
 
   // Rows of the rigid-body balance this film loads (eqs [34]-[37]): the washer sees
   // film 1 from below (+) and film 2 from above (−); the gear sees film 2 (+).
@@ -128,13 +137,9 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       if (near_contact) {
         for (std::size_t gs = 0; gs < contact_rule_.points.size(); ++gs) {
           for (std::size_t gt = 0; gt < contact_rule_.points.size(); ++gt) {
-            const double s = contact_rule_.points[gs], tt = contact_rule_.points[gt];
-            const double r = r0 + s * m.dr();
-            const double x = r * (cos_node[j] * cos_c[gt] - sin_node[j] * sin_c[gt]);
-            const double y = r * (sin_node[j] * cos_c[gt] + cos_node[j] * sin_c[gt]);
-            const double w = contact_rule_.weights[gs] * contact_rule_.weights[gt] * r * m.dr() * m.dtheta();
+            const auto [s, tt, r, x, y, w] = point(contact_rule_, cos_c, sin_c, i, j, gs, gt);
             const double h = c + pa * x + pb * y;
-            const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
+            const std::array<double, 3> dh = gap_gradient(film, x, y);
             const ValueSlope v = contact_->pressure(h);
             const std::array<double, 3> arm{1.0, y, -x};  // F, Mx = Σ F y, My = −Σ F x
             for (int qd = 0; qd < 3; ++qd) {
@@ -159,11 +164,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       // every cell, so the residual stays smooth as contact comes and goes.
       for (std::size_t gs = 0; (hydro || film.sliding) && gs < smooth_rule_.points.size(); ++gs) {
         for (std::size_t gt = 0; gt < smooth_rule_.points.size(); ++gt) {
-          const double s = smooth_rule_.points[gs], tt = smooth_rule_.points[gt];
-          const double r = r0 + s * m.dr();
-          const double x = r * (cos_node[j] * cos_s[gt] - sin_node[j] * sin_s[gt]);
-          const double y = r * (sin_node[j] * cos_s[gt] + cos_node[j] * sin_s[gt]);
-          const double w = smooth_rule_.weights[gs] * smooth_rule_.weights[gt] * r * m.dr() * m.dtheta();
+          const auto [s, tt, r, x, y, w] = point(smooth_rule_, cos_s, sin_s, i, j, gs, gt);
           const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
           if (hydro) {
             double p = 0;
@@ -177,7 +178,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           }
           if (!film.sliding) continue;
           const double h = c + pa * x + pb * y;
-          const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
+          const std::array<double, 3> dh = gap_gradient(film, x, y);
           const double v_slide = omega * r;
           double tv = 0;
           for (int k = 0; k < 4; ++k) tv += N[k] * t_node[k];

@@ -49,7 +49,7 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
         const double scale = film_row_scale_[film.number - 1][n];
         const double th = m.angle(j), x = r * std::cos(th), y = r * std::sin(th);
         const double h = film_gap(film, q, r, th);
-        const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
+        const std::array<double, 3> dh = gap_gradient(film, x, y);
         const ValueSlope gap = average_gap(h, film.sigma);
         const double tf = temperature_of(u, row);
 

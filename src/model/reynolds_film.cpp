@@ -93,7 +93,7 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
     const bool circumferential = f.kind == ReynoldsFace::Kind::circumferential;
     const double x = f.r * std::cos(f.theta), y = f.r * std::sin(f.theta);
     const double h = c + pa * x + pb * y;
-    const std::array<double, 3> dh{sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
+    const std::array<double, 3> dh = gap_gradient(film, x, y);
     const Index na = m.node(f.ia, f.ja), nb = m.node(f.ib, f.jb);
     const Conductance g = conductance(h, 0.5 * (node_t[na] + node_t[nb]));
     const ValueSlope carried = circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};

@@ -120,6 +120,10 @@ class BearingModel {
 
   // Film-node gap h at node (i, j) of a film, physical.
   double film_gap(const Film& film, const RigidPosition& q, double r, double theta) const;
+  // ∂h/∂(ĉ, γ̂x, γ̂y) at (x, y): the plane of MODEL §1 in the scaled unknowns.
+  std::array<double, 3> gap_gradient(const Film& film, double x, double y) const {
+    return {sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
+  }
 
   // Pressure (Pa) at node (i, j) of the sliding film; 0 on edges and without hydrodynamics.
   double pressure_at(std::span<const double> u, const Film& film, int i, int j) const;
