@@ -8,12 +8,14 @@
 #include <stdexcept>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace twb {
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
   const auto dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   std::filesystem::create_directories(dir);
-  const auto tmp = dir / ("." + path.filename().string() + ".tmp." + std::to_string(::getpid()));
+  const auto tmp = dir / fmt::format(".{}.tmp.{}", path.filename().string(), ::getpid());
   auto fail = [&](const char* what) {
     const std::string msg = std::string(what) + " '" + tmp.string() + "': " + std::strerror(errno);
     ::unlink(tmp.c_str());
