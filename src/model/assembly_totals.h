@@ -10,7 +10,7 @@
 namespace twb {
 
 struct FilmTotals {
-  double fluid_force = 0, contact_force = 0, moment_x = 0, moment_y = 0;
+  double fluid_force = 0, contact_force = 0;
   std::array<double, 3> contact_force_rigid{};  // d(contact force)/d(ĉ, γ̂x, γ̂y)
   double contact_torque_per_f = 0;              // ∫ p_c r dA: friction torque divided by f
   double viscous_torque = 0;

@@ -21,12 +21,6 @@ double combined_sigma(const Component& a, const Component& b) {
   return std::hypot(a.roughness.rq, b.roughness.rq);
 }
 
-// Conductance of the path from a film node to one bounding component per unit area:
-// half the oil film plus, on the washer side, half the washer (eqs [26], [27]).
-double body_resistance(const Scene& s, ComponentId id) {
-  return id == ComponentId::washer ? s.washer.thickness / (2.0 * s.washer.material.conductivity) : 0.0;
-}
-
 }  // namespace
 
 BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.operating.load) {
@@ -135,8 +129,8 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
     std::vector<double> attached_conductance(components_.size(), 0.0);  // W/K/m² from films, reference
     for (std::size_t f = 0; f < films_.size(); ++f) {
       const Film& film = films_[f];
-      const double g_lo = 1.0 / (h_ref_ / (2 * k_oil) + body_resistance(scene_, film.lower));
-      const double g_up = 1.0 / (h_ref_ / (2 * k_oil) + body_resistance(scene_, film.upper));
+      const double g_lo = 1.0 / (h_ref_ / (2 * k_oil) + body_resistance(film.lower));
+      const double g_up = 1.0 / (h_ref_ / (2 * k_oil) + body_resistance(film.upper));
       film_row_scale_[f].resize(film.mesh.node_count());
       for (int i = 0; i < nr; ++i)
         for (int j = 0; j < nt; ++j)
@@ -199,6 +193,10 @@ void BearingModel::set_load(double load) {
 void BearingModel::set_speed(double speed) {
   if (!(speed >= 0) || !std::isfinite(speed)) throw std::invalid_argument("speed must be finite and non-negative");
   scene_.operating.speed = speed;
+}
+
+double BearingModel::body_resistance(ComponentId id) const {
+  return id == ComponentId::washer ? scene_.washer.thickness / (2.0 * scene_.washer.material.conductivity) : 0.0;
 }
 
 ValueSlope BearingModel::viscosity(double temperature) const {
@@ -296,7 +294,7 @@ void BearingModel::assemble(std::span<const double> u, Assembler& a, Totals* tot
     if (films_[f].pressure_offset >= 0) assemble_reynolds(u, films_[f], a);
     assemble_film_loads(u, films_[f], a, t.film[f]);
   }
-  assemble_rigid_balance(a, t);
+  assemble_rigid_balance(a);
   if (scene_.effects.thermal) assemble_heat(u, a, t);
   orient_rows(a);
 }
@@ -317,7 +315,7 @@ void BearingModel::orient_rows(Assembler& a) const {
   }
 }
 
-void BearingModel::assemble_rigid_balance(Assembler& a, const Totals&) const {
+void BearingModel::assemble_rigid_balance(Assembler& a) const {
   // Film loads were added with their signs already; only the external load remains: eq [37].
   a.add_residual(rigid_offset_ + 3, -1.0);
 }

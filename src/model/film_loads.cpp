@@ -201,8 +201,6 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       }
 
       // Scatter the cell's loads into the rigid-body rows.
-      tot.moment_x += load_val[1];
-      tot.moment_y += load_val[2];
       for (const RowSign& rs : rows) {
         const std::array<double, 3> coef{rs.force, rs.mx, rs.my};
         for (int qd = 0; qd < 3; ++qd) {

@@ -16,16 +16,9 @@
 
 namespace twb {
 
-namespace {
-double body_resistance_of(const Scene& s, ComponentId id) {
-  return id == ComponentId::washer ? s.washer.thickness / (2.0 * s.washer.material.conductivity) : 0.0;
-}
-}  // namespace
-
 void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const Totals&) const {
   const bool jac = a.wants_jacobian();
   const double k_oil = scene_.lubricant.conductivity;
-  const double t0 = scene_.operating.ambient;
   const RigidPosition q = position(u);
 
   auto component_index = [&](Index k) -> std::pair<std::size_t, Index> {
@@ -56,7 +49,7 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
         for (ComponentId side : {film.lower, film.upper}) {
           LinearForm face;
           const double ts = face_temperature(u, side, r, j, &face);
-          const double res = gap.value / (2.0 * k_oil) + body_resistance_of(scene_, side);
+          const double res = gap.value / (2.0 * k_oil) + body_resistance(side);
           const double flow = area * (tf - ts) / res;  // W from the film node into the component
           const double dflow_dh = -flow / res * gap.slope / (2.0 * k_oil);
           a.add_residual(row, -scale * flow);
@@ -117,7 +110,6 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
       }
     }
   }
-  (void)t0;
 }
 
 }  // namespace twb

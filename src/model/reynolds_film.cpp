@@ -39,7 +39,6 @@ FischerBurmeister fischer_burmeister(double a, double b) {
 void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film, Assembler& a) const {
   const bool jac = a.wants_jacobian();
   const FilmMesh& m = film.mesh;
-  const int nr = m.radial_nodes(), nt = m.circumferential_nodes();
   const RigidPosition q = position(u);
   const double c = film.clearance_unknown == 0 ? q.c1 : q.c2;
   const double pa = -film.sign * q.gamma_y - film.imposed_tilt;
@@ -55,10 +54,7 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
   auto p_val = [&](int k) { return k >= 0 ? p_ref_ * u[p_col(k)] : 0.0; };
 
   std::vector<double> node_t(m.node_count());
-  std::vector<LinearForm> node_t_form(m.node_count());
-  for (int i = 0; i < nr; ++i)
-    for (int j = 0; j < nt; ++j)
-      node_t[m.node(i, j)] = viscosity_temperature(u, film, i, j, jac ? &node_t_form[m.node(i, j)] : nullptr);
+  for (int n = 0; n < m.node_count(); ++n) node_t[n] = apply(viscosity_temperature_form(film, n), u);
 
   // Poiseuille conductance φ·max(h, 0)³/(12 μ) at a face, and its slopes in h and T.
   struct Conductance { double g, dg_dh, dg_dt; };
@@ -109,8 +105,8 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
       for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], sign * dq_dh * dh[d]);
       a.add_derivative(row, ra, sign * flow.dq_dpa * p_ref_);
       a.add_derivative(row, rb, sign * flow.dq_dpb * p_ref_);
-      a.add_form(row, sign * dq_dt, node_t_form[na]);
-      a.add_form(row, sign * dq_dt, node_t_form[nb]);
+      a.add_form(row, sign * dq_dt, viscosity_temperature_form(film, na));
+      a.add_form(row, sign * dq_dt, viscosity_temperature_form(film, nb));
     }
   });
 

@@ -135,7 +135,7 @@ class BearingModel {
   void assemble_film_loads(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const;
   void assemble_reynolds(std::span<const double> u, const Film& film, Assembler& a) const;
   void assemble_heat(std::span<const double> u, Assembler& a, const Totals& totals) const;
-  void assemble_rigid_balance(Assembler& a, const Totals& totals) const;
+  void assemble_rigid_balance(Assembler& a) const;
   void orient_rows(Assembler& a) const;
 
   // Viscosity temperature (K) at film node (i, j) and its gradient in the unknowns.
@@ -149,6 +149,9 @@ class BearingModel {
   // Temperature (K) of a component's face at radius r, circumferential node j, with gradient.
   double face_temperature(std::span<const double> u, ComponentId id, double r, int j, LinearForm* form) const;
   ValueSlope viscosity(double temperature) const;
+  // Half the washer's thickness lies on the path from a film node to its mid-plane
+  // (eqs [26], [27]); carrier and gear faces are their surfaces.
+  double body_resistance(ComponentId id) const;
   const ComponentHeat* component(ComponentId id) const;
   const Film& sliding_film() const;
 
