@@ -1,7 +1,7 @@
 #include "twb/solver/steady_solver.h"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace twb {
@@ -30,19 +30,17 @@ double SteadySolver::residual_norm(const std::vector<double>& u) const {
   return max_norm(r);
 }
 
-bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep, bool newton_first) {
+bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep) {
   std::vector<double> trial = u;
-  if (newton_first) {
-    // From the cold start the line search needs up to ~75 damped steps on the paper's
-    // case; beyond that it is stagnating and pseudo-time does better.
-    NewtonSettings quick = settings_;
-    quick.max_iterations = std::min(settings_.max_iterations, 80);
-    const NewtonReport n = newton_.solve(trial, quick);
-    account(rep, n);
-    if (n.converged) {
-      u = trial;
-      return true;
-    }
+  // From the cold start the line search needs up to ~75 damped steps on the paper's
+  // case; beyond that it is stagnating and pseudo-time does better.
+  NewtonSettings quick = settings_;
+  quick.max_iterations = std::min(settings_.max_iterations, 80);
+  const NewtonReport n = newton_.solve(trial, quick);
+  account(rep, n);
+  if (n.converged) {
+    u = trial;
+    return true;
   }
   // Pseudo-transient continuation (Kelley & Keyes' ΨTC): one linearly implicit step of
   // u' = −F(u) per pseudo-time step, i.e. one Newton step on F(u) + (u − u_old)/Δτ,
@@ -99,8 +97,6 @@ bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep, bool newton_
   return false;
 }
 
-SteadyReport SteadySolver::solve(std::vector<double>& u) { return solve_from(u, true); }
-
 std::vector<double> SteadySolver::diagonal_weights(const std::vector<double>& u) const {
   const SparsePattern& p = model_.pattern();
   std::vector<double> r(u.size()), jac(std::size_t(p.nnz())), w(u.size());
@@ -112,12 +108,12 @@ std::vector<double> SteadySolver::diagonal_weights(const std::vector<double>& u)
   return w;
 }
 
-SteadyReport SteadySolver::solve_from(std::vector<double>& u, bool newton_first) {
+SteadyReport SteadySolver::solve(std::vector<double>& u) {
   const auto t0 = std::chrono::steady_clock::now();
   SteadyReport rep;
   rep.strategy = "newton";
   std::vector<double> trial = u;
-  if (reach(trial, rep, newton_first)) {
+  if (reach(trial, rep)) {
     u = trial;
     rep.converged = true;
     rep.message.clear();
@@ -130,38 +126,50 @@ SteadyReport SteadySolver::solve_from(std::vector<double>& u, bool newton_first)
 
 SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
   u = model_.cold_start();
-  return solve_from(u, true);
+  return solve(u);
 }
 
-bool SteadySolver::speed_ramp(std::vector<double>& u, SteadyReport& rep) {
-  // The machine's own start-up: at rest the washer settles on its asperities (a small,
-  // well-posed contact problem), then the speed comes up and the film builds, each
-  // step warm-started from the last and halved on failure.
-  const double target = model_.speed();
-  if (!(target > 0)) return false;
-  model_.set_speed(0.0);
-  std::vector<double> state = model_.cold_start();
-  bool ok = reach(state, rep, true);
-  double reached = 0.0, step = 0.05 * target;
-  while (ok && reached < target) {
+double SteadySolver::walk(const std::function<void(double)>& set, double from, double target, double step,
+                          std::vector<double>& state,
+                          const std::function<bool(std::vector<double>&)>& solve_step) {
+  double reached = from;
+  while (reached < target) {
     const double next = std::min(target, reached + step);
-    model_.set_speed(next);
+    set(next);
     std::vector<double> trial = state;
-    NewtonSettings quick = settings_;
-    quick.max_iterations = 25;
-    const NewtonReport n = newton_.solve(trial, quick);
-    account(rep, n);
-    if (n.converged) {
+    if (solve_step(trial)) {
       state = trial;
       reached = next;
       step *= 1.5;
     } else {
       step *= 0.5;
-      ok = step > 1e-4 * target;
+      if (step < 1e-4 * target) break;
     }
   }
-  model_.set_speed(target);
-  if (!ok) return false;
+  set(target);
+  return reached;
+}
+
+bool SteadySolver::speed_ramp(std::vector<double>& u, SteadyReport& rep) {
+  // The machine's own start-up: at rest the washer settles on its asperities (a small,
+  // well-posed contact problem), then the speed comes up and the film builds.
+  const double target = model_.speed();
+  if (!(target > 0)) return false;
+  model_.set_speed(0.0);
+  std::vector<double> state = model_.cold_start();
+  if (!reach(state, rep)) {
+    model_.set_speed(target);
+    return false;
+  }
+  NewtonSettings quick = settings_;
+  quick.max_iterations = 25;
+  const double reached = walk([&](double w) { model_.set_speed(w); }, 0.0, target, 0.05 * target, state,
+                              [&](std::vector<double>& x) {
+                                const NewtonReport n = newton_.solve(x, quick);
+                                account(rep, n);
+                                return n.converged;
+                              });
+  if (reached < target) return false;
   u = state;
   return true;
 }
@@ -181,40 +189,26 @@ SteadyReport SteadySolver::ramp(std::vector<double>& u, SteadyReport rep) {
   const double target = model_.load();
   // Find a fraction of the load that Newton reaches from the cold start.
   std::vector<double> state;
-  double reached = 0.0;
+  double start = 0.0;
   for (double fraction = 0.5; fraction >= 1.0 / 64.0; fraction *= 0.5) {
     model_.set_load(target * fraction);
     state = model_.cold_start();
-    if (reach(state, rep, true)) {
-      reached = target * fraction;
+    if (reach(state, rep)) {
+      start = target * fraction;
       break;
     }
   }
-  if (reached == 0.0) {
+  if (start == 0.0) {
     model_.set_load(target);
     rep.message = "no fraction of the load down to 1/64 converges from the cold start: " + rep.message;
     return rep;
   }
-  // Walk up, warm-starting each step; halve the step on failure.
-  double step = reached;
-  while (reached < target) {
-    const double next = std::min(target, reached + step);
-    model_.set_load(next);
-    std::vector<double> trial = state;
-    if (reach(trial, rep, true)) {
-      state = trial;
-      reached = next;
-      step *= 1.5;
-    } else {
-      step *= 0.5;
-      if (step < 1e-4 * target) {
-        model_.set_load(target);
-        rep.message = "load ramp stalled at " + std::to_string(reached) + " N: " + rep.message;
-        return rep;
-      }
-    }
+  const double reached = walk([&](double w) { model_.set_load(w); }, start, target, start, state,
+                              [&](std::vector<double>& x) { return reach(x, rep); });
+  if (reached < target) {
+    rep.message = "load ramp stalled at " + std::to_string(reached) + " N: " + rep.message;
+    return rep;
   }
-  model_.set_load(target);
   u = state;
   rep.converged = true;
   rep.message.clear();

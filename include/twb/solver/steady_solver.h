@@ -6,6 +6,7 @@
 // and halved on failure. Failure is reported, not hidden.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,7 @@ class SteadySolver {
  public:
   SteadySolver(BearingModel& model, NewtonSettings settings);
 
-  // From u (a warm start), falling back to a load ramp from the cold start.
+  // From u (a warm start), falling back to a speed ramp, then a load ramp, from the cold start.
   SteadyReport solve(std::vector<double>& u);
   // From the paper's cold start.
   SteadyReport solve_cold(std::vector<double>& u);
@@ -37,8 +38,13 @@ class SteadySolver {
   SteadyReport ramp(std::vector<double>& u, SteadyReport rep);
   bool speed_ramp(std::vector<double>& u, SteadyReport& rep);
   // Newton, then pseudo-transient continuation from u; true when u is now a steady state.
-  bool reach(std::vector<double>& u, SteadyReport& rep, bool newton_first);
-  SteadyReport solve_from(std::vector<double>& u, bool newton_first);
+  bool reach(std::vector<double>& u, SteadyReport& rep);
+  // Walks a parameter (speed, load) from `from` up to `target`, each step warm-started
+  // from the last state; the step grows 1.5× after a success and halves after a failure,
+  // giving up below 1e-4 of the target. Returns the value reached; leaves the
+  // parameter at the target.
+  double walk(const std::function<void(double)>& set, double from, double target, double step,
+              std::vector<double>& state, const std::function<bool(std::vector<double>&)>& solve_step);
   double residual_norm(const std::vector<double>& u) const;
   std::vector<double> diagonal_weights(const std::vector<double>& u) const;
 
