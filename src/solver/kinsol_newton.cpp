@@ -22,7 +22,7 @@ double max_norm(std::span<const double> v) {
 }
 
 struct KinsolNewton::Callbacks {
-  const BearingModel* model;
+  const SteadySystem* model;
   std::vector<double> jac_values;
   std::string last_error;      // KINSOL's own message
   std::string callback_error;  // what a callback threw
@@ -58,7 +58,7 @@ int residual_fn(N_Vector y, N_Vector f, void* data) {
 int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector) {
   auto* cb = static_cast<KinsolNewton::Callbacks*>(data);
   try {
-    const BearingModel& m = *cb->model;
+    const SteadySystem& m = *cb->model;
     const SparsePattern& p = m.pattern();
     const auto n = std::size_t(N_VGetLength(y));
     std::vector<double> r(n);
@@ -93,22 +93,15 @@ void check(int flag, const char* call) {
 
 }  // namespace
 
-KinsolNewton::KinsolNewton(const BearingModel& model)
+KinsolNewton::KinsolNewton(const SteadySystem& model)
     : model_(model), ctx_(make_context()), callbacks_(std::make_unique<Callbacks>()) {
   callbacks_->model = &model_;
   for (Index k = 0; k < model_.size(); ++k) callbacks_->diagonal.push_back(model_.pattern().find(k, k));
   const sunindextype n = model_.size();
   y_.reset(N_VNew_Serial(n, ctx_.get()));
   scale_.reset(N_VNew_Serial(n, ctx_.get()));
-  // KINSOL measures a Newton step as ‖D·δu‖₂ and caps it at max_step. Weighting the
-  // rigid body fully and the field unknowns lightly makes that cap a limit on how far
-  // one step may move the washer and gear (in σ), where the exponential contact law
-  // punishes overshoot; temperatures (K) and pressures (p_ref) may move freely.
-  double* d = N_VGetArrayPointer(scale_.get());
-  for (sunindextype k = 0; k < n; ++k) d[k] = 1e-3;
-  for (const auto& b : model_.layout().blocks())
-    if (b.effect == "mechanics")
-      for (Index k = b.offset; k < b.offset + b.size; ++k) d[k] = 1.0;
+  const std::vector<double> weights = model_.step_weights();
+  std::copy(weights.begin(), weights.end(), N_VGetArrayPointer(scale_.get()));
   residual_scale_.reset(N_VNew_Serial(n, ctx_.get()));
   N_VConst(1.0, residual_scale_.get());
   jac_.reset(SUNSparseMatrix(n, n, model_.pattern().nnz(), CSR_MAT, ctx_.get()));
@@ -170,7 +163,7 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
     std::size_t worst = 0;
     for (std::size_t k = 0; k < n; ++k)
       if (!(std::abs(r[k]) <= std::abs(r[worst]))) worst = k;
-    rep.worst_block = model_.layout().block_of(Index(worst)).name;
+    rep.worst_block = model_.block_name(Index(worst));
     rep.worst_row = Index(worst);
     char* name = KINGetReturnFlagName(flag);
     rep.message = std::string(name ? name : "KINSOL failure") +

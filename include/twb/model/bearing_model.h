@@ -19,6 +19,7 @@
 #include "twb/physics/roelands_viscosity.h"
 #include "twb/physics/statistical_contact.h"
 #include "twb/scene/scene.h"
+#include "twb/solver/steady_system.h"
 
 namespace twb {
 
@@ -84,19 +85,30 @@ struct BearingState {
   RigidPosition position;
 };
 
-class BearingModel {
+// As a SteadySystem the continuation parameter is the load (N) and the transient is
+// the paper's thermal one: component temperatures carry their heat capacity ρ c t,
+// everything else (pressures, film nodes, rigid body) is algebraic.
+class BearingModel final : public SteadySystem {
  public:
   explicit BearingModel(const Scene& scene);
 
   const Scene& scene() const { return scene_; }
   const UnknownLayout& layout() const { return layout_; }
-  Index size() const { return layout_.size(); }
-  const SparsePattern& pattern() const { return pattern_; }
+  Index size() const override { return layout_.size(); }
+  const SparsePattern& pattern() const override { return pattern_; }
   const std::vector<Film>& films() const { return films_; }
   const std::vector<ComponentHeat>& components() const { return components_; }
 
   // Residual and (if jacobian is non-empty) Jacobian values in pattern().
-  void evaluate(std::span<const double> u, std::span<double> residual, std::span<double> jacobian) const;
+  void evaluate(std::span<const double> u, std::span<double> residual, std::span<double> jacobian) const override;
+
+  // SteadySystem: λ = load; C from MODEL.md section 7 (bearing_dynamics.cpp).
+  double parameter() const override { return load_; }
+  void set_parameter(double value) override { set_load(value); }
+  void parameter_derivative(std::span<const double> u, std::span<double> derivative) const override;
+  std::vector<double> capacities() const override;
+  std::vector<double> step_weights() const override;
+  std::string block_name(Index k) const override { return layout_.block_of(k).name; }
 
   // The paper's cold start: both films at h_min/σ = cold_start_film, washer tilted half
   // way, ambient temperature, no pressure.

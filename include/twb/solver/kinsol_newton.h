@@ -1,4 +1,4 @@
-// Newton's method on a BearingModel with SUNDIALS KINSOL: line search globalization,
+// Newton's method on a SteadySystem (the bearing, or any other) with SUNDIALS KINSOL: line search globalization,
 // the model's exact sparse Jacobian in CSR, factored by KLU (symbolic analysis once,
 // numeric refactorization afterwards; SUNDIALS falls back to a full factorization when
 // the reciprocal condition estimate says the old pivot order has gone bad).
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "twb/model/bearing_model.h"
+#include "twb/solver/steady_system.h"
 #include "twb/solver/sundials_context.h"
 
 namespace twb {
@@ -48,7 +48,7 @@ struct PseudoTimeShift {
 
 class KinsolNewton {
  public:
-  explicit KinsolNewton(const BearingModel& model);
+  explicit KinsolNewton(const SteadySystem& system);
   ~KinsolNewton();
   KinsolNewton(const KinsolNewton&) = delete;
   KinsolNewton& operator=(const KinsolNewton&) = delete;
@@ -58,12 +58,12 @@ class KinsolNewton {
   NewtonReport solve(std::vector<double>& u, const NewtonSettings& settings,
                      const PseudoTimeShift* shift = nullptr);
 
-  const BearingModel& model() const { return model_; }
+  const SteadySystem& system() const { return model_; }
   // Callback state, public for the C trampolines.
   struct Callbacks;
 
  private:
-  const BearingModel& model_;
+  const SteadySystem& model_;
   SundialsContext ctx_;
   Vector y_, scale_, residual_scale_;
   Matrix jac_;

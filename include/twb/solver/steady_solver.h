@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "twb/model/bearing_model.h"
 #include "twb/solver/kinsol_newton.h"
 
 namespace twb {

@@ -1,0 +1,47 @@
+// What the solvers need from a problem: a square sparse system F(u; λ) = 0 in one
+// continuation parameter λ, its exact Jacobian ∂F/∂u in a fixed pattern, the exact
+// ∂F/∂λ, and the capacities of the pseudo-time transient
+//
+//     C · du/dt = −F(u; λ),   C diagonal, C_k = 0 for an algebraic unknown,
+//
+// whose steady states are the roots of F. Rows are oriented so that the diagonal of
+// ∂F/∂u is positive where the physics is stable (u' = −F relaxes).
+//
+// The bearing (BearingModel, λ = load in N) implements it, and so do the model
+// problems with known critical points (Semenov, Bratu) that prove the continuation
+// and runaway machinery on the same code path.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "twb/model/sparse_assembly.h"
+
+namespace twb {
+
+class SteadySystem {
+ public:
+  virtual ~SteadySystem() = default;
+
+  virtual Index size() const = 0;
+  virtual const SparsePattern& pattern() const = 0;
+  // Residual and, if jacobian is non-empty, ∂F/∂u in pattern() order.
+  virtual void evaluate(std::span<const double> u, std::span<double> residual,
+                        std::span<double> jacobian) const = 0;
+
+  virtual double parameter() const = 0;
+  virtual void set_parameter(double value) = 0;
+  // ∂F/∂λ at u and the current λ.
+  virtual void parameter_derivative(std::span<const double> u, std::span<double> derivative) const = 0;
+
+  // Diagonal of C (time units of the transient); 0 marks an algebraic unknown.
+  virtual std::vector<double> capacities() const = 0;
+
+  // Weights KINSOL measures a Newton step with (its maximum step is in these units).
+  virtual std::vector<double> step_weights() const { return std::vector<double>(std::size_t(size()), 1.0); }
+  // Name of the group of unknowns holding unknown k, for failure reports.
+  virtual std::string block_name(Index) const { return "unknowns"; }
+};
+
+}  // namespace twb

@@ -1,0 +1,53 @@
+// The bearing as a parametrized system with a pseudo-time transient (steady_system.h).
+#include <algorithm>
+#include <stdexcept>
+
+#include "twb/model/bearing_model.h"
+
+namespace twb {
+
+// Only the 4 rigid-body rows see the load: after orientation
+//   F_k = −(S_k / ref_k − δ_k3),   ref = W (forces) or W·r_o (moments)   (eqs [34]-[37]),
+// with S_k the film sums, which do not depend on W. Hence
+//   ∂F_k/∂W = S_k / (ref_k · W) = (δ_k3 − F_k) / W,
+// exact from the residual at u.
+void BearingModel::parameter_derivative(std::span<const double> u, std::span<double> derivative) const {
+  if (derivative.size() != u.size()) throw std::invalid_argument("parameter_derivative: size mismatch");
+  std::vector<double> r(u.size());
+  evaluate(u, r, {});
+  std::fill(derivative.begin(), derivative.end(), 0.0);
+  for (Index k = 0; k < 4; ++k) {
+    const std::size_t row = std::size_t(rigid_offset_ + k);
+    derivative[row] = ((k == 3 ? 1.0 : 0.0) - r[row]) / load_;
+  }
+}
+
+// A component row is (heat in − heat out)·s_k with s_k = 1/(reference conductance)
+// (K/W), oriented to −(gains − losses)·s_k; the node's balance ρ c t A_k dT/dt =
+// gains − losses then reads C_k dT̂/dt = −F_k with C_k = ρ c t A_k s_k, in seconds.
+std::vector<double> BearingModel::capacities() const {
+  std::vector<double> c(std::size_t(size()), 0.0);
+  for (std::size_t n = 0; n < components_.size(); ++n) {
+    const ComponentHeat& comp = components_[n];
+    for (int local = 0; local < comp.node_count(); ++local) {
+      const int ring = comp.axisymmetric ? local : local / comp.grid.circumferential_nodes();
+      c[std::size_t(comp.offset + local)] =
+          comp.capacity_per_area * comp.node_area(ring) * component_row_scale_[n][std::size_t(local)];
+    }
+  }
+  return c;
+}
+
+// KINSOL measures a Newton step as ‖D·δu‖₂ and caps it: weighting the rigid body fully
+// and the field unknowns lightly makes the cap a limit on how far one step may move
+// the washer and gear (in σ), where the exponential contact law punishes overshoot;
+// temperatures (K) and pressures (p_ref) may move freely.
+std::vector<double> BearingModel::step_weights() const {
+  std::vector<double> d(std::size_t(size()), 1e-3);
+  for (const auto& b : layout_.blocks())
+    if (b.effect == "mechanics")
+      for (Index k = b.offset; k < b.offset + b.size; ++k) d[std::size_t(k)] = 1.0;
+  return d;
+}
+
+}  // namespace twb
