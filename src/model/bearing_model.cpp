@@ -175,6 +175,10 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   std::vector<double> u = cold_start();
   assemble(u, structure, nullptr);
   pattern_ = structure.finish_structure();
+  // One searched Jacobian pass records where each entry lands (sparse_assembly.h).
+  std::vector<double> r(u.size()), jac(std::size_t(pattern_.nnz()));
+  Assembler recorder(&pattern_, r, jac, &slot_tape_);
+  assemble(u, recorder, nullptr);
 }
 
 const Film& BearingModel::sliding_film() const { return films_[0].sliding ? films_[0] : films_[1]; }
@@ -282,7 +286,7 @@ std::vector<double> BearingModel::cold_start() const {
 
 void BearingModel::evaluate(std::span<const double> u, std::span<double> residual,
                             std::span<double> jacobian) const {
-  Assembler a(&pattern_, residual, jacobian);
+  Assembler a(&pattern_, residual, jacobian, &slot_tape_);
   assemble(u, a, nullptr);
 }
 

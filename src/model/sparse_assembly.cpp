@@ -15,14 +15,22 @@ Index SparsePattern::find(Index r, Index c) const {
 
 Assembler::Assembler(Index n) : mode_(Mode::structure), n_(n) {}
 
-Assembler::Assembler(const SparsePattern* pattern, std::span<double> residual, std::span<double> jacobian)
-    : mode_(Mode::values), n_(pattern->rows), pattern_(pattern), residual_(residual), jacobian_(jacobian) {
+Assembler::Assembler(const SparsePattern* pattern, std::span<double> residual, std::span<double> jacobian,
+                     const std::vector<Index>* slot_tape)
+    : mode_(Mode::values), n_(pattern->rows), pattern_(pattern), residual_(residual), jacobian_(jacobian),
+      tape_(jacobian.empty() ? nullptr : slot_tape) {
   std::fill(residual_.begin(), residual_.end(), 0.0);
   std::fill(jacobian_.begin(), jacobian_.end(), 0.0);
 }
 
-void Assembler::add_derivative(Index row, Index col, double value) {
-  if (row < 0 || col < 0) return;
+Assembler::Assembler(const SparsePattern* pattern, std::span<double> residual, std::span<double> jacobian,
+                     std::vector<Index>* record_tape)
+    : Assembler(pattern, residual, jacobian, static_cast<const std::vector<Index>*>(nullptr)) {
+  recording_ = record_tape;
+  if (recording_) recording_->clear();
+}
+
+void Assembler::add_derivative_searched(Index row, Index col, double value) {
   if (mode_ == Mode::structure) {
     entries_.emplace_back(row, col);
     return;
@@ -33,6 +41,7 @@ void Assembler::add_derivative(Index row, Index col, double value) {
     throw std::logic_error("Jacobian entry (" + std::to_string(row) + ", " + std::to_string(col) +
                            ") is outside the structural pattern");
   jacobian_[k] += value;
+  if (recording_) recording_->push_back(k);
 }
 
 void Assembler::add_form(Index row, double scale, const LinearForm& form) {
