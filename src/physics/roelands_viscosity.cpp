@@ -15,7 +15,9 @@ ValueSlope RoelandsViscosity::operator()(double temperature_K) const {
   // exponent(T) = G0 (1 + T_C/135)^(-S0); d exponent/dT = -S0/(135 + T_C) * exponent.
   const auto exponent_and_slope = [this](double t_c) {
     const double base = 1.0 + t_c / roelands_temperature_scale;
-    const double exponent = g0 * std::pow(base, -s0);
+    // base^(−S0) and 10^exponent through exp and log: the same values to rounding, at
+    // about half the cost of two pow calls (this kernel runs at every Gauss point).
+    const double exponent = g0 * std::exp(-s0 * std::log(base));
     return ValueSlope{exponent, -s0 * exponent / (roelands_temperature_scale + t_c)};
   };
   ValueSlope exponent;
@@ -27,7 +29,7 @@ ValueSlope RoelandsViscosity::operator()(double temperature_K) const {
     exponent = {at_edge.value + at_edge.slope * (celsius - continuation_celsius),
                 at_edge.slope};
   }
-  const double mu = mu_infinity * std::pow(10.0, exponent.value);
+  const double mu = mu_infinity * std::exp(std::numbers::ln10 * exponent.value);
   return {mu, mu * std::numbers::ln10 * exponent.slope};
 }
 

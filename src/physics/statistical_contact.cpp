@@ -147,7 +147,7 @@ ValueSlope log_pressure(const UniformHermiteTable& table, double sigma, double h
 
 }  // namespace
 
-ValueSlope StatisticalContact::pressure(double h) const {
+ValueSlope StatisticalContact::pressure_off_table(double h) const {
   const ValueSlope log_p = log_pressure(table_, summit_sigma_, h);
   const double p = std::exp(log_p.value);
   return {p, p * log_p.slope};

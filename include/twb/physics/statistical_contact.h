@@ -15,6 +15,8 @@
 // matched). The continuation is C1 everywhere.
 #pragma once
 
+#include <cmath>
+
 #include "twb/physics/asperity_contact.h"
 #include "twb/physics/uniform_hermite_table.h"
 #include "twb/physics/value_slope.h"
@@ -48,7 +50,13 @@ class StatisticalContact {
 
   // Contact pressure p (Pa) and dp/dh (Pa/m) at mean-plane separation h (m), from the
   // table: O(1), one exp. C1 in h; p > 0 until it underflows far above the table.
-  ValueSlope pressure(double h) const;
+  // Inline on the table: it runs at every Gauss point of every near-contact cell.
+  ValueSlope pressure(double h) const {
+    if (!(h >= table_.x_first() && h <= table_.x_last())) return pressure_off_table(h);
+    const ValueSlope log_p = table_.evaluate(h);
+    const double p = std::exp(log_p.value);
+    return {p, p * log_p.slope};
+  }
 
   // The same by direct adaptive quadrature (relative tolerance ~1e-13), split at the
   // JG transition w = 1.9 omega_c and at the Gaussian peak. For tests and table building.
@@ -83,6 +91,7 @@ class StatisticalContact {
   double table_slope_error_bound_ = 0.0;
   double cutoff_gap_ = 0.0;
 
+  ValueSlope pressure_off_table(double h) const;  // the continuations of ln p
   void build_table(const StatisticalContactTableOptions& options);
   double find_cutoff_gap(double relative_level) const;
 };
