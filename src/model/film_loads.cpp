@@ -135,10 +135,15 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       // Contact: the high-order rule where contact can exist (elsewhere p_c < 1e-20 p(0),
       // whose force is below 1e-12 of any load: skipping is invisible to Newton).
       if (near_contact) {
+        // Friction power of this cell per corner node, gathered here and added once.
+        std::array<double, 4> power{};
+        std::array<std::array<double, 3>, 4> power_rigid{};
         for (std::size_t gs = 0; gs < contact_rule_.points.size(); ++gs) {
           for (std::size_t gt = 0; gt < contact_rule_.points.size(); ++gt) {
             const auto [s, tt, r, x, y, w] = point(contact_rule_, cos_c, sin_c, i, j, gs, gt);
             const double h = c + pa * x + pb * y;
+            // The cell's rule, point by point: beyond the cutoff p < 1e-20 p(0) (above).
+            if (h > cutoff) continue;
             const std::array<double, 3> dh = gap_gradient(film, x, y);
             const ValueSlope v = contact_->pressure(h);
             const std::array<double, 3> arm{1.0, y, -x};  // F, Mx = Σ F y, My = −Σ F x
@@ -153,9 +158,15 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
             tot.contact_torque_per_f += w * v.value * r;
             const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
             for (int k = 0; k < 4; ++k) {
-              tot.contact_power[node[k]] += w * N[k] * v.value * v_slide;
-              for (int d = 0; d < 3; ++d) tot.contact_power_rigid[node[k]][d] += w * N[k] * v.slope * v_slide * dh[d];
+              power[k] += w * N[k] * v.value * v_slide;
+              for (int d = 0; d < 3; ++d) power_rigid[k][d] += w * N[k] * v.slope * v_slide * dh[d];
             }
+          }
+        }
+        if (film.sliding) {
+          for (int k = 0; k < 4; ++k) {
+            tot.contact_power[node[k]] += power[k];
+            for (int d = 0; d < 3; ++d) tot.contact_power_rigid[node[k]][d] += power_rigid[k][d];
           }
         }
       }
