@@ -171,6 +171,8 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
     for (const Film& f : films_) viscosity_forms_[f.number - 1].resize(f.mesh.node_count());
   }
 
+  if (fx.thermal) build_heat_nodes();
+
   Assembler structure(layout_.size());
   std::vector<double> u = cold_start();
   assemble(u, structure, nullptr);
@@ -215,7 +217,10 @@ RigidPosition BearingModel::position(std::span<const double> u) const {
 }
 
 double BearingModel::film_gap(const Film& film, const RigidPosition& q, double r, double theta) const {
-  const double x = r * std::cos(theta), y = r * std::sin(theta);
+  return gap_at(film, q, r * std::cos(theta), r * std::sin(theta));
+}
+
+double BearingModel::gap_at(const Film& film, const RigidPosition& q, double x, double y) const {
   const double c = film.clearance_unknown == 0 ? q.c1 : q.c2;
   return c + film.sign * (q.gamma_x * y - q.gamma_y * x) - film.imposed_tilt * x;
 }

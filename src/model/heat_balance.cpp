@@ -16,56 +16,89 @@
 
 namespace twb {
 
+void BearingModel::build_heat_nodes() {
+  const std::vector<double> zero(std::size_t(layout_.size()), 0.0);
+  heat_nodes_.assign(films_.size(), {});
+  for (const Film& film : films_) {
+    const FilmMesh& m = film.mesh;
+    auto& nodes = heat_nodes_[std::size_t(film.number - 1)];
+    nodes.resize(std::size_t(m.node_count()));
+    for (int i = 0; i < m.radial_nodes(); ++i) {
+      for (int j = 0; j < m.circumferential_nodes(); ++j) {
+        HeatNode& node = nodes[std::size_t(m.node(i, j))];
+        const double r = m.radius(i), th = m.angle(j);
+        node.x = r * std::cos(th);
+        node.y = r * std::sin(th);
+        const std::array<ComponentId, 2> sides{film.lower, film.upper};
+        for (std::size_t side = 0; side < 2; ++side) {
+          LinearForm face;
+          face_temperature(zero, sides[side], r, j, &face);
+          FaceLink& link = node.face[side];
+          for (const auto& [k, w] : face.terms) {
+            for (std::size_t c = 0; c < components_.size(); ++c) {
+              const ComponentHeat& comp = components_[c];
+              if (k < comp.offset || k >= comp.offset + comp.node_count()) continue;
+              link.column[std::size_t(link.terms)] = k;
+              link.weight[std::size_t(link.terms)] = w;
+              link.row_scale[std::size_t(link.terms)] = component_row_scale_[c][std::size_t(k - comp.offset)];
+              ++link.terms;
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
 void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const Totals&) const {
   const bool jac = a.wants_jacobian();
   const double k_oil = scene_.lubricant.conductivity;
+  const double ambient = scene_.operating.ambient;
   const RigidPosition q = position(u);
-
-  auto component_index = [&](Index k) -> std::pair<std::size_t, Index> {
-    for (std::size_t c = 0; c < components_.size(); ++c)
-      if (k >= components_[c].offset && k < components_[c].offset + components_[c].node_count())
-        return {c, k - components_[c].offset};
-    return {components_.size(), -1};
-  };
 
   // Film nodes and their exchange with the bounding components.
   for (const Film& film : films_) {
     const FilmMesh& m = film.mesh;
     const std::array<Index, 3> rigid_cols{rigid_offset_ + film.clearance_unknown, rigid_offset_ + 1,
                                           rigid_offset_ + 2};
+    const std::array<ComponentId, 2> sides{film.lower, film.upper};
     for (int i = 0; i < m.radial_nodes(); ++i) {
-      const double r = m.radius(i);
       const double area = m.node_area(i);
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const int n = m.node(i, j);
+        const HeatNode& node = heat_nodes_[std::size_t(film.number - 1)][std::size_t(n)];
         const Index row = film.temperature_offset + n;
         const double scale = film_row_scale_[film.number - 1][n];
-        const double th = m.angle(j), x = r * std::cos(th), y = r * std::sin(th);
-        const double h = film_gap(film, q, r, th);
+        const double x = node.x, y = node.y;
+        const double h = gap_at(film, q, x, y);
         const std::array<double, 3> dh = gap_gradient(film, x, y);
         const ValueSlope gap = average_gap(h, film.sigma);
         const double tf = temperature_of(u, row);
 
-        for (ComponentId side : {film.lower, film.upper}) {
-          LinearForm face;
-          const double ts = face_temperature(u, side, r, j, &face);
-          const double res = gap.value / (2.0 * k_oil) + body_resistance(side);
+        for (std::size_t side = 0; side < 2; ++side) {
+          const FaceLink& face = node.face[side];
+          double ts = ambient;
+          for (int t = 0; t < face.terms; ++t) ts += face.weight[std::size_t(t)] * u[face.column[std::size_t(t)]];
+          const double res = gap.value / (2.0 * k_oil) + body_resistance(sides[side]);
           const double flow = area * (tf - ts) / res;  // W from the film node into the component
           const double dflow_dh = -flow / res * gap.slope / (2.0 * k_oil);
+          const double conductance = area / res;
           a.add_residual(row, -scale * flow);
           if (jac) {
-            a.add_derivative(row, row, -scale * area / res);
-            a.add_form(row, scale * area / res, face);
+            a.add_derivative(row, row, -scale * conductance);
+            for (int t = 0; t < face.terms; ++t)
+              a.add_derivative(row, face.column[std::size_t(t)], scale * conductance * face.weight[std::size_t(t)]);
             for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], -scale * dflow_dh * dh[d]);
           }
-          for (auto [k, wgt] : face.terms) {
-            const auto [c, local] = component_index(k);
-            const double cs = component_row_scale_[c][local];
-            a.add_residual(k, cs * wgt * flow);
+          for (int t = 0; t < face.terms; ++t) {
+            const Index k = face.column[std::size_t(t)];
+            const double cw = face.row_scale[std::size_t(t)] * face.weight[std::size_t(t)];
+            a.add_residual(k, cw * flow);
             if (!jac) continue;
-            a.add_derivative(k, row, cs * wgt * area / res);
-            a.add_form(k, -cs * wgt * area / res, face);
-            for (int d = 0; d < 3; ++d) a.add_derivative(k, rigid_cols[d], cs * wgt * dflow_dh * dh[d]);
+            a.add_derivative(k, row, cw * conductance);
+            for (int t2 = 0; t2 < face.terms; ++t2)
+              a.add_derivative(k, face.column[std::size_t(t2)], -cw * conductance * face.weight[std::size_t(t2)]);
+            for (int d = 0; d < 3; ++d) a.add_derivative(k, rigid_cols[d], cw * dflow_dh * dh[d]);
           }
         }
       }

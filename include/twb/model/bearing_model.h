@@ -186,6 +186,23 @@ class BearingModel final : public SteadySystem {
   std::vector<Index> slot_tape_;  // where each Jacobian entry of a pass lands (sparse_assembly.h)
   std::vector<std::vector<LinearForm>> viscosity_forms_;  // per film, per node
 
+  // A film node's heat path to the face of one bounding component (heat_balance.cpp):
+  // the face temperature interpolated from the component's nodes (at most two), those
+  // nodes' row scales, and the node's position. Grids only: built once per model.
+  struct FaceLink {
+    int terms = 0;
+    std::array<Index, 2> column{};
+    std::array<double, 2> weight{}, row_scale{};
+  };
+  struct HeatNode {
+    double x = 0, y = 0;
+    std::array<FaceLink, 2> face;  // lower, upper
+  };
+  std::vector<std::vector<HeatNode>> heat_nodes_;  // per film, per node
+  void build_heat_nodes();
+  // film_gap() at a point (x, y) of the load frame.
+  double gap_at(const Film& film, const RigidPosition& q, double x, double y) const;
+
 };
 
 }  // namespace twb
