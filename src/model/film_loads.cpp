@@ -50,6 +50,9 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
   const double pb = film.sign * q.gamma_x;
   const std::array<Index, 3> rigid_cols{rigid_offset_ + film.clearance_unknown, rigid_offset_ + 1,
                                         rigid_offset_ + 2};
+  // gap_gradient(film, x, y) = g ⊙ (1, y, −x): the gap's slopes per unit moment arm.
+  const std::array<double, 3> g{gap_gradient(film, 0.0, 1.0)[0], gap_gradient(film, 0.0, 1.0)[1],
+                                gap_gradient(film, -1.0, 0.0)[2]};
   const bool hydro = film.pressure_offset >= 0;
   const bool heat = film.sliding && scene_.effects.thermal;
   const bool contact = contact_.has_value();
@@ -125,17 +128,24 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
                                                  cos_node[j + 1], sin_node[j + 1]) < cutoff);
 
       // Local accumulators: value, d/d(rigid 3), d/d(corner pressure 4), d/d(corner T 4).
+      // Rigid-body gradients are gathered against the moment arms a = (1, y, −x) of
+      // (F, Mx, My): the gap gradient is dh = g ⊙ a (gap_gradient), so every integral
+      // of f·dh is g ⊙ (integral of f·a), and g is applied once per cell.
       std::array<double, 3> load_val{};  // F, Mx, My
-      std::array<std::array<double, 3>, 3> load_rigid{};
+      std::array<std::array<double, 3>, 3> load_rigid{};  // against the arms until scaled by g
       std::array<std::array<double, 4>, 3> load_p{};
       std::array<double, 4> vheat{};
-      std::array<std::array<double, 3>, 4> vheat_rigid{};
+      std::array<std::array<double, 3>, 4> vheat_rigid{};  // against the arms until scaled by g
       std::array<std::array<double, 4>, 4> vheat_t{};
 
       // Contact: the high-order rule where contact can exist (elsewhere p_c < 1e-20 p(0),
       // whose force is below 1e-12 of any load: skipping is invisible to Newton).
       if (near_contact) {
-        // Friction power of this cell per corner node, gathered here and added once.
+        // Σ w p_c a, Σ w p_c' a aᵀ (symmetric: 00 01 02 11 12 22), and the friction power
+        // per corner node with its gradient against the arms, added to the film once.
+        std::array<double, 3> force{};
+        std::array<double, 6> stiffness{};
+        double torque = 0;
         std::array<double, 4> power{};
         std::array<std::array<double, 3>, 4> power_rigid{};
         for (std::size_t gs = 0; gs < contact_rule_.points.size(); ++gs) {
@@ -144,29 +154,44 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
             const double h = c + pa * x + pb * y;
             // The cell's rule, point by point: beyond the cutoff p < 1e-20 p(0) (above).
             if (h > cutoff) continue;
-            const std::array<double, 3> dh = gap_gradient(film, x, y);
             const ValueSlope v = contact_->pressure(h);
-            const std::array<double, 3> arm{1.0, y, -x};  // F, Mx = Σ F y, My = −Σ F x
-            for (int qd = 0; qd < 3; ++qd) {
-              load_val[qd] += w * v.value * arm[qd];
-              for (int d = 0; d < 3; ++d) load_rigid[qd][d] += w * v.slope * dh[d] * arm[qd];
-            }
-            tot.contact_force += w * v.value;
-            for (int d = 0; d < 3; ++d) tot.contact_force_rigid[d] += w * v.slope * dh[d];
+            const double f = w * v.value, k = w * v.slope;
+            force[0] += f;
+            force[1] += f * y;
+            force[2] -= f * x;
+            stiffness[0] += k;
+            stiffness[1] += k * y;
+            stiffness[2] -= k * x;
+            stiffness[3] += k * y * y;
+            stiffness[4] -= k * x * y;
+            stiffness[5] += k * x * x;
             if (!film.sliding) continue;
             const double v_slide = omega * r;
-            tot.contact_torque_per_f += w * v.value * r;
+            torque += f * r;
             const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
-            for (int k = 0; k < 4; ++k) {
-              power[k] += w * N[k] * v.value * v_slide;
-              for (int d = 0; d < 3; ++d) power_rigid[k][d] += w * N[k] * v.slope * v_slide * dh[d];
+            for (int n = 0; n < 4; ++n) {
+              const double nv = N[n] * v_slide, kn = k * nv;
+              power[n] += f * nv;
+              power_rigid[n][0] += kn;
+              power_rigid[n][1] += kn * y;
+              power_rigid[n][2] -= kn * x;
             }
           }
         }
+        const std::array<std::array<double, 3>, 3> arms{{{stiffness[0], stiffness[1], stiffness[2]},
+                                                         {stiffness[1], stiffness[3], stiffness[4]},
+                                                         {stiffness[2], stiffness[4], stiffness[5]}}};
+        for (int qd = 0; qd < 3; ++qd) {
+          load_val[qd] += force[qd];
+          for (int d = 0; d < 3; ++d) load_rigid[qd][d] += arms[qd][d];
+        }
+        tot.contact_force += force[0];
+        for (int d = 0; d < 3; ++d) tot.contact_force_rigid[d] += g[d] * arms[0][d];
         if (film.sliding) {
-          for (int k = 0; k < 4; ++k) {
-            tot.contact_power[node[k]] += power[k];
-            for (int d = 0; d < 3; ++d) tot.contact_power_rigid[node[k]][d] += power_rigid[k][d];
+          tot.contact_torque_per_f += torque;
+          for (int n = 0; n < 4; ++n) {
+            tot.contact_power[node[n]] += power[n];
+            for (int d = 0; d < 3; ++d) tot.contact_power_rigid[node[n]][d] += g[d] * power_rigid[n][d];
           }
         }
       }
@@ -189,7 +214,6 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           }
           if (!film.sliding) continue;
           const double h = c + pa * x + pb * y;
-          const std::array<double, 3> dh = gap_gradient(film, x, y);
           const double v_slide = omega * r;
           double tv = 0;
           for (int k = 0; k < 4; ++k) tv += N[k] * t_node[k];
@@ -205,7 +229,10 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           for (int k = 0; k < 4; ++k) {
             const double wn = w * N[k];
             vheat[k] += wn * qv;
-            for (int d = 0; d < 3; ++d) vheat_rigid[k][d] += wn * dqv_dh * dh[d];
+            const double q = wn * dqv_dh;
+            vheat_rigid[k][0] += q;
+            vheat_rigid[k][1] += q * y;
+            vheat_rigid[k][2] -= q * x;
             for (int l = 0; l < 4; ++l) vheat_t[k][l] += wn * dqv_dt * N[l];
           }
         }
@@ -218,7 +245,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           if (coef[qd] == 0.0) continue;
           a.add_residual(rs.row, coef[qd] * load_val[qd]);
           if (!jac) continue;
-          for (int d = 0; d < 3; ++d) a.add_derivative(rs.row, rigid_cols[d], coef[qd] * load_rigid[qd][d]);
+          for (int d = 0; d < 3; ++d) a.add_derivative(rs.row, rigid_cols[d], coef[qd] * g[d] * load_rigid[qd][d]);
           for (int k = 0; k < 4; ++k) a.add_derivative(rs.row, p_col[k], coef[qd] * load_p[qd][k]);
         }
       }
@@ -229,7 +256,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           const double sc = film_row_scale_[film.number - 1][node[k]];
           a.add_residual(row, sc * vheat[k]);
           if (!jac) continue;
-          for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], sc * vheat_rigid[k][d]);
+          for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], sc * g[d] * vheat_rigid[k][d]);
           for (int l = 0; l < 4; ++l) a.add_form(row, sc * vheat_t[k][l], viscosity_temperature_form(film, node[l]));
         }
       }
