@@ -179,7 +179,8 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   pattern_ = structure.finish_structure();
   // One searched Jacobian pass records where each entry lands (sparse_assembly.h).
   std::vector<double> r(u.size()), jac(std::size_t(pattern_.nnz()));
-  Assembler recorder(&pattern_, r, jac, &slot_tape_);
+  Assembler recorder(&pattern_, r, jac);
+  recorder.record_slots(&slot_tape_);
   assemble(u, recorder, nullptr);
 }
 

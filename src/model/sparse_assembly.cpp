@@ -23,10 +23,9 @@ Assembler::Assembler(const SparsePattern* pattern, std::span<double> residual, s
   std::fill(jacobian_.begin(), jacobian_.end(), 0.0);
 }
 
-Assembler::Assembler(const SparsePattern* pattern, std::span<double> residual, std::span<double> jacobian,
-                     std::vector<Index>* record_tape)
-    : Assembler(pattern, residual, jacobian, static_cast<const std::vector<Index>*>(nullptr)) {
-  recording_ = record_tape;
+void Assembler::record_slots(std::vector<Index>* tape) {
+  tape_ = nullptr;
+  recording_ = tape;
   if (recording_) recording_->clear();
 }
 

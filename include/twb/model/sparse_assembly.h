@@ -52,9 +52,6 @@ class Assembler {
   // With a slot tape (see above) entries are placed by it; without, by search.
   Assembler(const SparsePattern* pattern, std::span<double> residual, std::span<double> jacobian,
             const std::vector<Index>* slot_tape = nullptr);
-  // Value mode that records the slot tape of this pass into *tape (cleared first).
-  Assembler(const SparsePattern* pattern, std::span<double> residual, std::span<double> jacobian,
-            std::vector<Index>* record_tape);
 
   Mode mode() const { return mode_; }
   bool wants_jacobian() const { return mode_ == Mode::structure || !jacobian_.empty(); }
@@ -90,6 +87,8 @@ class Assembler {
   void scale_row(Index row, double a);
 
   SparsePattern finish_structure() const;
+  // Records the slot tape of this (value, searching) pass into *tape, cleared first.
+  void record_slots(std::vector<Index>* tape);
   // True while every entry so far has been placed by the slot tape.
   bool on_tape() const { return tape_ != nullptr; }
 

@@ -1,0 +1,66 @@
+// The slot tape of sparse_assembly.h: a recorded pass places entries without searching,
+// and a pass that leaves it still lands every entry where the search would.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "twb/model/sparse_assembly.h"
+
+namespace twb {
+namespace {
+
+// A 3×3 pattern with entries (0,0) (0,2) (1,1) (2,0) (2,2).
+SparsePattern small_pattern() {
+  Assembler structure(3);
+  for (auto [r, c] : {std::pair{0, 2}, {2, 0}, {1, 1}}) structure.add_derivative(r, c, 0.0);
+  return structure.finish_structure();
+}
+
+void add_sequence(Assembler& a) {
+  a.add_derivative(0, 2, 1.0);
+  a.add_derivative(2, 0, 2.0);
+  a.add_derivative(0, 0, 3.0);
+  a.add_derivative(2, 0, 4.0);  // repeated entries add up
+}
+
+// The sequence's tape, and the values it assembles by search into jacobian.
+std::vector<Index> recorded_tape(const SparsePattern& p, std::vector<double>& jacobian) {
+  std::vector<double> r(std::size_t(p.rows));
+  jacobian.assign(std::size_t(p.nnz()), 0.0);
+  std::vector<Index> tape;
+  Assembler recorder(&p, r, jacobian);
+  recorder.record_slots(&tape);
+  add_sequence(recorder);
+  return tape;
+}
+
+TEST(SlotTape, ReplayPlacesEntriesLikeTheSearch) {
+  const SparsePattern p = small_pattern();
+  std::vector<double> r(3), searched, replayed(std::size_t(p.nnz()));
+  const std::vector<Index> tape = recorded_tape(p, searched);
+  EXPECT_EQ(tape.size(), 4u);
+  Assembler replay(&p, r, replayed, &tape);
+  add_sequence(replay);
+  EXPECT_TRUE(replay.on_tape());
+  EXPECT_EQ(replayed, searched);
+}
+
+TEST(SlotTape, LeavingTheTapeStillPlacesEveryEntry) {
+  const SparsePattern p = small_pattern();
+  std::vector<double> r(3), expected, got(std::size_t(p.nnz()));
+  const std::vector<Index> tape = recorded_tape(p, expected);
+  // Another order than recorded: the first mismatch drops the tape.
+  Assembler a(&p, r, got, &tape);
+  a.add_derivative(0, 2, 1.0);
+  a.add_derivative(0, 0, 3.0);  // the tape expected (2, 0) here
+  EXPECT_FALSE(a.on_tape());
+  a.add_derivative(2, 0, 2.0);
+  a.add_derivative(2, 0, 4.0);
+  EXPECT_EQ(got, expected);
+  EXPECT_THROW(a.add_derivative(1, 0, 1.0), std::logic_error);  // outside the pattern
+}
+
+}  // namespace
+}  // namespace twb
