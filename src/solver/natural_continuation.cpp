@@ -52,22 +52,24 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
   KinsolNewton newton(system);
   SparseLu lu(system.pattern());
 
-  std::vector<double> previous, slope;  // the state before u; u_λ at u (tangent predictor, first step)
-  double previous_step = 0.0, first_rate = 0.0, last_rate = 0.0;
+  // The state before u, and u_λ at u: the exact local slope, which judges every
+  // correction. A secant carries the mean slope over the previous step, wrong by
+  // O(u_λλ·Δλ_prev) however short the new step; after a long step towards a fold that
+  // error alone exceeds the rejection threshold and the continuation stalls (on the
+  // bearing, 1.2 N below the fold). The tangent's error shrinks with the step.
+  std::vector<double> previous, slope = sensitivity(system, lu, u);
+  const double first_slope = metric.state_norm(slope);
+  double previous_step = 0.0;
   while (rep.lambda != target) {
     const double step = control.step();
     const bool last = std::abs(target - rep.lambda) <= step;
     const double next = last ? target : rep.lambda + direction * step;
     const double dl = next - rep.lambda;
-    if ((previous.empty() || s.predictor == Predictor::tangent) && slope.empty()) slope = sensitivity(system, lu, u);
-    // The extrapolation a correction is judged against, and Newton's first iterate.
-    std::vector<double> reference = u;
-    for (std::size_t k = 0; k < u.size(); ++k)
-      reference[k] += previous.empty() ? dl * slope[k] : dl / previous_step * (u[k] - previous[k]);
-    std::vector<double> trial = u;
-    if (s.predictor == Predictor::secant) trial = reference;
-    if (s.predictor == Predictor::tangent)
-      for (std::size_t k = 0; k < u.size(); ++k) trial[k] += dl * slope[k];
+    std::vector<double> reference = u, trial = u;
+    for (std::size_t k = 0; k < u.size(); ++k) reference[k] += dl * slope[k];
+    if (s.predictor == Predictor::tangent || (s.predictor == Predictor::secant && previous.empty())) trial = reference;
+    if (s.predictor == Predictor::secant && !previous.empty())
+      for (std::size_t k = 0; k < u.size(); ++k) trial[k] += dl / previous_step * (u[k] - previous[k]);
 
     system.set_parameter(next);
     long iterations = 0;
@@ -77,8 +79,8 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
       const double missed = metric.state_norm(difference(trial, reference));
       const double floor = std::sqrt(std::numeric_limits<double>::epsilon()) * (1.0 + metric.state_norm(u));
       if (missed > s.max_prediction_error * predicted + floor)
-        failure = fmt::format("the corrected state lies {:.3g} from the extrapolation, more than {} of the "
-                              "extrapolated change {:.3g}: the step outran the branch's curvature or jumped to another branch",
+        failure = fmt::format("the corrected state lies {:.3g} from the tangent's prediction, more than {} of the "
+                              "predicted change {:.3g}: the step outran the branch's curvature or jumped to another branch",
                               missed, s.max_prediction_error, predicted);
       else if (!previous.empty() && metric.state_dot(difference(trial, u), difference(u, previous)) < 0)
         failure = "the state moved against the branch's direction of travel: a jump to another branch?";
@@ -89,29 +91,27 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
       system.set_parameter(rep.lambda);
       if (!control.reject()) {
         rep.message = fmt::format(
-            "no steady state found beyond λ = {:.10g} with a step of at least {:.3g} (last attempt: {}). Over the "
-            "accepted steps |du/dλ| grew {:.3g}-fold; a steep growth means the branch turns back at a fold "
-            "near λ = {:.10g}, which only pseudo-arclength continuation can pass",
-            rep.lambda, min_step, failure, first_rate > 0 ? last_rate / first_rate : 1.0, rep.lambda);
+            "no steady state found beyond λ = {:.10g} with a step of at least {:.3g} (last attempt: {}). Since the "
+            "start |du/dλ| grew {:.3g}-fold; a steep growth means the branch turns back at a fold near λ = {:.10g}, "
+            "which only pseudo-arclength continuation can pass",
+            rep.lambda, min_step, failure, rep.sensitivity_growth, rep.lambda);
         break;
       }
       continue;
     }
-    last_rate = metric.state_norm(difference(trial, u)) / std::abs(dl);
-    if (rep.accepted == 0) first_rate = last_rate;
     previous = std::move(u);
     u = std::move(trial);
     previous_step = dl;
     rep.lambda = next;
     ++rep.accepted;
-    slope.clear();
+    slope = sensitivity(system, lu, u);
+    rep.sensitivity_growth = metric.state_norm(slope) / first_slope;
     control.accept(iterations);
     if (on_state && !on_state({rep.accepted, u, rep.lambda, 0.0, {}, iterations})) {
       rep.message = fmt::format("stopped by the caller at λ = {:.10g}", rep.lambda);
       break;
     }
   }
-  if (first_rate > 0) rep.sensitivity_growth = last_rate / first_rate;
   rep.reached_target = rep.lambda == target;
   system.set_parameter(rep.lambda);
   return rep;

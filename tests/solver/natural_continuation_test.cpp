@@ -77,12 +77,12 @@ TEST(NaturalContinuation, CallbackSeesEveryStateAndCanStop) {
 }
 
 // Where the branch nears its fold, u* − u ∝ √d with d = λ* − λ: |du/dλ| → ∞, and the
-// secant's error relative to the change it predicts is about Δλ/(2d). Steps longer than
-// d are rejected (by that test, or because no state exists beyond the fold) and halved;
-// shorter ones are accepted and shrink d. So the continuation creeps up to within a few
-// minimum steps of the fold and stops there, below it, on the lower branch, saying so.
-// Every approach halves from at most the initial step down to the minimum one, so the
-// number of corrections stays bounded.
+// tangent's prediction misses by about Δλ/(4d) of the change it predicts. Steps longer
+// than d find no state (or miss by more than half) and are halved; shorter ones are
+// accepted and shrink d. So the continuation creeps up to within a few minimum steps of
+// the fold and stops there, below it, on the lower branch, saying so. Every approach
+// halves from at most the initial step down to the minimum one, so the number of
+// corrections stays bounded.
 void expect_stop_below_fold(const NaturalReport& r, double fold, double interval) {
   const double min_step = 1e-6 * interval;  // NaturalSettings' default
   std::cout << r.message << "\n" << r.accepted << " accepted, " << r.rejected << " rejected, "
@@ -103,7 +103,8 @@ TEST(NaturalContinuation, StopsWithAReportBelowSemenovsFold) {
   expect_stop_below_fold(r, std::exp(-1.0), 0.4);
   EXPECT_LT(u[0], 1.0);  // still the lower branch
   EXPECT_NEAR(u[0] * std::exp(-u[0]), r.lambda, 2 * tolerance);
-  // |du/dλ| ∝ d^(−1/2) grows by about √(0.27/4e-6) ≈ 260 from ψ = 0.1 to the stop.
+  // Near the fold |du/dλ| ∝ d^(−1/2): from d = 0.27 at ψ = 0.1 to d ≤ 10 minimum steps = 4e-6
+  // at the stop it grows at least √(0.27/4e-6) ≈ 260-fold.
   EXPECT_GT(r.sensitivity_growth, 100.0);
 }
 

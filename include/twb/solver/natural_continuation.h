@@ -21,7 +21,7 @@ namespace twb {
 enum class Predictor {
   constant,  // the last state (zeroth order)
   secant,    // extrapolated through the last two states; the tangent for the first step
-  tangent,   // u + Δλ·u_λ with J·u_λ = −F_λ solved by KLU at every state
+  tangent,   // u + Δλ·u_λ with J·u_λ = −F_λ (solved by KLU at every state anyway)
 };
 
 struct NaturalSettings {
@@ -31,10 +31,10 @@ struct NaturalSettings {
   double initial_step = 0.0, min_step = 0.0, max_step = 0.0;
   double growth = 1.5;      // step factor after an easy correction
   int easy_iterations = 3;  // a correction this short is easy
-  // A corrected state farther than this fraction of the extrapolated change from the
-  // extrapolation (secant, or tangent on the first step, whatever the predictor) is
-  // taken for a jump to another branch. The secant's own error is about (u''/u')·Δλ of
-  // the change, so 1/2 rejects only steps that outrun the branch's curvature.
+  // A corrected state farther than this fraction of the predicted change from the
+  // tangent's prediction u + Δλ·u_λ (whatever the predictor) is taken for a jump to
+  // another branch. The tangent's own error is about ½(u''/u')·Δλ of the change, so 1/2
+  // rejects only steps that outrun the branch's curvature.
   double max_prediction_error = 0.5;
   std::vector<double> unknown_weights;  // the norm of that test; empty: the step weights
 };
@@ -45,7 +45,7 @@ struct NaturalReport {
   int accepted = 0, rejected = 0;
   long corrector_iterations = 0;  // over all corrections, rejected ones included
   std::string last_rejection;     // why the last rejected step was rejected
-  // ‖Δu‖/|Δλ| of the last accepted step over that of the first: large before a fold.
+  // ‖u_λ‖ at the last accepted state over ‖u_λ‖ at the start: large near a fold.
   double sensitivity_growth = 1.0;
   std::string message;  // why it stopped short of the target
 };
