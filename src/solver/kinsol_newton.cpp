@@ -10,6 +10,8 @@
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
+#include "twb/solver/sparse_matrix_fill.h"
+
 namespace twb {
 
 double max_norm(std::span<const double> v) {
@@ -67,16 +69,7 @@ int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vecto
     if (cb->shift)
       for (std::size_t k = 0; k < cb->diagonal.size(); ++k)
         cb->jac_values[std::size_t(cb->diagonal[k])] += cb->shift->coefficient(k);
-    // SUNDIALS zeroes the whole matrix, index arrays included, before each call.
-    sunindextype* rowptr = SUNSparseMatrix_IndexPointers(J);
-    sunindextype* cols = SUNSparseMatrix_IndexValues(J);
-    double* vals = SUNSparseMatrix_Data(J);
-    std::copy(p.row_start.begin(), p.row_start.end(), rowptr);
-    std::copy(p.column.begin(), p.column.end(), cols);
-    std::copy(cb->jac_values.begin(), cb->jac_values.end(), vals);
-    for (double v : cb->jac_values)
-      if (!std::isfinite(v)) return 1;
-    return 0;
+    return fill_sparse_matrix(J, p, cb->jac_values) ? 0 : 1;
   } catch (const std::exception& e) {
     cb->callback_error = e.what();
     return -1;
@@ -85,10 +78,6 @@ int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vecto
 
 void error_handler(int, const char*, const char*, char* msg, void* data) {
   static_cast<KinsolNewton::Callbacks*>(data)->last_error = msg;
-}
-
-void check(int flag, const char* call) {
-  if (flag < 0) throw SolverFailure(std::string(call) + " failed", flag);
 }
 
 }  // namespace
@@ -109,17 +98,17 @@ KinsolNewton::KinsolNewton(const SteadySystem& model)
   if (!y_ || !scale_ || !jac_ || !klu_) throw SolverFailure("could not allocate the Newton solver", -1);
   // SUNDIALS defaults KLU to COLAMD, which fills the factors of this arrow-shaped matrix
   // (dense rigid-body border) about six-fold; AMD on A + Aᵀ orders the border last.
-  check(SUNLinSol_KLUSetOrdering(klu_.get(), 0), "SUNLinSol_KLUSetOrdering");
+  check_flag(SUNLinSol_KLUSetOrdering(klu_.get(), 0), "SUNLinSol_KLUSetOrdering");
   kin_ = KINCreate(ctx_.get());
   if (!kin_) throw SolverFailure("KINCreate failed", -1);
-  check(KINInit(kin_, residual_fn, y_.get()), "KINInit");
-  check(KINSetUserData(kin_, callbacks_.get()), "KINSetUserData");
-  check(KINSetErrHandlerFn(kin_, error_handler, callbacks_.get()), "KINSetErrHandlerFn");
-  check(KINSetLinearSolver(kin_, klu_.get(), jac_.get()), "KINSetLinearSolver");
-  check(KINSetJacFn(kin_, jacobian_fn), "KINSetJacFn");
+  check_flag(KINInit(kin_, residual_fn, y_.get()), "KINInit");
+  check_flag(KINSetUserData(kin_, callbacks_.get()), "KINSetUserData");
+  check_flag(KINSetErrHandlerFn(kin_, error_handler, callbacks_.get()), "KINSetErrHandlerFn");
+  check_flag(KINSetLinearSolver(kin_, klu_.get(), jac_.get()), "KINSetLinearSolver");
+  check_flag(KINSetJacFn(kin_, jacobian_fn), "KINSetJacFn");
   // A fresh exact Jacobian every iteration: quadratic convergence is worth one KLU
   // refactorization per step on this small system.
-  check(KINSetMaxSetupCalls(kin_, 1), "KINSetMaxSetupCalls");
+  check_flag(KINSetMaxSetupCalls(kin_, 1), "KINSetMaxSetupCalls");
   // TWB_KINSOL_PRINT=1..3 shows KINSOL's own iteration log on stdout (diagnostics).
   if (const char* level = std::getenv("TWB_KINSOL_PRINT")) KINSetPrintLevel(kin_, std::atoi(level));
 }
@@ -130,10 +119,10 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   NewtonReport rep;
   const std::size_t n = u.size();
   std::copy(u.begin(), u.end(), N_VGetArrayPointer(y_.get()));
-  check(KINSetFuncNormTol(kin_, s.residual_tolerance), "KINSetFuncNormTol");
-  check(KINSetScaledStepTol(kin_, s.step_tolerance), "KINSetScaledStepTol");
-  check(KINSetNumMaxIters(kin_, s.max_iterations), "KINSetNumMaxIters");
-  if (s.max_step > 0) check(KINSetMaxNewtonStep(kin_, s.max_step), "KINSetMaxNewtonStep");
+  check_flag(KINSetFuncNormTol(kin_, s.residual_tolerance), "KINSetFuncNormTol");
+  check_flag(KINSetScaledStepTol(kin_, s.step_tolerance), "KINSetScaledStepTol");
+  check_flag(KINSetNumMaxIters(kin_, s.max_iterations), "KINSetNumMaxIters");
+  if (s.max_step > 0) check_flag(KINSetMaxNewtonStep(kin_, s.max_step), "KINSetMaxNewtonStep");
   callbacks_->last_error.clear();
   callbacks_->callback_error.clear();
   callbacks_->shift = shift;
