@@ -125,9 +125,12 @@ struct Bracket {
 // Bisection on λ between a settled and a runaway step until
 // (high − low)/|high| ≤ settings.relative_width. Every trial starts from the steady
 // state at the current low, as a load step does on a running machine. low_state is
-// polished by Newton at low_parameter first. A trial without a consistent start stops
-// the bisection (not valid): a bracket must rest on dynamics that were integrated.
-// Leaves the system at λ = bracket.low.
+// polished by Newton at low_parameter first. While no runaway is proven, a step too
+// large to start (no consistent state: StepEvidence::no_consistent_start) is retried
+// halfway and a settled one raises low, so the search walks up toward
+// high_parameter; once a runaway is proven, a trial that cannot start ends the search
+// (not valid): a bracket must rest on dynamics that were integrated. Leaves the
+// system at λ = bracket.low.
 Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<const double> low_state,
                          double high_parameter, const RunawaySettings& settings);
 
