@@ -222,7 +222,12 @@ TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
   const double dtau = 1e-3 * fastest;
   std::vector<double> stepped = held;
   const PseudoTimeShift euler{1.0 / dtau, held, capacities_};
-  const NewtonReport rep = KinsolNewton(system_).solve(stepped, NewtonSettings{}, &euler);
+  NewtonReport rep;
+  try {
+    rep = KinsolNewton(system_).solve(stepped, NewtonSettings{}, &euler);
+  } catch (const std::exception& e) {
+    rep.message = e.what();  // e.g. a differential row without a diagonal entry
+  }
   if (!rep.converged) {
     s.message += "; an implicit Euler start by KINSOL failed too: " + rep.message;
     return s;
