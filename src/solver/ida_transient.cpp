@@ -9,6 +9,7 @@
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
+#include "twb/solver/kinsol_newton.h"
 #include "twb/solver/sparse_matrix_fill.h"
 
 namespace twb {
@@ -173,25 +174,28 @@ TransientStatus IdaTransient::status_from(int flag, const char* call) const {
 // relaxation time is min C_k/|∂F_k/∂u_k|; C_k itself (a time, steady_system.h) stands in
 // where no row has a diagonal.
 double IdaTransient::fastest_time(std::span<const double> u) const {
+  double smallest_capacity = INFINITY;
+  for (double c : capacities_)
+    if (c > 0.0) smallest_capacity = std::min(smallest_capacity, c);
+  if (!std::isfinite(smallest_capacity)) smallest_capacity = 1.0;
   Callbacks& cb = *callbacks_;
-  system_.evaluate(u, cb.scratch, cb.system_values);
-  double fastest = INFINITY, smallest_capacity = INFINITY;
+  try {
+    system_.evaluate(u, cb.scratch, cb.system_values);
+  } catch (const std::exception&) {
+    return smallest_capacity;  // CalcIC will meet the same failure and report it
+  }
+  double fastest = INFINITY;
   const SparsePattern& own = system_.pattern();
   for (std::size_t k = 0; k < capacities_.size(); ++k) {
-    if (capacities_[k] <= 0.0) continue;
-    smallest_capacity = std::min(smallest_capacity, capacities_[k]);
     const Index at = own.find(Index(k), Index(k));
     const double diagonal = at >= 0 ? std::abs(cb.system_values[std::size_t(at)]) : 0.0;
-    if (diagonal > 0.0) fastest = std::min(fastest, capacities_[k] / diagonal);
+    if (capacities_[k] > 0.0 && diagonal > 0.0) fastest = std::min(fastest, capacities_[k] / diagonal);
   }
-  if (std::isfinite(fastest)) return fastest;
-  return std::isfinite(smallest_capacity) ? smallest_capacity : 1.0;
+  return std::isfinite(fastest) ? fastest : smallest_capacity;
 }
 
-TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
-  if (Index(u0.size()) != system_.size()) throw std::invalid_argument("IdaTransient::start: state has the wrong size");
-  const std::vector<double> copy(u0.begin(), u0.end());  // u0 may be our own state()
-  std::copy(copy.begin(), copy.end(), N_VGetArrayPointer(y_.get()));
+TransientStatus IdaTransient::consistent_start(double t0, std::span<const double> u0, double fastest) {
+  std::copy(u0.begin(), u0.end(), N_VGetArrayPointer(y_.get()));
   // u' = 0 is only a guess: CalcIC computes it for the differential unknowns.
   N_VConst(0.0, yp_.get());
   callbacks_->last_error.clear();
@@ -199,9 +203,38 @@ TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
   time_ = t0;
   int flag = IDAReInit(ida_, t0, y_.get(), yp_.get());
   if (flag < 0) return status_from(flag, "IDAReInit");
-  flag = IDACalcIC(ida_, IDA_YA_YDP_INIT, t0 + fastest_time(copy));
+  flag = IDACalcIC(ida_, IDA_YA_YDP_INIT, t0 + fastest);
   if (flag < 0) return status_from(flag, "IDACalcIC");
   return status_from(IDAGetConsistentIC(ida_, y_.get(), yp_.get()), "IDAGetConsistentIC");
+}
+
+TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
+  if (Index(u0.size()) != system_.size()) throw std::invalid_argument("IdaTransient::start: state has the wrong size");
+  const std::vector<double> held(u0.begin(), u0.end());  // u0 may be our own state()
+  const double fastest = fastest_time(held);
+  TransientStatus s = consistent_start(t0, held, fastest);
+  if (s.ok) return s;
+  // CalcIC's Newton is plain (a few Jacobians, no step bound): after a large load step
+  // the bearing's film and rigid body can be out of its reach. KINSOL's line search
+  // with a bounded step reaches them as one implicit Euler step of the transient,
+  // F(u) + C·(u − u0)/Δτ = 0 with Δτ the trial step CalcIC took; IDA starts again from
+  // that point of the trajectory, at t0 + Δτ.
+  const double dtau = 1e-3 * fastest;
+  std::vector<double> stepped = held;
+  const PseudoTimeShift euler{1.0 / dtau, held, capacities_};
+  NewtonReport rep;
+  try {
+    rep = KinsolNewton(system_).solve(stepped, NewtonSettings{}, &euler);
+  } catch (const std::exception& e) {
+    rep.message = e.what();  // e.g. a differential row without a diagonal entry
+  }
+  if (!rep.converged) {
+    s.message += "; an implicit Euler start by KINSOL failed too: " + rep.message;
+    return s;
+  }
+  TransientStatus again = consistent_start(t0 + dtau, stepped, fastest);
+  if (!again.ok) again.message = s.message + "; again after an implicit Euler start: " + again.message;
+  return again;
 }
 
 TransientStatus IdaTransient::step(double t_stop) {

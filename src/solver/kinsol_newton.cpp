@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <kinsol/kinsol.h>
@@ -125,6 +126,11 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   if (s.max_step > 0) check_flag(KINSetMaxNewtonStep(kin_, s.max_step), "KINSetMaxNewtonStep");
   callbacks_->last_error.clear();
   callbacks_->callback_error.clear();
+  // The shift adds to the diagonal: a row whose pattern lacks (k, k) cannot take it.
+  if (shift)
+    for (std::size_t k = 0; k < n; ++k)
+      if (shift->coefficient(k) != 0.0 && callbacks_->diagonal[k] < 0)
+        throw std::invalid_argument(fmt::format("pseudo-time shift on row {}, which has no diagonal entry", k));
   callbacks_->shift = shift;
 
   const int flag = KINSol(kin_, y_.get(), KIN_LINESEARCH, scale_.get(), residual_scale_.get());

@@ -161,29 +161,40 @@ Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<c
       return b;
     }
   }
-  bool high_checked = false;
-  while (!high_checked || (b.high - b.low) > settings.relative_width * std::abs(b.high)) {
-    const double trial = high_checked ? 0.5 * (b.low + b.high) : b.high;
+  // Until a runaway is proven the upper end is only a target. A step to it that cannot
+  // even start (no consistent algebraic state reachable from low) is retried halfway;
+  // a settled step raises low and aims at the target again: a walk up, as a load is
+  // raised on a rig, until some step runs away.
+  bool proven = false;
+  double target = high_parameter;
+  while (!proven || (b.high - b.low) > settings.relative_width * std::abs(b.high)) {
+    const double trial = proven ? 0.5 * (b.low + b.high) : target;
     system.set_parameter(b.low);
     StepOutcome o = classify_step(system, b.low_state, trial, settings);
     b.steps.push_back({trial, o.verdict, o.evidence, o.time, o.reason});
     if (o.evidence == StepEvidence::no_consistent_start) {
-      system.set_parameter(b.low);
-      b.message = fmt::format("the step to {:.6g} could not start: {}", trial, o.reason);
-      return b;
+      const double nearer = 0.5 * (b.low + target);
+      if (proven || nearer - b.low <= settings.relative_width * std::abs(nearer)) {
+        system.set_parameter(b.low);
+        b.message = fmt::format("the step to {:.6g} could not start: {}", trial, o.reason);
+        return b;
+      }
+      target = nearer;
+      continue;
     }
     if (o.settled()) {
-      if (!high_checked) {
+      if (!proven && trial == high_parameter) {
         system.set_parameter(b.low);
         b.message = fmt::format("the step to the high parameter {:.6g} settles: no runaway to bracket", trial);
         return b;
       }
       b.low = trial;
       b.low_state = std::move(o.final_state);
+      target = high_parameter;
     } else {
       b.high = trial;
+      proven = true;
     }
-    high_checked = true;
   }
   system.set_parameter(b.low);
   b.valid = true;

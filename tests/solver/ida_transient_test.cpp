@@ -122,6 +122,55 @@ TEST(IdaTransient, SmallStepReachesTheNewSteadyState) {
   EXPECT_NEAR(ida.state()[1], std::exp(ida.state()[0]), 1e-6 * ida.state()[1]);  // on the manifold
 }
 
+// An algebraic constraint tanh(a − ψ) = 0 whose residual is undefined (NaN, as an
+// overflow would make it) beyond |a − ψ| > 5. From a = ψ − 2 the full Newton step
+// (sinh(2)·cosh(2) ≈ 13.6) leaves that domain: CalcIC cannot recover, KINSOL's line
+// search shortens the step. θ' = a − θ (C = 1).
+class SaturatingConstraint final : public SteadySystem {
+ public:
+  Index size() const override { return 2; }
+  const SparsePattern& pattern() const override { return pattern_; }
+  void evaluate(std::span<const double> u, std::span<double> r, std::span<double> jac) const override {
+    const double d = u[1] - psi_;
+    r[0] = u[0] - u[1];
+    r[1] = std::abs(d) > 5.0 ? NAN : std::tanh(d);
+    if (!jac.empty()) {
+      jac[0] = 1.0;
+      jac[1] = -1.0;
+      jac[2] = 0.0;
+      jac[3] = 1.0 / (std::cosh(d) * std::cosh(d));
+    }
+  }
+  double parameter() const override { return psi_; }
+  void set_parameter(double v) override { psi_ = v; }
+  void parameter_derivative(std::span<const double> u, std::span<double> d) const override {
+    d[0] = 0.0;
+    d[1] = -1.0 / (std::cosh(u[1] - psi_) * std::cosh(u[1] - psi_));
+  }
+  std::vector<double> capacities() const override { return {1.0, 0.0}; }
+
+ private:
+  double psi_ = 1.0;
+  SparsePattern pattern_ = testing::dense_pattern(2);
+};
+
+// The fallback start is one implicit Euler step of Δτ = 1e-3 × the fastest relaxation
+// time (C/J_θθ = 1): θ(Δτ) = Δτ·a/(1 + Δτ) from θ = 0 with a = ψ = 1. KINSOL's residual
+// tolerance 1e-10 bounds the error of θ by 1e-10·Δτ and of a by 1e-10 (tanh' = 1).
+TEST(IdaTransient, ConsistentStartBeyondCalcIcsReach) {
+  SaturatingConstraint system;
+  IdaTransient ida(system, TransientSettings{});
+  const TransientStatus s = ida.start(0.0, std::vector<double>{0.0, -1.0});
+  ASSERT_TRUE(s.ok) << s.message;
+  const double dtau = 1e-3;
+  EXPECT_DOUBLE_EQ(ida.time(), dtau);
+  EXPECT_NEAR(ida.state()[1], 1.0, 1e-10);
+  EXPECT_NEAR(ida.state()[0], dtau / (1.0 + dtau), 1e-12);
+  EXPECT_NEAR(ida.rate()[0], ida.state()[1] - ida.state()[0], 1e-6);  // CalcIC's own tolerance
+  ASSERT_TRUE(ida.advance(1.0).ok);
+  EXPECT_NEAR(ida.state()[0], 1.0 - std::exp(-1.0), 1e-5);  // θ = 1 − e^−t, to a few tolerances
+}
+
 // A finite-time blow-up (Semenov far above ψ = 1/e: θ' ≥ ψ·e^θ − θ explodes before
 // t ≈ 2) ends in an IDA failure reported by name, not in a crash.
 TEST(IdaTransient, BlowUpIsReportedByFlagName) {

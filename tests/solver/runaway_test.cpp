@@ -5,6 +5,7 @@
 // to a hot branch and settles there, as the bearing's does past distress).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -126,6 +127,50 @@ TEST(Runaway, GhostOutlastingTheHorizonIsARunaway) {
   EXPECT_DOUBLE_EQ(o.time, o.horizon);
   // Still below the fold's θ = 1: the trajectory had not yet passed the ghost.
   EXPECT_LT(o.final_state[0], 1.0);
+}
+
+// A system whose residual cannot be evaluated beyond a reach (it throws, as a model
+// does outside its domain): a step whose start residual exceeds it has no consistent
+// start, so the search must walk up in smaller steps.
+class ShortReach final : public SteadySystem {
+ public:
+  ShortReach(SteadySystem& inner, double reach) : inner_(inner), reach_(reach) {}
+  Index size() const override { return inner_.size(); }
+  const SparsePattern& pattern() const override { return inner_.pattern(); }
+  void evaluate(std::span<const double> u, std::span<double> r, std::span<double> jac) const override {
+    inner_.evaluate(u, r, jac);
+    for (double v : r)
+      if (std::abs(v) > reach_) throw std::domain_error("out of reach");
+  }
+  double parameter() const override { return inner_.parameter(); }
+  void set_parameter(double v) override { inner_.set_parameter(v); }
+  void parameter_derivative(std::span<const double> u, std::span<double> d) const override {
+    inner_.parameter_derivative(u, d);
+  }
+  std::vector<double> capacities() const override { return inner_.capacities(); }
+
+ private:
+  SteadySystem& inner_;
+  double reach_;
+};
+
+// Semenov's start residual after a step is Δψ·e^θ: with a reach of 0.1 no step longer
+// than about 0.04 can start near the fold, so 0.2 → 0.5 must be walked up. No
+// exception may escape, and the bracket must still contain ψ_c.
+TEST(Runaway, StepsBeyondReachAreWalkedUp) {
+  testing::SemenovProblem semenov(0.0);
+  const std::vector<double> start = testing::lower_branch_state(semenov, 0.2);
+  ShortReach system(semenov, 0.1);
+  const Bracket b = bracket_critical(system, 0.2, start, 0.5, {});
+  ASSERT_TRUE(b.valid) << b.message;
+  EXPECT_LE(b.low, testing::SemenovProblem::critical_parameter());
+  EXPECT_GE(b.high, testing::SemenovProblem::critical_parameter());
+  const auto unstarted = std::count_if(b.steps.begin(), b.steps.end(), [](const BracketStep& s) {
+    return s.evidence == StepEvidence::no_consistent_start;
+  });
+  EXPECT_GE(unstarted, 1);
+  std::cout << b.steps.size() << " steps, " << unstarted << " could not start; critical in [" << b.low << ", "
+            << b.high << "]\n";
 }
 
 // The brackets every test below starts from: well below the fold (a steady state) and

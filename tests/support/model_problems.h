@@ -25,13 +25,20 @@
 
 namespace twb::testing {
 
+// Every entry of a small n×n matrix, row by row.
+inline SparsePattern dense_pattern(Index n) {
+  SparsePattern p;
+  p.rows = p.cols = n;
+  for (Index r = 0; r <= n; ++r) p.row_start.push_back(r * n);
+  for (Index r = 0; r < n; ++r)
+    for (Index c = 0; c < n; ++c) p.column.push_back(c);
+  return p;
+}
+
 class SemenovProblem final : public SteadySystem {
  public:
-  explicit SemenovProblem(double psi, double activation = 0.0) : psi_(psi), epsilon_(activation) {
-    pattern_.rows = pattern_.cols = 2;
-    pattern_.row_start = {0, 2, 4};
-    pattern_.column = {0, 1, 0, 1};
-  }
+  explicit SemenovProblem(double psi, double activation = 0.0)
+      : psi_(psi), epsilon_(activation), pattern_(dense_pattern(2)) {}
   Index size() const override { return 2; }
   const SparsePattern& pattern() const override { return pattern_; }
   // Oriented so u' = −F: F_θ = θ − ψ·a (C = 1), F_a = a − e^(θ/(1+εθ)) (algebraic).

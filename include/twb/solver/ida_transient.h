@@ -70,7 +70,9 @@ class IdaTransient {
 
   // (Re)starts at (t0, u0) under the system's current λ: IDAReInit, then
   // IDACalcIC(IDA_YA_YDP_INIT) solves the algebraic unknowns and u' with the
-  // differential unknowns held at u0.
+  // differential unknowns held at u0. Should CalcIC fail, one implicit Euler step by
+  // KINSOL supplies the algebraic unknowns and the transient starts there, a
+  // thousandth of the fastest relaxation time later (time() says when).
   TransientStatus start(double t0, std::span<const double> u0);
   // One internal step of IDA, never past t_stop (> time()).
   TransientStatus step(double t_stop);
@@ -92,6 +94,7 @@ class IdaTransient {
  private:
   TransientStatus status_from(int flag, const char* call) const;
   double fastest_time(std::span<const double> u) const;
+  TransientStatus consistent_start(double t0, std::span<const double> u0, double fastest);
 
   const SteadySystem& system_;
   TransientSettings settings_;

@@ -38,10 +38,11 @@ struct RunawaySettings {
   // then a tenth of the way from the steady state it left, so "close" is clear-cut, and
   // the fast initial transient (algebraic adjustment, boundary layers) has passed.
   double slowdown_factor = 10.0;
-  // Runaway when the rate exceeds this multiple of its running minimum. A stable
-  // approach has no minimum to climb from except noise and the mild non-monotonicity of
-  // coupled modes (well below 2×); a blow-up passes every factor within a few time
-  // constants, so a large factor costs little time and buys certainty.
+  // Runaway when the rate exceeds this multiple of its running minimum (a minimum under
+  // Newton's residual tolerance counts as that tolerance: rounding noise). A settling
+  // step's rate falls, apart from the non-monotonicity coupled modes can show; past a
+  // fold it regrows without bound (blow-up) or 40-300-fold on the way to a hot branch
+  // (the S-curve test), so a large factor costs little time and buys certainty.
   double acceleration_factor = 10.0;
   // The horizon, in slowest relaxation times at the start state (relaxation_time.h): 50
   // allows a settle from any point of the step's basin to the slowdown factor (e^−50
@@ -57,11 +58,13 @@ struct RunawaySettings {
   // step's travel away.
   double closeness = 1.0;
   // Inverse iterations for the slowest relaxation time: only its order of magnitude
-  // matters (the horizon multiple absorbs the rest); 20 converge it to a few percent
-  // unless the two slowest modes are nearly degenerate, where it is still within 2×.
+  // matters (the horizon multiple absorbs the rest); 20 iterations shrink the other
+  // modes' share by (τ_2/τ_1)^20, and nearly degenerate slow modes give the right
+  // scale anyway.
   int relaxation_iterations = 20;
-  // bracket_critical stops when (high − low)/|high| is at most this. 0.2 %: finer than
-  // any load a test rig sets.
+  // bracket_critical stops when (high − low)/|high| is at most this. 0.2 %: the
+  // midpoint is then within 0.1 % of the fold, five times inside MODEL §8's 0.5 %
+  // robustness requirement, for about log2(range/0.002) trials.
   double relative_width = 0.002;
 };
 
@@ -125,9 +128,12 @@ struct Bracket {
 // Bisection on λ between a settled and a runaway step until
 // (high − low)/|high| ≤ settings.relative_width. Every trial starts from the steady
 // state at the current low, as a load step does on a running machine. low_state is
-// polished by Newton at low_parameter first. A trial without a consistent start stops
-// the bisection (not valid): a bracket must rest on dynamics that were integrated.
-// Leaves the system at λ = bracket.low.
+// polished by Newton at low_parameter first. While no runaway is proven, a step too
+// large to start (no consistent state: StepEvidence::no_consistent_start) is retried
+// halfway and a settled one raises low, so the search walks up toward
+// high_parameter; once a runaway is proven, a trial that cannot start ends the search
+// (not valid): a bracket must rest on dynamics that were integrated. Leaves the
+// system at λ = bracket.low.
 Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<const double> low_state,
                          double high_parameter, const RunawaySettings& settings);
 
