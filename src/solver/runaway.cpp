@@ -35,9 +35,20 @@ class StepJudge {
     for (;;) {
       const TransientStatus st = ida_.step(out_.horizon);
       if (!st.ok) {
+        // IDA also stumbles where the model is only once differentiable (asperity
+        // contact and cavitation switching on at a node), with no blow-up at all:
+        // restart there with fresh consistent values a few times, and before calling
+        // the failure a runaway let Newton look for a steady state next to it.
+        if (restarts_ < max_restarts) {
+          ++restarts_;
+          const std::vector<double> here(ida_.state().begin(), ida_.state().end());
+          if (ida_.start(ida_.time(), here).ok) continue;
+        }
+        if (settled_here()) return;
         keep_state();
         return conclude(StepVerdict::runaway, StepEvidence::integration_failure,
-                        fmt::format("the transient could not continue at t = {:.6g}: {}", ida_.time(), st.message));
+                        fmt::format("the transient could not continue at t = {:.6g} ({} restarts): {}", ida_.time(),
+                                    restarts_, st.message));
       }
       if (observer) observer(ida_.time(), ida_.state());
       rate = sample();
@@ -127,6 +138,10 @@ class StepJudge {
   KinsolNewton newton_;
   std::vector<double> residual_, start_;
   std::string last_newton_ = "Newton not tried";
+  // Restarts after an integration failure: a kink is passed by the first; a blow-up
+  // fails again at once, so a few cost little.
+  static constexpr int max_restarts = 3;
+  int restarts_ = 0;
 };
 
 }  // namespace
