@@ -23,6 +23,12 @@ TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
             "545,185.25,185,185.5,185.3,runaway; fold\n");
 }
 
+TEST(DistressTable, QuotesAMethodWithCommas) {
+  DistressRow row{545.0, std::nullopt, 1.0, 1.0, 1.0, std::nullopt, "a, \"b\""};
+  EXPECT_EQ(distress_csv({row}, ""), "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method\n"
+                                     "545,1,1,1,,\"a, \"\"b\"\"\"\n");
+}
+
 TEST(DistressTable, RefusesNaN) {
   DistressRow bad{545.0, std::nullopt, std::nan(""), 1.0, 2.0, std::nullopt, "x"};
   EXPECT_THROW(distress_csv({bad}, ""), std::runtime_error);
