@@ -152,8 +152,16 @@ StepOutcome classify_step(SteadySystem& system, std::span<const double> start_st
   // The time scale belongs to the machine as it runs before the step (λ still old).
   out.relaxation_time = slowest_relaxation_time(system, start_state, settings.relaxation_iterations);
   out.horizon = settings.horizon_multiple * out.relaxation_time;
+  const double old_parameter = system.parameter();
   system.set_parameter(new_parameter);
   StepJudge(system, settings, out).run(start_state, observer);
+  if (out.settled() && settings.on_branch &&
+      !settings.on_branch(system, start_state, old_parameter, out.final_state, new_parameter)) {
+    out.verdict = StepVerdict::runaway;
+    out.evidence = StepEvidence::left_branch;
+    out.reason = "settled off the branch continued from the start (" + out.reason + ")";
+  }
+  system.set_parameter(new_parameter);
   return out;
 }
 

@@ -67,6 +67,29 @@ double steepest_sensitivity(const std::vector<SolvedState>& states) {
 
 }  // namespace
 
+RunawaySettings distress_detector(const Scene& scene, double bracket_width) {
+  RunawaySettings r;
+  r.newton = newton_settings(scene);
+  r.relative_width = bracket_width;
+  NaturalSettings natural;
+  natural.newton = r.newton;
+  natural.newton.max_iterations = 12;
+  // The branch continued from the start in quarters of the step (a single long step
+  // could itself jump across the fold), down to a thousandth of it: past the fold it
+  // stops, and reaches nothing.
+  r.on_branch = [natural](SteadySystem& system, std::span<const double> start, double start_load,
+                          std::span<const double> settled, double load) mutable {
+    if (load <= start_load) return true;
+    std::vector<double> x(start.begin(), start.end());
+    system.set_parameter(start_load);
+    natural.initial_step = natural.max_step = 0.25 * (load - start_load);
+    natural.min_step = 1e-3 * (load - start_load);
+    const NaturalReport rep = continue_in_parameter(system, x, load, natural);
+    return rep.reached_target && same_state(x, settled);
+  };
+  return r;
+}
+
 DistressSearch search_distress(BearingModel& model, const DistressSearchSettings& settings,
                                const SearchProgress& progress) {
   DistressSearch out;
@@ -78,7 +101,6 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
   };
 
   // The light load from the paper's cold start.
-  auto t0 = std::chrono::steady_clock::now();
   model.set_load(settings.load_start);
   std::vector<double> u;
   SteadySolver steady(model, newton);
@@ -90,79 +112,107 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
     out.row.method = "no steady state at load_start";
     return out;
   }
-  std::vector<std::vector<double>> branch{u};
   out.states.push_back(record(model, u, first.iterations, first.wall_ms));
 
-  // The cool branch by natural continuation with a secant predictor, through the grid.
+  // The cool branch by natural continuation (secant predictor), segment by segment:
+  // through the requested grid, and never more than 15 % of the load at once, since a
+  // longer step can land on the hot branch beyond a fold before the jump shows.
+  std::vector<double> targets;
+  {
+    std::vector<double> stops = settings.grid;
+    std::erase_if(stops, [&](double w) { return w <= settings.load_start || w > settings.load_end; });
+    if (stops.empty() || stops.back() < settings.load_end) stops.push_back(settings.load_end);
+    double at = settings.load_start;
+    for (double stop : stops) {
+      while (at * 1.15 < stop) targets.push_back(at *= 1.15);
+      targets.push_back(at = stop);
+    }
+  }
   NaturalSettings natural;
   natural.newton = newton;
   natural.newton.max_iterations = 12;
-  const double span = settings.load_end - settings.load_start;
-  natural.initial_step = span / 20.0;
-  natural.max_step = span / 8.0;
   // Natural continuation only has to bring the branch near its end: the bracket and the
   // fold are found by transients and arclength. Creeping closer than a bracket width
   // costs slow corrections (the Jacobian turns singular) and slow transient checks.
   natural.min_step = settings.bracket_width * settings.load_start;
-  std::vector<double> targets = settings.grid;
-  std::erase_if(targets, [&](double w) { return w <= settings.load_start; });
-  if (targets.empty() || targets.back() < settings.load_end) targets.push_back(settings.load_end);
-  bool branch_ended = false;
-  t0 = std::chrono::steady_clock::now();
-  for (double target : targets) {
-    natural.max_step = std::min(span / 8.0, std::max(target - model.load(), 1e-9));
-    const NaturalReport rep = continue_in_parameter(model, u, target, natural, [&](const BranchPoint& p) {
-      if (p.index == 0) return true;
-      branch.emplace_back(p.u.begin(), p.u.end());
-      out.states.push_back(record(model, p.u, p.corrector_iterations, elapsed_ms(t0)));
+
+  // Every state continuation accepts is checked by the transient: the load step from
+  // the previous state must settle, and on that state. Where it settles elsewhere the
+  // corrector had jumped branches: the transient's state is the one the machine
+  // reaches, and continuation restarts from it. The first step that runs away ends the
+  // cool branch.
+  // (The check against the continuation's own state replaces the detector's branch test here.)
+  RunawaySettings runaway = distress_detector(model.scene(), settings.bracket_width);
+  runaway.on_branch = nullptr;
+  struct Pending {
+    std::vector<double> u;
+    double load;
+    long iterations;
+    double wall_ms;
+  };
+  std::vector<double> low_state = u;
+  double low = settings.load_start;
+  bool branch_ended = false, ran_away = false;
+  double runaway_load = 0.0;
+  int checked = 0;
+  for (std::size_t t = 0; t < targets.size() && !ran_away;) {
+    std::vector<Pending> pending;
+    natural.initial_step = natural.max_step = std::max(targets[t] - low, natural.min_step);
+    auto t0 = std::chrono::steady_clock::now();
+    std::vector<double> x = low_state;
+    model.set_load(low);
+    const NaturalReport rep = continue_in_parameter(model, x, targets[t], natural, [&](const BranchPoint& p) {
+      if (p.index > 0) pending.push_back({{p.u.begin(), p.u.end()}, p.lambda, p.corrector_iterations, elapsed_ms(t0)});
       t0 = std::chrono::steady_clock::now();
-      say(fmt::format("  {:.6g} rad/s: {:.1f} N on the cool branch ({:.2f} C mean)", model.speed(), p.lambda,
-                      out.states.back().state.washer_mean_temperature - 273.15));
       return true;
     });
+    bool replaced = false;
+    for (Pending& p : pending) {
+      model.set_load(low);
+      const StepOutcome step = classify_step(model, low_state, p.load, runaway);
+      ++checked;
+      if (!step.settled()) {
+        ran_away = true;
+        runaway_load = p.load;
+        say(fmt::format("  the step {:.2f} -> {:.2f} N runs away: {}", low, p.load, step.reason));
+        break;
+      }
+      replaced = !same_state(step.final_state, p.u);
+      if (replaced) {
+        say(fmt::format("  at {:.2f} N continuation had jumped to another branch; the transient's state is kept",
+                        p.load));
+        p.u = step.final_state;
+      }
+      low = p.load;
+      low_state = p.u;
+      model.set_load(low);
+      out.states.push_back(record(model, low_state, p.iterations, p.wall_ms));
+      say(fmt::format("  {:.6g} rad/s: {:.2f} N on the cool branch ({:.2f} C mean)", model.speed(), low,
+                      out.states.back().state.washer_mean_temperature - 273.15));
+      if (replaced) break;
+    }
+    if (ran_away || replaced) continue;
     if (!rep.reached_target) {
       branch_ended = true;
-      say(fmt::format("  the cool branch ends near {:.1f} N: {}", rep.lambda, rep.message));
+      say(fmt::format("  the cool branch ends near {:.2f} N: {}", low, rep.message));
       break;
     }
+    ++t;
   }
-
-  // Every accepted state checked by the transient: the load step from the previous
-  // state must settle on it. The first step that runs away (or settles elsewhere) ends
-  // the cool branch.
-  RunawaySettings runaway;
-  runaway.newton = newton;
-  runaway.relative_width = settings.bracket_width;
-  std::size_t last_cool = branch.size() - 1;
-  bool ran_away = false;
-  double runaway_load = 0.0;
-  for (std::size_t k = 0; k + 1 < branch.size(); ++k) {
-    model.set_load(out.states[k].state.load);
-    const double next = out.states[k + 1].state.load;
-    const StepOutcome step = classify_step(model, branch[k], next, runaway);
-    if (!step.settled() || !same_state(step.final_state, branch[k + 1])) {
-      last_cool = k;
-      ran_away = true;
-      runaway_load = next;
-      say(fmt::format("  the step {:.1f} -> {:.1f} N does not settle on the branch: {}", out.states[k].state.load,
-                      next, step.reason));
-      break;
-    }
-  }
-  say(fmt::format("  {} load steps checked by the transient", last_cool + (ran_away ? 1 : 0)));
-  out.states.resize(last_cool + 1);
-  branch.resize(last_cool + 1);
+  say(fmt::format("  {} load steps checked by the transient", checked));
   out.cool_states = out.states.size();
 
   if (!ran_away && !branch_ended) {
-    out.row.distress_load = steepest_sensitivity(out.states);
-    out.row.method = fmt::format("no fold: steepest sensitivity (no distress up to {:.6g} N)", settings.load_end);
+    const double steepest = steepest_sensitivity(out.states);
+    out.row.method = fmt::format("no fold up to {:.6g} N (gradual heating); steepest rise of T_mean at {:.6g} N",
+                                 settings.load_end, steepest);
     return out;
   }
 
+  // From here on a step that settles must also land on the cool branch.
+  runaway = distress_detector(model.scene(), settings.bracket_width);
+
   // Bracket: from the last cool state, find a step that runs away, then bisect.
-  double low = out.states.back().state.load;
-  std::vector<double> low_state = branch.back();
   // Past the end of natural continuation the step that runs away is searched in
   // increments of 1 % (or 4 bracket widths).
   const double widen = std::max(4.0 * settings.bracket_width, 0.01);
@@ -227,9 +277,10 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
 
   // Load sweep: the hot branch on to load_end.
   u = hot.state;
-  t0 = std::chrono::steady_clock::now();
+  auto t0 = std::chrono::steady_clock::now();
   for (double target : targets) {
     if (target <= model.load()) continue;
+    natural.initial_step = natural.max_step = target - model.load();
     const NaturalReport rep = continue_in_parameter(model, u, target, natural, [&](const BranchPoint& p) {
       if (p.index == 0) return true;
       out.states.push_back(record(model, p.u, p.corrector_iterations, elapsed_ms(t0)));

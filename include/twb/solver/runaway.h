@@ -16,6 +16,7 @@
 // doubles each of them).
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -66,6 +67,16 @@ struct RunawaySettings {
   // midpoint is then within 0.1 % of the fold, five times inside MODEL §8's 0.5 %
   // robustness requirement, for about log2(range/0.002) trials.
   double relative_width = 0.002;
+  // Departure from the continued branch is a runaway too (MODEL §8): a step that
+  // settles, but on a steady state the branch through the start does not reach (the
+  // hot branch past a fold, landed on without an acceleration the factor would see),
+  // has left it. When set, a settled verdict must pass this test: given the start (a
+  // steady state at start_parameter) and the settled state at parameter, does the
+  // branch continued from the one reach the other? The system may be left at any λ.
+  // Empty: any steady state counts as settled.
+  std::function<bool(SteadySystem& system, std::span<const double> start, double start_parameter,
+                     std::span<const double> settled, double parameter)>
+      on_branch;
 };
 
 enum class StepVerdict { settled, runaway };
@@ -79,7 +90,8 @@ enum class StepEvidence {
   // Runaway by default, but the dynamics were never read: IDACalcIC found no
   // consistent algebraic state at the new parameter (on the bearing: no film that
   // carries the new load at the old temperatures, or a numerical failure).
-  no_consistent_start
+  no_consistent_start,
+  left_branch  // runaway: settled, but off the branch continued from the start (on_branch)
 };
 
 struct RateSample {

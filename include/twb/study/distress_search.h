@@ -8,9 +8,9 @@
 // Verdicts (DistressRow::method):
 //   "runaway; fold at …"  bracketed by transients, and the steady branch folds there
 //   "runaway; no fold"    bracketed, but arclength continuation found no turning point
-//   "no fold: steepest sensitivity"   the branch reaches load_end without a fold or a
-//                         runaway (gradual heating): W_d is then the load where the mean
-//                         temperature rises fastest with load, not a distress
+//   "no fold up to …"     the branch reaches load_end without a fold or a runaway
+//                         (gradual heating): W_d stays empty, and the method names the
+//                         load where the mean temperature rises fastest with load
 #pragma once
 
 #include <functional>
@@ -21,6 +21,7 @@
 #include "twb/results/distress_table.h"
 #include "twb/results/states_table.h"
 #include "twb/results/trajectory_table.h"
+#include "twb/solver/runaway.h"
 
 namespace twb {
 
@@ -43,6 +44,11 @@ struct DistressSearch {
   bool failed = false;                    // the light load itself had no steady state
   std::string message;
 };
+
+// The runaway detector the search brackets W_d with: the scene's Newton tolerances, the
+// bracket width, and departure from the cool branch counted as a runaway (a step that
+// settles on a state the branch continued from its start does not reach).
+RunawaySettings distress_detector(const Scene& scene, double bracket_width);
 
 using SearchProgress = std::function<void(const std::string&)>;
 
