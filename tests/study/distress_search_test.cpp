@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 
 #include "../support/table1_scene.h"
 #include "twb/solver/kinsol_newton.h"
@@ -100,6 +101,9 @@ struct DetectorVariant {
   const char* name;
   void (*apply)(RunawaySettings&, double factor);
 };
+
+// gtest prints a parameter by its bytes otherwise.
+inline void PrintTo(const DetectorVariant& v, std::ostream* os) { *os << v.name; }
 
 class DetectorRobustness : public ::testing::TestWithParam<std::tuple<DetectorVariant, double>> {};
 
