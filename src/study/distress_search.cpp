@@ -187,8 +187,11 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
       low_state = p.u;
       model.set_load(low);
       out.states.push_back(record(model, low_state, p.iterations, p.wall_ms));
-      say(fmt::format("  {:.6g} rad/s: {:.2f} N on the cool branch ({:.2f} C mean)", model.speed(), low,
-                      out.states.back().state.washer_mean_temperature - 273.15));
+      const double done = (low - settings.load_start) / (settings.load_end - settings.load_start);
+      say(fmt::format("  {:.6g} rad/s: {:.2f} N on the cool branch ({:.2f} C mean; {:.0f} % of the load range, "
+                      "about {:.0f} s left if no distress comes)",
+                      model.speed(), low, out.states.back().state.washer_mean_temperature - 273.15, 100 * done,
+                      elapsed_ms(started) / 1000.0 * (1.0 - done) / std::max(done, 1e-3)));
       if (replaced) break;
     }
     if (ran_away || replaced) continue;
