@@ -1,20 +1,11 @@
 #include "twb/results/states_table.h"
 
-#include <cmath>
-
-#include <fmt/format.h>
+#include "result_cells.h"
 
 namespace twb {
 
-namespace {
-constexpr double kelvin_offset = 273.15;
-
-// Results never carry NaN or infinity (a non-finite value means a bug upstream).
-double finite(double v, const char* name) {
-  if (!std::isfinite(v)) throw std::runtime_error(std::string("non-finite result value for ") + name);
-  return v;
-}
-}  // namespace
+using cells::finite;
+using cells::kelvin_offset;
 
 std::string states_csv(const std::vector<SolvedState>& rows) {
   std::string out =

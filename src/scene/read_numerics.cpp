@@ -29,8 +29,50 @@ void read_solver(const MapReader& scene, Scene& out) {
   s.cold_start_film = solver.quantity("cold_start_film", si::dimensionless, positive, s.cold_start_film);
 }
 
+void read_load_range(const MapReader& study, Study& s, std::string_view end_relation) {
+  s.load_start = study.quantity("load_start", si::force, positive);
+  s.load_end = study.quantity("load_end", si::force, positive);
+  if (s.load_end <= s.load_start) {
+    const Node node = study.get("load_end", "");
+    node.fail(fmt::format("{}: '{}' must be greater than load_start '{}'{}", node.path(), node.yaml().Scalar(),
+                          study.get("load_start", "").yaml().Scalar(), end_relation));
+  }
+}
+
+double read_bracket_width(const MapReader& study, double fallback) {
+  return study.quantity("bracket_width", si::dimensionless,
+                        Range{.low = 0.0, .low_open = true, .high = 0.1,
+                              .reason = "the relative width of the distress bracket, e.g. 0.002"},
+                        fallback);
+}
+
+// The second axis of a distress map: `parameter: {name: friction_coefficient, values: [...]}`.
+void read_map_parameter(const MapReader& study, Study& s, const Scene& scene) {
+  if (!study.has("parameter")) return;
+  const MapReader p = study.map("parameter", {"name", "values"});
+  s.parameter = kMapParameters.values[p.get("name", "friction_coefficient or gear_tilt")
+                                          .choice(kMapParameters.names)];
+  const Node values = p.get("values", "a list of values, e.g. [0.05, 0.1, 0.2]");
+  const std::vector<Node> items = values.list("a list of values, e.g. [0.05, 0.1, 0.2]");
+  if (items.empty())
+    values.fail(fmt::format("{}: the list is empty; give at least one value", values.path()));
+  for (const Node& item : items) {
+    if (s.parameter == MapParameter::friction_coefficient)
+      s.parameter_values.push_back(item.quantity(si::dimensionless, non_negative));
+    else
+      s.parameter_values.push_back(item.quantity(si::angle, non_negative));
+  }
+  if (s.parameter == MapParameter::friction_coefficient && scene.friction.law != FrictionLaw::constant) {
+    const Node name = p.get("name", "");
+    name.fail(fmt::format("{}: friction_coefficient varies the constant friction law's coefficient; "
+                          "set friction.law: constant",
+                          name.path()));
+  }
+}
+
 void read_study(const MapReader& scene, Scene& out) {
-  const MapReader study = scene.map("study", {"type", "load_start", "load_end", "load_steps", "speeds"});
+  const MapReader study = scene.map("study", {"type", "load_start", "load_end", "load_steps", "speeds",
+                                              "parameter", "bracket_width", "duration"});
   Study& s = out.study;
   s.type = read_choice(study, "type", kStudyTypes, s.type);
   switch (s.type) {
@@ -38,23 +80,22 @@ void read_study(const MapReader& scene, Scene& out) {
       study.restrict_to({"type"}, "with type: point");
       break;
     case StudyType::transient:
-      study.restrict_to({"type"}, "with type: transient");
-      break;
-    case StudyType::load_sweep: {
-      study.restrict_to({"type", "load_start", "load_end", "load_steps"}, "with type: load_sweep");
+      study.restrict_to({"type", "load_start", "load_end", "duration", "bracket_width"}, "with type: transient");
       s.load_start = study.quantity("load_start", si::force, positive);
       s.load_end = study.quantity("load_end", si::force, positive);
-      if (s.load_end <= s.load_start) {
-        const Node node = study.get("load_end", "");
-        node.fail(fmt::format("{}: '{}' must be greater than load_start '{}'", node.path(),
-                              node.yaml().Scalar(), study.get("load_start", "").yaml().Scalar()));
-      }
+      s.duration = study.quantity("duration", si::time, non_negative, 0.0);
+      break;
+    case StudyType::load_sweep: {
+      study.restrict_to({"type", "load_start", "load_end", "load_steps", "bracket_width"}, "with type: load_sweep");
+      read_load_range(study, s, "");
       s.load_steps = study.get("load_steps", "a whole number >= 2")
                          .integer(2, "the number of loads, both ends included");
+      s.bracket_width = read_bracket_width(study, s.bracket_width);
       break;
     }
     case StudyType::distress_map: {
-      study.restrict_to({"type", "speeds"}, "with type: distress_map");
+      study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width"},
+                        "with type: distress_map");
       const Node speeds = study.get("speeds", "a list of speeds, e.g. [136 rad/s, 545 rad/s]");
       const std::vector<Node> items = speeds.list("speeds, e.g. [136 rad/s, 545 rad/s]");
       if (items.empty())
@@ -62,6 +103,9 @@ void read_study(const MapReader& scene, Scene& out) {
                                 "[136 rad/s, 545 rad/s]",
                                 speeds.path()));
       for (const Node& speed : items) s.speeds.push_back(speed.quantity(si::angular_speed, non_negative));
+      read_load_range(study, s, " (distress is searched between them)");
+      read_map_parameter(study, s, out);
+      s.bracket_width = read_bracket_width(study, s.bracket_width);
       break;
     }
   }

@@ -140,15 +140,28 @@ void write_numerics(Writer& w, const Scene& s) {
 
   w.line(0, "study:");
   w.entry(1, "type", std::string(kStudyTypes.name(s.study.type)));
-  if (s.study.type == StudyType::load_sweep) {
-    w.entry(1, "load_start", quantity(s.study.load_start, "N"));
-    w.entry(1, "load_end", quantity(s.study.load_end, "N"));
-    w.entry(1, "load_steps", fmt::format("{}", s.study.load_steps));
-  } else if (s.study.type == StudyType::distress_map) {
-    std::string speeds;
-    for (double speed : s.study.speeds) speeds += (speeds.empty() ? "" : ", ") + quantity(speed, "rad/s");
-    w.entry(1, "speeds", fmt::format("[{}]", speeds));
+  const Study& st = s.study;
+  if (st.type != StudyType::point) {
+    w.entry(1, "load_start", quantity(st.load_start, "N"));
+    w.entry(1, "load_end", quantity(st.load_end, "N"));
   }
+  if (st.type == StudyType::load_sweep) w.entry(1, "load_steps", fmt::format("{}", st.load_steps));
+  if (st.type == StudyType::distress_map) {
+    std::string speeds;
+    for (double speed : st.speeds) speeds += (speeds.empty() ? "" : ", ") + quantity(speed, "rad/s");
+    w.entry(1, "speeds", fmt::format("[{}]", speeds));
+    if (st.parameter != MapParameter::none) {
+      const char* unit = st.parameter == MapParameter::gear_tilt ? "rad" : "1";
+      std::string values;
+      for (double v : st.parameter_values) values += (values.empty() ? "" : ", ") + quantity(v, unit);
+      w.line(1, "parameter:");
+      w.entry(2, "name", std::string(kMapParameters.name(st.parameter)));
+      w.entry(2, "values", fmt::format("[{}]", values));
+    }
+  }
+  if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map)
+    w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
+  if (st.type == StudyType::transient) w.entry(1, "duration", quantity(st.duration, "s"));
 
   w.line(0, "output:");
   w.entry(1, "directory", quoted(s.output.directory));

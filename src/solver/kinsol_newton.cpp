@@ -4,11 +4,14 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <kinsol/kinsol.h>
 #include <klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
+
+#include "twb/solver/sparse_matrix_fill.h"
 
 namespace twb {
 
@@ -90,17 +93,13 @@ int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vecto
     const auto n = std::size_t(N_VGetLength(y));
     cb->assemble_at(std::span<const double>(N_VGetArrayPointer(y), n), true);
     cb->next_with_jacobian = true;
-    // SUNDIALS zeroes the whole matrix, index arrays included, before each call.
-    sunindextype* rowptr = SUNSparseMatrix_IndexPointers(J);
-    sunindextype* cols = SUNSparseMatrix_IndexValues(J);
-    double* vals = SUNSparseMatrix_Data(J);
-    std::copy(p.row_start.begin(), p.row_start.end(), rowptr);
-    std::copy(p.column.begin(), p.column.end(), cols);
-    std::copy(cb->point_jacobian.begin(), cb->point_jacobian.end(), vals);
-    if (cb->shift)
-      for (std::size_t k = 0; k < cb->diagonal.size(); ++k) vals[cb->diagonal[k]] += cb->shift->coefficient(k);
-    for (double v : cb->point_jacobian)
-      if (!std::isfinite(v)) return 1;
+    if (!fill_sparse_matrix(J, p, cb->point_jacobian)) return 1;
+    if (cb->shift) {
+      double* vals = SUNSparseMatrix_Data(J);
+      // solve() has refused a shift on a row without a diagonal entry.
+      for (std::size_t k = 0; k < cb->diagonal.size(); ++k)
+        if (cb->diagonal[k] >= 0) vals[cb->diagonal[k]] += cb->shift->coefficient(k);
+    }
     return 0;
   } catch (const std::exception& e) {
     cb->callback_error = e.what();
@@ -217,10 +216,6 @@ void error_handler(int, const char*, const char*, char* msg, void* data) {
 // Undamped Newton steps tried before the line search (see solve()).
 constexpr int full_step_budget = 8;
 
-void check(int flag, const char* call) {
-  if (flag < 0) throw SolverFailure(std::string(call) + " failed", flag);
-}
-
 }  // namespace
 
 KinsolNewton::KinsolNewton(const SteadySystem& model)
@@ -239,14 +234,14 @@ KinsolNewton::KinsolNewton(const SteadySystem& model)
   if (!y_ || !scale_ || !jac_ || !klu_) throw SolverFailure("could not allocate the Newton solver", -1);
   kin_ = KINCreate(ctx_.get());
   if (!kin_) throw SolverFailure("KINCreate failed", -1);
-  check(KINInit(kin_, residual_fn, y_.get()), "KINInit");
-  check(KINSetUserData(kin_, callbacks_.get()), "KINSetUserData");
-  check(KINSetErrHandlerFn(kin_, error_handler, callbacks_.get()), "KINSetErrHandlerFn");
-  check(KINSetLinearSolver(kin_, klu_.get(), jac_.get()), "KINSetLinearSolver");
-  check(KINSetJacFn(kin_, jacobian_fn), "KINSetJacFn");
+  check_flag(KINInit(kin_, residual_fn, y_.get()), "KINInit");
+  check_flag(KINSetUserData(kin_, callbacks_.get()), "KINSetUserData");
+  check_flag(KINSetErrHandlerFn(kin_, error_handler, callbacks_.get()), "KINSetErrHandlerFn");
+  check_flag(KINSetLinearSolver(kin_, klu_.get(), jac_.get()), "KINSetLinearSolver");
+  check_flag(KINSetJacFn(kin_, jacobian_fn), "KINSetJacFn");
   // A fresh exact Jacobian every iteration: quadratic convergence is worth one KLU
   // refactorization per step on this small system.
-  check(KINSetMaxSetupCalls(kin_, 1), "KINSetMaxSetupCalls");
+  check_flag(KINSetMaxSetupCalls(kin_, 1), "KINSetMaxSetupCalls");
   // TWB_KINSOL_PRINT=1..3 shows KINSOL's own iteration log on stdout (diagnostics).
   if (const char* level = std::getenv("TWB_KINSOL_PRINT")) KINSetPrintLevel(kin_, std::atoi(level));
 }
@@ -257,16 +252,21 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   NewtonReport rep;
   const std::size_t n = u.size();
   std::copy(u.begin(), u.end(), N_VGetArrayPointer(y_.get()));
-  check(KINSetFuncNormTol(kin_, s.residual_tolerance), "KINSetFuncNormTol");
-  check(KINSetScaledStepTol(kin_, s.step_tolerance), "KINSetScaledStepTol");
-  if (s.max_step > 0) check(KINSetMaxNewtonStep(kin_, s.max_step), "KINSetMaxNewtonStep");
+  check_flag(KINSetFuncNormTol(kin_, s.residual_tolerance), "KINSetFuncNormTol");
+  check_flag(KINSetScaledStepTol(kin_, s.step_tolerance), "KINSetScaledStepTol");
+  if (s.max_step > 0) check_flag(KINSetMaxNewtonStep(kin_, s.max_step), "KINSetMaxNewtonStep");
   callbacks_->last_error.clear();
   callbacks_->callback_error.clear();
+  // The shift adds to the diagonal: a row whose pattern lacks (k, k) cannot take it.
+  if (shift)
+    for (std::size_t k = 0; k < n; ++k)
+      if (shift->coefficient(k) != 0.0 && callbacks_->diagonal[k] < 0)
+        throw std::invalid_argument(fmt::format("pseudo-time shift on row {}, which has no diagonal entry", k));
   callbacks_->shift = shift;
   callbacks_->forget();
 
   auto run = [&](int strategy, int max_iterations) {
-    check(KINSetNumMaxIters(kin_, max_iterations), "KINSetNumMaxIters");
+    check_flag(KINSetNumMaxIters(kin_, max_iterations), "KINSetNumMaxIters");
     callbacks_->next_with_jacobian = true;  // KINSOL's first request is a Jacobian's point
     const int result = KINSol(kin_, y_.get(), strategy, scale_.get(), residual_scale_.get());
     long count = 0;

@@ -10,4 +10,8 @@ SundialsContext make_context() {
   return SundialsContext(ctx);
 }
 
+void check_flag(int flag, const char* call) {
+  if (flag < 0) throw SolverFailure(std::string(call) + " failed", flag);
+}
+
 }  // namespace twb

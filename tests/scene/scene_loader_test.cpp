@@ -74,6 +74,10 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.study.load_end, b.study.load_end);
   EXPECT_EQ(a.study.load_steps, b.study.load_steps);
   EXPECT_EQ(a.study.speeds, b.study.speeds);
+  EXPECT_EQ(a.study.parameter, b.study.parameter);
+  EXPECT_EQ(a.study.parameter_values, b.study.parameter_values);
+  EXPECT_EQ(a.study.bracket_width, b.study.bracket_width);
+  EXPECT_EQ(a.study.duration, b.study.duration);
   EXPECT_EQ(a.output.directory, b.output.directory);
   EXPECT_EQ(a.output.fields, b.output.fields);
 }
@@ -139,9 +143,13 @@ INSTANTIATE_TEST_SUITE_P(
                           "friction: {law: constant, coefficient: 0.15}\n"
                           "study: {type: load_sweep, load_start: 100 N, load_end: 2 kN, load_steps: 20}\n"
                           "output: {directory: 'out dir/with \"quotes\" # and hash', fields: true}\n"},
+        RoundTripCase{"transient_load_step",
+                      std::string(kMinimalScene) +
+                          "study: {type: transient, load_start: 150 N, load_end: 0.2 kN, duration: 2 min}\n"},
         RoundTripCase{"distress_map_custom_surfaces_film_2",
                       std::string(testing::kSceneBodies) +
-                          "study: {type: distress_map, speeds: [136 rad/s, 5200 rpm]}\n"
+                          "study: {type: distress_map, speeds: [136 rad/s, 5200 rpm], load_start: 50 N, load_end: 3 kN,\n"
+                          "        parameter: {name: gear_tilt, values: [1 mrad, 2 mrad, 4e-3]}, bracket_width: 0.001}\n"
                           "surfaces: {asperities: {summit_density: 3e11 1/m^2}, gear: {Rq: 0.3 um}}\n"
                           "materials: {washer: {youngs_modulus: 110 GPa, poisson_ratio: 0.34}}\n"
                           "operating: {load: 800 N, speed: 953 rad/s, sliding: washer_gear, ambient: 80 degC}\n"}),

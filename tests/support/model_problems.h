@@ -7,6 +7,10 @@
 //     θ' = ψ·a − θ,   0 = a − e^θ        (u = (θ, a), λ = ψ)
 // Steady states θ·e^(−θ) = ψ: a fold at θ = 1, ψ = 1/e; above it every trajectory runs
 // away (finite-time blow-up).
+// With a finite activation energy ε (Frank-Kamenetskii's exponent θ/(1 + εθ) in place
+// of θ) and ε < 1/4 the steady curve is S-shaped: past the ignition fold the state
+// jumps to a hot branch instead of blowing up, as the bearing's does past distress
+// (MODEL §8). The folds are where (1 + εθ)² = θ.
 //
 // Bratu's problem in 1-D, u_t = u_xx + λ·e^u on (0, 1), u(0) = u(1) = 0, by second-order
 // central differences on n interior nodes. The continuum fold is at λ = 3.513830719;
@@ -21,24 +25,32 @@
 
 namespace twb::testing {
 
+// Every entry of a small n×n matrix, row by row.
+inline SparsePattern dense_pattern(Index n) {
+  SparsePattern p;
+  p.rows = p.cols = n;
+  for (Index r = 0; r <= n; ++r) p.row_start.push_back(r * n);
+  for (Index r = 0; r < n; ++r)
+    for (Index c = 0; c < n; ++c) p.column.push_back(c);
+  return p;
+}
+
 class SemenovProblem final : public SteadySystem {
  public:
-  explicit SemenovProblem(double psi) : psi_(psi) {
-    pattern_.rows = pattern_.cols = 2;
-    pattern_.row_start = {0, 2, 4};
-    pattern_.column = {0, 1, 0, 1};
-  }
+  explicit SemenovProblem(double psi, double activation = 0.0)
+      : psi_(psi), epsilon_(activation), pattern_(dense_pattern(2)) {}
   Index size() const override { return 2; }
   const SparsePattern& pattern() const override { return pattern_; }
-  // Oriented so u' = −F: F_θ = θ − ψ·a (C = 1), F_a = a − e^θ (algebraic).
+  // Oriented so u' = −F: F_θ = θ − ψ·a (C = 1), F_a = a − e^(θ/(1+εθ)) (algebraic).
   void evaluate(std::span<const double> u, std::span<double> r, std::span<double> jac) const override {
-    const double e = std::exp(u[0]);
+    const double d = 1.0 + epsilon_ * u[0];
+    const double e = std::exp(u[0] / d);
     r[0] = u[0] - psi_ * u[1];
     r[1] = u[1] - e;
     if (!jac.empty()) {
       jac[0] = 1.0;
       jac[1] = -psi_;
-      jac[2] = -e;
+      jac[2] = -e / (d * d);
       jac[3] = 1.0;
     }
   }
@@ -56,9 +68,15 @@ class SemenovProblem final : public SteadySystem {
     return {t, std::exp(t)};
   }
   static double critical_parameter() { return std::exp(-1.0); }
+  // The ignition fold for ε > 0: the smaller root of ε²θ² + (2ε − 1)θ + 1 = 0.
+  double ignition_parameter() const {
+    const double b = 2.0 * epsilon_ - 1.0;
+    const double theta = (-b - std::sqrt(b * b - 4.0 * epsilon_ * epsilon_)) / (2.0 * epsilon_ * epsilon_);
+    return theta * std::exp(-theta / (1.0 + epsilon_ * theta));
+  }
 
  private:
-  double psi_;
+  double psi_, epsilon_;
   SparsePattern pattern_;
 };
 

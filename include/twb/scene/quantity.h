@@ -22,6 +22,7 @@ inline constexpr SiUnit length{"m", "a length", "22.7 mm"};
 inline constexpr SiUnit angle{"rad", "an angle", "2 mrad"};
 inline constexpr SiUnit angular_speed{"rad/s", "an angular speed", "545 rad/s"};
 inline constexpr SiUnit force{"N", "a force", "1000 N"};
+inline constexpr SiUnit time{"s", "a time", "60 s"};
 inline constexpr SiUnit temperature{"K", "a temperature", "24 degC"};
 inline constexpr SiUnit stress{"Pa", "a pressure or stress", "201 GPa"};
 inline constexpr SiUnit conductivity{"W/(m K)", "a thermal conductivity", "60.5 W/(m K)"};

@@ -23,6 +23,9 @@ enum class FrictionLaw { constant, empirical };
 
 enum class StudyType { point, load_sweep, distress_map, transient };
 
+// The optional second axis of a distress map (besides speed).
+enum class MapParameter { none, friction_coefficient, gear_tilt };
+
 struct Effects {
   bool hydrodynamics = false;
   CavitationModel cavitation = CavitationModel::reynolds;
@@ -100,12 +103,19 @@ struct SolverSettings {
 
 struct Study {
   StudyType type = StudyType::point;
-  // load_sweep
+  // load_sweep and distress_map: the load range continued over; transient: the load
+  // before (load_start) and after (load_end) the step.
   double load_start = 0.0;  // N
   double load_end = 0.0;    // N
-  int load_steps = 0;       // number of states, ends included
+  int load_steps = 0;       // load_sweep: states on the requested grid, ends included
   // distress_map
   std::vector<double> speeds;  // rad/s
+  MapParameter parameter = MapParameter::none;
+  std::vector<double> parameter_values;  // SI (dimensionless, rad)
+  // Distress bracket refined by bisection to (high − low)/high <= bracket_width.
+  double bracket_width = 0.002;
+  // transient: pseudo-time span in s; 0 marches until the state settles or runs away.
+  double duration = 0.0;
 };
 
 struct Output {

@@ -33,4 +33,8 @@ class SolverFailure : public std::runtime_error {
   int flag_;
 };
 
+// For set-up calls, which fail only on a programming error: throws SolverFailure
+// naming the call when flag < 0.
+void check_flag(int flag, const char* call);
+
 }  // namespace twb

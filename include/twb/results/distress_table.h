@@ -1,0 +1,27 @@
+// distress.csv: one row per distress search (issue contract):
+//   speed_rad_s, <param>, W_d_N, bracket_low_N, bracket_high_N, fold_N, method
+// <param> is the distress map's second axis (e.g. friction_coefficient); the column is
+// left out when the map has none. A value that does not exist (no fold on the branch,
+// no distress below the highest load searched) is an empty cell, never NaN.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace twb {
+
+struct DistressRow {
+  double speed = 0.0;                     // rad/s
+  std::optional<double> parameter;        // the second axis' value (SI), if any
+  std::optional<double> distress_load;    // W_d, N
+  std::optional<double> bracket_low;      // highest load whose step settled, N
+  std::optional<double> bracket_high;     // lowest load whose step ran away, N
+  std::optional<double> fold_load;        // turning point of the steady branch, N
+  std::string method;                     // how W_d was decided (see distress_search.h)
+};
+
+// parameter_column: e.g. "friction_coefficient", "gear_tilt_rad"; empty for none.
+std::string distress_csv(const std::vector<DistressRow>& rows, const std::string& parameter_column);
+
+}  // namespace twb

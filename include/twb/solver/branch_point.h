@@ -1,0 +1,23 @@
+// One accepted state of a branch as continuation hands it to its caller (the bearing
+// study writes each to states.csv and checks it with a transient).
+#pragma once
+
+#include <functional>
+#include <span>
+
+namespace twb {
+
+struct BranchPoint {
+  int index = 0;  // 0: the start state
+  std::span<const double> u;
+  double lambda = 0.0;
+  double arclength = 0.0;           // from the start, in the continuation metric; 0 in natural continuation
+  std::span<const double> tangent;  // (t_u, t_μ), unit in the metric; empty in natural continuation
+  long corrector_iterations = 0;    // of the correction that produced this state
+};
+
+// Called for every accepted state, the start included; returning false stops the
+// continuation there.
+using BranchCallback = std::function<bool(const BranchPoint&)>;
+
+}  // namespace twb

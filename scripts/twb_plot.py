@@ -1,0 +1,608 @@
+#!/usr/bin/python3
+"""Figures of twb results in the layout of Jackson & Green (2006), Figs. 6-15.
+
+    twb_plot.py RESULTS_DIR [RESULTS_DIR ...] [--out FIGDIR] [--format png,svg]
+
+Reads states.csv (required), distress.csv, trajectory.csv and run.json from each
+directory, merges the directories (e.g. one load sweep per speed), and writes one file
+per figure and format into FIGDIR (default: RESULTS_DIR/figures of the first
+directory). Prints the files written. Exit status 2 when an input is missing or
+malformed. docs/figures.md describes each figure.
+"""
+
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+from dataclasses import dataclass, field
+
+import matplotlib
+
+# Figures only ever go to files, and the machines that make them usually have no display.
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+
+STATE_COLUMNS = (
+    "load_N", "speed_rad_s", "T_mean_C", "T_max_C", "hmin_over_sigma", "gamma_x_ratio",
+    "gamma_y_ratio", "fluid_share", "contact_share", "torque_Nm", "f_eff", "stribeck",
+    "converged", "iterations", "residual", "energy_error", "wall_ms")
+TRAJECTORY_COLUMNS = (
+    "t_s", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff", "load_N")
+DISTRESS_TAIL = ("W_d_N", "bracket_low_N", "bracket_high_N", "fold_N", "method")
+FORMATS = ("png", "svg", "pdf")
+DPI = 150
+
+LOAD_LABEL = r"load $F_{ext}$ (N)"
+HMIN_LABEL = r"$h_{min}/\sigma$"
+CONTACT_LABEL = r"$F_{cont}/F_{ext}$"
+FEFF_LABEL = r"effective friction coefficient $f_{eff}$"
+STRIBECK_LABEL = (r"Stribeck number $Z\,N\,/\,P$"
+                  "\n(Z: viscosity in Pa·s, N: speed in rev/s, P: $F_{ext}$/washer area in Pa)")
+
+PARAMETER_FORMATS = {
+    "friction_coefficient": "dry friction coefficient {:g}",
+    "gear_tilt_rad": r"$\gamma_{{tilt}}$ = {:g} rad",
+}
+
+
+class InputError(Exception):
+    """An input that is not what twb writes; the message names the file and line."""
+
+
+# ----------------------------------------------------------------------------- reading
+
+def _records(path):
+    """(line number, fields) for every non-blank line, header included."""
+    reader = None
+    try:
+        with open(path, newline="", encoding="utf-8") as f:
+            reader = csv.reader(f)
+            for fields in reader:
+                if fields:
+                    yield reader.line_num, fields
+    except UnicodeDecodeError as e:
+        raise InputError(f"{path}: not UTF-8 text ({e.reason})") from None
+    except csv.Error as e:
+        raise InputError(f"{path}: line {reader.line_num}: {e}") from None
+    except OSError as e:
+        raise InputError(f"{path}: cannot read: {e.strerror}") from None
+
+
+def _number(path, line, column, text, optional=False):
+    text = text.strip()
+    if optional and text == "":
+        return None
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    # twb never writes NaN or infinity (an absent value is an empty cell), so one here
+    # means the file did not come from twb or was damaged.
+    if not math.isfinite(value):
+        expected = "a finite number or an empty cell" if optional else "a finite number"
+        raise InputError(f"{path}: line {line}: column '{column}': expected {expected}, got {text!r}")
+    return value
+
+
+def _header(path, records, required, what):
+    try:
+        line, header = next(records)
+    except StopIteration:
+        raise InputError(f"{path}: line 1: expected the header {','.join(required)}, "
+                         f"got an empty file") from None
+    header = [h.strip() for h in header]
+    missing = [c for c in required if c not in header]
+    if missing:
+        raise InputError(f"{path}: line {line}: expected the {what} header {','.join(required)}; "
+                         f"missing column(s): {', '.join(missing)}")
+    return header
+
+
+def _check_width(path, line, fields, header):
+    if len(fields) != len(header):
+        raise InputError(f"{path}: line {line}: expected {len(header)} comma-separated fields "
+                         f"as in the header, got {len(fields)}")
+
+
+def read_states(path):
+    """Columns of states.csv as float arrays, in file order."""
+    records = _records(path)
+    header = _header(path, records, STATE_COLUMNS, "states.csv")
+    index = {c: header.index(c) for c in STATE_COLUMNS}
+    columns = {c: [] for c in STATE_COLUMNS}
+    for line, fields in records:
+        _check_width(path, line, fields, header)
+        for c in STATE_COLUMNS:
+            columns[c].append(_number(path, line, c, fields[index[c]]))
+        if columns["converged"][-1] not in (0.0, 1.0):
+            raise InputError(f"{path}: line {line}: column 'converged': expected 0 or 1, "
+                             f"got {fields[index['converged']].strip()!r}")
+    return {c: np.array(v, dtype=float) for c, v in columns.items()}
+
+
+def read_trajectory(path):
+    records = _records(path)
+    header = _header(path, records, TRAJECTORY_COLUMNS, "trajectory.csv")
+    index = {c: header.index(c) for c in TRAJECTORY_COLUMNS}
+    columns = {c: [] for c in TRAJECTORY_COLUMNS}
+    for line, fields in records:
+        _check_width(path, line, fields, header)
+        for c in TRAJECTORY_COLUMNS:
+            columns[c].append(_number(path, line, c, fields[index[c]]))
+    return {c: np.array(v, dtype=float) for c, v in columns.items()}
+
+
+@dataclass
+class DistressRow:
+    speed: float
+    parameter: object  # (column name, value) or None
+    w_d: object
+    low: object
+    high: object
+    fold: object
+    method: str
+
+
+def read_distress(path):
+    records = _records(path)
+    try:
+        line, header = next(records)
+    except StopIteration:
+        raise InputError(f"{path}: line 1: expected the header speed_rad_s[,<parameter>],"
+                         f"{','.join(DISTRESS_TAIL)}, got an empty file") from None
+    header = [h.strip() for h in header]
+    if (len(header) not in (6, 7) or header[0] != "speed_rad_s"
+            or tuple(header[-5:]) != DISTRESS_TAIL):
+        raise InputError(f"{path}: line {line}: expected the header speed_rad_s[,<parameter>],"
+                         f"{','.join(DISTRESS_TAIL)}, got {','.join(header)}")
+    parameter = header[1] if len(header) == 7 else None
+    rows = []
+    for line, fields in records:
+        if len(fields) < len(header):
+            raise InputError(f"{path}: line {line}: expected {len(header)} comma-separated fields "
+                             f"as in the header, got {len(fields)}")
+        # The method is free text that twb writes unquoted, so any extra commas belong to it.
+        n = len(header) - 1
+        fields = fields[:n] + [",".join(fields[n:])]
+        speed = _number(path, line, "speed_rad_s", fields[0])
+        value = None
+        if parameter is not None:
+            value = _number(path, line, parameter, fields[1], optional=True)
+        k = len(header) - 5
+        w_d, low, high, fold = (_number(path, line, DISTRESS_TAIL[i], fields[k + i], optional=True)
+                                for i in range(4))
+        rows.append(DistressRow(speed, None if parameter is None else (parameter, value),
+                                w_d, low, high, fold, fields[-1].strip()))
+    return rows
+
+
+def friction_setting(path):
+    """The boundary friction law of run.json's resolved scene, as a legend label.
+
+    run.json is only used for labels, so an unreadable one is ignored, not an error."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            friction = json.load(f)["scene"]["friction"]
+        law = friction["law"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    if law == "constant":
+        return f"dry friction coefficient {friction.get('coefficient', '?')}"
+    if law == "empirical":
+        return "empirical friction law (eq. 18)"
+    return str(law)
+
+
+@dataclass
+class Run:
+    directory: str
+    name: str
+    states: dict
+    distress: list = field(default_factory=list)
+    trajectory: object = None
+    friction: object = None
+
+
+def read_run(directory):
+    if not os.path.isdir(directory):
+        raise InputError(f"{directory}: not a directory")
+    states_path = os.path.join(directory, "states.csv")
+    if not os.path.isfile(states_path):
+        raise InputError(f"{directory}: no states.csv (every twb results directory has one)")
+    run = Run(directory, os.path.basename(os.path.normpath(os.path.abspath(directory))),
+              read_states(states_path))
+    distress_path = os.path.join(directory, "distress.csv")
+    if os.path.isfile(distress_path):
+        run.distress = read_distress(distress_path)
+    trajectory_path = os.path.join(directory, "trajectory.csv")
+    if os.path.isfile(trajectory_path):
+        run.trajectory = read_trajectory(trajectory_path)
+    run.friction = friction_setting(os.path.join(directory, "run.json"))
+    return run
+
+
+# ----------------------------------------------------------------------------- plotting
+
+def speed_key(speed):
+    # Speeds are written with 10 significant digits; rounding keeps 545 and 545.0000000001
+    # (a speed given in rpm, say) on one curve.
+    return float(f"{speed:.6g}")
+
+
+def speed_label(speed):
+    return f"{speed:g} rad/s"
+
+
+MARKERS = ("o", "s", "^", "D", "v", "<", ">", "p", "h", "*")
+
+
+class Style:
+    """One colour and marker per speed (or other series key), the same in every figure."""
+
+    def __init__(self, keys):
+        self.keys = sorted(set(keys))
+        cmap = plt.get_cmap("tab10" if len(self.keys) <= 10 else "viridis")
+        n = max(len(self.keys) - 1, 1)
+        self.colors = {k: cmap(i if len(self.keys) <= 10 else i / n) for i, k in enumerate(self.keys)}
+        self.markers = {k: MARKERS[i % len(MARKERS)] for i, k in enumerate(self.keys)}
+
+
+@dataclass
+class Data:
+    """All directories merged: one array per states.csv column, plus the rest."""
+    states: dict
+    friction: list          # per state: the run's friction label (or None)
+    distress: list
+    trajectories: list      # (label, columns)
+    speed_style: Style
+
+
+def merge(runs):
+    states = {c: np.concatenate([r.states[c] for r in runs]) for c in STATE_COLUMNS}
+    friction = [r.friction for r in runs for _ in range(len(r.states["load_N"]))]
+    distress = [row for r in runs for row in r.distress]
+    trajectories = []
+    for r in runs:
+        if r.trajectory is None:
+            continue
+        parts = []
+        speeds = {speed_key(s) for s in r.states["speed_rad_s"]}
+        if len(speeds) == 1:
+            parts.append(speed_label(next(iter(speeds))))
+        loads = set(r.trajectory["load_N"])
+        if len(loads) == 1:
+            parts.append(f"{next(iter(loads)):g} N")
+        trajectories.append((", ".join(parts) or r.name, r.trajectory))
+    keys = [speed_key(s) for s in states["speed_rad_s"]] + [speed_key(d.speed) for d in distress]
+    return Data(states, friction, distress, trajectories, Style(keys))
+
+
+def _positive(values):
+    """Non-positive values as NaN, so that a log axis leaves a gap instead of a plunge."""
+    out = np.array(values, dtype=float)
+    out[out <= 0] = np.nan
+    return out
+
+
+def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
+    """One curve per speed, points joined in order of load; returns whether any point
+    had not converged."""
+    s = data.states
+    speeds = np.array([speed_key(v) for v in s["speed_rad_s"]])
+    any_unconverged = False
+    for key in data.speed_style.keys:
+        idx = np.flatnonzero(speeds == key)
+        if idx.size == 0:
+            continue
+        # Several directories may hold the same speed (e.g. one point run per load);
+        # a stable sort keeps the solver's order among equal loads.
+        idx = idx[np.argsort(s["load_N"][idx], kind="stable")]
+        x, y = s[xcol][idx], s[ycol][idx]
+        if logx:
+            x = _positive(x)
+        if logy:
+            y = _positive(y)
+        ok = s["converged"][idx] == 1
+        color, marker = data.speed_style.colors[key], data.speed_style.markers[key]
+        ax.plot(x[ok], y[ok], color=color, marker=marker, markersize=4, linewidth=1.2,
+                label=speed_label(key))
+        if not ok.all():
+            any_unconverged = True
+            ax.plot(x[~ok], y[~ok], linestyle="none", marker=marker, markersize=6,
+                    markerfacecolor="none", markeredgecolor=color)
+    if logx:
+        ax.set_xscale("log")
+    if logy:
+        ax.set_yscale("log")
+    return any_unconverged
+
+
+def distress_lines(data):
+    """(speed, W_d) for the vertical distress marks on load axes.
+
+    Rows of a distress map with a second parameter are left out: states.csv does not
+    say which parameter value a state was solved with."""
+    return [(speed_key(d.speed), d.w_d) for d in data.distress
+            if d.parameter is None and d.w_d is not None]
+
+
+def finish_legend(ax, unconverged=False, distress=False):
+    handles, labels = ax.get_legend_handles_labels()
+    if distress:
+        handles.append(Line2D([], [], color="black", linestyle=":", linewidth=1.2))
+        labels.append(r"distress load $W_d$")
+    if unconverged:
+        handles.append(Line2D([], [], color="black", linestyle="none", marker="o",
+                              markerfacecolor="none"))
+        labels.append("not converged")
+    if handles:
+        ax.legend(handles, labels, fontsize="small", framealpha=0.85)
+
+
+def new_figure(title, paper_figure=None, size=(6.4, 4.8)):
+    fig, ax = plt.subplots(figsize=size)
+    if paper_figure is not None:
+        title = f"{title}\n(cf. Jackson & Green 2006, Fig. {paper_figure})"
+    ax.set_title(title, fontsize="medium")
+    ax.grid(True, which="major", alpha=0.3)
+    return fig, ax
+
+
+def figure_vs_load(data, column, ylabel, title, paper_figure, logy=False):
+    fig, ax = new_figure(title, paper_figure)
+    unconverged = draw_by_speed(ax, data, "load_N", column, logy=logy)
+    marks = distress_lines(data)
+    for key, w_d in marks:
+        ax.axvline(w_d, color=data.speed_style.colors[key], linestyle=":", linewidth=1.2)
+    ax.set_xlabel(LOAD_LABEL)
+    ax.set_ylabel(ylabel)
+    finish_legend(ax, unconverged, distress=bool(marks))
+    return fig
+
+
+def figure_contact_vs_hmin(data):
+    fig, ax = new_figure("Contact share vs minimum film thickness", 13)
+    unconverged = draw_by_speed(ax, data, "hmin_over_sigma", "contact_share")
+    # The paper reads its figure against this customary threshold of significant contact.
+    ax.axvline(3.0, color="grey", linestyle="--", linewidth=0.8)
+    ax.set_xlabel(HMIN_LABEL)
+    ax.set_ylabel(CONTACT_LABEL)
+    finish_legend(ax, unconverged)
+    return fig
+
+
+def figure_stribeck(data):
+    fig, ax = new_figure("Stribeck curve", 14)
+    unconverged = draw_by_speed(ax, data, "stribeck", "f_eff", logx=True)
+    ax.set_xlabel(STRIBECK_LABEL)
+    ax.set_ylabel(FEFF_LABEL)
+    finish_legend(ax, unconverged)
+    return fig
+
+
+def figure_stribeck_by_friction(data):
+    """Fig. 15: one colour per friction law across the merged runs, one curve per
+    (law, speed)."""
+    settings = sorted({f for f in data.friction if f is not None})
+    style = Style(settings)
+    s = data.states
+    fig, ax = new_figure("Stribeck curve for several dry friction coefficients", 15)
+    friction = np.array([f if f is not None else "" for f in data.friction], dtype=object)
+    speeds = np.array([speed_key(v) for v in s["speed_rad_s"]])
+    for setting in settings:
+        labelled = False
+        for key in data.speed_style.keys:
+            idx = np.flatnonzero((friction == setting) & (speeds == key) & (s["converged"] == 1))
+            if idx.size == 0:
+                continue
+            idx = idx[np.argsort(s["load_N"][idx], kind="stable")]
+            ax.plot(_positive(s["stribeck"][idx]), s["f_eff"][idx], color=style.colors[setting],
+                    marker=style.markers[setting], markersize=4, linewidth=1.2,
+                    label=None if labelled else setting)
+            labelled = True
+    ax.set_xscale("log")
+    ax.set_xlabel(STRIBECK_LABEL)
+    ax.set_ylabel(FEFF_LABEL)
+    finish_legend(ax)
+    return fig
+
+
+def parameter_label(parameter):
+    name, value = parameter
+    if value is None:
+        return f"{name} not set"
+    return PARAMETER_FORMATS.get(name, name + " = {:g}").format(value)
+
+
+def figure_distress_map(data):
+    series = {}
+    for d in data.distress:
+        series.setdefault(d.parameter, []).append(d)
+    plottable = [k for k, rows in series.items()
+                 if any(r.w_d is not None or r.fold is not None for r in rows)]
+    if not plottable:
+        return None
+    plottable.sort(key=lambda p: (p is not None, "" if p is None else p[0],
+                                  -math.inf if p is None or p[1] is None else p[1]))
+    style = Style(range(len(plottable)))
+    fig, ax = new_figure(r"Distress load $W_d$ vs speed")
+    any_fold = False
+    for i, key in enumerate(plottable):
+        rows = sorted(series[key], key=lambda r: r.speed)
+        color, marker = style.colors[i], style.markers[i]
+        label = r"$W_d$" if key is None else parameter_label(key)
+        found = [r for r in rows if r.w_d is not None]
+        if found:
+            x = [r.speed for r in found]
+            y = [r.w_d for r in found]
+            # A missing bracket side draws no bar; a W_d outside its bracket would be a
+            # twb bug, drawn as a zero-length bar rather than hidden.
+            below = [max(r.w_d - r.low, 0.0) if r.low is not None else 0.0 for r in found]
+            above = [max(r.high - r.w_d, 0.0) if r.high is not None else 0.0 for r in found]
+            ax.errorbar(x, y, yerr=[below, above], color=color, marker=marker, markersize=5,
+                        linewidth=1.2, capsize=4, label=label)
+        folds = [r for r in rows if r.fold is not None]
+        if folds:
+            any_fold = True
+            ax.plot([r.speed for r in folds], [r.fold for r in folds], linestyle="none",
+                    marker="D", markersize=8, markerfacecolor="none", markeredgecolor=color,
+                    markeredgewidth=1.2)
+    ax.set_xlabel(r"speed $\omega$ (rad/s)")
+    ax.set_ylabel("load (N)")
+    handles, labels = ax.get_legend_handles_labels()
+    handles.append(Line2D([], [], color="black", marker="|", linestyle="none", markersize=10))
+    labels.append("bracket: settled / ran away")
+    if any_fold:
+        handles.append(Line2D([], [], color="black", linestyle="none", marker="D",
+                              markerfacecolor="none"))
+        labels.append("fold of the steady branch")
+    ax.legend(handles, labels, fontsize="small", framealpha=0.85)
+    return fig
+
+
+def figure_trajectory(data):
+    fig, axes = plt.subplots(2, 2, sharex=True, figsize=(9.6, 7.0))
+    (ax_t, ax_h), (ax_c, ax_f) = axes
+    several = len(data.trajectories) > 1
+    style = Style(range(len(data.trajectories)))
+    for i, (label, tr) in enumerate(data.trajectories):
+        color = style.colors[i] if several else None
+        t = tr["t_s"]
+        prefix = f"{label}: " if several else ""
+        ax_t.plot(t, tr["T_mean_C"], color=color or "tab:blue", linewidth=1.4,
+                  label=prefix + "mean washer")
+        ax_t.plot(t, tr["T_max_C"], color=color or "tab:red", linestyle="--", linewidth=1.4,
+                  label=prefix + "max film")
+        ax_h.plot(t, tr["hmin_over_sigma"], color=color, linewidth=1.4, label=label)
+        ax_c.plot(t, tr["contact_share"], color=color, linewidth=1.4, label=label)
+        ax_f.plot(t, tr["f_eff"], color=color, linewidth=1.4, label=label)
+    ax_t.set_ylabel("temperature (°C)")
+    ax_h.set_ylabel(HMIN_LABEL)
+    ax_c.set_ylabel(CONTACT_LABEL)
+    ax_f.set_ylabel(FEFF_LABEL)
+    for ax in axes.flat:
+        ax.grid(True, alpha=0.3)
+    for ax in axes[1]:
+        ax.set_xlabel("pseudo-time t (s)")
+    ax_t.legend(fontsize="small")
+    if several:
+        ax_h.legend(fontsize="small")
+    title = "Thermal transient after a load step"
+    if not several:
+        title += f" ({data.trajectories[0][0]})"
+    fig.suptitle(title, fontsize="medium")
+    return fig
+
+
+def save(fig, out_dir, stem, formats, written):
+    # Two-line axis labels (the Stribeck number's units) would otherwise be cut off.
+    fig.tight_layout()
+    for fmt in formats:
+        path = os.path.join(out_dir, f"{stem}.{fmt}")
+        # No date in the SVG, so that the same results give the same file.
+        metadata = {"Date": None} if fmt in ("svg", "pdf") else None
+        fig.savefig(path, dpi=DPI, metadata=metadata)
+        written.append(path)
+    plt.close(fig)
+
+
+def make_figures(data, out_dir, formats):
+    written = []
+    if data.states["load_N"].size:
+        for stem, column, ylabel, title, number, logy in (
+                ("fig06_f_eff_vs_load", "f_eff", FEFF_LABEL,
+                 "Effective friction coefficient vs load and speed", 6, False),
+                ("fig07_mean_temperature_vs_load", "T_mean_C", "mean washer temperature (°C)",
+                 "Mean bearing temperature vs load and speed", 7, False),
+                ("fig08_hmin_over_sigma_vs_load", "hmin_over_sigma", HMIN_LABEL,
+                 "Minimum film thickness vs load and speed", 8, False),
+                ("fig09_gamma_x_ratio_vs_load", "gamma_x_ratio", r"$\gamma_x/\gamma_{tilt}$",
+                 "Washer tilt about the x-axis vs load and speed", 9, False),
+                ("fig10_gamma_y_ratio_vs_load", "gamma_y_ratio", r"$\gamma_y/\gamma_{tilt}$",
+                 "Washer tilt about the y-axis vs load and speed", 10, False),
+                ("fig11_fluid_share_vs_load", "fluid_share", r"$F_{fluid}/F_{ext}$",
+                 "Load carried by the fluid film vs load and speed", 11, False),
+                ("fig12_contact_share_vs_load", "contact_share", CONTACT_LABEL,
+                 "Load carried by asperity contact vs load and speed", 12, True)):
+            save(figure_vs_load(data, column, ylabel, title, number, logy), out_dir, stem,
+                 formats, written)
+        save(figure_contact_vs_hmin(data), out_dir, "fig13_contact_share_vs_hmin", formats, written)
+        save(figure_stribeck(data), out_dir, "fig14_stribeck", formats, written)
+        if len({f for f in data.friction if f is not None}) > 1:
+            save(figure_stribeck_by_friction(data), out_dir, "fig15_stribeck_by_friction",
+                 formats, written)
+    else:
+        print("twb_plot: note: no solved states, so no figures of states", file=sys.stderr)
+    if data.distress:
+        fig = figure_distress_map(data)
+        if fig is None:
+            print("twb_plot: note: distress.csv has neither a distress load nor a fold; "
+                  "no distress map", file=sys.stderr)
+        else:
+            save(fig, out_dir, "distress_map", formats, written)
+        for d in data.distress:
+            if d.w_d is None:
+                where = speed_label(speed_key(d.speed))
+                if d.parameter is not None:
+                    where += ", " + parameter_label(d.parameter)
+                print(f"twb_plot: note: no distress load at {where}: {d.method}", file=sys.stderr)
+    if data.trajectories:
+        save(figure_trajectory(data), out_dir, "transient_trajectory", formats, written)
+    return written
+
+
+# ----------------------------------------------------------------------------- main
+
+def parse_formats(text):
+    formats = [f.strip().lower() for f in text.split(",") if f.strip()]
+    bad = [f for f in formats if f not in FORMATS]
+    if not formats or bad:
+        raise argparse.ArgumentTypeError(
+            f"expected a comma-separated list of {', '.join(FORMATS)}, got {text!r}")
+    return list(dict.fromkeys(formats))
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(
+        prog="twb_plot.py",
+        description="Figures of twb results directories in the layout of Jackson & Green "
+                    "(2006), Figs. 6-15, plus the distress map and the transient trajectory.")
+    parser.add_argument("dirs", nargs="+", metavar="RESULTS_DIR",
+                        help="a directory written by 'twb run --out'; several are merged")
+    parser.add_argument("--out", metavar="FIGDIR",
+                        help="where to write the figures (default: RESULTS_DIR/figures of the first)")
+    parser.add_argument("--format", type=parse_formats, default=["png", "svg"], metavar="LIST",
+                        help="comma-separated file formats among png, svg, pdf (default: png,svg)")
+    args = parser.parse_args(argv)
+
+    # Text stays text in the SVG (editable, searchable); a fixed salt makes its ids
+    # reproducible.
+    plt.rcParams["svg.fonttype"] = "none"
+    plt.rcParams["svg.hashsalt"] = "twb_plot"
+
+    try:
+        runs = [read_run(d) for d in args.dirs]
+    except InputError as e:
+        print(f"twb_plot: error: {e}", file=sys.stderr)
+        return 2
+    out_dir = args.out or os.path.join(args.dirs[0], "figures")
+    try:
+        os.makedirs(out_dir, exist_ok=True)
+    except OSError as e:
+        print(f"twb_plot: error: {out_dir}: cannot create: {e.strerror}", file=sys.stderr)
+        return 2
+    written = make_figures(merge(runs), out_dir, args.format)
+    if not written:
+        print("twb_plot: error: nothing to plot", file=sys.stderr)
+        return 1
+    for path in written:
+        print(path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,31 @@
+#include "twb/results/distress_table.h"
+
+#include "result_cells.h"
+
+namespace twb {
+
+namespace {
+// RFC 4180: a text cell holding a comma, a quote or a line break is quoted, quotes doubled.
+std::string text_cell(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += (c == '"') ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+}  // namespace
+
+std::string distress_csv(const std::vector<DistressRow>& rows, const std::string& parameter_column) {
+  const bool with_parameter = !parameter_column.empty();
+  std::string out = "speed_rad_s," + (with_parameter ? parameter_column + "," : std::string()) +
+                    "W_d_N,bracket_low_N,bracket_high_N,fold_N,method\n";
+  for (const DistressRow& r : rows) {
+    out += cells::number(r.speed, "speed") + ",";
+    if (with_parameter) out += cells::number(r.parameter, "parameter") + ",";
+    out += fmt::format("{},{},{},{},{}\n", cells::number(r.distress_load, "W_d"),
+                       cells::number(r.bracket_low, "bracket_low"), cells::number(r.bracket_high, "bracket_high"),
+                       cells::number(r.fold_load, "fold"), text_cell(r.method));
+  }
+  return out;
+}
+
+}  // namespace twb

@@ -1,0 +1,105 @@
+#include "twb/solver/fold_system.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "twb/solver/kinsol_newton.h"
+
+namespace twb {
+
+FoldSystem::FoldSystem(SteadySystem& base, ContinuationMetric scaling, std::span<const double> parameter_direction,
+                       std::span<const double> state_tangent)
+    : BorderedSystem(base, std::move(scaling), "fold test function") {
+  const auto n = std::size_t(base.size());
+  if (parameter_direction.size() != n || state_tangent.size() < n)
+    throw std::invalid_argument("FoldSystem: borders of another size");
+  const double b_size = max_norm(parameter_direction), t_size = metric().state_norm(state_tangent.first(n));
+  if (!(b_size > 0) || !(t_size > 0) || !std::isfinite(b_size) || !std::isfinite(t_size))
+    throw std::invalid_argument("FoldSystem: zero or non-finite borders");
+  b_.resize(n);
+  c_.resize(n);
+  const std::span<const double> omega = metric().state_weights();
+  for (std::size_t k = 0; k < n; ++k) {
+    b_[k] = parameter_direction[k] / b_size;
+    c_[k] = omega[k] * state_tangent[k] / t_size;
+  }
+  lu_ = std::make_unique<SparseLu>(matrix().pattern());
+}
+
+bool FoldSystem::solve_bordered(std::span<const double> x, std::span<double> f, std::span<double> base_jac,
+                                std::vector<double>& vg) const {
+  const auto n = std::size_t(base().size());
+  base().set_parameter(lambda_of(x));
+  base().evaluate(x.first(n), f, base_jac);
+  std::vector<double> values(std::size_t(matrix().pattern().nnz()));
+  matrix().assemble(base_jac, b_, c_, 0.0, values);
+  if (!lu_->factor(values)) return false;
+  vg.assign(n + 1, 0.0);
+  vg[n] = 1.0;
+  lu_->solve(vg);
+  return true;
+}
+
+void FoldSystem::second_derivatives(std::span<const double> u, std::span<const double> v,
+                                    std::span<const double> w, std::span<double> gradient,
+                                    double& parameter_part) const {
+  const auto n = u.size();
+  const SparsePattern& p = base().pattern();
+  // ε³ balances truncation (ε²) against rounding (1e-16/ε) in a central difference; v
+  // has unit size in the metric, so the state moves by about ε relative to its own size.
+  const double eps = std::cbrt(std::numeric_limits<double>::epsilon()) * (1.0 + metric().state_norm(u)) /
+                     std::max(metric().state_norm(v), std::numeric_limits<double>::min());
+  std::vector<double> shifted(n), f(n), jac(std::size_t(p.nnz())), f_lambda(n);
+  std::fill(gradient.begin(), gradient.end(), 0.0);
+  parameter_part = 0.0;
+  for (const double side : {1.0, -1.0}) {
+    for (std::size_t k = 0; k < n; ++k) shifted[k] = u[k] + side * eps * v[k];
+    base().evaluate(shifted, f, jac);
+    base().parameter_derivative(shifted, f_lambda);
+    const double weight = side / (2.0 * eps);
+    for (std::size_t row = 0; row < n; ++row) {
+      for (Index at = p.row_start[row]; at < p.row_start[row + 1]; ++at)
+        gradient[std::size_t(p.column[std::size_t(at)])] += weight * w[row] * jac[std::size_t(at)];
+      parameter_part += weight * w[row] * f_lambda[row];
+    }
+  }
+}
+
+void FoldSystem::evaluate(std::span<const double> x, std::span<double> residual, std::span<double> jacobian) const {
+  const auto n = std::size_t(base().size());
+  std::vector<double> base_jac(std::size_t(base().pattern().nnz())), vg;
+  if (!solve_bordered(x, residual.first(n), base_jac, vg)) {
+    std::fill(residual.begin(), residual.end(), std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  residual[n] = vg[n] - parameter();
+  if (jacobian.empty()) return;
+
+  std::vector<double> w(n + 1, 0.0);
+  w[n] = 1.0;
+  lu_->solve_transposed(w);
+  const std::span<const double> u = x.first(n);
+  std::vector<double> gradient(n), column(n);
+  double parameter_part = 0.0;
+  second_derivatives(u, std::span<const double>(vg).first(n), std::span<const double>(w).first(n), gradient,
+                     parameter_part);
+  for (double& g : gradient) g = -g;
+  base().parameter_derivative(u, column);
+  const double scale = metric().parameter_scale();
+  for (double& c : column) c *= scale;
+  matrix().assemble(base_jac, column, gradient, -parameter_part * scale, jacobian);
+}
+
+std::vector<double> FoldSystem::null_vector(std::span<const double> x) const {
+  const auto n = std::size_t(base().size());
+  std::vector<double> f(n), base_jac(std::size_t(base().pattern().nnz())), vg;
+  if (!solve_bordered(x, f, base_jac, vg)) return {};
+  vg.resize(n);
+  const double size = metric().state_norm(vg);
+  for (double& c : vg) c /= size;
+  return vg;
+}
+
+}  // namespace twb

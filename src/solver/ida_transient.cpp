@@ -1,0 +1,294 @@
+#include "twb/solver/ida_transient.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include <ida/ida.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include "twb/solver/kinsol_newton.h"
+#include "twb/solver/sparse_matrix_fill.h"
+
+namespace twb {
+
+struct IdaTransient::Callbacks {
+  const SteadySystem* system;
+  const std::vector<double>* capacities;
+  // IDA's Jacobian needs (k, k) wherever C_k > 0; the system's pattern may lack it, so
+  // IDA works on the union and the system's entries are scattered into it.
+  SparsePattern pattern;
+  std::vector<Index> from_system;  // position in `pattern` of each entry of the system's pattern
+  std::vector<Index> diagonal;     // position of (k, k) in `pattern`, -1 where C_k = 0 and absent
+  std::vector<double> system_values, values, scratch;
+  std::string last_error;      // IDA's own message
+  std::string callback_error;  // what a callback threw
+};
+
+namespace {
+
+// The system's pattern plus the diagonal of every differential row.
+SparsePattern with_capacity_diagonal(const SparsePattern& p, const std::vector<double>& capacities) {
+  SparsePattern u;
+  u.rows = p.rows;
+  u.cols = p.cols;
+  u.row_start.push_back(0);
+  for (Index r = 0; r < p.rows; ++r) {
+    std::vector<Index> row(p.column.begin() + p.row_start[std::size_t(r)],
+                           p.column.begin() + p.row_start[std::size_t(r + 1)]);
+    const auto at = std::lower_bound(row.begin(), row.end(), r);
+    if (capacities[std::size_t(r)] > 0.0 && (at == row.end() || *at != r)) row.insert(at, r);
+    u.column.insert(u.column.end(), row.begin(), row.end());
+    u.row_start.push_back(Index(u.column.size()));
+  }
+  return u;
+}
+
+// Trampolines: no exception may cross into C. A non-finite residual is recoverable
+// (IDA retries with a smaller step, and a blow-up then ends in a step failure the
+// caller reads); anything thrown is unrecoverable and its message kept.
+int residual_fn(double, N_Vector y, N_Vector yp, N_Vector g, void* data) {
+  auto* cb = static_cast<IdaTransient::Callbacks*>(data);
+  try {
+    const auto n = std::size_t(N_VGetLength(y));
+    const double* up = N_VGetArrayPointer(yp);
+    std::span<double> r(N_VGetArrayPointer(g), n);
+    cb->system->evaluate(std::span<const double>(N_VGetArrayPointer(y), n), r, {});
+    const std::vector<double>& c = *cb->capacities;
+    for (std::size_t k = 0; k < n; ++k) r[k] += c[k] * up[k];
+    for (double v : r)
+      if (!std::isfinite(v)) return 1;
+    return 0;
+  } catch (const std::exception& e) {
+    cb->callback_error = e.what();
+    return -1;
+  }
+}
+
+int jacobian_fn(double, double cj, N_Vector y, N_Vector, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector,
+                N_Vector) {
+  auto* cb = static_cast<IdaTransient::Callbacks*>(data);
+  try {
+    const auto n = std::size_t(N_VGetLength(y));
+    cb->system->evaluate(std::span<const double>(N_VGetArrayPointer(y), n), cb->scratch, cb->system_values);
+    std::fill(cb->values.begin(), cb->values.end(), 0.0);
+    for (std::size_t e = 0; e < cb->from_system.size(); ++e)
+      cb->values[std::size_t(cb->from_system[e])] = cb->system_values[e];
+    const std::vector<double>& c = *cb->capacities;
+    for (std::size_t k = 0; k < n; ++k)
+      if (c[k] > 0.0) cb->values[std::size_t(cb->diagonal[k])] += cj * c[k];
+    return fill_sparse_matrix(J, cb->pattern, cb->values) ? 0 : 1;
+  } catch (const std::exception& e) {
+    cb->callback_error = e.what();
+    return -1;
+  }
+}
+
+void error_handler(int, const char*, const char*, char* msg, void* data) {
+  static_cast<IdaTransient::Callbacks*>(data)->last_error = msg;
+}
+
+}  // namespace
+
+IdaTransient::IdaTransient(const SteadySystem& system, TransientSettings settings)
+    : system_(system),
+      settings_(std::move(settings)),
+      capacities_(system.capacities()),
+      ctx_(make_context()),
+      callbacks_(std::make_unique<Callbacks>()) {
+  const Index n = system_.size();
+  if (Index(capacities_.size()) != n) throw std::invalid_argument("IdaTransient: capacities() has the wrong size");
+  for (double c : capacities_)
+    if (!(c >= 0.0)) throw std::invalid_argument("IdaTransient: a capacity is negative or not a number");
+  absolute_ = settings_.absolute_tolerances.empty()
+                  ? std::vector<double>(std::size_t(n), settings_.absolute_tolerance)
+                  : settings_.absolute_tolerances;
+  if (Index(absolute_.size()) != n) throw std::invalid_argument("IdaTransient: one absolute tolerance per unknown");
+
+  Callbacks& cb = *callbacks_;
+  cb.system = &system_;
+  cb.capacities = &capacities_;
+  const SparsePattern& own = system_.pattern();
+  cb.pattern = with_capacity_diagonal(own, capacities_);
+  for (Index r = 0; r < n; ++r)
+    for (Index e = own.row_start[std::size_t(r)]; e < own.row_start[std::size_t(r + 1)]; ++e)
+      cb.from_system.push_back(cb.pattern.find(r, own.column[std::size_t(e)]));
+  for (Index k = 0; k < n; ++k) cb.diagonal.push_back(cb.pattern.find(k, k));
+  cb.system_values.resize(std::size_t(own.nnz()));
+  cb.values.resize(std::size_t(cb.pattern.nnz()));
+  cb.scratch.resize(std::size_t(n));
+
+  y_.reset(N_VNew_Serial(n, ctx_.get()));
+  yp_.reset(N_VNew_Serial(n, ctx_.get()));
+  id_.reset(N_VNew_Serial(n, ctx_.get()));
+  atol_.reset(N_VNew_Serial(n, ctx_.get()));
+  jac_.reset(SUNSparseMatrix(n, n, cb.pattern.nnz(), CSR_MAT, ctx_.get()));
+  if (!y_ || !yp_ || !id_ || !atol_ || !jac_) throw SolverFailure("could not allocate the transient solver", -1);
+  N_VConst(0.0, y_.get());
+  N_VConst(0.0, yp_.get());
+  for (std::size_t k = 0; k < std::size_t(n); ++k) {
+    N_VGetArrayPointer(id_.get())[k] = capacities_[k] > 0.0 ? 1.0 : 0.0;
+    N_VGetArrayPointer(atol_.get())[k] = absolute_[k];
+  }
+  klu_.reset(SUNLinSol_KLU(y_.get(), jac_.get(), ctx_.get()));
+  if (!klu_) throw SolverFailure("could not allocate KLU for the transient solver", -1);
+  // AMD rather than SUNDIALS' default COLAMD: see kinsol_newton.cpp (the bearing's
+  // dense rigid-body border).
+  check_flag(SUNLinSol_KLUSetOrdering(klu_.get(), 0), "SUNLinSol_KLUSetOrdering");
+
+  ida_ = IDACreate(ctx_.get());
+  if (!ida_) throw SolverFailure("IDACreate failed", -1);
+  check_flag(IDAInit(ida_, residual_fn, 0.0, y_.get(), yp_.get()), "IDAInit");
+  check_flag(IDASVtolerances(ida_, settings_.relative_tolerance, atol_.get()), "IDASVtolerances");
+  check_flag(IDASetUserData(ida_, callbacks_.get()), "IDASetUserData");
+  check_flag(IDASetErrHandlerFn(ida_, error_handler, callbacks_.get()), "IDASetErrHandlerFn");
+  check_flag(IDASetLinearSolver(ida_, klu_.get(), jac_.get()), "IDASetLinearSolver");
+  check_flag(IDASetJacFn(ida_, jacobian_fn), "IDASetJacFn");
+  check_flag(IDASetId(ida_, id_.get()), "IDASetId");
+}
+
+IdaTransient::~IdaTransient() { IDAFree(&ida_); }
+
+TransientStatus IdaTransient::status_from(int flag, const char* call) const {
+  TransientStatus s;
+  s.flag = flag;
+  s.ok = flag >= 0;
+  s.reached_stop = flag == IDA_TSTOP_RETURN;
+  if (!s.ok) {
+    char* name = IDAGetReturnFlagName(flag);
+    s.flag_name = name ? name : "IDA failure";
+    free(name);
+    s.message = std::string(call) + ": " + s.flag_name +
+                (callbacks_->last_error.empty() ? "" : ": " + callbacks_->last_error) +
+                (callbacks_->callback_error.empty() ? "" : " (" + callbacks_->callback_error + ")");
+  }
+  return s;
+}
+
+// IDACalcIC takes a trial step of 0.001·(tout1 − t0) and iterates for u' with the
+// matrix ∂F/∂u + C/h: the iteration contracts by about ‖(∂F/∂u + C/h)⁻¹ ∂F/∂u‖, so h
+// must be short against the fastest relaxation, not the span to be integrated (with a
+// long span, CalcIC fails on stiff conduction grids near a fold). The fastest local
+// relaxation time is min C_k/|∂F_k/∂u_k|; C_k itself (a time, steady_system.h) stands in
+// where no row has a diagonal.
+double IdaTransient::fastest_time(std::span<const double> u) const {
+  double smallest_capacity = INFINITY;
+  for (double c : capacities_)
+    if (c > 0.0) smallest_capacity = std::min(smallest_capacity, c);
+  if (!std::isfinite(smallest_capacity)) smallest_capacity = 1.0;
+  Callbacks& cb = *callbacks_;
+  try {
+    system_.evaluate(u, cb.scratch, cb.system_values);
+  } catch (const std::exception&) {
+    return smallest_capacity;  // CalcIC will meet the same failure and report it
+  }
+  double fastest = INFINITY;
+  const SparsePattern& own = system_.pattern();
+  for (std::size_t k = 0; k < capacities_.size(); ++k) {
+    const Index at = own.find(Index(k), Index(k));
+    const double diagonal = at >= 0 ? std::abs(cb.system_values[std::size_t(at)]) : 0.0;
+    if (capacities_[k] > 0.0 && diagonal > 0.0) fastest = std::min(fastest, capacities_[k] / diagonal);
+  }
+  return std::isfinite(fastest) ? fastest : smallest_capacity;
+}
+
+TransientStatus IdaTransient::consistent_start(double t0, std::span<const double> u0, double fastest) {
+  std::copy(u0.begin(), u0.end(), N_VGetArrayPointer(y_.get()));
+  // u' = 0 is only a guess: CalcIC computes it for the differential unknowns.
+  N_VConst(0.0, yp_.get());
+  callbacks_->last_error.clear();
+  callbacks_->callback_error.clear();
+  time_ = t0;
+  int flag = IDAReInit(ida_, t0, y_.get(), yp_.get());
+  if (flag < 0) return status_from(flag, "IDAReInit");
+  flag = IDACalcIC(ida_, IDA_YA_YDP_INIT, t0 + fastest);
+  if (flag < 0) return status_from(flag, "IDACalcIC");
+  return status_from(IDAGetConsistentIC(ida_, y_.get(), yp_.get()), "IDAGetConsistentIC");
+}
+
+TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
+  if (Index(u0.size()) != system_.size()) throw std::invalid_argument("IdaTransient::start: state has the wrong size");
+  const std::vector<double> held(u0.begin(), u0.end());  // u0 may be our own state()
+  const double fastest = fastest_time(held);
+  TransientStatus s = consistent_start(t0, held, fastest);
+  if (s.ok) return s;
+  // CalcIC's Newton is plain (a few Jacobians, no step bound): after a large load step
+  // the bearing's film and rigid body can be out of its reach. KINSOL's line search
+  // with a bounded step reaches them as one implicit Euler step of the transient,
+  // F(u) + C·(u − u0)/Δτ = 0 with Δτ the trial step CalcIC took; IDA starts again from
+  // that point of the trajectory, at t0 + Δτ.
+  const double dtau = 1e-3 * fastest;
+  std::vector<double> stepped = held;
+  const PseudoTimeShift euler{1.0 / dtau, held, capacities_};
+  NewtonReport rep;
+  try {
+    rep = KinsolNewton(system_).solve(stepped, NewtonSettings{}, &euler);
+  } catch (const std::exception& e) {
+    rep.message = e.what();  // e.g. a differential row without a diagonal entry
+  }
+  if (!rep.converged) {
+    s.message += "; an implicit Euler start by KINSOL failed too: " + rep.message;
+    return s;
+  }
+  TransientStatus again = consistent_start(t0 + dtau, stepped, fastest);
+  if (!again.ok) again.message = s.message + "; again after an implicit Euler start: " + again.message;
+  return again;
+}
+
+TransientStatus IdaTransient::step(double t_stop) {
+  if (!(t_stop > time_)) throw std::invalid_argument("IdaTransient::step: stop time not ahead of the current time");
+  callbacks_->last_error.clear();
+  callbacks_->callback_error.clear();
+  int flag = IDASetStopTime(ida_, t_stop);
+  if (flag < 0) return status_from(flag, "IDASetStopTime");
+  double reached = time_;
+  flag = IDASolve(ida_, t_stop, &reached, y_.get(), yp_.get(), IDA_ONE_STEP);
+  if (flag >= 0) time_ = reached;
+  return status_from(flag, "IDASolve");
+}
+
+TransientStatus IdaTransient::advance(double t_out, const TransientObserver& observer) {
+  TransientStatus s;
+  while (time_ < t_out) {
+    s = step(t_out);
+    if (!s.ok) return s;
+    if (observer) observer(time_, state());
+    if (s.reached_stop) break;
+  }
+  return s;
+}
+
+std::span<const double> IdaTransient::state() const {
+  return {N_VGetArrayPointer(y_.get()), std::size_t(system_.size())};
+}
+
+std::span<const double> IdaTransient::rate() const {
+  return {N_VGetArrayPointer(yp_.get()), std::size_t(system_.size())};
+}
+
+double IdaTransient::differential_distance(std::span<const double> a, std::span<const double> b) const {
+  double d = 0.0;
+  for (std::size_t k = 0; k < capacities_.size(); ++k) {
+    if (capacities_[k] <= 0.0) continue;
+    const double scaled = std::abs(a[k] - b[k]) / (settings_.relative_tolerance * std::abs(b[k]) + absolute_[k]);
+    if (!std::isfinite(scaled)) return INFINITY;
+    d = std::max(d, scaled);
+  }
+  return d;
+}
+
+TransientStatistics IdaTransient::statistics() const {
+  TransientStatistics s;
+  IDAGetNumSteps(ida_, &s.steps);
+  IDAGetNumResEvals(ida_, &s.residual_evaluations);
+  IDAGetNumJacEvals(ida_, &s.jacobian_evaluations);
+  IDAGetNumNonlinSolvIters(ida_, &s.nonlinear_iterations);
+  IDAGetNumErrTestFails(ida_, &s.error_test_failures);
+  IDAGetNumNonlinSolvConvFails(ida_, &s.convergence_failures);
+  IDAGetLastStep(ida_, &s.last_step);
+  return s;
+}
+
+}  // namespace twb

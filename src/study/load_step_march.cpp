@@ -1,0 +1,121 @@
+#include "load_step_march.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "twb/solver/kinsol_newton.h"
+#include "twb/solver/relaxation_time.h"
+#include "twb/solver/steady_solver.h"
+
+namespace twb {
+
+namespace {
+
+// The horizon when no duration is given, in slowest relaxation times at the start: the
+// runaway passes through a slow ghost, then the hot branch relaxes on its own (slower,
+// contact-softened) time scale; 500 covers both on the paper's case, and the march
+// stops as soon as it has settled anyway.
+constexpr double horizon_multiple = 500.0;
+// Newton is tried once the steady residual has fallen below this fraction of the
+// largest it reached (and is falling): near a stable steady state the residual decays
+// geometrically, so the trajectory is then well inside Newton's basin.
+constexpr double settle_fraction = 1e-3;
+
+}  // namespace
+
+StepMarch march_load_step(BearingModel& model, std::span<const double> start_state, double new_load,
+                          const TransientSettings& settings, const NewtonSettings& newton, double duration) {
+  const auto t0 = std::chrono::steady_clock::now();
+  StepMarch out;
+  const double tau = slowest_relaxation_time(model, start_state, 20);
+  model.set_load(new_load);
+  IdaTransient ida(model, settings);
+  const double horizon = duration > 0 ? duration : horizon_multiple * tau;
+  TransientStatus status = ida.start(0.0, start_state);
+  std::vector<double> r(start_state.size());
+  auto sample = [&](double t, std::span<const double> u) {
+    out.trajectory.push_back({t, model.describe(u)});
+  };
+  auto finish = [&](std::string message) {
+    const std::span<const double> u = ida.state();
+    out.state.assign(u.begin(), u.end());
+    out.time = ida.time();
+    out.message = std::move(message);
+    out.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  };
+  if (!status.ok) {
+    out.state.assign(start_state.begin(), start_state.end());
+    out.message = "no consistent start after the load step: " + status.flag_name + " " + status.message;
+    return out;
+  }
+  sample(0.0, ida.state());
+
+  KinsolNewton polish(model);
+  // Where IDA cannot go on, the film's mechanical equilibrium has typically lost its
+  // branch under the rising temperatures (the collapse itself, an impasse of the DAE):
+  // the steady solver's pseudo-transient continuation, in which every unknown relaxes,
+  // carries the state on from the last point integrated to where it lands.
+  auto land = [&](std::string why) {
+    finish(std::move(why));
+    if (duration > 0) return out;
+    std::vector<double> u = out.state;
+    SteadySolver steady(model, newton);
+    const SteadyReport rep = steady.solve(u);
+    out.newton_iterations += rep.iterations;
+    if (rep.converged) {
+      out.state = u;
+      out.settled = true;
+      out.message += fmt::format("; from there the steady solver ({}) reached a steady state", rep.strategy);
+    } else {
+      out.message += "; from there the steady solver found no steady state either: " + rep.message;
+    }
+    out.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  };
+  double largest = 0.0, previous = INFINITY;
+  int restarts = 0;
+  while (ida.time() < horizon) {
+    status = ida.step(horizon);
+    if (!status.ok && restarts < 3) {
+      // A kink of the model (contact or cavitation switching on) rather than a
+      // collapse: fresh consistent values there usually carry the march on.
+      ++restarts;
+      const std::vector<double> here(ida.state().begin(), ida.state().end());
+      if (ida.start(ida.time(), here).ok) continue;
+    }
+    if (!status.ok)
+      return land(fmt::format("IDA could not go on at t = {:.4g} s ({}, {} restarts)", ida.time(), status.flag_name,
+                              restarts));
+    const std::span<const double> u = ida.state();
+    sample(ida.time(), u);
+    model.evaluate(u, r, {});
+    const double rate = max_norm(r);
+    largest = std::max(largest, rate);
+    const bool slowing = rate < previous;
+    previous = rate;
+    if (duration > 0 || !slowing || rate > settle_fraction * largest) continue;
+    std::vector<double> trial(u.begin(), u.end());
+    const NewtonReport rep = polish.solve(trial, newton);
+    out.newton_iterations += rep.iterations;
+    if (rep.converged) {
+      finish(fmt::format("settled at t = {:.4g} s", ida.time()));
+      out.state = trial;
+      out.settled = true;
+      return out;
+    }
+    largest = rate;  // try again after a further fall by the same fraction
+  }
+  if (duration > 0) {
+    model.evaluate(ida.state(), r, {});
+    out.settled = max_norm(r) <= newton.residual_tolerance;
+    return finish(fmt::format("marched to t = {:.4g} s", ida.time()));
+  }
+  return land(fmt::format("not settled within the horizon t = {:.4g} s ({} slowest relaxation times)", horizon,
+                          horizon_multiple));
+}
+
+}  // namespace twb

@@ -1,0 +1,35 @@
+// A load step on a running bearing, marched in the pseudo-time thermal transient
+// (MODEL.md sections 7-8) with its trajectory kept: the transient study, and past
+// distress the runaway step marched to where it goes (the hot, contact-dominated
+// branch). It never hangs: the march ends at a steady state, at the horizon, or where
+// IDA cannot go on, and says which.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "twb/model/bearing_model.h"
+#include "twb/results/trajectory_table.h"
+#include "twb/solver/ida_transient.h"
+#include "twb/solver/kinsol_newton.h"
+
+namespace twb {
+
+struct StepMarch {
+  bool settled = false;       // a steady state at the new load was reached (Newton-polished)
+  std::vector<double> state;  // that state, or the last one integrated
+  std::vector<TrajectorySample> trajectory;
+  double time = 0.0;          // pseudo-time reached, s
+  long newton_iterations = 0;
+  double wall_ms = 0.0;
+  std::string message;        // how the march ended
+};
+
+// From start_state, steady at the model's current load, to new_load (left set).
+// duration > 0 fixes the span of pseudo-time; 0 marches until the state settles, up to
+// a horizon of many slowest relaxation times.
+StepMarch march_load_step(BearingModel& model, std::span<const double> start_state, double new_load,
+                          const TransientSettings& settings, const NewtonSettings& newton, double duration = 0.0);
+
+}  // namespace twb

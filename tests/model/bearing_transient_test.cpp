@@ -1,0 +1,80 @@
+// The bearing's pseudo-time thermal transient (MODEL.md sections 7-8) against its
+// steady states: with no load change it stays put; after a small stable load step it
+// converges to the state KINSOL finds at the new load (issue: to 1e-8 relative).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "../support/table1_scene.h"
+#include "twb/model/bearing_model.h"
+#include "twb/solver/ida_transient.h"
+#include "twb/solver/relaxation_time.h"
+#include "twb/solver/steady_solver.h"
+
+namespace twb {
+namespace {
+
+// 5×24 nodes at 545 rad/s: the cool branch folds near 160 N on this mesh; 120 N is
+// well below it.
+Scene coarse_scene() {
+  Scene s = testing::table1_scene(true, true, true, true, 545.0, 120.0);
+  s.mesh.radial_nodes = 5;
+  s.mesh.circumferential_nodes = 24;
+  return s;
+}
+
+double relative_difference(const std::vector<double>& a, std::span<const double> b) {
+  double d = 0.0, size = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    d = std::max(d, std::abs(a[k] - b[k]));
+    size = std::max(size, std::abs(a[k]));
+  }
+  return d / size;
+}
+
+TransientSettings tight_tolerances() {
+  TransientSettings t;
+  t.relative_tolerance = 1e-11;
+  t.absolute_tolerance = 1e-13;
+  return t;
+}
+
+// IDA's tolerances are set 1e-11 relative (1e-13 absolute) so that its own error stays
+// below the 1e-8 the test asks. On a steady state the transient's rate is the residual,
+// 1e-10 at most: over 60 relaxation times that moves the state by no more than the
+// Newton tolerance's worth of the steady state's sensitivity.
+TEST(BearingTransient, SteadyStateWithoutLoadChangeStaysPut) {
+  BearingModel m(coarse_scene());
+  SteadySolver steady(m, NewtonSettings{});
+  std::vector<double> u;
+  ASSERT_TRUE(steady.solve_cold(u).converged);
+  const double tau = slowest_relaxation_time(m, u, 20);
+  IdaTransient ida(m, tight_tolerances());
+  ASSERT_TRUE(ida.start(0.0, u).ok);
+  const TransientStatus st = ida.advance(60 * tau);
+  ASSERT_TRUE(st.ok) << st.message;
+  EXPECT_LT(relative_difference(u, ida.state()), 1e-8);
+}
+
+// A 3 % load step: after 60 slowest relaxation times (e^−60 of the initial offset
+// remains) the trajectory sits on the new steady state to IDA's tolerance.
+TEST(BearingTransient, SmallLoadStepConvergesToTheNewtonState) {
+  BearingModel m(coarse_scene());
+  SteadySolver steady(m, NewtonSettings{});
+  std::vector<double> u;
+  ASSERT_TRUE(steady.solve_cold(u).converged);
+  const double tau = slowest_relaxation_time(m, u, 20);
+  m.set_load(1.03 * m.load());
+  std::vector<double> target = u;
+  ASSERT_TRUE(steady.solve(target).converged);
+  IdaTransient ida(m, tight_tolerances());
+  ASSERT_TRUE(ida.start(0.0, u).ok);
+  EXPECT_GT(relative_difference(target, ida.state()), 1e-4);  // the step does move the state
+  const TransientStatus st = ida.advance(60 * tau);
+  ASSERT_TRUE(st.ok) << st.message;
+  EXPECT_LT(relative_difference(target, ida.state()), 1e-8);
+}
+
+}  // namespace
+}  // namespace twb

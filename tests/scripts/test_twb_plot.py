@@ -1,0 +1,224 @@
+"""scripts/twb_plot.py on small synthetic results directories.
+
+Run with Debian's interpreter (the one with python3-matplotlib):
+    MPLBACKEND=Agg /usr/bin/python3 -m unittest discover -s tests/scripts -p 'test_*.py'
+"""
+
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+import xml.etree.ElementTree as ET
+
+SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "twb_plot.py")
+
+STATES_HEADER = ("load_N,speed_rad_s,T_mean_C,T_max_C,hmin_over_sigma,gamma_x_ratio,gamma_y_ratio,"
+                 "fluid_share,contact_share,torque_Nm,f_eff,stribeck,converged,iterations,residual,"
+                 "energy_error,wall_ms")
+
+STATE_FIGURES = (
+    "fig06_f_eff_vs_load", "fig07_mean_temperature_vs_load", "fig08_hmin_over_sigma_vs_load",
+    "fig09_gamma_x_ratio_vs_load", "fig10_gamma_y_ratio_vs_load", "fig11_fluid_share_vs_load",
+    "fig12_contact_share_vs_load", "fig13_contact_share_vs_hmin", "fig14_stribeck")
+
+
+def state_rows(speed, loads, unconverged_at=None):
+    """Plausible-looking states: the film thins and contact takes over as the load grows."""
+    rows = []
+    for load in loads:
+        lift = speed / 545.0
+        h = 0.5 + 6.0 * lift * math.exp(-load / 800.0)
+        contact = 1.0 / (1.0 + math.exp(2.5 * (h - 3.0)))
+        # An exactly zero contact share must not break the logarithmic Fig. 12.
+        if load == loads[0] and speed > 500:
+            contact = 0.0
+        f_eff = 0.02 + 0.12 * contact
+        rows.append(",".join(str(v) for v in (
+            load, speed, 24 + 0.02 * load * (1 + contact), 30 + 0.05 * load, h, 0.2 * lift,
+            0.5 + 0.5 * (1 - contact), 1 - contact, contact, f_eff * load * 0.008, f_eff,
+            0.04 * speed / (2 * math.pi) / (load / 3.1e-4), 0 if load == unconverged_at else 1,
+            12, "1.0e-12", "3.0e-15", "12.5")))
+    return rows
+
+
+def trajectory_rows():
+    rows = []
+    for k in range(20):
+        t = 0.5 * k
+        runaway = math.exp(0.4 * t) - 1
+        rows.append(f"{t},{30 + 5 * runaway},{40 + 9 * runaway},{max(4.0 - 0.3 * runaway, 0.4)},"
+                    f"{min(0.001 * (1 + runaway), 1.0)},{0.02 + 0.01 * runaway},1200")
+    return rows
+
+
+def write(path, lines):
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def run_json(directory, friction):
+    with open(os.path.join(directory, "run.json"), "w", encoding="utf-8") as f:
+        json.dump({"scene_file": "scene.yaml", "outcome": "ok", "scene": {"friction": friction}}, f)
+
+
+def plot(*args):
+    env = dict(os.environ, MPLBACKEND="Agg")
+    return subprocess.run([sys.executable, SCRIPT, *args], capture_output=True, text=True, env=env,
+                          timeout=300)
+
+
+class TwbPlotTest(unittest.TestCase):
+    def setUp(self):
+        self._tmp = tempfile.TemporaryDirectory(prefix="twb_plot_test_")
+        self.tmp = self._tmp.name
+
+    def tearDown(self):
+        self._tmp.cleanup()
+
+    def results_dir(self, name, speeds=(136, 545), distress=None, trajectory=False, friction=None):
+        d = os.path.join(self.tmp, name)
+        os.makedirs(d)
+        rows = []
+        for speed in speeds:
+            rows += state_rows(speed, [100, 300, 500, 700, 900, 1100, 1300], unconverged_at=1300)
+        write(os.path.join(d, "states.csv"), [STATES_HEADER] + rows)
+        if distress is not None:
+            write(os.path.join(d, "distress.csv"), distress)
+        if trajectory:
+            write(os.path.join(d, "trajectory.csv"),
+                  ["t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N"] + trajectory_rows())
+        if friction is not None:
+            run_json(d, friction)
+        return d
+
+    def assert_figures(self, out_dir, stems, formats=("png", "svg")):
+        for stem in stems:
+            for fmt in formats:
+                path = os.path.join(out_dir, f"{stem}.{fmt}")
+                self.assertTrue(os.path.isfile(path), f"{path} missing")
+                self.assertGreater(os.path.getsize(path), 0, f"{path} empty")
+                if fmt == "png":
+                    with open(path, "rb") as f:
+                        self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n", path)
+                if fmt == "svg":
+                    root = ET.parse(path).getroot()
+                    self.assertTrue(root.tag.endswith("svg"), path)
+
+    def svg_text(self, path):
+        with open(path, encoding="utf-8") as f:
+            return f.read()
+
+    def test_every_figure_from_one_directory(self):
+        d = self.results_dir(
+            "sweep",
+            distress=["speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method",
+                      # Free-text method with a comma, and no fold: the empty cell.
+                      "545,1117,1110,1125,,runaway; no fold: the branch goes on, smoothly",
+                      "136,,,,,not reached below 2000 N"],
+            trajectory=True, friction={"law": "empirical"})
+        result = plot(d)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        out_dir = os.path.join(d, "figures")
+        stems = STATE_FIGURES + ("distress_map", "transient_trajectory")
+        self.assert_figures(out_dir, stems)
+        # One friction law only: Fig. 15 compares several.
+        self.assertFalse(os.path.exists(os.path.join(out_dir, "fig15_stribeck_by_friction.png")))
+        listed = set(result.stdout.split())
+        expected = {os.path.join(out_dir, f"{s}.{fmt}") for s in stems for fmt in ("png", "svg")}
+        self.assertEqual(listed, expected)
+        self.assertIn("136 rad/s", result.stderr)  # the speed without distress is reported
+        fig6 = self.svg_text(os.path.join(out_dir, "fig06_f_eff_vs_load.svg"))
+        for text in ("136 rad/s", "545 rad/s", "distress load", "not converged"):
+            self.assertIn(text, fig6)
+
+    def test_directories_are_merged(self):
+        a = self.results_dir("f_empirical", speeds=(136,), friction={"law": "empirical"})
+        b = self.results_dir("f_constant", speeds=(545, 953),
+                             friction={"law": "constant", "coefficient": 0.2})
+        out_dir = os.path.join(self.tmp, "figs")
+        result = plot(a, b, "--out", out_dir, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assert_figures(out_dir, STATE_FIGURES + ("fig15_stribeck_by_friction",), formats=("svg",))
+        self.assertFalse(any(name.endswith(".png") for name in os.listdir(out_dir)))
+        self.assertFalse(os.path.exists(os.path.join(a, "figures")))
+        fig6 = self.svg_text(os.path.join(out_dir, "fig06_f_eff_vs_load.svg"))
+        for speed in ("136 rad/s", "545 rad/s", "953 rad/s"):
+            self.assertIn(speed, fig6)
+        fig15 = self.svg_text(os.path.join(out_dir, "fig15_stribeck_by_friction.svg"))
+        self.assertIn("dry friction coefficient 0.2", fig15)
+
+    def test_distress_map_with_second_parameter(self):
+        d = self.results_dir(
+            "map",
+            distress=["speed_rad_s,friction_coefficient,W_d_N,bracket_low_N,bracket_high_N,fold_N,method",
+                      "545,0.1,1117,1110,1125,1119,runaway; fold at 1119 N",
+                      "953,0.1,1728,1720,1735,,runaway; no fold",
+                      "545,0.3,900,895,905,902,runaway; fold at 902 N",
+                      "953,0.3,1400,1390,1410,1405,runaway; fold at 1405 N"])
+        out_dir = os.path.join(self.tmp, "figs")
+        result = plot(d, "--out", out_dir)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assert_figures(out_dir, STATE_FIGURES + ("distress_map",))
+        text = self.svg_text(os.path.join(out_dir, "distress_map.svg"))
+        for label in ("dry friction coefficient 0.1", "dry friction coefficient 0.3",
+                      "fold of the steady branch"):
+            self.assertIn(label, text)
+
+    def test_malformed_input_exits_2_naming_the_file(self):
+        cases = {
+            "states_bad_number": ("states.csv", "line 3", lambda d: self.replace_line(
+                d, "states.csv", 3, lambda line: line.replace(",136,", ",fast,", 1))),
+            "states_short_row": ("states.csv", "line 2", lambda d: self.replace_line(
+                d, "states.csv", 2, lambda line: line.rsplit(",", 2)[0])),
+            "states_nan": ("states.csv", "line 4", lambda d: self.replace_line(
+                d, "states.csv", 4, lambda line: "nan" + line[line.index(","):])),
+            "states_header": ("states.csv", "line 1", lambda d: self.replace_line(
+                d, "states.csv", 1, lambda line: line.replace("f_eff", "feff"))),
+            "distress_short_row": ("distress.csv", "line 2", lambda d: write(
+                os.path.join(d, "distress.csv"),
+                ["speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method", "545,1117,1110"])),
+            "distress_bad_cell": ("distress.csv", "line 3", lambda d: write(
+                os.path.join(d, "distress.csv"),
+                ["speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method",
+                 "545,1117,1110,1125,,ok", "953,high,1720,1735,,ok"])),
+            "trajectory_header": ("trajectory.csv", "line 1", lambda d: write(
+                os.path.join(d, "trajectory.csv"), ["time,T_mean_C", "0,30"])),
+        }
+        for name, (file_name, line, damage) in cases.items():
+            with self.subTest(name):
+                d = self.results_dir(name)
+                damage(d)
+                result = plot(d)
+                self.assertEqual(result.returncode, 2, result.stderr)
+                self.assertIn(os.path.join(d, file_name), result.stderr)
+                self.assertIn(line, result.stderr)
+                self.assertFalse(os.path.exists(os.path.join(d, "figures")))
+
+    def test_directory_without_states_exits_2(self):
+        good = self.results_dir("good")
+        empty = os.path.join(self.tmp, "empty")
+        os.makedirs(empty)
+        result = plot(good, empty)
+        self.assertEqual(result.returncode, 2)
+        self.assertIn(empty, result.stderr)
+        self.assertIn("states.csv", result.stderr)
+
+    def test_unknown_format_is_a_usage_error(self):
+        result = plot(self.results_dir("fmt"), "--format", "png,gif")
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("gif", result.stderr)
+
+    @staticmethod
+    def replace_line(directory, name, number, edit):
+        path = os.path.join(directory, name)
+        with open(path, encoding="utf-8") as f:
+            lines = f.read().splitlines()
+        lines[number - 1] = edit(lines[number - 1])
+        write(path, lines)
+
+
+if __name__ == "__main__":
+    unittest.main()

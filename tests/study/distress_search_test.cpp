@@ -1,0 +1,146 @@
+// Distress on the bearing (MODEL.md section 8), on a coarse mesh so it runs in CI: the
+// load bracketed by transients agrees with the fold of the steady branch, steps just
+// below it settle and just above it run away.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <ostream>
+
+#include "../support/table1_scene.h"
+#include "twb/solver/kinsol_newton.h"
+#include "twb/solver/runaway.h"
+#include "twb/study/distress_search.h"
+
+namespace twb {
+namespace {
+
+// 5 radial × 24 circumferential nodes: the fold moves with the mesh, but the transient
+// and the continuation see the same discrete system, so they must agree on it.
+Scene coarse_scene(double speed) {
+  Scene s = testing::table1_scene(true, true, true, true, speed, 100.0);
+  s.mesh.radial_nodes = 5;
+  s.mesh.circumferential_nodes = 24;
+  return s;
+}
+
+// One search shared by every test here (it takes seconds).
+struct SharedSearch {
+  BearingModel model{coarse_scene(545.0)};
+  DistressSearch found;
+  SharedSearch() {
+    DistressSearchSettings settings;
+    settings.load_start = 100.0;
+    settings.load_end = 600.0;
+    settings.bracket_width = 0.002;
+    found = search_distress(model, settings, {});
+  }
+};
+SharedSearch& shared() {
+  static SharedSearch s;
+  return s;
+}
+
+class BearingDistress : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    model_ = &shared().model;
+    found_ = &shared().found;
+  }
+  BearingModel* model_ = nullptr;
+  DistressSearch* found_ = nullptr;
+};
+
+// The issue's bound: W_d from transients within 1 % of the fold. At a saddle-node the
+// runaway threshold is the fold itself, so the only differences are the bracket's width
+// (0.2 %) and the two solvers' tolerances (far smaller).
+TEST_F(BearingDistress, TransientBracketAgreesWithFold) {
+  const DistressRow& row = found_->row;
+  ASSERT_FALSE(found_->failed) << found_->message;
+  ASSERT_TRUE(row.distress_load && row.bracket_low && row.bracket_high) << row.method;
+  ASSERT_TRUE(row.fold_load) << row.method;
+  EXPECT_LE((*row.bracket_high - *row.bracket_low) / *row.bracket_high, 0.002 * (1 + 1e-12));
+  EXPECT_NEAR(*row.distress_load, *row.fold_load, 0.01 * *row.fold_load) << row.method;
+  // Sharper than the issue asks: the fold lies in the bracket, up to the transient's
+  // resolution of a slow ghost (a bracket width).
+  EXPECT_GE(*row.fold_load, *row.bracket_low * (1 - 0.002));
+  EXPECT_LE(*row.fold_load, *row.bracket_high * (1 + 0.002));
+}
+
+// 1 % either side of W_d: from the steady state at the bracket's low load, the step
+// below settles on a steady state and the step above runs away.
+TEST_F(BearingDistress, StepBelowSettlesStepAboveRunsAway) {
+  ASSERT_TRUE(found_->row.distress_load);
+  const double wd = *found_->row.distress_load, low = *found_->row.bracket_low;
+  const RunawaySettings settings = distress_detector(model_->scene(), 0.002);
+  model_->set_load(low);
+  const StepOutcome below = classify_step(*model_, found_->bracket_state, 0.99 * wd, settings);
+  EXPECT_TRUE(below.settled()) << below.reason;
+  model_->set_load(low);
+  const StepOutcome above = classify_step(*model_, found_->bracket_state, 1.01 * wd, settings);
+  EXPECT_FALSE(above.settled()) << above.reason;
+}
+
+// Past W_d the run reports where the runaway went: the hot branch, hotter and carried
+// by contact, with its trajectory kept.
+TEST_F(BearingDistress, RunawayReachesTheHotBranch) {
+  ASSERT_FALSE(found_->runaway.empty()) << found_->message;
+  const BearingState& before = found_->runaway.front().state;
+  const BearingState& after = found_->runaway.back().state;
+  EXPECT_GT(after.washer_mean_temperature, before.washer_mean_temperature + 10.0);
+  EXPECT_GT(after.contact_share, 0.5);
+  EXPECT_LT(before.contact_share, 0.5);
+  for (const TrajectorySample& s : found_->runaway) EXPECT_TRUE(std::isfinite(s.state.f_eff));
+}
+
+// The issue's robustness demand on the bearing itself: halving or doubling any numeric
+// setting of the runaway detector moves W_d by less than 0.5 %. Each variant brackets
+// from 1 % below to 1 % above the default W_d, from the steady state 1 % below; both
+// brackets are 0.2 % wide around the same dynamics, so a verdict that depended on a
+// threshold would show as a shift of a whole bracket or more.
+struct DetectorVariant {
+  const char* name;
+  void (*apply)(RunawaySettings&, double factor);
+};
+
+// gtest prints a parameter by its bytes otherwise.
+inline void PrintTo(const DetectorVariant& v, std::ostream* os) { *os << v.name; }
+
+class DetectorRobustness : public ::testing::TestWithParam<std::tuple<DetectorVariant, double>> {};
+
+TEST_P(DetectorRobustness, DistressLoadMovesLessThanHalfAPercent) {
+  const auto& [variant, factor] = GetParam();
+  SharedSearch& s = shared();
+  ASSERT_TRUE(s.found.row.distress_load) << s.found.row.method;
+  const double wd = *s.found.row.distress_load;
+  RunawaySettings settings = distress_detector(s.model.scene(), 0.002);
+  variant.apply(settings, factor);
+  std::vector<double> low = s.found.bracket_state;
+  s.model.set_load(0.99 * wd);
+  KinsolNewton newton(s.model);
+  ASSERT_TRUE(newton.solve(low, NewtonSettings{}).converged);
+  const Bracket b = bracket_critical(s.model, 0.99 * wd, low, 1.01 * wd, settings);
+  ASSERT_TRUE(b.valid) << b.message;
+  EXPECT_NEAR(b.critical_estimate(), wd, 0.005 * wd) << variant.name << " x" << factor;
+}
+
+const DetectorVariant kVariants[] = {
+    {"slowdown_factor", [](RunawaySettings& r, double f) { r.slowdown_factor *= f; }},
+    {"acceleration_factor", [](RunawaySettings& r, double f) { r.acceleration_factor *= f; }},
+    {"horizon_multiple", [](RunawaySettings& r, double f) { r.horizon_multiple *= f; }},
+    {"closeness", [](RunawaySettings& r, double f) { r.closeness *= f; }},
+    {"relaxation_iterations", [](RunawaySettings& r, double f) { r.relaxation_iterations = int(r.relaxation_iterations * f); }},
+    {"relative_tolerance", [](RunawaySettings& r, double f) { r.transient.relative_tolerance *= f; }},
+    {"absolute_tolerance", [](RunawaySettings& r, double f) { r.transient.absolute_tolerance *= f; }},
+    {"newton_tolerance", [](RunawaySettings& r, double f) { r.newton.residual_tolerance *= f; }},
+    {"relative_width", [](RunawaySettings& r, double f) { r.relative_width *= f; }},
+};
+
+INSTANTIATE_TEST_SUITE_P(Bearing, DetectorRobustness,
+                         ::testing::Combine(::testing::ValuesIn(kVariants), ::testing::Values(0.5, 2.0)),
+                         [](const auto& info) {
+                           return std::string(std::get<0>(info.param).name) +
+                                  (std::get<1>(info.param) < 1 ? "_halved" : "_doubled");
+                         });
+
+}  // namespace
+}  // namespace twb
