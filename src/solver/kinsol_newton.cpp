@@ -8,9 +8,9 @@
 
 #include <fmt/format.h>
 #include <kinsol/kinsol.h>
-#include <klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
+#include "twb/solver/sparse_lu.h"
 #include "twb/solver/sparse_matrix_fill.h"
 
 namespace twb {
@@ -107,96 +107,47 @@ int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vecto
   }
 }
 
-// KLU for a pattern fixed for the system's life (SteadySystem::pattern()). SUNDIALS'
-// own KLU module redoes the symbolic analysis (AMD ordering) and a full pivoting
-// factorization at the start of every KINSol call; here the analysis is done once, and
-// every later Jacobian is refactored with the pivot sequence of the last full
-// factorization, which is redone (fresh partial pivoting, same ordering) only when
-// pivoting must change: the refactorization meets a zero pivot, or its pivot growth
-// has become large against that of the full factorization it reuses.
-//
-// The matrix is CSR; KLU reads it as the CSC matrix Aᵀ and solves with klu_l_tsolve.
-struct KluCounts {
-  long analyses = 0, factorizations = 0, refactorizations = 0;
-};
-
+// KINSOL's linear solver: SparseLu on the system's pattern, which is fixed for the
+// system's life (SteadySystem::pattern()). SUNDIALS' own KLU module redoes the symbolic
+// analysis and a full pivoting factorization at the start of every KINSol call; here
+// the analysis is done once per solver, and every later Jacobian is refactored with the
+// pivot sequence of the last full factorization while that is safe
+// (SparseLu::refactor). The matrix KINSOL hands over is the CSR matrix of that pattern
+// (fill_sparse_matrix), in the pattern's order.
 struct PatternKlu {
-  // A refactorization is kept while its reciprocal pivot growth stays above this
-  // fraction of the full factorization's: LU's backward error grows with the pivot
-  // growth, so 100× the growth fresh pivots gave still leaves a Newton direction
-  // accurate to ~1e-13, far below what Newton needs; beyond it, pivot afresh.
-  static constexpr double growth_tolerance = 1e-2;
-  klu_l_common common{};
-  klu_l_symbolic* symbolic = nullptr;
-  klu_l_numeric* numeric = nullptr;
-  double growth_at_factor = 0.0;
+  explicit PatternKlu(const SparsePattern& pattern) : lu(pattern) {}
+  SparseLu lu;
   int last_flag = SUNLS_SUCCESS;
-  KluCounts counts;
-
-  PatternKlu() {
-    klu_l_defaults(&common);
-    // KLU's default orders by AMD on A + Aᵀ: it puts the dense rigid-body border last
-    // (COLAMD, SUNDIALS' default, fills this arrow-shaped matrix about six-fold).
-    common.ordering = 0;
-  }
-  ~PatternKlu() {
-    if (numeric) klu_l_free_numeric(&numeric, &common);
-    if (symbolic) klu_l_free_symbolic(&symbolic, &common);
-  }
-
-  bool factor(SuiteSparse_long* ptr, SuiteSparse_long* idx, double* val) {
-    if (numeric) klu_l_free_numeric(&numeric, &common);
-    numeric = klu_l_factor(ptr, idx, val, symbolic, &common);
-    ++counts.factorizations;
-    if (!numeric) return false;
-    growth_at_factor = klu_l_rgrowth(ptr, idx, val, symbolic, numeric, &common) ? common.rgrowth : 0.0;
-    return true;
-  }
-
-  int setup(SUNMatrix a) {
-    const auto n = SuiteSparse_long(SUNSparseMatrix_NP(a));
-    auto* ptr = reinterpret_cast<SuiteSparse_long*>(SUNSparseMatrix_IndexPointers(a));
-    auto* idx = reinterpret_cast<SuiteSparse_long*>(SUNSparseMatrix_IndexValues(a));
-    double* val = SUNSparseMatrix_Data(a);
-    if (!symbolic) {
-      symbolic = klu_l_analyze(n, ptr, idx, &common);
-      ++counts.analyses;
-      if (!symbolic) return last_flag = SUNLS_PACKAGE_FAIL_UNREC;
-    }
-    if (numeric) {
-      ++counts.refactorizations;
-      const bool kept = klu_l_refactor(ptr, idx, val, symbolic, numeric, &common) &&
-                        klu_l_rgrowth(ptr, idx, val, symbolic, numeric, &common) &&
-                        common.rgrowth >= growth_tolerance * growth_at_factor;
-      if (kept) return last_flag = SUNLS_SUCCESS;
-    }
-    // A singular matrix is recoverable: KINSOL reports it, the caller's globalization
-    // (pseudo-time, ramps) moves on.
-    return last_flag = factor(ptr, idx, val) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
-  }
-
-  int solve(SUNMatrix a, N_Vector x, N_Vector b) {
-    N_VScale(1.0, b, x);
-    const auto n = SuiteSparse_long(SUNSparseMatrix_NP(a));
-    if (!numeric || !klu_l_tsolve(symbolic, numeric, n, 1, N_VGetArrayPointer(x), &common))
-      return last_flag = SUNLS_PACKAGE_FAIL_REC;
-    return last_flag = SUNLS_SUCCESS;
-  }
 };
 
 PatternKlu& pattern_klu(SUNLinearSolver s) { return *static_cast<PatternKlu*>(s->content); }
 
-SUNLinearSolver make_pattern_klu(SUNContext ctx) {
+SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern) {
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
   if (!s) return nullptr;
-  s->content = new PatternKlu();
+  try {
+    s->content = new PatternKlu(pattern);
+  } catch (...) {
+    SUNLinSolFreeEmpty(s);
+    throw;
+  }
   s->ops->gettype = [](SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; };
   s->ops->getid = [](SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; };
   // KINSol initializes its linear solver at every call: the analysis stays valid.
   s->ops->initialize = [](SUNLinearSolver) { return SUNLS_SUCCESS; };
-  s->ops->setup = [](SUNLinearSolver ls, SUNMatrix a) { return pattern_klu(ls).setup(a); };
-  s->ops->solve = [](SUNLinearSolver ls, SUNMatrix a, N_Vector x, N_Vector b, realtype) {
-    return pattern_klu(ls).solve(a, x, b);
+  // A singular matrix is recoverable: KINSOL reports it, the caller's globalization
+  // (pseudo-time, ramps) moves on.
+  s->ops->setup = [](SUNLinearSolver ls, SUNMatrix a) {
+    PatternKlu& k = pattern_klu(ls);
+    const std::span<const double> values(SUNSparseMatrix_Data(a), std::size_t(SUNSparseMatrix_NNZ(a)));
+    return k.last_flag = k.lu.refactor(values) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
+  };
+  s->ops->solve = [](SUNLinearSolver ls, SUNMatrix, N_Vector x, N_Vector b, realtype) {
+    PatternKlu& k = pattern_klu(ls);
+    if (!k.lu.factored()) return k.last_flag = SUNLS_PACKAGE_FAIL_REC;
+    N_VScale(1.0, b, x);
+    k.lu.solve(std::span<double>(N_VGetArrayPointer(x), std::size_t(N_VGetLength(x))));
+    return k.last_flag = SUNLS_SUCCESS;
   };
   s->ops->lastflag = [](SUNLinearSolver ls) { return sunindextype(pattern_klu(ls).last_flag); };
   s->ops->free = [](SUNLinearSolver ls) {
@@ -230,7 +181,7 @@ KinsolNewton::KinsolNewton(const SteadySystem& model)
   residual_scale_.reset(N_VNew_Serial(n, ctx_.get()));
   N_VConst(1.0, residual_scale_.get());
   jac_.reset(SUNSparseMatrix(n, n, model_.pattern().nnz(), CSR_MAT, ctx_.get()));
-  klu_.reset(make_pattern_klu(ctx_.get()));
+  klu_.reset(make_pattern_klu(ctx_.get(), model_.pattern()));
   if (!y_ || !scale_ || !jac_ || !klu_) throw SolverFailure("could not allocate the Newton solver", -1);
   kin_ = KINCreate(ctx_.get());
   if (!kin_) throw SolverFailure("KINCreate failed", -1);
@@ -320,7 +271,7 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   std::vector<double> trial(N_VGetArrayPointer(y_.get()), N_VGetArrayPointer(y_.get()) + n);
   rep.converged = done;
   if (std::getenv("TWB_KINSOL_PRINT")) {
-    const KluCounts& k = pattern_klu(klu_.get()).counts;
+    const SparseLu::Counts& k = pattern_klu(klu_.get()).lu.counts();
     fmt::print("[KLU] so far: {} analyses, {} full factorizations, {} refactorizations\n", k.analyses,
                k.factorizations, k.refactorizations);
   }

@@ -16,20 +16,36 @@ struct SparseLu::Klu {
   std::vector<SuiteSparse_long> row_start, column;
   std::vector<double> values;  // KLU's factor takes a non-const pointer
   SuiteSparse_long n = 0;
+  double growth_at_factor = 0.0;  // KLU's reciprocal pivot growth of the last full factorization
+  Counts counts;
   ~Klu() {
     if (numeric) klu_l_free_numeric(&numeric, &common);
     if (symbolic) klu_l_free_symbolic(&symbolic, &common);
+  }
+  // KLU's reciprocal pivot growth of the current factors (small: large growth), or 0.
+  double growth() {
+    return klu_l_rgrowth(row_start.data(), column.data(), values.data(), symbolic, numeric, &common) ? common.rgrowth
+                                                                                                      : 0.0;
+  }
+  bool full_factorization() {
+    if (numeric) klu_l_free_numeric(&numeric, &common);
+    numeric = klu_l_factor(row_start.data(), column.data(), values.data(), symbolic, &common);
+    ++counts.factorizations;
+    if (!numeric) return false;
+    growth_at_factor = growth();
+    return true;
   }
 };
 
 SparseLu::SparseLu(const SparsePattern& p) : klu_(std::make_unique<Klu>()) {
   if (p.rows != p.cols) throw std::invalid_argument("SparseLu: the matrix must be square");
   klu_l_defaults(&klu_->common);
-  klu_->common.ordering = 0;  // AMD: dense borders are ordered last (kinsol_newton.cpp)
+  klu_->common.ordering = 0;  // AMD
   klu_->n = p.rows;
   klu_->row_start.assign(p.row_start.begin(), p.row_start.end());
   klu_->column.assign(p.column.begin(), p.column.end());
   klu_->symbolic = klu_l_analyze(klu_->n, klu_->row_start.data(), klu_->column.data(), &klu_->common);
+  ++klu_->counts.analyses;
   if (!klu_->symbolic)
     throw std::runtime_error("KLU symbolic analysis failed (status " + std::to_string(klu_->common.status) + ")");
 }
@@ -37,12 +53,23 @@ SparseLu::SparseLu(const SparsePattern& p) : klu_(std::make_unique<Klu>()) {
 SparseLu::~SparseLu() = default;
 
 bool SparseLu::factor(std::span<const double> values) {
-  if (klu_->numeric) klu_l_free_numeric(&klu_->numeric, &klu_->common);
   klu_->values.assign(values.begin(), values.end());
-  klu_->numeric = klu_l_factor(klu_->row_start.data(), klu_->column.data(), klu_->values.data(), klu_->symbolic,
-                               &klu_->common);
-  return klu_->numeric != nullptr;
+  return klu_->full_factorization();
 }
+
+bool SparseLu::refactor(std::span<const double> values) {
+  Klu& k = *klu_;
+  k.values.assign(values.begin(), values.end());
+  if (k.numeric) {
+    ++k.counts.refactorizations;
+    if (klu_l_refactor(k.row_start.data(), k.column.data(), k.values.data(), k.symbolic, k.numeric, &k.common) &&
+        k.growth() >= 1e-2 * k.growth_at_factor)
+      return true;
+  }
+  return k.full_factorization();
+}
+
+bool SparseLu::factored() const { return klu_->numeric != nullptr; }
 
 void SparseLu::solve(std::span<double> b) const {
   if (!klu_->numeric) throw std::logic_error("SparseLu::solve without a factorization");
@@ -59,5 +86,7 @@ double SparseLu::pivot_ratio() const {
   klu_l_rcond(klu_->symbolic, klu_->numeric, &klu_->common);
   return klu_->common.rcond;
 }
+
+const SparseLu::Counts& SparseLu::counts() const { return klu_->counts; }
 
 }  // namespace twb

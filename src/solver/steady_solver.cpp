@@ -5,7 +5,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <klu.h>
+#include <fmt/format.h>
+
+#include "twb/solver/sparse_lu.h"
 
 namespace twb {
 
@@ -20,27 +22,18 @@ double elapsed_ms(std::chrono::steady_clock::time_point t0) {
 // step cost two assemblies and a residual (KINSOL evaluates at both ends of its step,
 // and Δτ needs the unshifted residual it does not return).
 //
-// KLU as in the Newton solver: analysed once, refactored with the last pivot sequence,
-// factored afresh when the refactorization meets a zero pivot or its pivot growth
-// exceeds 100× that of the factorization whose pivots it reuses. The matrix is CSR,
-// read by KLU as the CSC matrix Aᵀ (klu_l_tsolve).
+// The matrices are factored by SparseLu::refactor, as the Newton solver's: analysed once,
+// refactored with the last pivot sequence while that is safe.
 class PseudoTimeStepper {
  public:
-  explicit PseudoTimeStepper(const SteadySystem& system) : system_(system), pattern_(system.pattern()) {
-    klu_l_defaults(&common_);
-    common_.ordering = 0;  // AMD (see kinsol_newton.cpp)
-    ptr_.assign(pattern_.row_start.begin(), pattern_.row_start.end());
-    idx_.assign(pattern_.column.begin(), pattern_.column.end());
-    for (Index k = 0; k < pattern_.rows; ++k) diagonal_.push_back(pattern_.find(k, k));
-    symbolic_ = klu_l_analyze(pattern_.rows, ptr_.data(), idx_.data(), &common_);
-    if (!symbolic_) throw std::runtime_error("KLU could not analyse the Jacobian pattern");
+  explicit PseudoTimeStepper(const SteadySystem& system)
+      : system_(system), pattern_(system.pattern()), lu_(system.pattern()) {
+    for (Index k = 0; k < pattern_.rows; ++k) {
+      diagonal_.push_back(pattern_.find(k, k));
+      if (diagonal_.back() < 0)
+        throw std::invalid_argument(fmt::format("pseudo-time step on row {}, which has no diagonal entry", k));
+    }
   }
-  ~PseudoTimeStepper() {
-    if (numeric_) klu_l_free_numeric(&numeric_, &common_);
-    klu_l_free_symbolic(&symbolic_, &common_);
-  }
-  PseudoTimeStepper(const PseudoTimeStepper&) = delete;
-  PseudoTimeStepper& operator=(const PseudoTimeStepper&) = delete;
 
   // F and ∂F/∂u at u, kept as the candidate; returns ‖F‖∞ (∞ if not finite).
   double assemble(const std::vector<double>& u) {
@@ -64,39 +57,23 @@ class PseudoTimeStepper {
   bool step(const std::vector<double>& weight, double dtau, std::vector<double>& delta) {
     values_ = state_.jacobian;
     for (std::size_t k = 0; k < diagonal_.size(); ++k) values_[std::size_t(diagonal_[k])] += weight[k] / dtau;
-    if (!factorize()) return false;
+    if (!lu_.refactor(values_)) return false;
     delta.resize(state_.residual.size());
     for (std::size_t k = 0; k < delta.size(); ++k) delta[k] = -state_.residual[k];
-    return klu_l_tsolve(symbolic_, numeric_, pattern_.rows, 1, delta.data(), &common_) != 0;
-  }
-
- private:
-  bool factorize() {
-    if (numeric_ && klu_l_refactor(ptr_.data(), idx_.data(), values_.data(), symbolic_, numeric_, &common_) &&
-        klu_l_rgrowth(ptr_.data(), idx_.data(), values_.data(), symbolic_, numeric_, &common_) &&
-        common_.rgrowth >= 1e-2 * growth_at_factor_)
-      return true;
-    if (numeric_) klu_l_free_numeric(&numeric_, &common_);
-    numeric_ = klu_l_factor(ptr_.data(), idx_.data(), values_.data(), symbolic_, &common_);
-    if (!numeric_) return false;
-    growth_at_factor_ =
-        klu_l_rgrowth(ptr_.data(), idx_.data(), values_.data(), symbolic_, numeric_, &common_) ? common_.rgrowth : 0;
+    lu_.solve(delta);
     return true;
   }
 
+ private:
   struct Point {
     std::vector<double> residual, jacobian;
   };
   const SteadySystem& system_;
   const SparsePattern& pattern_;
-  std::vector<SuiteSparse_long> ptr_, idx_;
+  SparseLu lu_;
   std::vector<Index> diagonal_;
   Point state_, candidate_;
   std::vector<double> values_;
-  klu_l_common common_{};
-  klu_l_symbolic* symbolic_ = nullptr;
-  klu_l_numeric* numeric_ = nullptr;
-  double growth_at_factor_ = 0.0;
 };
 
 }  // namespace

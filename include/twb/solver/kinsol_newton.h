@@ -1,7 +1,9 @@
-// Newton's method on a SteadySystem (the bearing, or any other) with SUNDIALS KINSOL: line search globalization,
-// the model's exact sparse Jacobian in CSR, factored by KLU (symbolic analysis once,
-// numeric refactorization afterwards; SUNDIALS falls back to a full factorization when
-// the reciprocal condition estimate says the old pivot order has gone bad).
+// Newton's method on a SteadySystem (the bearing, or any other) with SUNDIALS KINSOL:
+// without a pseudo-time shift a few full steps first, then line search globalization;
+// the system's exact sparse Jacobian in CSR, one assembly per point serving KINSOL's
+// residual and Jacobian; factored by KLU through SparseLu (symbolic analysis once per
+// solver, later Jacobians refactored with the last pivot sequence, pivoted afresh on a
+// zero pivot or large pivot growth: sparse_lu.h).
 #pragma once
 
 #include <span>

@@ -1,8 +1,13 @@
-// Direct solves with a sparse matrix outside Newton's loop: the tangent of a branch,
-// the parameter sensitivity J·u_λ = −F_λ, the bordered systems that define a fold.
-// KLU with AMD ordering, as in the Newton solver (kinsol_newton.h): the symbolic
-// analysis is done once per pattern, every factor() pivots afresh, because near a fold
-// the matrix is nearly singular and an old pivot order may no longer be safe.
+// Direct solves with a sparse matrix of fixed pattern, by KLU with AMD ordering (on
+// A + Aᵀ: dense rigid-body or bordering rows and columns are ordered last; COLAMD,
+// SUNDIALS' default, fills the bearing's arrow-shaped Jacobian about six-fold). The
+// symbolic analysis is done once per pattern. Two ways to factor:
+//  - factor() pivots afresh every time: for the tangent of a branch, the parameter
+//    sensitivity J·u_λ = −F_λ and the bordered systems that define a fold, where the
+//    matrix is nearly singular and an old pivot order may no longer be safe;
+//  - refactor() reuses the pivot sequence of the last full factorization while that is
+//    safe: for the Jacobians of successive Newton and pseudo-time steps (KINSOL's
+//    linear solver in kinsol_newton.cpp, the pseudo-time stepper in steady_solver.cpp).
 #pragma once
 
 #include <memory>
@@ -20,14 +25,29 @@ class SparseLu {
   SparseLu(const SparseLu&) = delete;
   SparseLu& operator=(const SparseLu&) = delete;
 
-  // Factors the matrix with these values in the pattern's order; false when KLU finds
-  // it singular (a previous factorization is then no longer available).
+  // Factors the matrix with these values in the pattern's order, with fresh partial
+  // pivoting; false when KLU finds it singular (a previous factorization is then no
+  // longer available).
   bool factor(std::span<const double> values);
+  // Factors the matrix with the pivot sequence of the last full factorization, and
+  // pivots afresh as factor() does when there is none, when that sequence meets a zero
+  // pivot, or when its reciprocal pivot growth falls below 1/100 of the full
+  // factorization's (LU's backward error grows with the pivot growth: 100× the growth
+  // fresh pivots gave still leaves a Newton direction accurate to ~1e-13). False when
+  // the matrix is singular.
+  bool refactor(std::span<const double> values);
+  bool factored() const;
   // Overwrites b with A⁻¹b, or with A⁻ᵀb.
   void solve(std::span<double> b) const;
   void solve_transposed(std::span<double> b) const;
   // min/max |diag U| of the last factors (KLU's cheap rcond): tiny when nearly singular.
   double pivot_ratio() const;
+
+  // KLU's work so far (diagnostics: TWB_KINSOL_PRINT).
+  struct Counts {
+    long analyses = 0, factorizations = 0, refactorizations = 0;
+  };
+  const Counts& counts() const;
 
  private:
   struct Klu;
