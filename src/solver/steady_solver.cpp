@@ -90,12 +90,6 @@ void SteadySolver::account(SteadyReport& rep, const NewtonReport& n) const {
   if (!n.converged) rep.message = n.message;
 }
 
-double SteadySolver::residual_norm(const std::vector<double>& u) const {
-  std::vector<double> r(u.size());
-  model_.evaluate(u, r, {});
-  return max_norm(r);
-}
-
 bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep) {
   std::vector<double> trial = u;
   // Newton converges in a few steps from a neighbouring state (6 full steps for a 5 %
@@ -183,17 +177,6 @@ bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep) {
   }
   rep.message = "pseudo-transient continuation did not reach a steady state: " + rep.message;
   return false;
-}
-
-std::vector<double> SteadySolver::diagonal_weights(const std::vector<double>& u) const {
-  const SparsePattern& p = model_.pattern();
-  std::vector<double> r(u.size()), jac(std::size_t(p.nnz())), w(u.size());
-  model_.evaluate(u, r, jac);
-  for (std::size_t k = 0; k < u.size(); ++k) {
-    const double d = std::abs(jac[std::size_t(p.find(Index(k), Index(k)))]);
-    w[k] = std::isfinite(d) && d > 1e-8 ? d : 1e-8;
-  }
-  return w;
 }
 
 SteadyReport SteadySolver::solve(std::vector<double>& u) {

@@ -46,8 +46,6 @@ class SteadySolver {
   // parameter at the target.
   double walk(const std::function<void(double)>& set, double from, double target, double step,
               std::vector<double>& state, const std::function<bool(std::vector<double>&)>& solve_step);
-  double residual_norm(const std::vector<double>& u) const;
-  std::vector<double> diagonal_weights(const std::vector<double>& u) const;
 
   BearingModel& model_;
   NewtonSettings settings_;
