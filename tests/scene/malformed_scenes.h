@@ -66,7 +66,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"sweep_end_not_above_start", 15, 13, {"study.load_end: '100 N' must be greater than load_start '2000 N'"}},
     {"sweep_steps_too_few", 12, 76, {"study.load_steps: 1 is out of range; must be >= 2"}},
     {"distress_map_without_speeds", 14, 11, {"study.speeds: the list is empty", "give at least one speed"}},
-    {"distress_map_unknown_parameter", 17, 21, {"study.parameter.name: unknown value 'viscosity'", "allowed: friction_coefficient, gear_tilt"}},
+    {"distress_map_unknown_parameter", 17, 21, {"study.parameter.name: unknown value 'viscosity'", "allowed: friction_coefficient, gear_tilt, roughness"}},
     {"distress_map_friction_with_empirical_law", 19, 11, {"friction_coefficient varies the constant friction law's coefficient", "set friction.law: constant"}},
     {"distress_map_without_loads", 13, 3, {"missing required key 'load_start' in 'study'"}},
     {"bracket_width_too_wide", 12, 94, {"study.bracket_width: '0.5' is out of range; must be in (0, 0.1]"}},
