@@ -83,6 +83,12 @@ void read_study(const MapReader& scene, Scene& out) {
       break;
     case StudyType::transient:
       study.restrict_to({"type", "load_start", "load_end", "duration", "bracket_width"}, "with type: transient");
+      if (!out.effects.thermal) {
+        const Node type = study.get("type", "");
+        type.fail(fmt::format("{}: a transient study marches the heat balance in pseudo-time (MODEL.md "
+                              "section 8), so it needs the thermal effect; add 'thermal' to effects",
+                              type.path()));
+      }
       s.load_start = study.quantity("load_start", si::force, positive);
       s.load_end = study.quantity("load_end", si::force, positive);
       s.duration = study.quantity("duration", si::time, non_negative, 0.0);

@@ -71,6 +71,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"distress_map_without_loads", 13, 3, {"missing required key 'load_start' in 'study'"}},
     {"bracket_width_too_wide", 12, 94, {"study.bracket_width: '0.5' is out of range; must be in (0, 0.1]"}},
     {"transient_duration_wrong_dimension", 12, 72, {"study.duration: '60 mm' has the dimension of length, expected a time"}},
+    {"transient_without_thermal", 12, 15, {"study.type: a transient study marches the heat balance", "add 'thermal' to effects"}},
     {"distress_map_speed_wrong_dimension", 12, 49, {"study.speeds[1]: '545 mm' has the dimension of length, expected an angular speed"}},
     {"empty_effects_list", 2, 10, {"effects: the list is empty", "allowed: hydrodynamics, flow_factors, asperity_contact, thermal"}},
     {"missing_required_key", 5, 11, {"missing required key 'outer_diameter' in 'geometry.washer'", "allowed: inner_diameter, outer_diameter, thickness"}},
