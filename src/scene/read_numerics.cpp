@@ -50,7 +50,7 @@ double read_bracket_width(const MapReader& study, double fallback) {
 void read_map_parameter(const MapReader& study, Study& s, const Scene& scene) {
   if (!study.has("parameter")) return;
   const MapReader p = study.map("parameter", {"name", "values"});
-  s.parameter = kMapParameters.values[p.get("name", "friction_coefficient or gear_tilt")
+  s.parameter = kMapParameters.values[p.get("name", "friction_coefficient, gear_tilt or roughness")
                                           .choice(kMapParameters.names)];
   const Node values = p.get("values", "a list of values, e.g. [0.05, 0.1, 0.2]");
   const std::vector<Node> items = values.list("a list of values, e.g. [0.05, 0.1, 0.2]");
@@ -59,8 +59,10 @@ void read_map_parameter(const MapReader& study, Study& s, const Scene& scene) {
   for (const Node& item : items) {
     if (s.parameter == MapParameter::friction_coefficient)
       s.parameter_values.push_back(item.quantity(si::dimensionless, non_negative));
-    else
+    else if (s.parameter == MapParameter::gear_tilt)
       s.parameter_values.push_back(item.quantity(si::angle, non_negative));
+    else
+      s.parameter_values.push_back(item.quantity(si::length, positive));
   }
   if (s.parameter == MapParameter::friction_coefficient && scene.friction.law != FrictionLaw::constant) {
     const Node name = p.get("name", "");
@@ -81,6 +83,12 @@ void read_study(const MapReader& scene, Scene& out) {
       break;
     case StudyType::transient:
       study.restrict_to({"type", "load_start", "load_end", "duration", "bracket_width"}, "with type: transient");
+      if (!out.effects.thermal) {
+        const Node type = study.get("type", "");
+        type.fail(fmt::format("{}: a transient study marches the heat balance in pseudo-time (MODEL.md "
+                              "section 8), so it needs the thermal effect; add 'thermal' to effects",
+                              type.path()));
+      }
       s.load_start = study.quantity("load_start", si::force, positive);
       s.load_end = study.quantity("load_end", si::force, positive);
       s.duration = study.quantity("duration", si::time, non_negative, 0.0);

@@ -29,8 +29,9 @@ inline constexpr EnumNames<StudyType, 4> kStudyTypes{
     {"point", "load_sweep", "distress_map", "transient"},
     {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient}};
 
-inline constexpr EnumNames<MapParameter, 2> kMapParameters{
-    {"friction_coefficient", "gear_tilt"}, {MapParameter::friction_coefficient, MapParameter::gear_tilt}};
+inline constexpr EnumNames<MapParameter, 3> kMapParameters{
+    {"friction_coefficient", "gear_tilt", "roughness"},
+    {MapParameter::friction_coefficient, MapParameter::gear_tilt, MapParameter::roughness}};
 
 // Effects in the order the model stacks them.
 inline constexpr std::string_view kHydrodynamics = "hydrodynamics";

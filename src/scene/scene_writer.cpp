@@ -151,7 +151,9 @@ void write_numerics(Writer& w, const Scene& s) {
     for (double speed : st.speeds) speeds += (speeds.empty() ? "" : ", ") + quantity(speed, "rad/s");
     w.entry(1, "speeds", fmt::format("[{}]", speeds));
     if (st.parameter != MapParameter::none) {
-      const char* unit = st.parameter == MapParameter::gear_tilt ? "rad" : "1";
+      const char* unit = st.parameter == MapParameter::gear_tilt   ? "rad"
+                         : st.parameter == MapParameter::roughness ? "m"
+                                                                   : "1";
       std::string values;
       for (double v : st.parameter_values) values += (values.empty() ? "" : ", ") + quantity(v, unit);
       w.line(1, "parameter:");

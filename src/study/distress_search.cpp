@@ -65,6 +65,24 @@ double steepest_sensitivity(const std::vector<SolvedState>& states) {
   return best;
 }
 
+// Pseudo-arclength continuation from a state near the end of the cool branch round its
+// first turning point only: once the branch has turned back 2 % below the start the
+// fold has been passed (and located), and the rest of the S is not needed.
+ArclengthReport round_the_fold(BearingModel& model, std::span<const double> state, double load, double load_end,
+                               const NewtonSettings& newton) {
+  ArclengthSettings arc;
+  arc.newton = newton;
+  arc.newton.max_iterations = 12;
+  arc.parameter_scale = load;
+  arc.initial_step = 0.002;
+  arc.max_step = 0.05;
+  arc.lambda_min = 0.98 * load;
+  arc.lambda_max = load_end;
+  arc.max_points = 200;
+  model.set_load(load);
+  return continue_by_arclength(model, state, arc);
+}
+
 }  // namespace
 
 RunawaySettings distress_detector(const Scene& scene, double bracket_width) {
@@ -113,6 +131,12 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
     return out;
   }
   out.states.push_back(record(model, u, first.iterations, first.wall_ms));
+
+  // Without the thermal effect nothing has a heat capacity: there is no transient to
+  // check states or bracket W_d with (thermo-viscous distress needs heat), and only the
+  // steady branch and its fold remain.
+  const std::vector<double> capacity = model.capacities();
+  const bool transient = std::any_of(capacity.begin(), capacity.end(), [](double c) { return c > 0.0; });
 
   // The cool branch by natural continuation (secant predictor), segment by segment:
   // through the requested grid, and never more than 15 % of the load at once, since a
@@ -168,6 +192,12 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
     });
     bool replaced = false;
     for (Pending& p : pending) {
+      if (!transient) {
+        low = p.load;
+        low_state = p.u;
+        out.states.push_back(record(model, low_state, p.iterations, p.wall_ms));
+        continue;
+      }
       model.set_load(low);
       const StepOutcome step = classify_step(model, low_state, p.load, runaway);
       ++checked;
@@ -205,10 +235,28 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
   say(fmt::format("  {} load steps checked by the transient", checked));
   out.cool_states = out.states.size();
 
+  if (!ran_away && !branch_ended && !transient) {
+    out.row.method = fmt::format("no fold up to {:.6g} N (no thermal effect: no thermo-viscous distress)",
+                                 settings.load_end);
+    return out;
+  }
   if (!ran_away && !branch_ended) {
     const double steepest = steepest_sensitivity(out.states);
     out.row.method = fmt::format("no fold up to {:.6g} N (gradual heating); steepest rise of T_mean at {:.6g} N",
                                  settings.load_end, steepest);
+    return out;
+  }
+
+  if (!transient) {
+    // The steady branch's end only: locate its fold.
+    const ArclengthReport around = round_the_fold(model, low_state, low, settings.load_end, newton);
+    if (!around.folds.empty()) out.row.fold_load = around.folds.front().lambda;
+    out.row.method = out.row.fold_load
+                         ? fmt::format("no thermal effect, so no transient to bracket W_d: the steady branch folds at "
+                                       "{:.6g} N",
+                                       *out.row.fold_load)
+                         : "no thermal effect, so no transient to bracket W_d; the steady branch ends near " +
+                               fmt::format("{:.6g} N without a located fold: {}", low, around.message);
     return out;
   }
 
@@ -242,19 +290,7 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
   say(fmt::format("  distress between {:.2f} and {:.2f} N", bracket.low, bracket.high));
 
   // The fold of the steady branch, by pseudo-arclength continuation round it.
-  ArclengthSettings arc;
-  arc.newton = newton;
-  arc.newton.max_iterations = 12;
-  arc.parameter_scale = bracket.low;
-  arc.initial_step = 0.002;
-  arc.max_step = 0.05;
-  // Round the first turning point only: once the branch has turned back 2 % below the
-  // bracket the fold has been passed (and located), and the rest of the S is not needed.
-  arc.lambda_min = 0.98 * bracket.low;
-  arc.lambda_max = settings.load_end;
-  arc.max_points = 200;
-  model.set_load(bracket.low);
-  const ArclengthReport around = continue_by_arclength(model, bracket.low_state, arc);
+  const ArclengthReport around = round_the_fold(model, bracket.low_state, bracket.low, settings.load_end, newton);
   say(fmt::format("  arclength continuation: {} states, {} folds", around.accepted, around.folds.size()));
   if (!around.folds.empty()) {
     const FoldPoint& fold = around.folds.front();

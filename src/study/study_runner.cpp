@@ -78,6 +78,20 @@ Scene with_parameter(Scene scene, MapParameter p, double value) {
     case MapParameter::gear_tilt:
       scene.gear.tilt = value;
       break;
+    case MapParameter::roughness: {
+      // Every surface gets Rq = value, Ra in the same ratio; the summits follow a texture
+      // scaled in height by k (McCool's spectral moments m0, m2, m4 all scale with k²):
+      // σs ∝ k, R ∝ 1/k, η unchanged (MODEL.md section 4).
+      const double before = std::hypot(scene.carrier.roughness.rq, scene.washer.roughness.rq);
+      for (Component* c : {&scene.carrier, &scene.washer, &scene.gear}) {
+        c->roughness.ra *= value / c->roughness.rq;
+        c->roughness.rq = value;
+      }
+      const double k = std::hypot(value, value) / before;
+      scene.asperities.summit_sigma *= k;
+      scene.asperities.summit_radius /= k;
+      break;
+    }
     case MapParameter::none:
       break;
   }
@@ -87,7 +101,10 @@ Scene with_parameter(Scene scene, MapParameter p, double value) {
 void run_distress_map(const BearingModel& base, StudyOutcome& out, const ProgressReport& progress) {
   const Study& st = base.scene().study;
   const bool axis = st.parameter != MapParameter::none;
-  if (axis) out.parameter_column = st.parameter == MapParameter::gear_tilt ? "gear_tilt_rad" : "friction_coefficient";
+  if (axis)
+    out.parameter_column = st.parameter == MapParameter::gear_tilt   ? "gear_tilt_rad"
+                           : st.parameter == MapParameter::roughness ? "roughness_Rq_m"
+                                                                     : "friction_coefficient";
   const std::vector<double> values = axis ? st.parameter_values : std::vector<double>{0.0};
   const std::size_t total = values.size() * st.speeds.size();
   std::size_t done = 0;

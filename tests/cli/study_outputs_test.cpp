@@ -72,5 +72,17 @@ TEST(StudyOutputs, LoadSweepWritesStatesDistressAndTheRunaway) {
   fs::remove_all(dir);
 }
 
+// Without the thermal effect there is no transient: the sweep still runs, and says
+// there is no thermo-viscous distress rather than failing.
+TEST(StudyOutputs, IsothermalLoadSweepRunsWithoutTransient) {
+  const fs::path dir = scratch("isothermal");
+  ASSERT_EQ(run_twb("load_sweep_545.yaml", dir, "--set 'effects=[hydrodynamics, flow_factors, asperity_contact]'"), 0);
+  const auto distress = lines_of(dir / "distress.csv");
+  ASSERT_EQ(distress.size(), 2u);
+  EXPECT_NE(distress[1].find("no thermal effect"), std::string::npos) << distress[1];
+  EXPECT_FALSE(fs::exists(dir / "trajectory.csv"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace twb

@@ -143,6 +143,10 @@ INSTANTIATE_TEST_SUITE_P(
                           "friction: {law: constant, coefficient: 0.15}\n"
                           "study: {type: load_sweep, load_start: 100 N, load_end: 2 kN, load_steps: 20}\n"
                           "output: {directory: 'out dir/with \"quotes\" # and hash', fields: true}\n"},
+        RoundTripCase{"distress_map_over_roughness",
+                      std::string(kMinimalScene) +
+                          "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
+                          "        parameter: {name: roughness, values: [0.3 um, 0.515 um, 1 um]}}\n"},
         RoundTripCase{"transient_load_step",
                       std::string(kMinimalScene) +
                           "study: {type: transient, load_start: 150 N, load_end: 0.2 kN, duration: 2 min}\n"},

@@ -24,7 +24,8 @@ enum class FrictionLaw { constant, empirical };
 enum class StudyType { point, load_sweep, distress_map, transient };
 
 // The optional second axis of a distress map (besides speed).
-enum class MapParameter { none, friction_coefficient, gear_tilt };
+// roughness: the Rq of every surface (see docs/scenes.md for how the texture scales).
+enum class MapParameter { none, friction_coefficient, gear_tilt, roughness };
 
 struct Effects {
   bool hydrodynamics = false;
@@ -111,7 +112,7 @@ struct Study {
   // distress_map
   std::vector<double> speeds;  // rad/s
   MapParameter parameter = MapParameter::none;
-  std::vector<double> parameter_values;  // SI (dimensionless, rad)
+  std::vector<double> parameter_values;  // SI (dimensionless, rad, m)
   // Distress bracket refined by bisection to (high − low)/high <= bracket_width.
   double bracket_width = 0.002;
   // transient: pseudo-time span in s; 0 marches until the state settles or runs away.
