@@ -118,6 +118,12 @@ struct RoundTripCase {
 };
 void PrintTo(const RoundTripCase& c, std::ostream* os) { *os << c.name; }
 
+// A transient study needs the thermal effect (it marches the heat balance).
+std::string with_thermal(std::string scene) {
+  const std::string effects = "effects: [hydrodynamics, asperity_contact]";
+  return scene.replace(scene.find(effects), effects.size(), "effects: [hydrodynamics, asperity_contact, thermal]");
+}
+
 class DescribeRoundTrip : public ::testing::TestWithParam<RoundTripCase> {};
 
 TEST_P(DescribeRoundTrip, DescribedSceneLoadsBackIdentically) {
@@ -148,7 +154,7 @@ INSTANTIATE_TEST_SUITE_P(
                           "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
                           "        parameter: {name: roughness, values: [0.3 um, 0.515 um, 1 um]}}\n"},
         RoundTripCase{"transient_load_step",
-                      std::string(kMinimalScene) +
+                      with_thermal(kMinimalScene) +
                           "study: {type: transient, load_start: 150 N, load_end: 0.2 kN, duration: 2 min}\n"},
         RoundTripCase{"distress_map_custom_surfaces_film_2",
                       std::string(testing::kSceneBodies) +
