@@ -22,6 +22,7 @@
 
 #include "twb/model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
+#include "twb/solver/natural_continuation.h"
 #include "twb/solver/steady_solver.h"
 
 namespace {
@@ -133,6 +134,41 @@ void BM_WarmStartNeighbouringLoad(benchmark::State& state) {
   work.report(state);
 }
 BENCHMARK(BM_WarmStartNeighbouringLoad)
+    ->Args({100, 545})
+    ->Args({120, 545})
+    ->Args({500, 545})
+    ->Args({500, 136})
+    ->Repetitions(5)
+    ->Unit(benchmark::kMillisecond);
+
+// The same 2 % step as a load sweep takes it: natural continuation from the converged
+// state, tangent predictor (J·u_W = −F_W by KLU at the start state), KINSOL corrector;
+// the time includes the tangent. Args: load (N), speed (rad/s).
+void BM_WarmStartWithPredictor(benchmark::State& state) {
+  const double load = double(state.range(0));
+  twb::BearingModel model(paper_scene(load, double(state.range(1))));
+  twb::SteadySolver solver(model, {});
+  std::vector<double> base;
+  if (!solver.solve_cold(base).converged) throw std::runtime_error("no base state");
+  twb::NaturalSettings settings;
+  settings.predictor = twb::Predictor::tangent;
+  settings.initial_step = settings.max_step = 0.02 * load;
+  long corrections = 0, states = 0;
+  const KluCalls klu_start = klu_calls;
+  for (auto _ : state) {
+    model.set_load(load);
+    std::vector<double> u = base;
+    const twb::NaturalReport rep = twb::continue_in_parameter(model, u, 1.02 * load, settings);
+    if (!rep.reached_target) throw std::runtime_error("continuation step failed: " + rep.message);
+    corrections += rep.corrector_iterations;
+    ++states;
+  }
+  state.counters["newton_iterations"] = double(corrections) / double(states);
+  state.counters["klu_factorizations"] = double(klu_calls.factorizations - klu_start.factorizations) / double(states);
+  state.counters["klu_refactorizations"] =
+      double(klu_calls.refactorizations - klu_start.refactorizations) / double(states);
+}
+BENCHMARK(BM_WarmStartWithPredictor)
     ->Args({100, 545})
     ->Args({120, 545})
     ->Args({500, 545})
