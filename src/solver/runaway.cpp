@@ -42,7 +42,10 @@ class StepJudge {
         if (restarts_ < max_restarts) {
           ++restarts_;
           const std::vector<double> here(ida_.state().begin(), ida_.state().end());
-          if (ida_.start(ida_.time(), here).ok) continue;
+          if (ida_.start(ida_.time(), here).ok) {
+            if (ida_.time() >= out_.horizon) break;  // a fallback start may step past it
+            continue;
+          }
         }
         if (settled_here()) return;
         keep_state();

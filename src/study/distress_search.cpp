@@ -167,6 +167,7 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
   // cool branch.
   // (The check against the continuation's own state replaces the detector's branch test here.)
   RunawaySettings runaway = distress_detector(model.scene(), settings.bracket_width);
+  const auto branch_test = runaway.on_branch;
   runaway.on_branch = nullptr;
   struct Pending {
     std::vector<double> u;
@@ -195,11 +196,21 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
       if (!transient) {
         low = p.load;
         low_state = p.u;
+        model.set_load(low);
         out.states.push_back(record(model, low_state, p.iterations, p.wall_ms));
         continue;
       }
       model.set_load(low);
-      const StepOutcome step = classify_step(model, low_state, p.load, runaway);
+      StepOutcome step;
+      try {
+        step = classify_step(model, low_state, p.load, runaway);
+      } catch (const std::exception& e) {
+        // Near a fold the Jacobian may turn singular under the detector's relaxation
+        // estimate: the branch ends here, and the bracket below takes over.
+        branch_ended = true;
+        say(fmt::format("  the step {:.2f} -> {:.2f} N could not be judged: {}", low, p.load, e.what()));
+        break;
+      }
       ++checked;
       if (!step.settled()) {
         ran_away = true;
@@ -209,6 +220,16 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
       }
       replaced = !same_state(step.final_state, p.u);
       if (replaced) {
+        // Either continuation jumped (the transient's state is the branch's) or the
+        // step itself jumped to the hot branch without an acceleration the detector
+        // saw: the branch test tells which.
+        const bool reachable = branch_test(model, low_state, low, step.final_state, p.load);
+        if (!reachable) {
+          ran_away = true;
+          runaway_load = p.load;
+          say(fmt::format("  the step {:.2f} -> {:.2f} N settles off the branch: a runaway", low, p.load));
+          break;
+        }
         say(fmt::format("  at {:.2f} N continuation had jumped to another branch; the transient's state is kept",
                         p.load));
         p.u = step.final_state;
@@ -267,22 +288,31 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
   // Past the end of natural continuation the step that runs away is searched in
   // increments of 1 % (or 4 bracket widths).
   const double widen = std::max(4.0 * settings.bracket_width, 0.01);
-  double high = ran_away ? runaway_load : low * (1.0 + widen);
-  for (int attempt = 0; !ran_away && attempt < 40 && high <= settings.load_end * (1.0 + widen); ++attempt) {
+  double high = ran_away ? runaway_load : std::min(low * (1.0 + widen), settings.load_end);
+  try {
+    for (int attempt = 0; !ran_away && attempt < 400 && low < settings.load_end; ++attempt) {
+      model.set_load(low);
+      const StepOutcome step = classify_step(model, low_state, high, runaway);
+      if (!step.settled()) break;
+      low = high;
+      low_state = step.final_state;
+      model.set_load(low);
+      out.states.push_back(record(model, low_state, step.newton_attempts, 0.0));
+      ++out.cool_states;
+      high = std::min(low * (1.0 + widen), settings.load_end);
+    }
+    if (!ran_away && low >= settings.load_end) {
+      out.row.method = fmt::format("no distress up to {:.6g} N: every load step settled on the branch",
+                                   settings.load_end);
+      return out;
+    }
     model.set_load(low);
-    const StepOutcome step = classify_step(model, low_state, high, runaway);
-    if (!step.settled()) break;
-    low = high;
-    low_state = step.final_state;
-    high = low * (1.0 + widen);
-  }
-  model.set_load(low);
-  const Bracket bracket = bracket_critical(model, low, low_state, high, runaway);
-  if (!bracket.valid) {
-    out.row.method = "no distress bracket: " + bracket.message;
-    out.message = out.row.method;
-    return out;
-  }
+    const Bracket bracket = bracket_critical(model, low, low_state, high, runaway);
+    if (!bracket.valid) {
+      out.row.method = "no distress bracket: " + bracket.message;
+      out.message = out.row.method;
+      return out;
+    }
   out.bracket_state = bracket.low_state;
   out.row.bracket_low = bracket.low;
   out.row.bracket_high = bracket.high;
@@ -312,10 +342,17 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
     return out;
   }
   out.states.push_back(record(model, hot.state, hot.newton_iterations, hot.wall_ms));
+  u = hot.state;
+  } catch (const std::exception& e) {
+    // A singular Jacobian under the detector or the march, at the fold itself: what
+    // was found so far stays, and the row says why the search stopped.
+    if (!out.row.distress_load) out.row.method = std::string("distress search stopped: ") + e.what();
+    out.message = std::string("distress search stopped: ") + e.what();
+    return out;
+  }
   if (!settings.continue_past_distress) return out;
 
-  // Load sweep: the hot branch on to load_end.
-  u = hot.state;
+  // Load sweep: the hot branch on to load_end, from the state the runaway reached (u).
   auto t0 = std::chrono::steady_clock::now();
   for (double target : targets) {
     if (target <= model.load()) continue;

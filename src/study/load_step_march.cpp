@@ -30,7 +30,17 @@ StepMarch march_load_step(BearingModel& model, std::span<const double> start_sta
                           const TransientSettings& settings, const NewtonSettings& newton, double duration) {
   const auto t0 = std::chrono::steady_clock::now();
   StepMarch out;
-  const double tau = slowest_relaxation_time(model, start_state, 20);
+  // The horizon's time scale, needed only when no duration is given. Near a fold the
+  // Jacobian can be singular: then the march is bounded by a generous fixed span.
+  double tau = 0.0;
+  if (!(duration > 0)) {
+    try {
+      tau = slowest_relaxation_time(model, start_state, 20);
+    } catch (const std::exception&) {
+      tau = 0.0;
+    }
+    if (!(tau > 0) || !std::isfinite(tau)) tau = 10.0;  // s: several times the carrier's own ρ c t²/K
+  }
   model.set_load(new_load);
   IdaTransient ida(model, settings);
   const double horizon = duration > 0 ? duration : horizon_multiple * tau;
@@ -69,7 +79,9 @@ StepMarch march_load_step(BearingModel& model, std::span<const double> start_sta
     if (rep.converged) {
       out.state = u;
       out.settled = true;
-      out.message += fmt::format("; from there the steady solver ({}) reached a steady state", rep.strategy);
+      out.message += fmt::format("; from there the steady solver ({}) reached a steady state, which need not be "
+                                 "where the trajectory was heading",
+                                 rep.strategy);
     } else {
       out.message += "; from there the steady solver found no steady state either: " + rep.message;
     }
@@ -101,7 +113,11 @@ StepMarch march_load_step(BearingModel& model, std::span<const double> start_sta
     std::vector<double> trial(u.begin(), u.end());
     const NewtonReport rep = polish.solve(trial, newton);
     out.newton_iterations += rep.iterations;
-    if (rep.converged) {
+    // Only a steady state next to the trajectory is where it is going (as in the runaway
+    // detector): no closer than the way the trajectory has come from the start.
+    const double gap = ida.differential_distance(trial, u);
+    const double travel = ida.differential_distance(u, start_state);
+    if (rep.converged && gap <= std::max(travel, 1.0)) {
       finish(fmt::format("settled at t = {:.4g} s", ida.time()));
       out.state = trial;
       out.settled = true;

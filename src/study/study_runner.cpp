@@ -120,7 +120,16 @@ void run_distress_map(const BearingModel& base, StudyOutcome& out, const Progres
       s.load_start = st.load_start;
       s.load_end = st.load_end;
       s.bracket_width = st.bracket_width;
-      DistressSearch found = search_distress(model, s, progress);
+      DistressSearch found;
+      try {
+        found = search_distress(model, s, progress);
+      } catch (const std::exception& e) {
+        // One point that fails must not lose the map's other rows.
+        found.failed = true;
+        found.row.speed = speed;
+        found.row.method = std::string("solver failure: ") + e.what();
+        found.message = found.row.method;
+      }
       if (axis) found.row.parameter = value;
       out.distress.push_back(found.row);
       // The cool branch's states are results too (f_eff, temperature against load).
