@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "load_step_march.h"
+#include "study_support.h"
 #include "twb/solver/arclength_continuation.h"
 #include "twb/solver/natural_continuation.h"
 #include "twb/solver/runaway.h"
@@ -15,18 +16,6 @@
 namespace twb {
 
 namespace {
-
-double elapsed_ms(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
-NewtonSettings newton_settings(const Scene& s) {
-  NewtonSettings n;
-  n.residual_tolerance = s.solver.residual_tolerance;
-  n.step_tolerance = s.solver.step_tolerance;
-  n.max_iterations = s.solver.max_iterations;
-  return n;
-}
 
 SolvedState record(const BearingModel& model, std::span<const double> u, long iterations, double wall_ms) {
   SolvedState row;

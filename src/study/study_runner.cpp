@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "load_step_march.h"
+#include "study_support.h"
 #include "twb/solver/steady_solver.h"
 #include "twb/study/distress_search.h"
 
@@ -15,18 +16,6 @@ namespace twb {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-NewtonSettings newton_settings(const Scene& s) {
-  NewtonSettings n;
-  n.residual_tolerance = s.solver.residual_tolerance;
-  n.step_tolerance = s.solver.step_tolerance;
-  n.max_iterations = s.solver.max_iterations;
-  return n;
-}
 
 SolvedState record(const BearingModel& model, const std::vector<double>& u, const SteadyReport& rep) {
   SolvedState row;
@@ -137,7 +126,7 @@ void run_distress_map(const BearingModel& base, StudyOutcome& out, const Progres
       if (found.failed) out.message += (out.message.empty() ? "" : "; ") + found.message;
       ++done;
       if (progress) {
-        const double per_point = ms_since(t0) / double(done);
+        const double per_point = elapsed_ms(t0) / double(done);
         progress(fmt::format("[{}/{}] done: W_d = {} ({}); about {:.0f} s left", done, total,
                              found.row.distress_load ? fmt::format("{:.2f} N", *found.row.distress_load) : "none",
                              found.row.method, per_point * double(total - done) / 1000.0));
@@ -194,7 +183,7 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress) {
       break;
   }
   out.timings.states = int(out.states.size());
-  out.timings.solve_ms = ms_since(t0);
+  out.timings.solve_ms = elapsed_ms(t0);
   return out;
 }
 
