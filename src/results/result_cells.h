@@ -25,4 +25,14 @@ inline std::string number(const std::optional<double>& v, const char* name) {
   return v ? number(*v, name) : std::string();
 }
 
+// The columns that tell a study's runs apart: the parameter's value and the sliding film.
+inline std::string run_header(const std::string& parameter_column, bool sliding_column) {
+  return (parameter_column.empty() ? std::string() : parameter_column + ",") + (sliding_column ? "sliding," : "");
+}
+inline std::string run_cells(const std::string& parameter_column, bool sliding_column,
+                             const std::optional<double>& parameter, const std::string& sliding) {
+  return (parameter_column.empty() ? std::string() : number(parameter, "parameter") + ",") +
+         (sliding_column ? sliding + "," : std::string());
+}
+
 }  // namespace twb::cells

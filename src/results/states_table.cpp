@@ -7,15 +7,18 @@ namespace twb {
 using cells::finite;
 using cells::kelvin_offset;
 
-std::string states_csv(const std::vector<SolvedState>& rows) {
+std::string states_csv(const std::vector<SolvedState>& rows, const std::string& parameter_column,
+                       bool sliding_column) {
   std::string out =
-      "load_N,speed_rad_s,T_mean_C,T_max_C,hmin_over_sigma,gamma_x_ratio,gamma_y_ratio,fluid_share,"
+      "load_N,speed_rad_s," + cells::run_header(parameter_column, sliding_column) +
+      "T_mean_C,T_max_C,hmin_over_sigma,gamma_x_ratio,gamma_y_ratio,fluid_share,"
       "contact_share,torque_Nm,f_eff,stribeck,converged,iterations,residual,energy_error,wall_ms\n";
   for (const SolvedState& r : rows) {
     const BearingState& s = r.state;
-    out += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},"
+    out += fmt::format("{:.10g},{:.10g},", finite(s.load, "load"), finite(s.speed, "speed")) +
+           cells::run_cells(parameter_column, sliding_column, r.parameter, r.sliding);
+    out += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},"
                        "{:.10g},{:.10g},{},{},{:.3e},{:.3e},{:.3f}\n",
-                       finite(s.load, "load"), finite(s.speed, "speed"),
                        finite(s.washer_mean_temperature - kelvin_offset, "T_mean"),
                        finite(s.max_film_temperature - kelvin_offset, "T_max"),
                        finite(s.hmin_over_sigma, "hmin_over_sigma"), finite(s.gamma_x_ratio, "gamma_x_ratio"),

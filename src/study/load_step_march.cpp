@@ -47,7 +47,9 @@ StepMarch march_load_step(BearingModel& model, std::span<const double> start_sta
   TransientStatus status = ida.start(0.0, start_state);
   std::vector<double> r(start_state.size());
   auto sample = [&](double t, std::span<const double> u) {
-    out.trajectory.push_back({t, model.describe(u)});
+    TrajectorySample& sample = out.trajectory.emplace_back();
+    sample.time = t;
+    sample.state = model.describe(u);
   };
   auto finish = [&](std::string message) {
     const std::span<const double> u = ida.state();

@@ -55,7 +55,7 @@ TEST(StudyOutputs, TransientWritesTheTrajectory) {
   ASSERT_EQ(run_twb("transient_step_545.yaml", dir, ""), 0);
   const auto rows = lines_of(dir / "trajectory.csv");
   ASSERT_GT(rows.size(), 10u);
-  EXPECT_EQ(rows[0], "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N");
+  EXPECT_EQ(rows[0], "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s");
   EXPECT_EQ(rows[1].rfind("0,", 0), 0u);  // starts at the step
   EXPECT_EQ(lines_of(dir / "states.csv").size(), 3u);  // before and after the step
   fs::remove_all(dir);

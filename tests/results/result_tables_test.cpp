@@ -1,18 +1,20 @@
-// distress.csv and trajectory.csv: the columns, empty cells for values that do
+// distress.csv, trajectory.csv, sliding.csv and the run columns of states.csv: the columns, empty cells for values that do
 // not exist, and no NaN ever written.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "twb/results/distress_table.h"
+#include "twb/results/sliding_table.h"
+#include "twb/results/states_table.h"
 #include "twb/results/trajectory_table.h"
 
 namespace twb {
 namespace {
 
 TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
-  DistressRow found{545.0, 0.1, 185.25, 185.0, 185.5, 185.3, "runaway; fold"};
-  DistressRow none{136.0, 0.2, std::nullopt, std::nullopt, std::nullopt, std::nullopt, "not reached below 2000 N"};
+  DistressRow found{545.0, 0.1, 185.25, 185.0, 185.5, 185.3, "runaway; fold", {}};
+  DistressRow none{136.0, 0.2, std::nullopt, std::nullopt, std::nullopt, std::nullopt, "not reached below 2000 N", {}};
   EXPECT_EQ(distress_csv({found, none}, "friction_coefficient"),
             "speed_rad_s,friction_coefficient,W_d_N,bracket_low_N,bracket_high_N,fold_N,method\n"
             "545,0.1,185.25,185,185.5,185.3,runaway; fold\n"
@@ -24,13 +26,13 @@ TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
 }
 
 TEST(DistressTable, QuotesAMethodWithCommas) {
-  DistressRow row{545.0, std::nullopt, 1.0, 1.0, 1.0, std::nullopt, "a, \"b\""};
+  DistressRow row{545.0, std::nullopt, 1.0, 1.0, 1.0, std::nullopt, "a, \"b\"", {}};
   EXPECT_EQ(distress_csv({row}, ""), "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method\n"
                                      "545,1,1,1,,\"a, \"\"b\"\"\"\n");
 }
 
 TEST(DistressTable, RefusesNaN) {
-  DistressRow bad{545.0, std::nullopt, std::nan(""), 1.0, 2.0, std::nullopt, "x"};
+  DistressRow bad{545.0, std::nullopt, std::nan(""), 1.0, 2.0, std::nullopt, "x", {}};
   EXPECT_THROW(distress_csv({bad}, ""), std::runtime_error);
 }
 
@@ -43,11 +45,66 @@ TEST(TrajectoryTable, ColumnsInCelsius) {
   s.state.contact_share = 0.01;
   s.state.f_eff = 0.03;
   s.state.load = 180.0;
+  s.state.speed = 545.0;
   EXPECT_EQ(trajectory_csv({s}),
-            "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N\n"
-            "1.5,30,45,3.2,0.01,0.03,180\n");
+            "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s\n"
+            "1.5,30,45,3.2,0.01,0.03,180,545\n");
   s.state.f_eff = INFINITY;
   EXPECT_THROW(trajectory_csv({s}), std::runtime_error);
+}
+
+// A study of several runs (speeds × parameter values, or sliding films) names each row's
+// run in columns after the speed; the trajectory puts them last.
+TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
+  SolvedState a;
+  a.state.load = 150.0;
+  a.state.speed = 545.0;
+  a.state.washer_mean_temperature = a.state.max_film_temperature = 273.15 + 24.0;
+  a.converged = true;
+  a.parameter = 0.2;
+  a.sliding = "washer_gear";
+  const std::string states = states_csv({a}, "friction_coefficient", true);
+  EXPECT_EQ(states.rfind("load_N,speed_rad_s,friction_coefficient,sliding,T_mean_C,", 0), 0u) << states;
+  EXPECT_NE(states.find("\n150,545,0.2,washer_gear,24,24,"), std::string::npos) << states;
+  EXPECT_EQ(states_csv({a}).rfind("load_N,speed_rad_s,T_mean_C,", 0), 0u);
+  // A run without its parameter's value is a bug upstream: an empty cell, never NaN.
+  a.parameter.reset();
+  EXPECT_NE(states_csv({a}, "friction_coefficient").find("\n150,545,,24,"), std::string::npos);
+
+  TrajectorySample t;
+  t.state = a.state;
+  t.parameter = 0.05;
+  t.sliding = "carrier_washer";
+  const std::string trajectory = trajectory_csv({t}, "friction_coefficient", true);
+  EXPECT_EQ(trajectory.substr(0, trajectory.find('\n')),
+            "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,friction_coefficient,sliding");
+  EXPECT_NE(trajectory.find(",150,545,0.05,carrier_washer\n"), std::string::npos) << trajectory;
+
+  DistressRow row{953.0, std::nullopt, 400.0, 399.0, 401.0, 400.5, "runaway", "washer_gear"};
+  EXPECT_EQ(distress_csv({row}, "", true), "speed_rad_s,sliding,W_d_N,bracket_low_N,bracket_high_N,fold_N,method\n"
+                                           "953,washer_gear,400,399,401,400.5,runaway\n");
+}
+
+TEST(SlidingTable, OneRowPerConfigurationWithTheChoiceMarked) {
+  SlidingRow row;
+  row.solved.state.speed = 545.0;
+  row.solved.state.load = 200.0;
+  row.solved.state.fluid_force = 190.0;
+  row.solved.state.fluid_share = 0.95;
+  row.solved.state.contact_share = 0.05;
+  row.solved.state.torque = 0.02;
+  row.solved.state.f_eff = 0.011;
+  row.solved.state.hmin_over_sigma = 3.5;
+  row.solved.state.washer_mean_temperature = 273.15 + 40.0;
+  row.solved.sliding = "carrier_washer";
+  row.film_area = 3.0793e-4;
+  row.chosen = true;
+  EXPECT_EQ(sliding_csv({row}),
+            "speed_rad_s,load_N,sliding,film_area_m2,fluid_force_N,fluid_share,contact_share,torque_Nm,f_eff,"
+            "hmin_over_sigma,T_mean_C,chosen\n"
+            "545,200,carrier_washer,0.00030793,190,0.95,0.05,0.02,0.011,3.5,40,1\n");
+  row.solved.state.torque = NAN;
+  EXPECT_THROW(sliding_csv({row}), std::runtime_error);
 }
 
 }  // namespace

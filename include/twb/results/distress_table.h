@@ -1,7 +1,7 @@
 // distress.csv: one row per distress search (issue contract):
-//   speed_rad_s, <param>, W_d_N, bracket_low_N, bracket_high_N, fold_N, method
-// <param> is the distress map's second axis (e.g. friction_coefficient); the column is
-// left out when the map has none. A value that does not exist (no fold on the branch,
+//   speed_rad_s, <param>, sliding, W_d_N, bracket_low_N, bracket_high_N, fold_N, method
+// <param> is the study's second axis (e.g. friction_coefficient), sliding the film that
+// slides (sliding_choice); each column is left out when the study has none. A value that does not exist (no fold on the branch,
 // no distress below the highest load searched) is an empty cell, never NaN.
 #pragma once
 
@@ -19,9 +19,11 @@ struct DistressRow {
   std::optional<double> bracket_high;     // lowest load whose step ran away, N
   std::optional<double> fold_load;        // turning point of the steady branch, N
   std::string method;                     // how W_d was decided (see distress_search.h)
+  std::string sliding;                    // sliding_choice: "carrier_washer" or "washer_gear"
 };
 
 // parameter_column: e.g. "friction_coefficient", "gear_tilt_rad"; empty for none.
-std::string distress_csv(const std::vector<DistressRow>& rows, const std::string& parameter_column);
+std::string distress_csv(const std::vector<DistressRow>& rows, const std::string& parameter_column,
+                         bool sliding_column = false);
 
 }  // namespace twb

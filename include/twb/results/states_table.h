@@ -1,6 +1,7 @@
 // states.csv: one row per solved state, units in the column names (issue contract).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,9 +15,16 @@ struct SolvedState {
   long iterations = 0;
   double residual = 0.0;
   double wall_ms = 0.0;
+  // Which run of a study the state belongs to, when the study runs several: the value
+  // of its parameter (SI) and the film that slides ("carrier_washer", "washer_gear").
+  std::optional<double> parameter;
+  std::string sliding;
 };
 
-std::string states_csv(const std::vector<SolvedState>& rows);
+// parameter_column (e.g. "friction_coefficient"; empty for none) and sliding_column
+// add the columns that tell a study's runs apart, after speed_rad_s.
+std::string states_csv(const std::vector<SolvedState>& rows, const std::string& parameter_column = {},
+                       bool sliding_column = false);
 
 // The short table printed after a run.
 std::string states_summary(const std::vector<SolvedState>& rows);

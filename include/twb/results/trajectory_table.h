@@ -1,7 +1,10 @@
 // trajectory.csv: the pseudo-time thermal transient after a load step (issue contract):
-//   t_s, T_mean_C, T_max_C, hmin_over_sigma, contact_share, f_eff, load_N
+//   t_s, T_mean_C, T_max_C, hmin_over_sigma, contact_share, f_eff, load_N, speed_rad_s
+// then, for a study of several runs, the columns that tell them apart (the parameter,
+// the sliding film); each run's transient starts again at t_s = 0.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,8 +15,11 @@ namespace twb {
 struct TrajectorySample {
   double time = 0.0;  // s of pseudo-time since the step
   BearingState state;
+  std::optional<double> parameter;  // as in SolvedState
+  std::string sliding;
 };
 
-std::string trajectory_csv(const std::vector<TrajectorySample>& samples);
+std::string trajectory_csv(const std::vector<TrajectorySample>& samples, const std::string& parameter_column = {},
+                           bool sliding_column = false);
 
 }  // namespace twb
