@@ -55,20 +55,25 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
   outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
   const std::filesystem::path dir(out_dir);
-  twb::write_file_atomically(dir / "states.csv", twb::states_csv(outcome.states));
+  const std::string& parameter = outcome.parameter_column;
+  const bool sliding = outcome.sliding_column;
+  twb::write_file_atomically(dir / "states.csv", twb::states_csv(outcome.states, parameter, sliding));
   const twb::StudyType type = scene.study.type;
-  if (type == twb::StudyType::load_sweep || type == twb::StudyType::distress_map)
-    twb::write_file_atomically(dir / "distress.csv", twb::distress_csv(outcome.distress, outcome.parameter_column));
+  if (type != twb::StudyType::point && type != twb::StudyType::transient)
+    twb::write_file_atomically(dir / "distress.csv", twb::distress_csv(outcome.distress, parameter, sliding));
+  if (type == twb::StudyType::sliding_choice)
+    twb::write_file_atomically(dir / "sliding.csv", twb::sliding_csv(outcome.sliding));
   if (!outcome.trajectory.empty())
-    twb::write_file_atomically(dir / "trajectory.csv", twb::trajectory_csv(outcome.trajectory));
+    twb::write_file_atomically(dir / "trajectory.csv", twb::trajectory_csv(outcome.trajectory, parameter, sliding));
   const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message
                                                     : (outcome.message.empty() ? "ok" : outcome.message);
   twb::write_file_atomically(dir / "run.json", twb::run_json(path, twb::describe_scene(scene), model.layout(),
                                                              outcome.timings, verdict));
   std::cout << twb::states_summary(outcome.states);
   for (const twb::DistressRow& d : outcome.distress)
-    std::cout << fmt::format("distress at {:.6g} rad/s{}: {} ({})\n", d.speed,
+    std::cout << fmt::format("distress at {:.6g} rad/s{}{}: {} ({})\n", d.speed,
                              d.parameter ? fmt::format(", {} = {:.6g}", outcome.parameter_column, *d.parameter) : "",
+                             d.sliding.empty() ? "" : ", sliding " + d.sliding,
                              d.distress_load ? fmt::format("W_d = {:.2f} N", *d.distress_load) : "none",
                              d.method);
   std::cout << fmt::format("results: {}  ({} states, {:.1f} ms)\n", dir.string(), outcome.states.size(),

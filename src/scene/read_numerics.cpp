@@ -46,7 +46,7 @@ double read_bracket_width(const MapReader& study, double fallback) {
                         fallback);
 }
 
-// The second axis of a distress map: `parameter: {name: friction_coefficient, values: [...]}`.
+// The second axis of a distress map or load sweep: `parameter: {name: friction_coefficient, values: [...]}`.
 void read_map_parameter(const MapReader& study, Study& s, const Scene& scene) {
   if (!study.has("parameter")) return;
   const MapReader p = study.map("parameter", {"name", "values"});
@@ -72,6 +72,30 @@ void read_map_parameter(const MapReader& study, Study& s, const Scene& scene) {
   }
 }
 
+// The speeds of one search each: `speeds: [136 rad/s, 545 rad/s]`.
+void read_speeds(const MapReader& study, Study& s) {
+  const Node speeds = study.get("speeds", "a list of speeds, e.g. [136 rad/s, 545 rad/s]");
+  const std::vector<Node> items = speeds.list("speeds, e.g. [136 rad/s, 545 rad/s]");
+  if (items.empty())
+    speeds.fail(fmt::format("{}: the list is empty; give at least one speed, e.g. "
+                            "[136 rad/s, 545 rad/s]",
+                            speeds.path()));
+  for (const Node& speed : items) s.speeds.push_back(speed.quantity(si::angular_speed, non_negative));
+}
+
+// A load grid (load_sweep, sliding_choice): the range, its number of loads, and the
+// speeds, operating.speed when the study names none.
+void read_load_grid(const MapReader& study, Scene& out) {
+  Study& s = out.study;
+  read_load_range(study, s, "");
+  s.load_steps = study.get("load_steps", "a whole number >= 2").integer(2, "the number of loads, both ends included");
+  if (study.has("speeds"))
+    read_speeds(study, s);
+  else
+    s.speeds = {out.operating.speed};
+  s.bracket_width = read_bracket_width(study, s.bracket_width);
+}
+
 void read_study(const MapReader& scene, Scene& out) {
   const MapReader study = scene.map("study", {"type", "load_start", "load_end", "load_steps", "speeds",
                                               "parameter", "bracket_width", "duration"});
@@ -93,24 +117,21 @@ void read_study(const MapReader& scene, Scene& out) {
       s.load_end = study.quantity("load_end", si::force, positive);
       s.duration = study.quantity("duration", si::time, non_negative, 0.0);
       break;
-    case StudyType::load_sweep: {
-      study.restrict_to({"type", "load_start", "load_end", "load_steps", "bracket_width"}, "with type: load_sweep");
-      read_load_range(study, s, "");
-      s.load_steps = study.get("load_steps", "a whole number >= 2")
-                         .integer(2, "the number of loads, both ends included");
-      s.bracket_width = read_bracket_width(study, s.bracket_width);
+    case StudyType::load_sweep:
+      study.restrict_to({"type", "load_start", "load_end", "load_steps", "speeds", "parameter", "bracket_width"},
+                        "with type: load_sweep");
+      read_load_grid(study, out);
+      read_map_parameter(study, s, out);
       break;
-    }
+    case StudyType::sliding_choice:
+      study.restrict_to({"type", "load_start", "load_end", "load_steps", "speeds", "bracket_width"},
+                        "with type: sliding_choice");
+      read_load_grid(study, out);
+      break;
     case StudyType::distress_map: {
       study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width"},
                         "with type: distress_map");
-      const Node speeds = study.get("speeds", "a list of speeds, e.g. [136 rad/s, 545 rad/s]");
-      const std::vector<Node> items = speeds.list("speeds, e.g. [136 rad/s, 545 rad/s]");
-      if (items.empty())
-        speeds.fail(fmt::format("{}: the list is empty; give at least one speed, e.g. "
-                                "[136 rad/s, 545 rad/s]",
-                                speeds.path()));
-      for (const Node& speed : items) s.speeds.push_back(speed.quantity(si::angular_speed, non_negative));
+      read_speeds(study, s);
       read_load_range(study, s, " (distress is searched between them)");
       read_map_parameter(study, s, out);
       s.bracket_width = read_bracket_width(study, s.bracket_width);

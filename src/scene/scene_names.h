@@ -25,9 +25,10 @@ inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
 inline constexpr EnumNames<FrictionLaw, 2> kFrictionLaws{
     {"empirical", "constant"}, {FrictionLaw::empirical, FrictionLaw::constant}};
 
-inline constexpr EnumNames<StudyType, 4> kStudyTypes{
-    {"point", "load_sweep", "distress_map", "transient"},
-    {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient}};
+inline constexpr EnumNames<StudyType, 5> kStudyTypes{
+    {"point", "load_sweep", "distress_map", "transient", "sliding_choice"},
+    {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient,
+     StudyType::sliding_choice}};
 
 inline constexpr EnumNames<MapParameter, 3> kMapParameters{
     {"friction_coefficient", "gear_tilt", "roughness"},

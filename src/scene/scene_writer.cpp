@@ -145,23 +145,24 @@ void write_numerics(Writer& w, const Scene& s) {
     w.entry(1, "load_start", quantity(st.load_start, "N"));
     w.entry(1, "load_end", quantity(st.load_end, "N"));
   }
-  if (st.type == StudyType::load_sweep) w.entry(1, "load_steps", fmt::format("{}", st.load_steps));
-  if (st.type == StudyType::distress_map) {
+  const bool grid = st.type == StudyType::load_sweep || st.type == StudyType::sliding_choice;
+  if (grid) w.entry(1, "load_steps", fmt::format("{}", st.load_steps));
+  if (grid || st.type == StudyType::distress_map) {
     std::string speeds;
     for (double speed : st.speeds) speeds += (speeds.empty() ? "" : ", ") + quantity(speed, "rad/s");
     w.entry(1, "speeds", fmt::format("[{}]", speeds));
-    if (st.parameter != MapParameter::none) {
-      const char* unit = st.parameter == MapParameter::gear_tilt   ? "rad"
-                         : st.parameter == MapParameter::roughness ? "m"
-                                                                   : "1";
-      std::string values;
-      for (double v : st.parameter_values) values += (values.empty() ? "" : ", ") + quantity(v, unit);
-      w.line(1, "parameter:");
-      w.entry(2, "name", std::string(kMapParameters.name(st.parameter)));
-      w.entry(2, "values", fmt::format("[{}]", values));
-    }
   }
-  if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map)
+  if (st.parameter != MapParameter::none) {
+    const char* unit = st.parameter == MapParameter::gear_tilt   ? "rad"
+                       : st.parameter == MapParameter::roughness ? "m"
+                                                                 : "1";
+    std::string values;
+    for (double v : st.parameter_values) values += (values.empty() ? "" : ", ") + quantity(v, unit);
+    w.line(1, "parameter:");
+    w.entry(2, "name", std::string(kMapParameters.name(st.parameter)));
+    w.entry(2, "values", fmt::format("[{}]", values));
+  }
+  if (grid || st.type == StudyType::distress_map)
     w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
   if (st.type == StudyType::transient) w.entry(1, "duration", quantity(st.duration, "s"));
 
@@ -171,6 +172,8 @@ void write_numerics(Writer& w, const Scene& s) {
 }
 
 }  // namespace
+
+std::string_view scene_name(SlidingFilm film) { return kSlidingFilms.name(film); }
 
 std::string describe_scene(const Scene& scene) {
   Writer w;

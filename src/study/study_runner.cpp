@@ -1,13 +1,16 @@
 #include "twb/study/study_runner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "load_step_march.h"
 #include "study_support.h"
+#include "twb/scene/scene_loader.h"
 #include "twb/solver/steady_solver.h"
 #include "twb/study/distress_search.h"
 
@@ -41,24 +44,22 @@ void run_point(BearingModel& model, StudyOutcome& out) {
   out.states.push_back(record(model, u, rep));
 }
 
-void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
-  const Study& st = model.scene().study;
-  DistressSearchSettings s;
-  s.load_start = st.load_start;
-  s.load_end = st.load_end;
-  s.bracket_width = st.bracket_width;
-  for (int k = 0; k < st.load_steps; ++k)
-    s.grid.push_back(st.load_start + (st.load_end - st.load_start) * k / (st.load_steps - 1));
-  s.continue_past_distress = true;
-  DistressSearch found = search_distress(model, s, progress);
-  out.states = std::move(found.states);
-  out.trajectory = std::move(found.runaway);
-  out.solver_failed = found.failed;
-  out.message = found.message;
-  if (!found.failed) out.distress.push_back(found.row);
+// The name of a parameter's column in the results, with its unit.
+std::string parameter_column(MapParameter p) {
+  switch (p) {
+    case MapParameter::friction_coefficient:
+      return "friction_coefficient";
+    case MapParameter::gear_tilt:
+      return "gear_tilt_rad";
+    case MapParameter::roughness:
+      return "roughness_Rq_m";
+    case MapParameter::none:
+      break;
+  }
+  return {};
 }
 
-// Applies a distress map's second parameter to a scene.
+// Applies a study's second parameter to a scene.
 Scene with_parameter(Scene scene, MapParameter p, double value) {
   switch (p) {
     case MapParameter::friction_coefficient:
@@ -87,52 +88,167 @@ Scene with_parameter(Scene scene, MapParameter p, double value) {
   return scene;
 }
 
-void run_distress_map(const BearingModel& base, StudyOutcome& out, const ProgressReport& progress) {
-  const Study& st = base.scene().study;
-  const bool axis = st.parameter != MapParameter::none;
-  if (axis)
-    out.parameter_column = st.parameter == MapParameter::gear_tilt   ? "gear_tilt_rad"
-                           : st.parameter == MapParameter::roughness ? "roughness_Rq_m"
-                                                                     : "friction_coefficient";
-  const std::vector<double> values = axis ? st.parameter_values : std::vector<double>{0.0};
-  const std::size_t total = values.size() * st.speeds.size();
+// One configuration of the bearing a study searches at every speed: the scene's own
+// (no scene here), a parameter value, or a sliding film.
+struct Variant {
+  std::optional<Scene> scene;
+  std::optional<double> parameter;
+  std::string sliding;
+  std::string label;  // for progress lines, e.g. ", friction_coefficient = 0.1"
+};
+
+// The scene's own configuration, or one per value of its second parameter.
+std::vector<Variant> parameter_variants(const Scene& scene, std::string& column) {
+  const Study& st = scene.study;
+  column = parameter_column(st.parameter);
+  if (st.parameter == MapParameter::none) return {Variant{}};
+  std::vector<Variant> out;
+  for (double value : st.parameter_values)
+    out.push_back({with_parameter(scene, st.parameter, value), value, {}, fmt::format(", {} = {:.6g}", column, value)});
+  return out;
+}
+
+// Called after each search with the speed's index in study.speeds.
+using SearchResult = std::function<void(const Variant&, std::size_t speed, const BearingModel&, DistressSearch&)>;
+
+// One distress search per variant and speed, with progress lines "[k/n] ..." and the
+// time left; a search that throws becomes a failed row, so that the study's other
+// searches are kept.
+void run_searches(BearingModel& base, const std::vector<Variant>& variants, const DistressSearchSettings& settings,
+                  const ProgressReport& progress, const SearchResult& take) {
+  const std::vector<double>& speeds = base.scene().study.speeds;
+  const std::size_t total = variants.size() * speeds.size();
   std::size_t done = 0;
   const auto t0 = Clock::now();
-  for (double value : values) {
-    BearingModel model(axis ? with_parameter(base.scene(), st.parameter, value) : base.scene());
-    for (double speed : st.speeds) {
+  for (const Variant& variant : variants) {
+    std::optional<BearingModel> own;
+    if (variant.scene) own.emplace(*variant.scene);
+    BearingModel& model = own ? *own : base;
+    for (std::size_t k = 0; k < speeds.size(); ++k) {
+      const double speed = speeds[k];
       model.set_speed(speed);
-      if (progress)
-        progress(fmt::format("[{}/{}] {:.6g} rad/s{}", done + 1, total, speed,
-                             axis ? fmt::format(", {} = {:.6g}", out.parameter_column, value) : ""));
-      DistressSearchSettings s;
-      s.load_start = st.load_start;
-      s.load_end = st.load_end;
-      s.bracket_width = st.bracket_width;
+      if (progress) progress(fmt::format("[{}/{}] {:.6g} rad/s{}", done + 1, total, speed, variant.label));
       DistressSearch found;
       try {
-        found = search_distress(model, s, progress);
+        found = search_distress(model, settings, progress);
       } catch (const std::exception& e) {
-        // One point that fails must not lose the map's other rows.
+        found = DistressSearch{};
         found.failed = true;
         found.row.speed = speed;
         found.row.method = std::string("solver failure: ") + e.what();
         found.message = found.row.method;
       }
-      if (axis) found.row.parameter = value;
-      out.distress.push_back(found.row);
-      // The cool branch's states are results too (f_eff, temperature against load).
-      for (std::size_t k = 0; k < found.cool_states; ++k) out.states.push_back(found.states[k]);
-      if (found.failed) out.message += (out.message.empty() ? "" : "; ") + found.message;
+      found.row.parameter = variant.parameter;
+      found.row.sliding = variant.sliding;
+      for (SolvedState& state : found.states) {
+        state.parameter = variant.parameter;
+        state.sliding = variant.sliding;
+      }
+      for (TrajectorySample& sample : found.runaway) {
+        sample.parameter = variant.parameter;
+        sample.sliding = variant.sliding;
+      }
+      take(variant, k, model, found);
       ++done;
       if (progress) {
-        const double per_point = elapsed_ms(t0) / double(done);
+        const double per_search = elapsed_ms(t0) / double(done);
         progress(fmt::format("[{}/{}] done: W_d = {} ({}); about {:.0f} s left", done, total,
                              found.row.distress_load ? fmt::format("{:.2f} N", *found.row.distress_load) : "none",
-                             found.row.method, per_point * double(total - done) / 1000.0));
+                             found.row.method, per_search * double(total - done) / 1000.0));
       }
     }
   }
+}
+
+std::vector<double> load_grid(const Study& st) {
+  std::vector<double> grid;
+  for (int k = 0; k < st.load_steps; ++k)
+    grid.push_back(st.load_start + (st.load_end - st.load_start) * k / (st.load_steps - 1));
+  return grid;
+}
+
+DistressSearchSettings grid_settings(const Study& st) {
+  DistressSearchSettings s;
+  s.load_start = st.load_start;
+  s.load_end = st.load_end;
+  s.bracket_width = st.bracket_width;
+  s.grid = load_grid(st);
+  s.continue_past_distress = true;
+  return s;
+}
+
+void keep_failure(StudyOutcome& out, const DistressSearch& found) {
+  if (!found.failed && found.message.empty()) return;
+  out.solver_failed = out.solver_failed || found.failed;
+  out.message += (out.message.empty() ? "" : "; ") + found.message;
+}
+
+void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
+  const std::vector<Variant> variants = parameter_variants(model.scene(), out.parameter_column);
+  run_searches(model, variants, grid_settings(model.scene().study), progress,
+               [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
+                 out.states.insert(out.states.end(), found.states.begin(), found.states.end());
+                 out.trajectory.insert(out.trajectory.end(), found.runaway.begin(), found.runaway.end());
+                 out.distress.push_back(found.row);
+                 keep_failure(out, found);
+               });
+}
+
+void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress) {
+  const Study& st = base.scene().study;
+  const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
+  DistressSearchSettings s;
+  s.load_start = st.load_start;
+  s.load_end = st.load_end;
+  s.bracket_width = st.bracket_width;
+  run_searches(base, variants, s, progress, [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
+    out.distress.push_back(found.row);
+    // The cool branch's states are results too (f_eff, temperature against load).
+    out.states.insert(out.states.end(), found.states.begin(),
+                      found.states.begin() + std::ptrdiff_t(found.cool_states));
+    // One point that fails must not lose the map's other rows.
+    if (found.failed) out.message += (out.message.empty() ? "" : "; ") + found.message;
+  });
+}
+
+// Which film slides (MODEL.md section 2): both configurations swept over the load grid
+// at every speed, each continued past its own distress; at every grid load the one of
+// lower friction torque is chosen, the paper's assumption that the washer settles where
+// the friction loss is least.
+void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressReport& progress) {
+  const Study& st = base.scene().study;
+  out.sliding_column = true;
+  std::vector<Variant> variants;
+  for (SlidingFilm film : {SlidingFilm::carrier_washer, SlidingFilm::washer_gear}) {
+    Scene scene = base.scene();
+    scene.operating.sliding = film;
+    const std::string name(scene_name(film));
+    variants.push_back({std::move(scene), std::nullopt, name, ", sliding " + name});
+  }
+  const std::vector<double> grid = load_grid(st);
+  // Per speed and grid load, the state of each configuration that reached it.
+  std::vector<std::vector<std::vector<SlidingRow>>> at(st.speeds.size(), std::vector<std::vector<SlidingRow>>(grid.size()));
+  run_searches(base, variants, grid_settings(st), progress,
+               [&](const Variant&, std::size_t speed, const BearingModel& model, DistressSearch& found) {
+    const auto film = std::find_if(model.films().begin(), model.films().end(), [](const Film& f) { return f.sliding; });
+    const double area = film->mesh.area();
+    for (const SolvedState& state : found.states)
+      for (std::size_t k = 0; k < grid.size(); ++k)
+        if (std::abs(state.state.load - grid[k]) <= 1e-9 * grid[k]) at[speed][k].push_back({state, area, false});
+    out.trajectory.insert(out.trajectory.end(), found.runaway.begin(), found.runaway.end());
+    out.distress.push_back(found.row);
+    keep_failure(out, found);
+  });
+  for (auto& speed : at)
+    for (std::vector<SlidingRow>& rows : speed) {
+      if (rows.empty()) continue;
+      auto best = std::min_element(rows.begin(), rows.end(), [](const SlidingRow& a, const SlidingRow& b) {
+        return a.solved.state.torque < b.solved.state.torque;
+      });
+      best->chosen = true;
+      out.states.push_back(best->solved);
+      out.sliding.insert(out.sliding.end(), rows.begin(), rows.end());
+    }
 }
 
 void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
@@ -180,6 +296,9 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress) {
       break;
     case StudyType::transient:
       run_transient(model, out, progress);
+      break;
+    case StudyType::sliding_choice:
+      run_sliding_choice(model, out, progress);
       break;
   }
   out.timings.states = int(out.states.size());

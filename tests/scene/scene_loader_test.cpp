@@ -112,6 +112,22 @@ TEST(SceneDefaults, SummitDensityGivenDirectlySetsEtaRSigma) {
   EXPECT_NEAR(scene.asperities.eta_r_sigma, 1e10 * 10e-6 * 0.5e-6, 1e-15);
 }
 
+// A load grid without `speeds` runs at operating.speed; with them, at each of them.
+TEST(SceneDefaults, LoadSweepSpeedsDefaultToTheOperatingSpeed) {
+  const std::string sweep = "study: {type: load_sweep, load_start: 100 N, load_end: 1750 N, load_steps: 34";
+  const TempScene plain(std::string(kMinimalScene) + sweep + "}\n");
+  const Scene scene = load_scene(plain.path());
+  EXPECT_EQ(scene.study.speeds, std::vector<double>{scene.operating.speed});
+  EXPECT_EQ(scene.study.parameter, MapParameter::none);
+  EXPECT_EQ(load_scene(plain.path(), {"operating.speed=953 rad/s"}).study.speeds, std::vector<double>{953.0});
+  const TempScene listed(std::string(kMinimalScene) + sweep + ", speeds: [136 rad/s, 1367 rad/s]}\n");
+  EXPECT_EQ(load_scene(listed.path()).study.speeds, (std::vector<double>{136.0, 1367.0}));
+  const TempScene choice(std::string(kMinimalScene) +
+                         "study: {type: sliding_choice, load_start: 100 N, load_end: 1750 N, load_steps: 34}\n");
+  EXPECT_EQ(load_scene(choice.path()).study.type, StudyType::sliding_choice);
+  EXPECT_EQ(load_scene(choice.path()).study.speeds, std::vector<double>{load_scene(choice.path()).operating.speed});
+}
+
 struct RoundTripCase {
   std::string name;
   std::string text;
@@ -153,6 +169,15 @@ INSTANTIATE_TEST_SUITE_P(
                       std::string(kMinimalScene) +
                           "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
                           "        parameter: {name: roughness, values: [0.3 um, 0.515 um, 1 um]}}\n"},
+        RoundTripCase{"load_sweep_over_speeds_and_friction",
+                      std::string(kMinimalScene) +
+                          "friction: {law: constant, coefficient: 0.1}\n"
+                          "study: {type: load_sweep, speeds: [136 rad/s, 953 rad/s], load_start: 100 N, load_end: 1750 N,\n"
+                          "        load_steps: 34, parameter: {name: friction_coefficient, values: [0.05, 0.2]}}\n"},
+        RoundTripCase{"sliding_choice",
+                      std::string(kMinimalScene) +
+                          "study: {type: sliding_choice, speeds: [545 rad/s, 953 rad/s], load_start: 100 N,\n"
+                          "        load_end: 1750 N, load_steps: 34, bracket_width: 0.004}\n"},
         RoundTripCase{"transient_load_step",
                       with_thermal(kMinimalScene) +
                           "study: {type: transient, load_start: 150 N, load_end: 0.2 kN, duration: 2 min}\n"},

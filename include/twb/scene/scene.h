@@ -21,9 +21,11 @@ enum class ViscosityModel { roelands, constant };
 
 enum class FrictionLaw { constant, empirical };
 
-enum class StudyType { point, load_sweep, distress_map, transient };
+// sliding_choice: both sliding configurations over a load grid, the one of lower
+// friction torque kept (MODEL.md section 2, the paper's "Component Rotational Speed").
+enum class StudyType { point, load_sweep, distress_map, transient, sliding_choice };
 
-// The optional second axis of a distress map (besides speed).
+// The optional second axis of a distress map or load sweep (besides speed).
 // roughness: the Rq of every surface (see docs/scenes.md for how the texture scales).
 enum class MapParameter { none, friction_coefficient, gear_tilt, roughness };
 
@@ -104,13 +106,15 @@ struct SolverSettings {
 
 struct Study {
   StudyType type = StudyType::point;
-  // load_sweep and distress_map: the load range continued over; transient: the load
-  // before (load_start) and after (load_end) the step.
+  // load_sweep, distress_map, sliding_choice: the load range continued over; transient:
+  // the load before (load_start) and after (load_end) the step.
   double load_start = 0.0;  // N
   double load_end = 0.0;    // N
-  int load_steps = 0;       // load_sweep: states on the requested grid, ends included
-  // distress_map
+  int load_steps = 0;       // load_sweep, sliding_choice: states on the requested grid, ends included
+  // load_sweep, distress_map, sliding_choice: the speeds, one search per speed (a load
+  // sweep without `speeds` in the file gets operating.speed)
   std::vector<double> speeds;  // rad/s
+  // load_sweep, distress_map: the second axis
   MapParameter parameter = MapParameter::none;
   std::vector<double> parameter_values;  // SI (dimensionless, rad, m)
   // Distress bracket refined by bisection to (high − low)/high <= bracket_width.

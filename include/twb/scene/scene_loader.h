@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "twb/scene/scene.h"
@@ -18,5 +19,9 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 // The resolved scene as a scene file: every default filled in, values in SI written as
 // "value unit" strings, so that loading the text back gives the same Scene.
 std::string describe_scene(const Scene& scene);
+
+// How the scene file spells a sliding film ("carrier_washer", "washer_gear"), for the
+// results that name it.
+std::string_view scene_name(SlidingFilm film);
 
 }  // namespace twb

@@ -9,6 +9,7 @@
 #include "twb/model/bearing_model.h"
 #include "twb/results/distress_table.h"
 #include "twb/results/run_record.h"
+#include "twb/results/sliding_table.h"
 #include "twb/results/states_table.h"
 #include "twb/results/trajectory_table.h"
 
@@ -16,9 +17,12 @@ namespace twb {
 
 struct StudyOutcome {
   std::vector<SolvedState> states;
-  std::vector<DistressRow> distress;  // load_sweep, distress_map
-  std::string parameter_column;       // distress_map's second axis, e.g. "friction_coefficient"
-  std::vector<TrajectorySample> trajectory;  // transient; load_sweep: the first step past distress
+  std::vector<DistressRow> distress;  // load_sweep, distress_map, sliding_choice: one row per search
+  std::string parameter_column;       // the study's second axis, e.g. "friction_coefficient"
+  bool sliding_column = false;        // sliding_choice: rows name their sliding film
+  // transient; load_sweep, sliding_choice: the first step past distress of each search
+  std::vector<TrajectorySample> trajectory;
+  std::vector<SlidingRow> sliding;    // sliding_choice: both configurations at every grid load
   bool solver_failed = false;  // a state the study needed could not be solved
   std::string message;
   RunTimings timings;
