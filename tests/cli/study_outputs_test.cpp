@@ -3,6 +3,7 @@
 // exits 0 (a distress found is a result, not a failure).
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -69,6 +70,70 @@ TEST(StudyOutputs, LoadSweepWritesStatesDistressAndTheRunaway) {
   ASSERT_EQ(distress.size(), 2u);
   EXPECT_NE(distress[1].find("fold at"), std::string::npos) << distress[1];
   EXPECT_GT(lines_of(dir / "trajectory.csv").size(), 10u);
+  fs::remove_all(dir);
+}
+
+std::string header(const fs::path& p) {
+  const auto rows = lines_of(p);
+  return rows.empty() ? std::string() : rows.front();
+}
+
+// A shipped load-grid scene cut to 100, 200 and 300 N at the given speeds.
+int run_cut(const std::string& scene, const fs::path& dir, const std::string& speeds) {
+  return run_twb(scene, dir, "--set 'study.speeds=[" + speeds + "]' --set study.load_end='300 N' --set study.load_steps=3");
+}
+
+// The paper's four load sweeps, cut to 100-300 N at two speeds: every state names its
+// speed, one distress row per speed, the runaway's trajectory names its speed.
+TEST(StudyOutputs, PaperLoadSweepsWriteEverySpeed) {
+  const fs::path dir = scratch("paper_sweeps");
+  ASSERT_EQ(run_cut("paper_load_sweeps.yaml", dir, "136 rad/s, 545 rad/s"), 0);
+  const auto states = lines_of(dir / "states.csv");
+  EXPECT_EQ(states[0].rfind("load_N,speed_rad_s,T_mean_C,", 0), 0u) << states[0];
+  EXPECT_TRUE(std::any_of(states.begin(), states.end(), [](const std::string& r) { return r.rfind("300,136,", 0) == 0; }));
+  EXPECT_TRUE(std::any_of(states.begin(), states.end(), [](const std::string& r) { return r.rfind("300,545,", 0) == 0; }));
+  const auto distress = lines_of(dir / "distress.csv");
+  ASSERT_EQ(distress.size(), 3u);
+  EXPECT_EQ(distress[1].rfind("136,", 0), 0u);
+  EXPECT_EQ(distress[2].rfind("545,", 0), 0u);
+  EXPECT_EQ(header(dir / "trajectory.csv"), "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s");
+  fs::remove_all(dir);
+}
+
+// Fig. 15's scene at one speed: states, distress rows and trajectory carry the
+// coefficient.
+TEST(StudyOutputs, FrictionCoefficientSweepNamesTheCoefficient) {
+  const fs::path dir = scratch("friction");
+  ASSERT_EQ(run_cut("friction_coefficient.yaml", dir, "136 rad/s"), 0);
+  EXPECT_EQ(header(dir / "states.csv").rfind("load_N,speed_rad_s,friction_coefficient,T_mean_C,", 0), 0u);
+  const auto distress = lines_of(dir / "distress.csv");
+  ASSERT_EQ(distress.size(), 4u);  // three coefficients
+  EXPECT_EQ(distress[0].rfind("speed_rad_s,friction_coefficient,W_d_N,", 0), 0u);
+  EXPECT_EQ(distress[1].rfind("136,0.05,", 0), 0u);
+  EXPECT_EQ(distress[3].rfind("136,0.2,", 0), 0u);
+  for (const std::string& row : lines_of(dir / "states.csv")) EXPECT_EQ(row.find("nan"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// The sliding comparison: sliding.csv has both configurations at every load, one of
+// them chosen; states.csv the chosen one, with its sliding film.
+TEST(StudyOutputs, SlidingChoiceWritesBothConfigurations) {
+  const fs::path dir = scratch("sliding");
+  ASSERT_EQ(run_cut("sliding_choice.yaml", dir, "545 rad/s"), 0);
+  const auto sliding = lines_of(dir / "sliding.csv");
+  ASSERT_EQ(sliding.size(), 7u);
+  EXPECT_EQ(sliding[0],
+            "speed_rad_s,load_N,sliding,film_area_m2,fluid_force_N,fluid_share,contact_share,torque_Nm,f_eff,"
+            "hmin_over_sigma,T_mean_C,chosen");
+  EXPECT_EQ(sliding[1].rfind("545,100,carrier_washer,", 0), 0u);
+  EXPECT_EQ(sliding[2].rfind("545,100,washer_gear,", 0), 0u);
+  const auto states = lines_of(dir / "states.csv");
+  ASSERT_EQ(states.size(), 4u);
+  EXPECT_EQ(states[0].rfind("load_N,speed_rad_s,sliding,T_mean_C,", 0), 0u);
+  const auto distress = lines_of(dir / "distress.csv");
+  ASSERT_EQ(distress.size(), 3u);
+  EXPECT_EQ(distress[1].rfind("545,carrier_washer,", 0), 0u);
+  EXPECT_EQ(distress[2].rfind("545,washer_gear,", 0), 0u);
   fs::remove_all(dir);
 }
 
