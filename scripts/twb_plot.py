@@ -3,7 +3,7 @@
 
     twb_plot.py RESULTS_DIR [RESULTS_DIR ...] [--out FIGDIR] [--format png,svg]
 
-Reads states.csv (required), distress.csv, trajectory.csv and run.json from each
+Reads states.csv (required), distress.csv, trajectory.csv, sliding.csv and run.json from each
 directory, merges the directories (e.g. one load sweep per speed), and writes one file
 per figure and format into FIGDIR (default: RESULTS_DIR/figures of the first
 directory). Prints the files written. Exit status 2 when an input is missing or
@@ -33,6 +33,17 @@ STATE_COLUMNS = (
 TRAJECTORY_COLUMNS = (
     "t_s", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff", "load_N")
 DISTRESS_TAIL = ("W_d_N", "bracket_low_N", "bracket_high_N", "fold_N", "method")
+SLIDING_COLUMNS = (
+    "speed_rad_s", "load_N", "sliding", "film_area_m2", "fluid_force_N", "fluid_share",
+    "contact_share", "torque_Nm", "f_eff", "hmin_over_sigma", "T_mean_C", "chosen")
+# The columns twb adds after the speed when a study runs several configurations: the
+# value of its second parameter, and the film that slides.
+PARAMETER_COLUMNS = ("friction_coefficient", "gear_tilt_rad", "roughness_Rq_m")
+SLIDING_LABELS = {
+    "carrier_washer": "film 1 slides (washer stuck to the gear)",
+    "washer_gear": "film 2 slides (washer stuck to the carrier)",
+}
+LINESTYLES = ("-", "--", "-.", ":")
 FORMATS = ("png", "svg", "pdf")
 DPI = 150
 
@@ -46,6 +57,7 @@ STRIBECK_LABEL = (r"Stribeck number $Z\,N\,/\,P$"
 PARAMETER_FORMATS = {
     "friction_coefficient": "dry friction coefficient {:g}",
     "gear_tilt_rad": r"$\gamma_{{tilt}}$ = {:g} rad",
+    "roughness_Rq_m": r"$R_q$ = {:g} m",
 }
 
 
@@ -108,32 +120,67 @@ def _check_width(path, line, fields, header):
                          f"as in the header, got {len(fields)}")
 
 
-def read_states(path):
-    """Columns of states.csv as float arrays, in file order."""
+def _run_tags(path, line, fields, header):
+    """The run a row belongs to: ((parameter column, value) or None, sliding film or None)."""
+    parameter = next((c for c in header if c in PARAMETER_COLUMNS), None)
+    tag = None
+    if parameter is not None:
+        tag = (parameter, _number(path, line, parameter, fields[header.index(parameter)],
+                                  optional=True))
+    sliding = None
+    if "sliding" in header:
+        sliding = fields[header.index("sliding")].strip()
+        if sliding not in SLIDING_LABELS:
+            raise InputError(f"{path}: line {line}: column 'sliding': expected one of "
+                             f"{', '.join(SLIDING_LABELS)}, got {sliding!r}")
+    return tag, sliding
+
+
+def _read_table(path, required, what, optional=()):
+    """Columns of a twb table as float arrays (optional ones when present), in file
+    order, and each row's run tags."""
     records = _records(path)
-    header = _header(path, records, STATE_COLUMNS, "states.csv")
-    index = {c: header.index(c) for c in STATE_COLUMNS}
-    columns = {c: [] for c in STATE_COLUMNS}
+    header = _header(path, records, required, what)
+    names = list(required) + [c for c in optional if c in header]
+    index = {c: header.index(c) for c in names}
+    columns = {c: [] for c in names}
+    tags = []
     for line, fields in records:
         _check_width(path, line, fields, header)
-        for c in STATE_COLUMNS:
+        for c in names:
             columns[c].append(_number(path, line, c, fields[index[c]]))
-        if columns["converged"][-1] not in (0.0, 1.0):
+        tags.append(_run_tags(path, line, fields, header))
+        if "converged" in columns and columns["converged"][-1] not in (0.0, 1.0):
             raise InputError(f"{path}: line {line}: column 'converged': expected 0 or 1, "
                              f"got {fields[index['converged']].strip()!r}")
-    return {c: np.array(v, dtype=float) for c, v in columns.items()}
+    return {c: np.array(v, dtype=float) for c, v in columns.items()}, tags
+
+
+def read_states(path):
+    """Columns of states.csv as float arrays, in file order, and each state's run tags."""
+    return _read_table(path, STATE_COLUMNS, "states.csv")
 
 
 def read_trajectory(path):
+    # speed_rad_s is optional: twb wrote it only from the multi-speed load sweep on.
+    return _read_table(path, TRAJECTORY_COLUMNS, "trajectory.csv", optional=("speed_rad_s",))
+
+
+def read_sliding(path):
+    """sliding.csv: the sliding choice's rows, as dicts of floats plus 'sliding'."""
     records = _records(path)
-    header = _header(path, records, TRAJECTORY_COLUMNS, "trajectory.csv")
-    index = {c: header.index(c) for c in TRAJECTORY_COLUMNS}
-    columns = {c: [] for c in TRAJECTORY_COLUMNS}
+    header = _header(path, records, SLIDING_COLUMNS, "sliding.csv")
+    rows = []
     for line, fields in records:
         _check_width(path, line, fields, header)
-        for c in TRAJECTORY_COLUMNS:
-            columns[c].append(_number(path, line, c, fields[index[c]]))
-    return {c: np.array(v, dtype=float) for c, v in columns.items()}
+        row = {c: _number(path, line, c, fields[header.index(c)])
+               for c in SLIDING_COLUMNS if c != "sliding"}
+        row["sliding"] = _run_tags(path, line, fields, header)[1]
+        if row["chosen"] not in (0.0, 1.0):
+            raise InputError(f"{path}: line {line}: column 'chosen': expected 0 or 1, "
+                             f"got {fields[header.index('chosen')].strip()!r}")
+        rows.append(row)
+    return rows
 
 
 @dataclass
@@ -145,6 +192,7 @@ class DistressRow:
     high: object
     fold: object
     method: str
+    sliding: object = None  # the sliding film of a sliding choice's row
 
 
 def read_distress(path):
@@ -152,14 +200,18 @@ def read_distress(path):
     try:
         line, header = next(records)
     except StopIteration:
-        raise InputError(f"{path}: line 1: expected the header speed_rad_s[,<parameter>],"
+        raise InputError(f"{path}: line 1: expected the header speed_rad_s[,<parameter>][,sliding],"
                          f"{','.join(DISTRESS_TAIL)}, got an empty file") from None
     header = [h.strip() for h in header]
-    if (len(header) not in (6, 7) or header[0] != "speed_rad_s"
+    middle = header[1:-5]
+    sliding = bool(middle) and middle[-1] == "sliding"
+    if sliding:
+        middle = middle[:-1]
+    if (len(middle) > 1 or header[0] != "speed_rad_s" or "sliding" in middle
             or tuple(header[-5:]) != DISTRESS_TAIL):
-        raise InputError(f"{path}: line {line}: expected the header speed_rad_s[,<parameter>],"
+        raise InputError(f"{path}: line {line}: expected the header speed_rad_s[,<parameter>][,sliding],"
                          f"{','.join(DISTRESS_TAIL)}, got {','.join(header)}")
-    parameter = header[1] if len(header) == 7 else None
+    parameter = middle[0] if middle else None
     rows = []
     for line, fields in records:
         if len(fields) < len(header):
@@ -175,8 +227,9 @@ def read_distress(path):
         k = len(header) - 5
         w_d, low, high, fold = (_number(path, line, DISTRESS_TAIL[i], fields[k + i], optional=True)
                                 for i in range(4))
+        film = _run_tags(path, line, fields, header)[1] if sliding else None
         rows.append(DistressRow(speed, None if parameter is None else (parameter, value),
-                                w_d, low, high, fold, fields[-1].strip()))
+                                w_d, low, high, fold, fields[-1].strip(), film))
     return rows
 
 
@@ -202,8 +255,11 @@ class Run:
     directory: str
     name: str
     states: dict
+    tags: list = field(default_factory=list)  # per state: (parameter, sliding)
     distress: list = field(default_factory=list)
     trajectory: object = None
+    trajectory_tags: list = field(default_factory=list)
+    sliding: list = field(default_factory=list)
     friction: object = None
 
 
@@ -213,14 +269,18 @@ def read_run(directory):
     states_path = os.path.join(directory, "states.csv")
     if not os.path.isfile(states_path):
         raise InputError(f"{directory}: no states.csv (every twb results directory has one)")
-    run = Run(directory, os.path.basename(os.path.normpath(os.path.abspath(directory))),
-              read_states(states_path))
+    states, tags = read_states(states_path)
+    run = Run(directory, os.path.basename(os.path.normpath(os.path.abspath(directory))), states,
+              tags)
     distress_path = os.path.join(directory, "distress.csv")
     if os.path.isfile(distress_path):
         run.distress = read_distress(distress_path)
     trajectory_path = os.path.join(directory, "trajectory.csv")
     if os.path.isfile(trajectory_path):
-        run.trajectory = read_trajectory(trajectory_path)
+        run.trajectory, run.trajectory_tags = read_trajectory(trajectory_path)
+    sliding_path = os.path.join(directory, "sliding.csv")
+    if os.path.isfile(sliding_path):
+        run.sliding = read_sliding(sliding_path)
     run.friction = friction_setting(os.path.join(directory, "run.json"))
     return run
 
@@ -255,30 +315,67 @@ class Style:
 class Data:
     """All directories merged: one array per states.csv column, plus the rest."""
     states: dict
-    friction: list          # per state: the run's friction label (or None)
+    friction: list          # per state: its friction setting as a label (or None)
+    parameters: list        # per state: (parameter column, value) of its run, or None
     distress: list
     trajectories: list      # (label, columns)
+    sliding: list           # rows of sliding.csv
     speed_style: Style
+
+
+def _split_trajectory(columns, tags):
+    """A trajectory.csv of several runs (speeds, parameter values, sliding films) as one
+    (key, columns) per run, in file order."""
+    keys = []
+    for k, tag in enumerate(tags):
+        speed = speed_key(columns["speed_rad_s"][k]) if "speed_rad_s" in columns else None
+        key = (speed,) + tuple(tag)
+        if key not in keys:
+            keys.append(key)
+    out = []
+    for key in keys:
+        idx = np.array([((speed_key(columns["speed_rad_s"][k]) if "speed_rad_s" in columns else None),)
+                        + tuple(tag) == key for k, tag in enumerate(tags)])
+        out.append((key, {c: v[idx] for c, v in columns.items()}))
+    return out
 
 
 def merge(runs):
     states = {c: np.concatenate([r.states[c] for r in runs]) for c in STATE_COLUMNS}
-    friction = [r.friction for r in runs for _ in range(len(r.states["load_N"]))]
+    parameters = [tag[0] for r in runs for tag in r.tags]
+    # A state of a friction coefficient sweep has its own coefficient; otherwise the
+    # run's friction law (run.json) labels it.
+    friction = [(parameter_label(tag[0]) if tag[0] and tag[0][0] == "friction_coefficient"
+                 else r.friction) for r in runs for tag in r.tags]
     distress = [row for r in runs for row in r.distress]
     trajectories = []
     for r in runs:
         if r.trajectory is None:
             continue
-        parts = []
-        speeds = {speed_key(s) for s in r.states["speed_rad_s"]}
-        if len(speeds) == 1:
-            parts.append(speed_label(next(iter(speeds))))
-        loads = set(r.trajectory["load_N"])
-        if len(loads) == 1:
-            parts.append(f"{next(iter(loads)):g} N")
-        trajectories.append((", ".join(parts) or r.name, r.trajectory))
-    keys = [speed_key(s) for s in states["speed_rad_s"]] + [speed_key(d.speed) for d in distress]
-    return Data(states, friction, distress, trajectories, Style(keys))
+        pieces = _split_trajectory(r.trajectory, r.trajectory_tags)
+        for (speed, parameter, sliding), columns in pieces:
+            parts = []
+            speeds = {speed} if speed is not None else {speed_key(v) for v in r.states["speed_rad_s"]}
+            if len(speeds) == 1:
+                parts.append(speed_label(next(iter(speeds))))
+            if parameter is not None:
+                parts.append(parameter_label(parameter))
+            if sliding is not None:
+                parts.append(SLIDING_LABELS[sliding])
+            loads = set(columns["load_N"])
+            if len(loads) == 1:
+                parts.append(f"{next(iter(loads)):g} N")
+            trajectories.append((", ".join(parts) or r.name, columns))
+    sliding = [row for r in runs for row in r.sliding]
+    keys = ([speed_key(v) for v in states["speed_rad_s"]] + [speed_key(d.speed) for d in distress]
+            + [speed_key(row["speed_rad_s"]) for row in sliding])
+    return Data(states, friction, parameters, distress, trajectories, sliding, Style(keys))
+
+
+def parameter_order(parameters):
+    """The distinct (column, value) runs of the merged states, sorted; None first."""
+    found = {p for p in parameters if p is not None}
+    return sorted(found, key=lambda p: (p[0], -math.inf if p[1] is None else p[1]))
 
 
 def _positive(values):
@@ -289,31 +386,37 @@ def _positive(values):
 
 
 def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
-    """One curve per speed, points joined in order of load; returns whether any point
-    had not converged."""
+    """One curve per speed (and per value of a study's second parameter, in its own
+    line style), points joined in order of load; returns whether any point had not
+    converged."""
     s = data.states
     speeds = np.array([speed_key(v) for v in s["speed_rad_s"]])
+    runs = parameter_order(data.parameters)
+    styles = {p: LINESTYLES[i % len(LINESTYLES)] for i, p in enumerate(runs)}
     any_unconverged = False
     for key in data.speed_style.keys:
-        idx = np.flatnonzero(speeds == key)
-        if idx.size == 0:
-            continue
-        # Several directories may hold the same speed (e.g. one point run per load);
-        # a stable sort keeps the solver's order among equal loads.
-        idx = idx[np.argsort(s["load_N"][idx], kind="stable")]
-        x, y = s[xcol][idx], s[ycol][idx]
-        if logx:
-            x = _positive(x)
-        if logy:
-            y = _positive(y)
-        ok = s["converged"][idx] == 1
-        color, marker = data.speed_style.colors[key], data.speed_style.markers[key]
-        ax.plot(x[ok], y[ok], color=color, marker=marker, markersize=4, linewidth=1.2,
-                label=speed_label(key))
-        if not ok.all():
-            any_unconverged = True
-            ax.plot(x[~ok], y[~ok], linestyle="none", marker=marker, markersize=6,
-                    markerfacecolor="none", markeredgecolor=color)
+        for run in [None] + runs:
+            idx = np.flatnonzero((speeds == key) & np.array([p == run for p in data.parameters],
+                                                            dtype=bool))
+            if idx.size == 0:
+                continue
+            # Several directories may hold the same speed (e.g. one point run per load);
+            # a stable sort keeps the solver's order among equal loads.
+            idx = idx[np.argsort(s["load_N"][idx], kind="stable")]
+            x, y = s[xcol][idx], s[ycol][idx]
+            if logx:
+                x = _positive(x)
+            if logy:
+                y = _positive(y)
+            ok = s["converged"][idx] == 1
+            color, marker = data.speed_style.colors[key], data.speed_style.markers[key]
+            label = speed_label(key) + ("" if run is None else ", " + parameter_label(run))
+            ax.plot(x[ok], y[ok], color=color, marker=marker, markersize=4, linewidth=1.2,
+                    linestyle=styles.get(run, "-"), label=label)
+            if not ok.all():
+                any_unconverged = True
+                ax.plot(x[~ok], y[~ok], linestyle="none", marker=marker, markersize=6,
+                        markerfacecolor="none", markeredgecolor=color)
     if logx:
         ax.set_xscale("log")
     if logy:
@@ -322,12 +425,12 @@ def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
 
 
 def distress_lines(data):
-    """(speed, W_d) for the vertical distress marks on load axes.
+    """(speed, parameter, W_d) for the vertical distress marks on load axes.
 
-    Rows of a distress map with a second parameter are left out: states.csv does not
-    say which parameter value a state was solved with."""
-    return [(speed_key(d.speed), d.w_d) for d in data.distress
-            if d.parameter is None and d.w_d is not None]
+    A sliding choice's rows are left out: its states are the chosen configuration at
+    each load, which may change along the sweep."""
+    return [(speed_key(d.speed), d.parameter, d.w_d) for d in data.distress
+            if d.sliding is None and d.w_d is not None]
 
 
 def finish_legend(ax, unconverged=False, distress=False):
@@ -356,7 +459,7 @@ def figure_vs_load(data, column, ylabel, title, paper_figure, logy=False):
     fig, ax = new_figure(title, paper_figure)
     unconverged = draw_by_speed(ax, data, "load_N", column, logy=logy)
     marks = distress_lines(data)
-    for key, w_d in marks:
+    for key, _, w_d in marks:
         ax.axvline(w_d, color=data.speed_style.colors[key], linestyle=":", linewidth=1.2)
     ax.set_xlabel(LOAD_LABEL)
     ax.set_ylabel(ylabel)
@@ -418,23 +521,31 @@ def parameter_label(parameter):
     return PARAMETER_FORMATS.get(name, name + " = {:g}").format(value)
 
 
+def series_label(key):
+    parameter, sliding = key
+    parts = ([] if parameter is None else [parameter_label(parameter)]) + \
+        ([] if sliding is None else [SLIDING_LABELS[sliding]])
+    return ", ".join(parts) if parts else r"$W_d$"
+
+
 def figure_distress_map(data):
     series = {}
     for d in data.distress:
-        series.setdefault(d.parameter, []).append(d)
+        series.setdefault((d.parameter, d.sliding), []).append(d)
     plottable = [k for k, rows in series.items()
                  if any(r.w_d is not None or r.fold is not None for r in rows)]
     if not plottable:
         return None
-    plottable.sort(key=lambda p: (p is not None, "" if p is None else p[0],
-                                  -math.inf if p is None or p[1] is None else p[1]))
+    plottable.sort(key=lambda k: (k[0] is not None, "" if k[0] is None else k[0][0],
+                                  -math.inf if k[0] is None or k[0][1] is None else k[0][1],
+                                  k[1] or ""))
     style = Style(range(len(plottable)))
     fig, ax = new_figure(r"Distress load $W_d$ vs speed")
     any_fold = False
     for i, key in enumerate(plottable):
         rows = sorted(series[key], key=lambda r: r.speed)
         color, marker = style.colors[i], style.markers[i]
-        label = r"$W_d$" if key is None else parameter_label(key)
+        label = series_label(key)
         found = [r for r in rows if r.w_d is not None]
         if found:
             x = [r.speed for r in found]
@@ -498,6 +609,58 @@ def figure_trajectory(data):
     return fig
 
 
+def figure_sliding(data):
+    """Which film slides: friction torque and lift (the sliding film's fluid force) of
+    both configurations against load, one colour per speed, the chosen configuration
+    (lower torque) filled."""
+    fig, (ax_t, ax_l) = plt.subplots(1, 2, figsize=(11.0, 4.8))
+    films = [f for f in SLIDING_LABELS if any(r["sliding"] == f for r in data.sliding)]
+    styles = {f: LINESTYLES[i] for i, f in enumerate(SLIDING_LABELS)}
+    areas = {}
+    for key in data.speed_style.keys:
+        for film in films:
+            rows = sorted((r for r in data.sliding
+                           if r["sliding"] == film and speed_key(r["speed_rad_s"]) == key),
+                          key=lambda r: r["load_N"])
+            if not rows:
+                continue
+            areas[film] = rows[0]["film_area_m2"]
+            color, marker = data.speed_style.colors[key], data.speed_style.markers[key]
+            load = np.array([r["load_N"] for r in rows])
+            chosen = np.array([r["chosen"] == 1 for r in rows])
+            for ax, column in ((ax_t, "torque_Nm"), (ax_l, "fluid_force_N")):
+                y = np.array([r[column] for r in rows])
+                ax.plot(load, y, color=color, linestyle=styles[film], linewidth=1.2)
+                ax.plot(load[chosen], y[chosen], linestyle="none", marker=marker, markersize=5,
+                        color=color)
+                ax.plot(load[~chosen], y[~chosen], linestyle="none", marker=marker, markersize=5,
+                        markerfacecolor="none", markeredgecolor=color)
+    for ax in (ax_t, ax_l):
+        ax.grid(True, alpha=0.3)
+        ax.set_xlabel(LOAD_LABEL)
+    ax_t.set_ylabel(r"friction torque $T_{frict}$ (N·m)")
+    ax_l.set_ylabel(r"lift: fluid force of the sliding film $F_{fluid}$ (N)")
+    handles = [Line2D([], [], color=data.speed_style.colors[k], marker=data.speed_style.markers[k],
+                      linestyle="none") for k in data.speed_style.keys
+               if any(speed_key(r["speed_rad_s"]) == k for r in data.sliding)]
+    labels = [speed_label(k) for k in data.speed_style.keys
+              if any(speed_key(r["speed_rad_s"]) == k for r in data.sliding)]
+    for film in films:
+        handles.append(Line2D([], [], color="black", linestyle=styles[film]))
+        labels.append(f"{SLIDING_LABELS[film]}, {areas[film] * 1e6:.1f} mm²")
+    handles += [Line2D([], [], color="black", marker="o", linestyle="none"),
+                Line2D([], [], color="black", marker="o", linestyle="none", markerfacecolor="none")]
+    labels += ["chosen: the lower torque", "not chosen"]
+    ax_t.legend(handles, labels, fontsize="small", framealpha=0.85)
+    title = "Which film slides: friction torque and lift of both configurations"
+    if len(areas) == 2:
+        a1, a2 = areas["carrier_washer"], areas["washer_gear"]
+        title += (f"\n(film 2's area is {100 * (a1 - a2) / a1:.1f} % below film 1's, film 1's "
+                  f"{100 * (a1 - a2) / a2:.1f} % above film 2's; cf. the paper's 31 %)")
+    fig.suptitle(title, fontsize="medium")
+    return fig
+
+
 def save(fig, out_dir, stem, formats, written):
     # Two-line axis labels (the Stribeck number's units) would otherwise be cut off.
     fig.tight_layout()
@@ -549,9 +712,13 @@ def make_figures(data, out_dir, formats):
                 where = speed_label(speed_key(d.speed))
                 if d.parameter is not None:
                     where += ", " + parameter_label(d.parameter)
+                if d.sliding is not None:
+                    where += ", " + SLIDING_LABELS[d.sliding]
                 print(f"twb_plot: note: no distress load at {where}: {d.method}", file=sys.stderr)
     if data.trajectories:
         save(figure_trajectory(data), out_dir, "transient_trajectory", formats, written)
+    if data.sliding:
+        save(figure_sliding(data), out_dir, "sliding_comparison", formats, written)
     return written
 
 
@@ -570,7 +737,8 @@ def main(argv=None):
     parser = argparse.ArgumentParser(
         prog="twb_plot.py",
         description="Figures of twb results directories in the layout of Jackson & Green "
-                    "(2006), Figs. 6-15, plus the distress map and the transient trajectory.")
+                    "(2006), Figs. 6-15, plus the distress map, the transient trajectory and the "
+                    "sliding comparison.")
     parser.add_argument("dirs", nargs="+", metavar="RESULTS_DIR",
                         help="a directory written by 'twb run --out'; several are merged")
     parser.add_argument("--out", metavar="FIGDIR",

@@ -44,13 +44,40 @@ def state_rows(speed, loads, unconverged_at=None):
     return rows
 
 
-def trajectory_rows():
+def trajectory_rows(tail=""):
+    """tail: the cells after load_N (speed_rad_s and the run's columns), e.g. ",545"."""
     rows = []
     for k in range(20):
         t = 0.5 * k
         runaway = math.exp(0.4 * t) - 1
         rows.append(f"{t},{30 + 5 * runaway},{40 + 9 * runaway},{max(4.0 - 0.3 * runaway, 0.4)},"
-                    f"{min(0.001 * (1 + runaway), 1.0)},{0.02 + 0.01 * runaway},1200")
+                    f"{min(0.001 * (1 + runaway), 1.0)},{0.02 + 0.01 * runaway},1200{tail}")
+    return rows
+
+
+def with_run_columns(rows, cells):
+    """States rows with run cells (e.g. "0.1," or "washer_gear,") after the speed."""
+    out = []
+    for row in rows:
+        load, speed, rest = row.split(",", 2)
+        out.append(f"{load},{speed},{cells}{rest}")
+    return out
+
+
+SLIDING_HEADER = ("speed_rad_s,load_N,sliding,film_area_m2,fluid_force_N,fluid_share,contact_share,"
+                  "torque_Nm,f_eff,hmin_over_sigma,T_mean_C,chosen")
+
+
+def sliding_rows(speed, loads):
+    """Film 1 (the washer's annulus) lifts more and rubs less than film 2 (the gear's)."""
+    rows = []
+    for load in loads:
+        for film, area, lift in (("carrier_washer", 3.0794e-4, 1.0), ("washer_gear", 2.1357e-4, 0.7)):
+            fluid = lift * load * math.exp(-load / 400.0) * speed / 545.0
+            torque = 0.002 * load * (1.2 - 0.5 * lift * math.exp(-load / 400.0))
+            rows.append(f"{speed},{load},{film},{area},{fluid},{fluid / load},{1 - fluid / load},"
+                        f"{torque},{torque / load / 0.008},{3 * lift},{30 + load / 20},"
+                        f"{1 if film == 'carrier_washer' else 0}")
     return rows
 
 
@@ -167,6 +194,77 @@ class TwbPlotTest(unittest.TestCase):
                       "fold of the steady branch"):
             self.assertIn(label, text)
 
+    def test_load_sweep_over_speeds_and_a_parameter(self):
+        """One directory of a load sweep over speeds and friction coefficients: a curve per
+        (speed, coefficient), Fig. 15 from the states' own coefficients, one transient
+        per speed."""
+        d = os.path.join(self.tmp, "friction_sweep")
+        os.makedirs(d)
+        header = STATES_HEADER.replace("speed_rad_s,", "speed_rad_s,friction_coefficient,")
+        rows = []
+        for f in (0.05, 0.2):
+            for speed in (136, 545):
+                rows += with_run_columns(state_rows(speed, [100, 400, 700, 1000]), f"{f},")
+        write(os.path.join(d, "states.csv"), [header] + rows)
+        write(os.path.join(d, "distress.csv"),
+              ["speed_rad_s,friction_coefficient,W_d_N,bracket_low_N,bracket_high_N,fold_N,method",
+               "136,0.05,,,,,no fold up to 1750 N (gradual heating)",
+               "545,0.05,1117,1110,1125,1119,runaway; fold at 1119 N",
+               "136,0.2,,,,,no fold up to 1750 N (gradual heating)",
+               "545,0.2,900,895,905,902,runaway; fold at 902 N"])
+        write(os.path.join(d, "trajectory.csv"),
+              ["t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,"
+               "friction_coefficient"] + trajectory_rows(",545,0.05") + trajectory_rows(",545,0.2"))
+        run_json(d, {"law": "constant", "coefficient": 0.1})
+        result = plot(d, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        out_dir = os.path.join(d, "figures")
+        self.assert_figures(out_dir, STATE_FIGURES + ("fig15_stribeck_by_friction", "distress_map",
+                                                      "transient_trajectory"), formats=("svg",))
+        fig6 = self.svg_text(os.path.join(out_dir, "fig06_f_eff_vs_load.svg"))
+        for label in ("136 rad/s, dry friction coefficient 0.05", "545 rad/s, dry friction coefficient 0.2",
+                      "distress load"):
+            self.assertIn(label, fig6)
+        # The run's own coefficient (0.1 in run.json) labels nothing: each state has its own.
+        fig15 = self.svg_text(os.path.join(out_dir, "fig15_stribeck_by_friction.svg"))
+        self.assertIn("dry friction coefficient 0.05", fig15)
+        self.assertNotIn("dry friction coefficient 0.1<", fig15)
+        trajectory = self.svg_text(os.path.join(out_dir, "transient_trajectory.svg"))
+        self.assertIn("545 rad/s, dry friction coefficient 0.05, 1200 N", trajectory)
+        self.assertIn("545 rad/s, dry friction coefficient 0.2, 1200 N", trajectory)
+
+    def test_sliding_comparison(self):
+        d = os.path.join(self.tmp, "sliding")
+        os.makedirs(d)
+        header = STATES_HEADER.replace("speed_rad_s,", "speed_rad_s,sliding,")
+        write(os.path.join(d, "states.csv"),
+              [header] + with_run_columns(state_rows(545, [100, 400, 700]), "carrier_washer,")
+              + with_run_columns(state_rows(953, [100, 400, 700]), "carrier_washer,"))
+        write(os.path.join(d, "sliding.csv"),
+              [SLIDING_HEADER] + sliding_rows(545, [100, 400, 700]) + sliding_rows(953, [100, 400, 700]))
+        write(os.path.join(d, "distress.csv"),
+              ["speed_rad_s,sliding,W_d_N,bracket_low_N,bracket_high_N,fold_N,method",
+               "545,carrier_washer,1117,1110,1125,1119,runaway; fold at 1119 N",
+               "545,washer_gear,800,795,805,801,runaway; fold at 801 N",
+               "953,carrier_washer,,,,,no fold up to 1750 N",
+               "953,washer_gear,1500,1490,1510,,runaway; no fold"])
+        result = plot(d, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        out_dir = os.path.join(d, "figures")
+        self.assert_figures(out_dir, STATE_FIGURES + ("distress_map", "sliding_comparison"),
+                            formats=("svg",))
+        text = self.svg_text(os.path.join(out_dir, "sliding_comparison.svg"))
+        for label in ("545 rad/s", "953 rad/s", "film 1 slides (washer stuck to the gear), 307.9 mm²",
+                      "film 2 slides (washer stuck to the carrier), 213.6 mm²", "chosen: the lower torque",
+                      "30.6 % below", "44.2 % above"):
+            self.assertIn(label, text)
+        distress = self.svg_text(os.path.join(out_dir, "distress_map.svg"))
+        self.assertIn("film 2 slides (washer stuck to the carrier)", distress)
+        self.assertIn("953 rad/s, film 1 slides", result.stderr)  # the row without distress
+        # A sliding choice's W_d are not marked on the states' load axes: the chosen
+        # configuration may change along the sweep.
+        self.assertNotIn("distress load", self.svg_text(os.path.join(out_dir, "fig06_f_eff_vs_load.svg")))
+
     def test_malformed_input_exits_2_naming_the_file(self):
         cases = {
             "states_bad_number": ("states.csv", "line 3", lambda d: self.replace_line(
@@ -186,6 +284,17 @@ class TwbPlotTest(unittest.TestCase):
                  "545,1117,1110,1125,,ok", "953,high,1720,1735,,ok"])),
             "trajectory_header": ("trajectory.csv", "line 1", lambda d: write(
                 os.path.join(d, "trajectory.csv"), ["time,T_mean_C", "0,30"])),
+            "sliding_unknown_film": ("sliding.csv", "line 3", lambda d: write(
+                os.path.join(d, "sliding.csv"),
+                [SLIDING_HEADER] + sliding_rows(545, [100])[:1]
+                + [sliding_rows(545, [100])[1].replace("washer_gear", "gear_washer")])),
+            "sliding_chosen_not_boolean": ("sliding.csv", "line 2", lambda d: write(
+                os.path.join(d, "sliding.csv"),
+                [SLIDING_HEADER, sliding_rows(545, [100])[0][:-1] + "2"])),
+            "distress_two_parameters": ("distress.csv", "line 1", lambda d: write(
+                os.path.join(d, "distress.csv"),
+                ["speed_rad_s,gear_tilt_rad,friction_coefficient,W_d_N,bracket_low_N,bracket_high_N,"
+                 "fold_N,method", "545,0.002,0.1,1117,1110,1125,,ok"])),
         }
         for name, (file_name, line, damage) in cases.items():
             with self.subTest(name):
