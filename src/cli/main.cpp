@@ -12,6 +12,7 @@
 
 #include "twb/model/bearing_model.h"
 #include "twb/results/atomic_file.h"
+#include "twb/results/fields_table.h"
 #include "twb/results/run_record.h"
 #include "twb/results/states_table.h"
 #include "twb/scene/input_error.h"
@@ -56,6 +57,7 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
 
   const std::filesystem::path dir(out_dir);
   twb::write_file_atomically(dir / "states.csv", twb::states_csv(outcome.states));
+  twb::write_state_fields(dir, outcome.states);
   const twb::StudyType type = scene.study.type;
   if (type == twb::StudyType::load_sweep || type == twb::StudyType::distress_map)
     twb::write_file_atomically(dir / "distress.csv", twb::distress_csv(outcome.distress, outcome.parameter_column));

@@ -18,8 +18,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 SolvedState record(const BearingModel& model, const std::vector<double>& u, const SteadyReport& rep) {
-  SolvedState row;
-  row.state = model.describe(u);
+  SolvedState row = solved_state(model, u);
   row.converged = rep.converged;
   row.iterations = rep.iterations;
   row.residual = rep.residual_norm;
@@ -151,8 +150,7 @@ void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport&
   if (progress) progress(fmt::format("steady at {:.6g} N; stepping to {:.6g} N", st.load_start, st.load_end));
   StepMarch march = march_load_step(model, u, st.load_end, TransientSettings{}, newton, st.duration);
   out.trajectory = std::move(march.trajectory);
-  SolvedState last;
-  last.state = model.describe(march.state);
+  SolvedState last = solved_state(model, march.state);
   last.converged = march.settled;
   last.iterations = march.newton_iterations;
   std::vector<double> r(march.state.size());

@@ -14,6 +14,9 @@ struct SolvedState {
   long iterations = 0;
   double residual = 0.0;
   double wall_ms = 0.0;
+  // Film 1 and film 2 on their polar grids when the scene asks for them
+  // (output.fields); empty otherwise. Written by fields_table.h.
+  std::vector<FilmFields> fields;
 };
 
 std::string states_csv(const std::vector<SolvedState>& rows);
