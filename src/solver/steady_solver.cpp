@@ -22,12 +22,13 @@ double elapsed_ms(std::chrono::steady_clock::time_point t0) {
 // step cost two assemblies and a residual (KINSOL evaluates at both ends of its step,
 // and Δτ needs the unshifted residual it does not return).
 //
-// The matrices are factored by SparseLu::refactor, as the Newton solver's: analysed once,
+// The matrices are factored by SparseLu::refactor in the Newton solver's own
+// factorization (same pattern): analysed once per solver, not once per cold start,
 // refactored with the last pivot sequence while that is safe.
 class PseudoTimeStepper {
  public:
-  explicit PseudoTimeStepper(const SteadySystem& system)
-      : system_(system), pattern_(system.pattern()), lu_(system.pattern()) {
+  PseudoTimeStepper(const SteadySystem& system, SparseLu& lu)
+      : system_(system), pattern_(system.pattern()), lu_(lu) {
     for (Index k = 0; k < pattern_.rows; ++k) {
       diagonal_.push_back(pattern_.find(k, k));
       if (diagonal_.back() < 0)
@@ -70,7 +71,7 @@ class PseudoTimeStepper {
   };
   const SteadySystem& system_;
   const SparsePattern& pattern_;
-  SparseLu lu_;
+  SparseLu& lu_;
   std::vector<Index> diagonal_;
   Point state_, candidate_;
   std::vector<double> values_;
@@ -110,7 +111,7 @@ bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep, bool newton_
   // with Δτ grown by switched evolution relaxation (Mulder & van Leer) as the residual
   // falls, and cut when a step leaves the domain. As Δτ → ∞ the steps become Newton's.
   rep.strategy = "pseudo-transient";
-  PseudoTimeStepper stepper(model_);
+  PseudoTimeStepper stepper(model_, newton_.factorization());
   // Pseudo-time moves in small steps anyway; a step that shifts the washer or gear by
   // more than a couple of σ leaves the region where the contact law is nearly linear.
   // Measured like KINSOL's step cap: ‖D δ‖₂ with D the model's step weights.
