@@ -1,12 +1,13 @@
 #!/usr/bin/python3
 """Figures of twb results in the layout of Jackson & Green (2006), Figs. 6-15.
 
-    twb_plot.py RESULTS_DIR [RESULTS_DIR ...] [--out FIGDIR] [--format png,svg]
+    twb_plot.py RESULTS_DIR [RESULTS_DIR ...] [--out FIGDIR] [--format png,svg] [--state N]
 
 Reads states.csv (required), distress.csv, trajectory.csv, sliding.csv and run.json from each
 directory, merges the directories (e.g. one load sweep per speed), and writes one file
 per figure and format into FIGDIR (default: RESULTS_DIR/figures of the first
-directory). Prints the files written. Exit status 2 when an input is missing or
+directory). A directory with fields/ (output.fields) also gets polar maps of one
+state's fields: state N, or by default the last state below the distress load. Prints the files written. Exit status 2 when an input is missing or
 malformed. docs/figures.md describes each figure.
 """
 
@@ -44,6 +45,9 @@ SLIDING_LABELS = {
     "washer_gear": "film 2 slides (washer stuck to the carrier)",
 }
 LINESTYLES = ("-", "--", "-.", ":")
+FIELDS_COLUMNS = (
+    "film", "sliding", "r_m", "theta_rad", "h_m", "p_Pa", "p_contact_Pa", "T_film_C",
+    "T_surfaces_C", "viscosity_Pa_s")
 FORMATS = ("png", "svg", "pdf")
 DPI = 150
 
@@ -233,6 +237,53 @@ def read_distress(path):
     return rows
 
 
+def fields_path(directory, state):
+    return os.path.join(directory, "fields", f"state_{state:04d}.csv")
+
+
+def read_fields(path):
+    """fields/state_NNNN.csv as {film: {"sliding": bool, "r": radii, "theta": angles,
+    column: 2-D array [radius, angle]}}, checked to be a complete polar grid per film."""
+    records = _records(path)
+    header = _header(path, records, FIELDS_COLUMNS, "fields")
+    index = {c: header.index(c) for c in FIELDS_COLUMNS}
+    rows = {}
+    for line, fields in records:
+        _check_width(path, line, fields, header)
+        values = {c: _number(path, line, c, fields[index[c]]) for c in FIELDS_COLUMNS}
+        for c, allowed in (("film", (1.0, 2.0)), ("sliding", (0.0, 1.0))):
+            if values[c] not in allowed:
+                raise InputError(f"{path}: line {line}: column '{c}': expected "
+                                 f"{' or '.join(f'{a:g}' for a in allowed)}, "
+                                 f"got {fields[index[c]].strip()!r}")
+        rows.setdefault(int(values["film"]), []).append((line, values))
+    if not rows:
+        raise InputError(f"{path}: line 2: expected one row per node of each film, got none")
+    films = {}
+    for film, entries in rows.items():
+        r = np.unique([v["r_m"] for _, v in entries])
+        theta = np.unique([v["theta_rad"] for _, v in entries])
+        if len(entries) != r.size * theta.size or r.size < 2 or theta.size < 3:
+            raise InputError(f"{path}: line {entries[-1][0]}: film {film}: expected a complete "
+                             f"polar grid (every radius at every angle), got {len(entries)} rows "
+                             f"for {r.size} radii and {theta.size} angles")
+        grid = {c: np.full((r.size, theta.size), np.nan) for c in FIELDS_COLUMNS[4:]}
+        sliding = set()
+        for line, v in entries:
+            i, j = np.searchsorted(r, v["r_m"]), np.searchsorted(theta, v["theta_rad"])
+            if not np.isnan(grid["h_m"][i, j]):
+                raise InputError(f"{path}: line {line}: film {film}: node r = {v['r_m']:g} m, "
+                                 f"theta = {v['theta_rad']:g} rad appears twice")
+            for c in grid:
+                grid[c][i, j] = v[c]
+            sliding.add(v["sliding"])
+        if len(sliding) != 1:
+            raise InputError(f"{path}: line {entries[-1][0]}: film {film}: column 'sliding': "
+                             f"expected the same value on every row of the film")
+        films[film] = dict(grid, sliding=sliding.pop() == 1.0, r=r, theta=theta)
+    return films
+
+
 def friction_setting(path):
     """The boundary friction law of run.json's resolved scene, as a legend label.
 
@@ -261,6 +312,7 @@ class Run:
     trajectory_tags: list = field(default_factory=list)
     sliding: list = field(default_factory=list)
     friction: object = None
+    has_fields: bool = False
 
 
 def read_run(directory):
@@ -282,6 +334,7 @@ def read_run(directory):
     if os.path.isfile(sliding_path):
         run.sliding = read_sliding(sliding_path)
     run.friction = friction_setting(os.path.join(directory, "run.json"))
+    run.has_fields = os.path.isdir(os.path.join(directory, "fields"))
     return run
 
 
@@ -661,6 +714,112 @@ def figure_sliding(data):
     return fig
 
 
+# Column, scale to the plotted unit, colour-bar label, colour map.
+FIELD_PANELS = (
+    ("p_Pa", 1e-6, "fluid pressure $p$ (MPa)", "viridis"),
+    ("h_m", 1e6, "film thickness $h$ (µm)", "cividis"),
+    ("p_contact_Pa", 1e-6, "asperity contact pressure $p_c$ (MPa)", "magma"),
+    ("T_film_C", 1.0, "film-node temperature $T_f$ (°C)", "inferno"),
+)
+FILM_NAMES = {1: "film 1 (carrier–washer)", 2: "film 2 (washer–gear)"}
+
+
+def default_state(run):
+    """The last state (1-based row of states.csv) with a fields file whose load lies
+    below the distress load W_d of its speed, or without any W_d the last state with
+    fields; None when the directory has none."""
+    loads, speeds = run.states["load_N"], run.states["speed_rad_s"]
+    with_fields = [k for k in range(1, loads.size + 1)
+                   if os.path.isfile(fields_path(run.directory, k))]
+    # Rows of a second parameter or a sliding choice are left out: they are not one
+    # distress load per speed.
+    limits = {speed_key(d.speed): d.w_d for d in run.distress
+              if d.parameter is None and d.sliding is None and d.w_d is not None}
+    below = [k for k in with_fields
+             if speed_key(speeds[k - 1]) in limits and loads[k - 1] < limits[speed_key(speeds[k - 1])]]
+    if below:
+        return below[-1]
+    return with_fields[-1] if with_fields else None
+
+
+def select_fields(runs, state):
+    """(run, state, fields) for every directory whose fields are to be mapped: state N
+    where asked (then every directory must have it), else each directory's default."""
+    selected = []
+    for run in runs:
+        if not run.has_fields:
+            if state is not None:
+                raise InputError(f"{run.directory}: no fields/ directory, so no state to map "
+                                 f"(--state {state}); fields are written by a run with "
+                                 f"output.fields: true")
+            continue
+        n = run.states["load_N"].size
+        if state is not None and state > n:
+            raise InputError(f"{os.path.join(run.directory, 'states.csv')}: --state {state}: "
+                             f"expected a row of states.csv, 1 to {n}")
+        k = state if state is not None else default_state(run)
+        if k is None:
+            continue
+        path = fields_path(run.directory, k)
+        if not os.path.isfile(path):
+            raise InputError(f"{path}: no such file: state {k} has no fields")
+        selected.append((run, k, read_fields(path)))
+    return selected
+
+
+def figure_fields(films, load, speed, caption):
+    """Polar maps, one row per film (the sliding film first), one column per field."""
+    order = sorted(films, key=lambda f: (not films[f]["sliding"], f))
+    ncol = len(FIELD_PANELS)
+    fig = plt.figure(figsize=(3.3 * ncol, 3.3 * len(order) + 0.9))
+    for row, film in enumerate(order):
+        f = films[film]
+        r_mm = f["r"] * 1e3
+        # Close the periodic seam: θ = 2π repeats θ = 0.
+        theta = np.append(f["theta"], f["theta"][0] + 2 * math.pi)
+        rr, tt = np.meshgrid(r_mm, theta, indexing="ij")
+        for col, (column, scale, label, cmap) in enumerate(FIELD_PANELS):
+            ax = fig.add_subplot(len(order), ncol, row * ncol + col + 1, projection="polar")
+            values = f[column] * scale
+            values = np.concatenate([values, values[:, :1]], axis=1)
+            if column == "p_Pa" and not f["sliding"] and not values.any():
+                ax.set_axis_off()
+                ax.text(0.5, 0.5, f"no fluid pressure:\n{FILM_NAMES[film]}\ndoes not slide",
+                        transform=ax.transAxes, ha="center", va="center", fontsize="small")
+                continue
+            ax.grid(False)  # pcolormesh over a grid is deprecated; the grid returns below
+            mesh = ax.pcolormesh(tt, rr, values, shading="gouraud", cmap=cmap)
+            # Circles at the film's radii (given in the film's title), unlabelled: labels
+            # inside the annulus would hide the field.
+            ax.set_ylim(0.0, r_mm[-1])
+            ax.set_yticks([r_mm[0], r_mm[-1]])
+            ax.set_yticklabels([])
+            ax.tick_params(axis="x", labelsize="x-small")
+            ax.grid(True, alpha=0.3)
+            bar = fig.colorbar(mesh, ax=ax, shrink=0.75, pad=0.12)
+            bar.set_label(label, fontsize="small")
+            bar.ax.tick_params(labelsize="x-small")
+            title = label.split(" (")[0]
+            if col == 0 or (col == 1 and not f["sliding"]):
+                title = (f"{FILM_NAMES[film]}{', sliding' if f['sliding'] else ''}\n"
+                         f"r = {r_mm[0]:.4g}–{r_mm[-1]:.4g} mm: {title}")
+            ax.set_title(title, fontsize="small")
+    fig.suptitle(f"Fields at load $F_{{ext}}$ = {load:g} N, speed $\\omega$ = {speed:g} rad/s "
+                 f"({caption})\nθ counter-clockwise from +x seen from +z; the sliding surface "
+                 f"moves in +θ", fontsize="medium")
+    return fig
+
+
+def make_field_maps(selected, out_dir, formats, written):
+    several = len(selected) > 1
+    for run, state, films in selected:
+        load = run.states["load_N"][state - 1]
+        speed = run.states["speed_rad_s"][state - 1]
+        caption = f"state {state}" + (f" of {run.name}" if several else "")
+        stem = f"fields_{run.name}_state_{state:04d}" if several else f"fields_state_{state:04d}"
+        save(figure_fields(films, load, speed, caption), out_dir, stem, formats, written)
+
+
 def save(fig, out_dir, stem, formats, written):
     # Two-line axis labels (the Stribeck number's units) would otherwise be cut off.
     fig.tight_layout()
@@ -733,6 +892,16 @@ def parse_formats(text):
     return list(dict.fromkeys(formats))
 
 
+def parse_state(text):
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected a row of states.csv, 1 or more, got {text!r}")
+    return value
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(
         prog="twb_plot.py",
@@ -745,6 +914,9 @@ def main(argv=None):
                         help="where to write the figures (default: RESULTS_DIR/figures of the first)")
     parser.add_argument("--format", type=parse_formats, default=["png", "svg"], metavar="LIST",
                         help="comma-separated file formats among png, svg, pdf (default: png,svg)")
+    parser.add_argument("--state", type=parse_state, metavar="N",
+                        help="polar maps of the fields of state N (1-based row of states.csv); "
+                             "default: the last state below the distress load, else the last")
     args = parser.parse_args(argv)
 
     # Text stays text in the SVG (editable, searchable); a fixed salt makes its ids
@@ -754,6 +926,7 @@ def main(argv=None):
 
     try:
         runs = [read_run(d) for d in args.dirs]
+        maps = select_fields(runs, args.state)
     except InputError as e:
         print(f"twb_plot: error: {e}", file=sys.stderr)
         return 2
@@ -764,6 +937,7 @@ def main(argv=None):
         print(f"twb_plot: error: {out_dir}: cannot create: {e.strerror}", file=sys.stderr)
         return 2
     written = make_figures(merge(runs), out_dir, args.format)
+    make_field_maps(maps, out_dir, args.format, written)
     if not written:
         print("twb_plot: error: nothing to plot", file=sys.stderr)
         return 1

@@ -12,6 +12,7 @@
 
 #include "twb/model/bearing_model.h"
 #include "twb/results/atomic_file.h"
+#include "twb/results/fields_table.h"
 #include "twb/results/run_record.h"
 #include "twb/results/states_table.h"
 #include "twb/scene/input_error.h"
@@ -58,6 +59,7 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
   const std::string& parameter = outcome.parameter_column;
   const bool sliding = outcome.sliding_column;
   twb::write_file_atomically(dir / "states.csv", twb::states_csv(outcome.states, parameter, sliding));
+  twb::write_state_fields(dir, outcome.states);
   const twb::StudyType type = scene.study.type;
   if (type != twb::StudyType::point && type != twb::StudyType::transient)
     twb::write_file_atomically(dir / "distress.csv", twb::distress_csv(outcome.distress, parameter, sliding));

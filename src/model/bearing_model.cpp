@@ -73,9 +73,11 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
                              "thermal", h.node_count(), true);
       components_.push_back(h);
     };
-    // The carrier is fixed in the load frame; the gear always rotates; the washer
-    // rotates with the gear when film 1 slides (MODEL.md section 7).
-    add_component(ComponentId::carrier, scene_.carrier, films_[0].mesh, false, true, "carrier");
+    // The carrier is fixed in the load frame (unless the scene averages it, a modelling
+    // alternative); the gear always rotates; the washer rotates with the gear when film 1
+    // slides (MODEL.md section 7).
+    add_component(ComponentId::carrier, scene_.carrier, films_[0].mesh,
+                  fx.carrier_temperature == CarrierTemperature::axisymmetric, true, "carrier");
     add_component(ComponentId::washer, scene_.washer, films_[0].mesh, film1_slides, false, "washer");
     add_component(ComponentId::gear, scene_.gear,
                   FilmMesh(scene_.gear.inner_radius, scene_.gear.outer_radius, nr, nt), true, true, "gear");

@@ -64,10 +64,12 @@ Effects read_effects(const MapReader& scene) {
       effects.hydrodynamics = true;
       effects.cavitation = read_choice(options, "cavitation", kCavitationModels, effects.cavitation);
     } else if (effect.name == kThermal) {
-      const MapReader options(options_node, {"viscosity_temperature"});
+      const MapReader options(options_node, {"viscosity_temperature", "carrier_temperature"});
       effects.thermal = true;
       effects.viscosity_temperature = read_choice(options, "viscosity_temperature",
                                                   kViscosityTemperatures, effects.viscosity_temperature);
+      effects.carrier_temperature = read_choice(options, "carrier_temperature", kCarrierTemperatures,
+                                                effects.carrier_temperature);
     } else {
       const MapReader no_options(options_node, {});
       if (effect.name == kFlowFactors) effects.flow_factors = true;

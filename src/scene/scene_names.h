@@ -19,6 +19,9 @@ inline constexpr EnumNames<ViscosityTemperature, 2> kViscosityTemperatures{
     {"surface_mean", "film_node"},
     {ViscosityTemperature::surface_mean, ViscosityTemperature::film_node}};
 
+inline constexpr EnumNames<CarrierTemperature, 2> kCarrierTemperatures{
+    {"load_frame", "axisymmetric"}, {CarrierTemperature::load_frame, CarrierTemperature::axisymmetric}};
+
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
     {"roelands", "constant"}, {ViscosityModel::roelands, ViscosityModel::constant}};
 

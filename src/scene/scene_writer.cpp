@@ -48,8 +48,9 @@ void write_effects(Writer& w, const Effects& e) {
   if (e.flow_factors) w.line(1, "- flow_factors");
   if (e.asperity_contact) w.line(1, "- asperity_contact");
   if (e.thermal)
-    w.line(1, fmt::format("- thermal: {{viscosity_temperature: {}}}",
-                          kViscosityTemperatures.name(e.viscosity_temperature)));
+    w.line(1, fmt::format("- thermal: {{viscosity_temperature: {}, carrier_temperature: {}}}",
+                          kViscosityTemperatures.name(e.viscosity_temperature),
+                          kCarrierTemperatures.name(e.carrier_temperature)));
 }
 
 void write_geometry(Writer& w, const Scene& s) {

@@ -199,6 +199,8 @@ KinsolNewton::KinsolNewton(const SteadySystem& model)
 
 KinsolNewton::~KinsolNewton() { KINFree(&kin_); }
 
+SparseLu& KinsolNewton::factorization() { return pattern_klu(klu_.get()).lu; }
+
 NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s, const PseudoTimeShift* shift) {
   NewtonReport rep;
   const std::size_t n = u.size();

@@ -49,8 +49,10 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
   const double max_step = s.max_step > 0 ? s.max_step : 0.25 * interval;
   StepControl control(s.initial_step > 0 ? s.initial_step : interval / 20.0, min_step, max_step, s.growth,
                       s.easy_iterations);
+  // One symbolic analysis serves the tangents and the corrector, and each tangent's
+  // fresh pivots serve the next correction's refactorizations.
   KinsolNewton newton(system);
-  SparseLu lu(system.pattern());
+  SparseLu& lu = newton.factorization();
 
   // The state before u, and u_λ at u: the exact local slope, which judges every
   // correction. A secant carries the mean slope over the previous step, wrong by

@@ -18,8 +18,7 @@ namespace twb {
 namespace {
 
 SolvedState record(const BearingModel& model, std::span<const double> u, long iterations, double wall_ms) {
-  SolvedState row;
-  row.state = model.describe(u);
+  SolvedState row = solved_state(model, u);
   row.converged = true;
   row.iterations = iterations;
   std::vector<double> r(u.size());

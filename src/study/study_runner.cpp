@@ -21,8 +21,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 SolvedState record(const BearingModel& model, const std::vector<double>& u, const SteadyReport& rep) {
-  SolvedState row;
-  row.state = model.describe(u);
+  SolvedState row = solved_state(model, u);
   row.converged = rep.converged;
   row.iterations = rep.iterations;
   row.residual = rep.residual_norm;
@@ -108,7 +107,14 @@ std::vector<Variant> parameter_variants(const Scene& scene, std::string& column)
   return out;
 }
 
-// Called after each search with the speed's index in study.speeds.
+// The speeds a study searches at: study.speeds, or the model's speed for a scene built
+// without them (the loader fills them in).
+std::vector<double> study_speeds(const BearingModel& model) {
+  const std::vector<double>& listed = model.scene().study.speeds;
+  return listed.empty() ? std::vector<double>{model.speed()} : listed;
+}
+
+// Called after each search with the speed's index in study_speeds.
 using SearchResult = std::function<void(const Variant&, std::size_t speed, const BearingModel&, DistressSearch&)>;
 
 // One distress search per variant and speed, with progress lines "[k/n] ..." and the
@@ -116,7 +122,7 @@ using SearchResult = std::function<void(const Variant&, std::size_t speed, const
 // searches are kept.
 void run_searches(BearingModel& base, const std::vector<Variant>& variants, const DistressSearchSettings& settings,
                   const ProgressReport& progress, const SearchResult& take) {
-  const std::vector<double>& speeds = base.scene().study.speeds;
+  const std::vector<double> speeds = study_speeds(base);
   const std::size_t total = variants.size() * speeds.size();
   std::size_t done = 0;
   const auto t0 = Clock::now();
@@ -227,7 +233,8 @@ void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressRep
   }
   const std::vector<double> grid = load_grid(st);
   // Per speed and grid load, the state of each configuration that reached it.
-  std::vector<std::vector<std::vector<SlidingRow>>> at(st.speeds.size(), std::vector<std::vector<SlidingRow>>(grid.size()));
+  std::vector<std::vector<std::vector<SlidingRow>>> at(study_speeds(base).size(),
+                                                        std::vector<std::vector<SlidingRow>>(grid.size()));
   run_searches(base, variants, grid_settings(st), progress,
                [&](const Variant&, std::size_t speed, const BearingModel& model, DistressSearch& found) {
     const auto film = std::find_if(model.films().begin(), model.films().end(), [](const Film& f) { return f.sliding; });
@@ -267,8 +274,7 @@ void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport&
   if (progress) progress(fmt::format("steady at {:.6g} N; stepping to {:.6g} N", st.load_start, st.load_end));
   StepMarch march = march_load_step(model, u, st.load_end, TransientSettings{}, newton, st.duration);
   out.trajectory = std::move(march.trajectory);
-  SolvedState last;
-  last.state = model.describe(march.state);
+  SolvedState last = solved_state(model, march.state);
   last.converged = march.settled;
   last.iterations = march.newton_iterations;
   std::vector<double> r(march.state.size());

@@ -1,9 +1,12 @@
-// What every study needs from the scene and the clock: the scene's Newton settings and
-// elapsed wall time.
+// What every study needs from the scene and the clock: the scene's Newton settings,
+// elapsed wall time, and a solved state as the studies record it.
 #pragma once
 
 #include <chrono>
+#include <span>
 
+#include "twb/model/bearing_model.h"
+#include "twb/results/states_table.h"
 #include "twb/scene/scene.h"
 #include "twb/solver/kinsol_newton.h"
 
@@ -19,6 +22,16 @@ inline NewtonSettings newton_settings(const Scene& s) {
 
 inline double elapsed_ms(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The reported quantities of state u at the model's load, and its fields on the films'
+// grids when the scene asks for them (output.fields). Every study records its states
+// here; the caller fills in how the state was solved.
+inline SolvedState solved_state(const BearingModel& model, std::span<const double> u) {
+  SolvedState row;
+  row.state = model.describe(u);
+  if (model.scene().output.fields) row.fields = model.fields(u);
+  return row;
 }
 
 }  // namespace twb

@@ -149,5 +149,24 @@ TEST(StudyOutputs, IsothermalLoadSweepRunsWithoutTransient) {
   fs::remove_all(dir);
 }
 
+// output.fields: a point study writes fields/state_0001.csv with the documented columns,
+// one row per node of both films (2 × 5 × 24); without it there is no fields directory.
+TEST(StudyOutputs, PointStudyWritesFieldsOnRequest) {
+  const fs::path dir = scratch("fields");
+  const std::string point = "--set 'study={type: point}' --set operating.load='150 N' ";
+  ASSERT_EQ(run_twb("../jackson_green_2006.yaml", dir, point + "--set output.fields=true"), 0);
+  const auto rows = lines_of(dir / "fields" / "state_0001.csv");
+  ASSERT_EQ(rows.size(), 241u);
+  EXPECT_EQ(rows[0], "film,sliding,r_m,theta_rad,h_m,p_Pa,p_contact_Pa,T_film_C,T_surfaces_C,viscosity_Pa_s");
+  EXPECT_EQ(rows[1].rfind("1,1,0.00555,0,", 0), 0u) << rows[1];
+  EXPECT_EQ(rows[240].rfind("2,0,0.01135,", 0), 0u) << rows[240];
+  for (const std::string& row : rows) EXPECT_EQ(row.find("nan"), std::string::npos) << row;
+  EXPECT_FALSE(fs::exists(dir / "fields" / "state_0002.csv"));
+
+  ASSERT_EQ(run_twb("../jackson_green_2006.yaml", dir, point), 0);
+  EXPECT_FALSE(fs::exists(dir / "fields")) << "a run without fields leaves none of an earlier run";
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace twb

@@ -28,6 +28,7 @@ struct EffectSet {
   const char* name;
   bool hydro, factors, contact, thermal;
   double speed;
+  CarrierTemperature carrier = CarrierTemperature::load_frame;
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -50,6 +51,7 @@ std::vector<double> random_state(const BearingModel& m, std::mt19937& rng) {
 TEST_P(JacobianTest, MatchesCentralDifferences) {
   const EffectSet e = GetParam();
   Scene s = testing::table1_scene(e.hydro, e.factors, e.contact, e.thermal, e.speed, 700.0);
+  s.effects.carrier_temperature = e.carrier;
   s.mesh.radial_nodes = 5;
   s.mesh.circumferential_nodes = 12;
   const BearingModel m(s);
@@ -126,7 +128,9 @@ INSTANTIATE_TEST_SUITE_P(
                       EffectSet{"hydro_factors_contact", true, true, true, false, 545.0},
                       EffectSet{"hydro_contact_thermal", true, false, true, true, 545.0},
                       EffectSet{"all_effects", true, true, true, true, 545.0},
-                      EffectSet{"all_effects_slow", true, true, true, true, 136.0}),
+                      EffectSet{"all_effects_slow", true, true, true, true, 136.0},
+                      EffectSet{"all_effects_carrier_averaged", true, true, true, true, 545.0,
+                                CarrierTemperature::axisymmetric}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

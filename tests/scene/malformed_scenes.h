@@ -106,6 +106,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"unknown_viscosity_model", 14, 12, {"lubricant.viscosity.model: unknown value 'roeland'", "did you mean 'roelands'? Allowed: roelands, constant"}},
     {"unknown_cavitation_model", 3, 33, {"unknown value 'jfo'", "allowed: reynolds"}},
     {"unknown_viscosity_temperature", 5, 38, {"unknown value 'film'", "allowed: surface_mean, film_node"}},
+    {"unknown_carrier_temperature", 5, 36, {"unknown value 'rotating'", "allowed: load_frame, axisymmetric"}},
     {"yaml_unclosed_flow_sequence", 3, 0, {"YAML syntax error"}},
     {"yaml_bad_indentation", 9, 0, {"YAML syntax error"}},
     {"yaml_tab_indentation", 9, 0, {"YAML syntax error", "tab"}},

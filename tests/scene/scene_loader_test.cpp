@@ -43,6 +43,7 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.effects.asperity_contact, b.effects.asperity_contact);
   EXPECT_EQ(a.effects.thermal, b.effects.thermal);
   EXPECT_EQ(a.effects.viscosity_temperature, b.effects.viscosity_temperature);
+  EXPECT_EQ(a.effects.carrier_temperature, b.effects.carrier_temperature);
   expect_same_component(a.carrier, b.carrier);
   expect_same_component(a.washer, b.washer);
   expect_same_component(a.gear, b.gear);
@@ -135,9 +136,10 @@ struct RoundTripCase {
 void PrintTo(const RoundTripCase& c, std::ostream* os) { *os << c.name; }
 
 // A transient study needs the thermal effect (it marches the heat balance).
-std::string with_thermal(std::string scene) {
+std::string with_thermal(std::string scene, const std::string& thermal = "thermal") {
   const std::string effects = "effects: [hydrodynamics, asperity_contact]";
-  return scene.replace(scene.find(effects), effects.size(), "effects: [hydrodynamics, asperity_contact, thermal]");
+  return scene.replace(scene.find(effects), effects.size(),
+                       "effects: [hydrodynamics, asperity_contact, " + thermal + "]");
 }
 
 class DescribeRoundTrip : public ::testing::TestWithParam<RoundTripCase> {};
@@ -181,6 +183,9 @@ INSTANTIATE_TEST_SUITE_P(
         RoundTripCase{"transient_load_step",
                       with_thermal(kMinimalScene) +
                           "study: {type: transient, load_start: 150 N, load_end: 0.2 kN, duration: 2 min}\n"},
+        RoundTripCase{"thermal_options",
+                      with_thermal(kMinimalScene, "{thermal: {viscosity_temperature: film_node, "
+                                                  "carrier_temperature: axisymmetric}}")},
         RoundTripCase{"distress_map_custom_surfaces_film_2",
                       std::string(testing::kSceneBodies) +
                           "study: {type: distress_map, speeds: [136 rad/s, 5200 rpm], load_start: 50 N, load_end: 3 kN,\n"

@@ -81,6 +81,27 @@ def sliding_rows(speed, loads):
     return rows
 
 
+FIELDS_HEADER = "film,sliding,r_m,theta_rad,h_m,p_Pa,p_contact_Pa,T_film_C,T_surfaces_C,viscosity_Pa_s"
+
+
+def fields_rows(nr=5, nt=12):
+    """A tilted film 1 that slides (pressure before its thin side at theta = 0, contact at
+    the outer rim there) and a film 2 without pressure, as twb writes them."""
+    rows = []
+    for film, (r_in, r_out) in ((1, (5.55e-3, 11.35e-3)), (2, (7.8e-3, 11.35e-3))):
+        for i in range(nr):
+            r = r_in + (r_out - r_in) * i / (nr - 1)
+            for j in range(nt):
+                theta = 2 * math.pi * j / nt
+                h = 4e-6 - 3e-4 * r * math.cos(theta)
+                edge = 0 < i < nr - 1
+                p = 2e6 * max(math.sin(-theta), 0.0) * (1 - math.cos(theta)) if film == 1 and edge else 0.0
+                contact = 5e7 * math.exp(-h / 3e-7)
+                rows.append(f"{film},{1 if film == 1 else 0},{r:.10g},{theta:.10g},{h:.10g},{p:.10g},"
+                            f"{contact:.10g},{40 + 20 * contact / 5e7},{35},{0.03}")
+    return rows
+
+
 def write(path, lines):
     with open(path, "w", encoding="utf-8") as f:
         f.write("\n".join(lines) + "\n")
@@ -105,7 +126,8 @@ class TwbPlotTest(unittest.TestCase):
     def tearDown(self):
         self._tmp.cleanup()
 
-    def results_dir(self, name, speeds=(136, 545), distress=None, trajectory=False, friction=None):
+    def results_dir(self, name, speeds=(136, 545), distress=None, trajectory=False, friction=None,
+                    fields=()):
         d = os.path.join(self.tmp, name)
         os.makedirs(d)
         rows = []
@@ -119,7 +141,15 @@ class TwbPlotTest(unittest.TestCase):
                   ["t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N"] + trajectory_rows())
         if friction is not None:
             run_json(d, friction)
+        if fields:
+            os.makedirs(os.path.join(d, "fields"))
+            for state in fields:
+                write(self.fields_file(d, state), [FIELDS_HEADER] + fields_rows())
         return d
+
+    @staticmethod
+    def fields_file(directory, state):
+        return os.path.join(directory, "fields", f"state_{state:04d}.csv")
 
     def assert_figures(self, out_dir, stems, formats=("png", "svg")):
         for stem in stems:
@@ -319,6 +349,82 @@ class TwbPlotTest(unittest.TestCase):
         result = plot(self.results_dir("fmt"), "--format", "png,gif")
         self.assertEqual(result.returncode, 2)
         self.assertIn("gif", result.stderr)
+
+    # Rows 1-7 of states.csv are at 136 rad/s, rows 8-14 at 545 rad/s, loads 100 to 1300 N.
+    def test_field_maps_default_to_the_last_state_below_distress(self):
+        d = self.results_dir(
+            "fields", fields=range(1, 15),
+            distress=["speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method",
+                      "545,1117,1110,1125,1119,runaway; fold at 1119 N"])
+        result = plot(d)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        out_dir = os.path.join(d, "figures")
+        # 545 rad/s, 1100 N: the last load below W_d = 1117 N.
+        self.assert_figures(out_dir, ("fields_state_0013",))
+        self.assertEqual(sorted(n for n in os.listdir(out_dir) if n.startswith("fields")),
+                         ["fields_state_0013.png", "fields_state_0013.svg"])
+        text = self.svg_text(os.path.join(out_dir, "fields_state_0013.svg"))
+        for label in ("1100 N", "545 rad/s", "state 13", "fluid pressure", "(MPa)", "(µm)", "(°C)",
+                      "asperity contact pressure", "film 1 (carrier–washer), sliding",
+                      "film 2 (washer–gear)", "does not slide"):
+            self.assertIn(label, text)
+
+    def test_field_maps_of_a_chosen_state_or_the_last(self):
+        d = self.results_dir("chosen", fields=(3, 14))
+        result = plot(d, "--state", "3", "--format", "png")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assert_figures(os.path.join(d, "figures"), ("fields_state_0003",), formats=("png",))
+        result = plot(d, "--out", os.path.join(self.tmp, "last"), "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assert_figures(os.path.join(self.tmp, "last"), ("fields_state_0014",), formats=("svg",))
+
+    def test_malformed_fields_exit_2_naming_file_line_and_column(self):
+        def damage_line(number, edit):
+            return lambda d: self.replace_line(d, os.path.join("fields", "state_0002.csv"), number, edit)
+        cases = {
+            "bad_number": ("line 4", "column 'p_Pa'", damage_line(
+                4, lambda line: ",".join(v if k != 5 else "high" for k, v in enumerate(line.split(","))))),
+            "nan": ("line 5", "column 'h_m'", damage_line(
+                5, lambda line: ",".join(v if k != 4 else "nan" for k, v in enumerate(line.split(","))))),
+            "header": ("line 1", "T_film_C", damage_line(1, lambda line: line.replace("T_film_C", "T_C"))),
+            "short_row": ("line 7", "expected 10", damage_line(7, lambda line: line.rsplit(",", 1)[0])),
+            "film_number": ("line 3", "column 'film'", damage_line(3, lambda line: "3" + line[1:])),
+            "missing_node": ("film 2", "complete polar grid", lambda d: self.drop_line(
+                self.fields_file(d, 2), 100)),
+        }
+        for name, (where, what, damage) in cases.items():
+            with self.subTest(name):
+                d = self.results_dir(name, fields=(2,))
+                damage(d)
+                result = plot(d, "--state", "2")
+                self.assertEqual(result.returncode, 2, result.stderr)
+                self.assertIn(self.fields_file(d, 2), result.stderr)
+                self.assertIn(where, result.stderr)
+                self.assertIn(what, result.stderr)
+                self.assertFalse(os.path.exists(os.path.join(d, "figures")))
+
+    def test_state_without_fields_exits_2(self):
+        d = self.results_dir("no_file", fields=(2,))
+        for args, expected in ((("--state", "5"), self.fields_file(d, 5)),
+                               (("--state", "15"), "1 to 14")):
+            with self.subTest(args):
+                result = plot(d, *args)
+                self.assertEqual(result.returncode, 2, result.stderr)
+                self.assertIn(expected, result.stderr)
+        plain = self.results_dir("plain")
+        result = plot(plain, "--state", "1")
+        self.assertEqual(result.returncode, 2, result.stderr)
+        self.assertIn("output.fields", result.stderr)
+        result = plot(plain, "--state", "0")
+        self.assertEqual(result.returncode, 2, result.stderr)
+        self.assertIn("--state", result.stderr)
+
+    @staticmethod
+    def drop_line(path, number):
+        with open(path, encoding="utf-8") as f:
+            lines = f.read().splitlines()
+        del lines[number - 1]
+        write(path, lines)
 
     @staticmethod
     def replace_line(directory, name, number, edit):

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "twb/model/film_fields.h"
 #include "twb/model/film_mesh.h"
 #include "twb/model/sparse_assembly.h"
 #include "twb/model/unknown_layout.h"
@@ -115,6 +116,8 @@ class BearingModel final : public SteadySystem {
   std::vector<double> cold_start() const;
 
   BearingState describe(std::span<const double> u) const;
+  // The fields of state u on every film's grid, film 1 first (film_fields.cpp).
+  std::vector<FilmFields> fields(std::span<const double> u) const;
 
   // Changes the external load; the pattern and every scale except F_ext-based ones are kept.
   void set_load(double load);

@@ -19,6 +19,9 @@ struct SolvedState {
   // of its parameter (SI) and the film that slides ("carrier_washer", "washer_gear").
   std::optional<double> parameter;
   std::string sliding;
+  // Film 1 and film 2 on their polar grids when the scene asks for them
+  // (output.fields); empty otherwise. Written by fields_table.h.
+  std::vector<FilmFields> fields;
 };
 
 // parameter_column (e.g. "friction_coefficient"; empty for none) and sliding_column

@@ -17,6 +17,12 @@ enum class CavitationModel { reynolds };
 // Which temperature sets the oil viscosity at a film node (MODEL.md section 7).
 enum class ViscosityTemperature { surface_mean, film_node };
 
+// How the carrier's temperature field sees the heat of film 1 (MODEL.md section 7): fixed
+// in the load frame, T(r, θ) (the model's default: the carrier does not rotate relative
+// to the load), or circumferentially averaged, T(r), as for a body rotating under the
+// load (a modelling alternative the validation study compares).
+enum class CarrierTemperature { load_frame, axisymmetric };
+
 enum class ViscosityModel { roelands, constant };
 
 enum class FrictionLaw { constant, empirical };
@@ -36,6 +42,7 @@ struct Effects {
   bool asperity_contact = false;
   bool thermal = false;
   ViscosityTemperature viscosity_temperature = ViscosityTemperature::surface_mean;
+  CarrierTemperature carrier_temperature = CarrierTemperature::load_frame;
 };
 
 struct Material {

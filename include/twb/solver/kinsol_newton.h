@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "twb/solver/sparse_lu.h"
 #include "twb/solver/steady_system.h"
 #include "twb/solver/sundials_context.h"
 
@@ -61,6 +62,10 @@ class KinsolNewton {
                      const PseudoTimeShift* shift = nullptr);
 
   const SteadySystem& system() const { return model_; }
+  // KINSOL's linear solver: the system's pattern analysed once. Other solves with the
+  // system's Jacobian (a continuation's tangent) may factor into it between Newton
+  // solves; KINSOL sets its own Jacobian up again at every iteration.
+  SparseLu& factorization();
   // Callback state, public for the C trampolines.
   struct Callbacks;
 

@@ -1,8 +1,9 @@
 // A steady state of the bearing at the model's current load, from a given start or
 // from the paper's cold start, with globalization beyond KINSOL's line search
-// (Cantera's pattern: damped Newton first, pseudo-time steps when it fails, then
-// Newton again). When even that fails, the speed is ramped up from rest, then the
-// load from a fraction the cold start reaches, each step warm-started from the last
+// (Cantera's pattern: from a given start damped Newton first, pseudo-time steps when it
+// fails, then Newton again; from the cold start, where Newton never converges,
+// pseudo-time at once). When even that fails, the speed is ramped up from rest, then
+// the load from a fraction the cold start reaches, each step warm-started from the last
 // and halved on failure. Failure is reported, not hidden.
 #pragma once
 
@@ -38,8 +39,11 @@ class SteadySolver {
   void account(SteadyReport& rep, const NewtonReport& n) const;
   SteadyReport ramp(std::vector<double>& u, SteadyReport rep);
   bool speed_ramp(std::vector<double>& u, SteadyReport& rep);
-  // Newton, then pseudo-transient continuation from u; true when u is now a steady state.
-  bool reach(std::vector<double>& u, SteadyReport& rep);
+  // Newton (if newton_first), then pseudo-transient continuation from u; true when u
+  // is now a steady state.
+  bool reach(std::vector<double>& u, SteadyReport& rep, bool newton_first = true);
+  // reach(), then the ramps when it fails.
+  SteadyReport settle(std::vector<double>& u, bool newton_first);
   // Walks a parameter (speed, load) from `from` up to `target`, each step warm-started
   // from the last state; the step grows 1.5× after a success and halves after a failure,
   // giving up below 1e-4 of the target. Returns the value reached; leaves the

@@ -1,0 +1,47 @@
+// The fields of a solved state on each film's polar grid (film_fields.h): node values
+// read from the unknowns and the gap plane, for maps. The reported integrals (forces,
+// torque, heat) do not come from here: film_loads.cpp integrates over each cell.
+#include <cmath>
+
+#include "twb/model/bearing_model.h"
+
+namespace twb {
+
+std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
+  const RigidPosition q = position(u);
+  const double ambient = scene_.operating.ambient;
+  const bool thermal = scene_.effects.thermal;
+  std::vector<FilmFields> out;
+  for (const Film& film : films_) {
+    const FilmMesh& m = film.mesh;
+    const std::size_t n = std::size_t(m.node_count());
+    FilmFields f{film.number, film.sliding, m, {}, {}, {}, {}, {}, {}};
+    for (auto* v : {&f.gap, &f.pressure, &f.contact_pressure, &f.film_temperature, &f.surface_temperature,
+                    &f.viscosity})
+      v->assign(n, 0.0);
+    for (int i = 0; i < m.radial_nodes(); ++i) {
+      const double r = m.radius(i);
+      for (int j = 0; j < m.circumferential_nodes(); ++j) {
+        const std::size_t k = std::size_t(m.node(i, j));
+        const double h = film_gap(film, q, r, m.angle(j));
+        f.gap[k] = h;
+        f.pressure[k] = pressure_at(u, film, i, j);
+        // The contact law's value at the node's gap, for a map. The reported contact
+        // force is not the sum of these times node areas: near the tight rim the law
+        // changes within a fraction of a cell, so film_loads.cpp integrates it over each
+        // cell with a high-order rule. Beyond the cutoff (p < 1e-20 p(0)) the model
+        // counts no contact, and neither does the map.
+        if (contact_ && h <= contact_cutoff_) f.contact_pressure[k] = contact_->pressure(h).value;
+        f.film_temperature[k] =
+            thermal ? temperature_of(u, film.temperature_offset + Index(k)) : ambient;
+        f.surface_temperature[k] = 0.5 * (face_temperature(u, film.lower, r, j, nullptr) +
+                                          face_temperature(u, film.upper, r, j, nullptr));
+        f.viscosity[k] = viscosity(viscosity_temperature(u, film, i, j, nullptr)).value;
+      }
+    }
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+}  // namespace twb
