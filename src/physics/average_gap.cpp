@@ -7,9 +7,12 @@ namespace twb {
 
 ValueSlope average_gap(double h, double sigma) {
   const double scaled = h / (sigma * std::numbers::sqrt2);
-  // Far open: exp(−x²) and erfc(x) are below the smallest normal double (x > 26.6), so
-  // h_T = h and its slope 1 exactly; returning them spares libm's slow subnormal path.
-  if (scaled > 27.0) return {h, 1.0};
+  // Open by more than 6√2 σ (h/σ > 8.49, most of a tilted film), the closed form rounds
+  // to {h, 1} exactly, so it is returned without its exp and erfc: the closed fraction
+  // erfc(x)/2 ≤ erfc(6)/2 = 1.1e-17 is below half an ulp of 1 (2^-54 = 5.6e-17), so
+  // 1 − closed rounds to 1; the bracket below is at most σφ(x√2) ≤ 9.2e-17 σ, i.e.
+  // 1.1e-17 of h, below half an ulp of h, so h + bracket rounds to h.
+  if (scaled >= exact_open_threshold) return {h, 1.0};
   const double gaussian = sigma * std::exp(-scaled * scaled) /
                           std::sqrt(2.0 * std::numbers::pi);
   if (h > 0.0) {

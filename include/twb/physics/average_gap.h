@@ -12,4 +12,8 @@ namespace twb {
 // Always positive for any h (including h <= 0), equal to h within 1.3e-4 for h >= 3 sigma.
 ValueSlope average_gap(double h, double sigma);
 
+// h/(σ√2) from which average_gap returns {h, 1} without evaluating the closed form,
+// which rounds to exactly those there (average_gap.cpp).
+inline constexpr double exact_open_threshold = 6.0;
+
 }  // namespace twb
