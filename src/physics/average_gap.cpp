@@ -1,7 +1,11 @@
 #include "twb/physics/average_gap.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+
+#include "twb/physics/batch_math.h"
 
 namespace twb {
 
@@ -26,6 +30,39 @@ ValueSlope average_gap(double h, double sigma) {
   // 1 + erf(x) = erfc(−x): no cancellation for h << 0, where h_T is tiny but positive.
   const double opened_fraction = 0.5 * std::erfc(-scaled);
   return {h * opened_fraction + gaussian, opened_fraction};
+}
+
+void average_gap(std::span<const double> h, double sigma, std::span<ValueSlope> out) {
+  // The scalar function's arithmetic, with its exp and erfc taken over the batch; points
+  // open beyond the threshold get {h, 1} as there (their lanes compute a dummy value).
+  constexpr std::size_t chunk = 64;
+  std::array<double, chunk> scaled, square, gaussian, tail;
+  for (std::size_t start = 0; start < h.size(); start += chunk) {
+    const std::size_t n = std::min(chunk, h.size() - start);
+    for (std::size_t k = 0; k < n; ++k) {
+      scaled[k] = h[start + k] / (sigma * std::numbers::sqrt2);
+      const double x = scaled[k] >= exact_open_threshold ? 0.0 : scaled[k];
+      square[k] = -x * x;
+      tail[k] = std::abs(x);  // erfc(x) where h > 0, erfc(−x) where h ≤ 0
+    }
+    batch::exp(std::span<const double>(square.data(), n), std::span<double>(gaussian.data(), n));
+    batch::erfc(std::span<const double>(tail.data(), n), std::span<double>(tail.data(), n));
+    for (std::size_t k = 0; k < n; ++k) {
+      const double hk = h[start + k];
+      if (scaled[k] >= exact_open_threshold) {
+        out[start + k] = {hk, 1.0};
+        continue;
+      }
+      const double g = sigma * gaussian[k] / std::sqrt(2.0 * std::numbers::pi);
+      if (hk > 0.0) {
+        const double closed = 0.5 * tail[k];
+        out[start + k] = {hk + (g - hk * closed), 1.0 - closed};
+      } else {
+        const double opened_fraction = 0.5 * tail[k];
+        out[start + k] = {hk * opened_fraction + g, opened_fraction};
+      }
+    }
+  }
 }
 
 }  // namespace twb
