@@ -13,14 +13,16 @@
 //                       points: symbolic analyses (AMD ordering), full factorizations with
 //                       partial pivoting, and refactorizations that reuse a pivot sequence
 //
-// Measured (Release, medians of CPU time, load average 6 from other helpers' work;
-// docs/model.md has the table with wall times): cold start 109 / 92 / 76 ms at
-// 100 N, 500 N (545 rad/s) and 500 N (136 rad/s) with 35 / 29 / 24 Jacobians, no
-// symbolic analysis and 0.1–0.17 full factorizations per state, the rest
-// refactorizations; warm start +2 % 11.2–14.8 ms with 3–4 Jacobians, all refactored;
-// the predictor step 21–26 ms with 2 full factorizations (its two tangents); a
-// residual with Jacobian 1.9 ms, a residual 1.5 ms. Targets not met (docs/model.md
-// says why).
+// Measured (Release, medians of CPU time, load average 4 from other helpers' work;
+// docs/model.md has the table with wall times), before -> after batching the Gauss-point
+// kernels (exp, log, erfc four lanes at a time), in one session: cold start 112 -> 91.0,
+// 97.9 -> 75.9 and 74.5 -> 61.0 ms at 100 N, 500 N (545 rad/s) and 500 N (136 rad/s)
+// with 35 / 29 / 24 Jacobians, no symbolic analysis and 0.09-0.14 full factorizations
+// per state, the rest refactorizations; warm start +2 % 15.0 -> 12.5, 11.9 -> 9.87,
+// 14.0 -> 12.0, 11.1 -> 9.06 ms with 4 / 3 / 4 / 3 Jacobians, all refactored; the
+// predictor step 25.6-21.0 -> 21.5-16.8 ms with 2 full factorizations (its two
+// tangents); a residual with Jacobian 1.90 -> 1.30 ms, a residual 1.48 -> 0.90 ms.
+// Targets met only by the 3-iteration warm starts (docs/model.md says why).
 //
 //   ./build/benchmarks/steady_state_benchmark --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>

@@ -214,6 +214,14 @@ ValueSlope BearingModel::viscosity(double temperature) const {
   return roelands_(temperature);
 }
 
+void BearingModel::viscosity(std::span<const double> temperature, std::span<ValueSlope> out) const {
+  if (scene_.lubricant.viscosity_model == ViscosityModel::constant) {
+    std::fill(out.begin(), out.end(), ValueSlope{scene_.lubricant.constant_viscosity, 0.0});
+    return;
+  }
+  roelands_(temperature, out);
+}
+
 RigidPosition BearingModel::position(std::span<const double> u) const {
   const double* q = u.data() + rigid_offset_;
   return {q[0] * sigma_ref_, q[1] * gamma_ref_, q[2] * gamma_ref_, q[3] * sigma_ref_};

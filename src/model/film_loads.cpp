@@ -84,6 +84,11 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
                  rule.weights[gs] * rule.weights[gt] * r * m.dr() * m.dtheta()};
   };
 
+  // The contact rule's points of one cell within the cutoff, their gaps and pressures.
+  std::vector<Point> contact_points;
+  std::vector<double> contact_h;
+  std::vector<ValueSlope> contact_p;
+
   // Rows of the rigid-body balance this film loads (eqs [34]-[37]): the washer sees
   // film 1 from below (+) and film 2 from above (−); the gear sees film 2 (+).
   const double f_ref = load_, m_ref = load_ * scene_.washer.outer_radius;
@@ -96,6 +101,11 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
     rows = {{rigid_offset_ + 0, -1.0 / f_ref, 0, 0}, {rigid_offset_ + 1, 0, -1.0 / m_ref, 0},
             {rigid_offset_ + 2, 0, 0, -1.0 / m_ref}, {rigid_offset_ + 3, 1.0 / f_ref, 0, 0}};
   }
+
+  // The smooth rule's points of one cell: viscosity temperature, gap, and their kernels.
+  const std::size_t smooth_points = smooth_rule_.points.size();
+  std::vector<double> point_t(smooth_points * smooth_points), point_h(point_t.size());
+  std::vector<ValueSlope> point_mu(point_t.size()), point_gap(point_t.size());
 
   // Node viscosity temperatures and their gradients, computed once per node.
   std::vector<double> node_t(m.node_count());
@@ -148,34 +158,44 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
         double torque = 0;
         std::array<double, 4> power{};
         std::array<std::array<double, 3>, 4> power_rigid{};
+        // The cell's rule at the points within the cutoff (beyond it p < 1e-20 p(0),
+        // above), their pressures as one batch (vectorized).
+        contact_points.clear();
+        contact_h.clear();
         for (std::size_t gs = 0; gs < contact_rule_.points.size(); ++gs) {
           for (std::size_t gt = 0; gt < contact_rule_.points.size(); ++gt) {
-            const auto [s, tt, r, x, y, w] = point(contact_rule_, cos_c, sin_c, i, j, gs, gt);
-            const double h = c + pa * x + pb * y;
-            // The cell's rule, point by point: beyond the cutoff p < 1e-20 p(0) (above).
+            const Point pt = point(contact_rule_, cos_c, sin_c, i, j, gs, gt);
+            const double h = c + pa * pt.x + pb * pt.y;
             if (h > cutoff) continue;
-            const ValueSlope v = contact_->pressure(h);
-            const double f = w * v.value, k = w * v.slope;
-            force[0] += f;
-            force[1] += f * y;
-            force[2] -= f * x;
-            stiffness[0] += k;
-            stiffness[1] += k * y;
-            stiffness[2] -= k * x;
-            stiffness[3] += k * y * y;
-            stiffness[4] -= k * x * y;
-            stiffness[5] += k * x * x;
-            if (!film.sliding) continue;
-            const double v_slide = omega * r;
-            torque += f * r;
-            const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
-            for (int n = 0; n < 4; ++n) {
-              const double nv = N[n] * v_slide, kn = k * nv;
-              power[n] += f * nv;
-              power_rigid[n][0] += kn;
-              power_rigid[n][1] += kn * y;
-              power_rigid[n][2] -= kn * x;
-            }
+            contact_points.push_back(pt);
+            contact_h.push_back(h);
+          }
+        }
+        contact_p.resize(contact_h.size());
+        contact_->pressure(contact_h, contact_p);
+        for (std::size_t q = 0; q < contact_points.size(); ++q) {
+          const auto [s, tt, r, x, y, w] = contact_points[q];
+          const ValueSlope v = contact_p[q];
+          const double f = w * v.value, k = w * v.slope;
+          force[0] += f;
+          force[1] += f * y;
+          force[2] -= f * x;
+          stiffness[0] += k;
+          stiffness[1] += k * y;
+          stiffness[2] -= k * x;
+          stiffness[3] += k * y * y;
+          stiffness[4] -= k * x * y;
+          stiffness[5] += k * x * x;
+          if (!film.sliding) continue;
+          const double v_slide = omega * r;
+          torque += f * r;
+          const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
+          for (int n = 0; n < 4; ++n) {
+            const double nv = N[n] * v_slide, kn = k * nv;
+            power[n] += f * nv;
+            power_rigid[n][0] += kn;
+            power_rigid[n][1] += kn * y;
+            power_rigid[n][2] -= kn * x;
           }
         }
         const std::array<std::array<double, 3>, 3> arms{{{stiffness[0], stiffness[1], stiffness[2]},
@@ -197,9 +217,24 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       }
 
       // Fluid pressure (bilinear between nodes) and viscous shear: one fixed rule on
-      // every cell, so the residual stays smooth as contact comes and goes.
-      for (std::size_t gs = 0; (hydro || film.sliding) && gs < smooth_rule_.points.size(); ++gs) {
-        for (std::size_t gt = 0; gt < smooth_rule_.points.size(); ++gt) {
+      // every cell, so the residual stays smooth as contact comes and goes. Viscosity
+      // and average gap at the cell's points first, as one batch each (vectorized).
+      if (film.sliding) {
+        for (std::size_t gs = 0, q = 0; gs < smooth_points; ++gs) {
+          for (std::size_t gt = 0; gt < smooth_points; ++gt, ++q) {
+            const auto [s, tt, r, x, y, w] = point(smooth_rule_, cos_s, sin_s, i, j, gs, gt);
+            const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
+            point_t[q] = 0;
+            for (int k = 0; k < 4; ++k) point_t[q] += N[k] * t_node[k];
+            point_h[q] = c + pa * x + pb * y;
+          }
+        }
+        viscosity(point_t, point_mu);
+        average_gap(point_h, film.sigma, point_gap);
+      }
+      for (std::size_t gs = 0; (hydro || film.sliding) && gs < smooth_points; ++gs) {
+        for (std::size_t gt = 0; gt < smooth_points; ++gt) {
+          const std::size_t q = gs * smooth_points + gt;
           const auto [s, tt, r, x, y, w] = point(smooth_rule_, cos_s, sin_s, i, j, gs, gt);
           const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
           if (hydro) {
@@ -213,13 +248,10 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
             tot.fluid_force += w * p;
           }
           if (!film.sliding) continue;
-          const double h = c + pa * x + pb * y;
           const double v_slide = omega * r;
-          double tv = 0;
-          for (int k = 0; k < 4; ++k) tv += N[k] * t_node[k];
-          const ValueSlope mu = viscosity(tv);
+          const ValueSlope mu = point_mu[q];
           // Shear acts over the average gap, which stays positive where h closes (MODEL.md 3, 6).
-          const ValueSlope gap = average_gap(h, film.sigma);
+          const ValueSlope gap = point_gap[q];
           const double tau = mu.value * v_slide / gap.value;
           tot.viscous_torque += w * tau * r;
           const double qv = tau * v_slide;  // μ V² / h̄T

@@ -1,15 +1,22 @@
 #include "twb/physics/average_gap.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+
+#include "twb/physics/batch_math.h"
 
 namespace twb {
 
 ValueSlope average_gap(double h, double sigma) {
   const double scaled = h / (sigma * std::numbers::sqrt2);
-  // Far open: exp(−x²) and erfc(x) are below the smallest normal double (x > 26.6), so
-  // h_T = h and its slope 1 exactly; returning them spares libm's slow subnormal path.
-  if (scaled > 27.0) return {h, 1.0};
+  // Open by more than 6√2 σ (h/σ > 8.49, most of a tilted film), the closed form rounds
+  // to {h, 1} exactly, so it is returned without its exp and erfc: the closed fraction
+  // erfc(x)/2 ≤ erfc(6)/2 = 1.1e-17 is below half an ulp of 1 (2^-54 = 5.6e-17), so
+  // 1 − closed rounds to 1; the bracket below is at most σφ(x√2) ≤ 9.2e-17 σ, i.e.
+  // 1.1e-17 of h, below half an ulp of h, so h + bracket rounds to h.
+  if (scaled >= exact_open_threshold) return {h, 1.0};
   const double gaussian = sigma * std::exp(-scaled * scaled) /
                           std::sqrt(2.0 * std::numbers::pi);
   if (h > 0.0) {
@@ -23,6 +30,39 @@ ValueSlope average_gap(double h, double sigma) {
   // 1 + erf(x) = erfc(−x): no cancellation for h << 0, where h_T is tiny but positive.
   const double opened_fraction = 0.5 * std::erfc(-scaled);
   return {h * opened_fraction + gaussian, opened_fraction};
+}
+
+void average_gap(std::span<const double> h, double sigma, std::span<ValueSlope> out) {
+  // The scalar function's arithmetic, with its exp and erfc taken over the batch; points
+  // open beyond the threshold get {h, 1} as there (their lanes compute a dummy value).
+  constexpr std::size_t chunk = 64;
+  std::array<double, chunk> scaled, square, gaussian, tail;
+  for (std::size_t start = 0; start < h.size(); start += chunk) {
+    const std::size_t n = std::min(chunk, h.size() - start);
+    for (std::size_t k = 0; k < n; ++k) {
+      scaled[k] = h[start + k] / (sigma * std::numbers::sqrt2);
+      const double x = scaled[k] >= exact_open_threshold ? 0.0 : scaled[k];
+      square[k] = -x * x;
+      tail[k] = std::abs(x);  // erfc(x) where h > 0, erfc(−x) where h ≤ 0
+    }
+    batch::exp(std::span<const double>(square.data(), n), std::span<double>(gaussian.data(), n));
+    batch::erfc(std::span<const double>(tail.data(), n), std::span<double>(tail.data(), n));
+    for (std::size_t k = 0; k < n; ++k) {
+      const double hk = h[start + k];
+      if (scaled[k] >= exact_open_threshold) {
+        out[start + k] = {hk, 1.0};
+        continue;
+      }
+      const double g = sigma * gaussian[k] / std::sqrt(2.0 * std::numbers::pi);
+      if (hk > 0.0) {
+        const double closed = 0.5 * tail[k];
+        out[start + k] = {hk + (g - hk * closed), 1.0 - closed};
+      } else {
+        const double opened_fraction = 0.5 * tail[k];
+        out[start + k] = {hk * opened_fraction + g, opened_fraction};
+      }
+    }
+  }
 }
 
 }  // namespace twb

@@ -1,12 +1,15 @@
 #include "twb/physics/statistical_contact.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
+
+#include "twb/physics/batch_math.h"
 
 namespace twb {
 
@@ -146,6 +149,23 @@ ValueSlope log_pressure(const UniformHermiteTable& table, double sigma, double h
 }
 
 }  // namespace
+
+void StatisticalContact::pressure(std::span<const double> h, std::span<ValueSlope> out) const {
+  constexpr std::size_t chunk = 64;
+  std::array<double, chunk> log_p, p;
+  for (std::size_t start = 0; start < h.size(); start += chunk) {
+    const std::size_t n = std::min(chunk, h.size() - start);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double hk = h[start + k];
+      const ValueSlope l = hk >= table_.x_first() && hk <= table_.x_last() ? table_.evaluate(hk)
+                                                                         : log_pressure(table_, summit_sigma_, hk);
+      log_p[k] = l.value;
+      out[start + k].slope = l.slope;  // d ln p/dh until p is known
+    }
+    batch::exp(std::span<const double>(log_p.data(), n), std::span<double>(p.data(), n));
+    for (std::size_t k = 0; k < n; ++k) out[start + k] = {p[k], p[k] * out[start + k].slope};
+  }
+}
 
 ValueSlope StatisticalContact::pressure_off_table(double h) const {
   const ValueSlope log_p = log_pressure(table_, summit_sigma_, h);

@@ -74,4 +74,30 @@ TEST(AverageGap, AlwaysPositiveAndEqualsGapWhenOpen) {
   }
 }
 
+// The closed form evaluated in full, as average_gap does below its open threshold.
+twb::ValueSlope closed_form(double h) {
+  const double scaled = h / (sigma * std::numbers::sqrt2);
+  const double gaussian = sigma * std::exp(-scaled * scaled) / std::sqrt(2.0 * std::numbers::pi);
+  const double closed = 0.5 * std::erfc(scaled);
+  return {h + (gaussian - h * closed), 1.0 - closed};
+}
+
+TEST(AverageGap, OpenShortcutIsTheClosedFormToTheLastBit) {
+  // Above the threshold average_gap skips exp and erfc; the full closed form must round
+  // to the very same doubles there, from the threshold itself to far open.
+  const double first = twb::exact_open_threshold * std::numbers::sqrt2 * sigma;
+  int checked = 0;
+  for (double h = first; h < 80.0 * sigma; h = std::nextafter(h * (1.0 + 1e-4), INFINITY)) {
+    const twb::ValueSlope full = closed_form(h), fast = twb::average_gap(h, sigma);
+    ASSERT_EQ(fast.value, full.value) << "h/sigma = " << h / sigma;
+    ASSERT_EQ(fast.slope, full.slope) << "h/sigma = " << h / sigma;
+    ++checked;
+  }
+  EXPECT_GT(checked, 20000);
+  // Just below it the closed form still differs from {h, 1}: the threshold is not far
+  // below where the shortcut would start to change results.
+  const double below = 5.0 * std::numbers::sqrt2 * sigma;
+  EXPECT_NE(closed_form(below).slope, 1.0);
+}
+
 }  // namespace

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <vector>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -214,6 +215,22 @@ TEST(StatisticalContact, RejectsBadParameters) {
   EXPECT_THROW(twb::StatisticalContact(table1_asperity(), 0.0, summit_sigma), std::invalid_argument);
   EXPECT_THROW(twb::StatisticalContact(table1_asperity(), default_density(), -1.0),
                std::invalid_argument);
+}
+
+TEST(StatisticalContact, BatchPressureEqualsScalarOnAndOffTheTable) {
+  // Below the table, on it and in the Gaussian tail above it; the batch's exp is
+  // vectorized (a few ulp), its table lookup the same.
+  const twb::StatisticalContact& c = contact();
+  const double lo = c.log_pressure_table().x_first(), hi = c.log_pressure_table().x_last();
+  std::vector<double> h;
+  for (int k = 0; k <= 200; ++k) h.push_back(lo - 0.5 * summit_sigma + (hi - lo + summit_sigma) * k / 200.0);
+  std::vector<twb::ValueSlope> p(h.size());
+  c.pressure(h, p);
+  for (std::size_t k = 0; k < h.size(); ++k) {
+    const twb::ValueSlope one = c.pressure(h[k]);
+    EXPECT_NEAR(p[k].value / one.value, 1.0, 1e-14) << "h = " << h[k];
+    EXPECT_NEAR(p[k].slope / one.slope, 1.0, 1e-14) << "h = " << h[k];
+  }
 }
 
 }  // namespace

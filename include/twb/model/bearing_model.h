@@ -164,6 +164,8 @@ class BearingModel final : public SteadySystem {
   // Temperature (K) of a component's face at radius r, circumferential node j, with gradient.
   double face_temperature(std::span<const double> u, ComponentId id, double r, int j, LinearForm* form) const;
   ValueSlope viscosity(double temperature) const;
+  // The same at every temperature of a batch (Gauss points), vectorized.
+  void viscosity(std::span<const double> temperature, std::span<ValueSlope> out) const;
   // Half the washer's thickness lies on the path from a film node to its mid-plane
   // (eqs [26], [27]); carrier and gear faces are their surfaces.
   double body_resistance(ComponentId id) const;

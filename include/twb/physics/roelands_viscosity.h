@@ -2,6 +2,8 @@
 //   mu(T) = mu_inf * 10^( G0 * (1 + T_C/135)^(-S0) ),  T_C = T - 273.15.
 #pragma once
 
+#include <span>
+
 #include "twb/physics/value_slope.h"
 
 namespace twb {
@@ -20,6 +22,13 @@ struct RoelandsViscosity {
 
   // Viscosity (Pa s) and d mu/dT (Pa s/K) at the temperature in kelvin.
   ValueSlope operator()(double temperature_K) const;
+  // The same at every temperature of a batch, into out (same size), with exp and log
+  // vectorized (physics/batch_math.h): equal to the scalar values to a few ulp.
+  void operator()(std::span<const double> temperature_K, std::span<ValueSlope> out) const;
+
+ private:
+  // G0 (1 + T_C/135)^(-S0), continued below continuation_celsius, and its slope in T.
+  ValueSlope exponent(double celsius) const;
 };
 
 }  // namespace twb

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cmath>
+#include <span>
 
 #include "twb/physics/asperity_contact.h"
 #include "twb/physics/uniform_hermite_table.h"
@@ -57,6 +58,10 @@ class StatisticalContact {
     const double p = std::exp(log_p.value);
     return {p, p * log_p.slope};
   }
+
+  // The same at every separation of a batch, into out (same size), with the exp
+  // vectorized (physics/batch_math.h): equal to the scalar values to a few ulp.
+  void pressure(std::span<const double> h, std::span<ValueSlope> out) const;
 
   // The same by direct adaptive quadrature (relative tolerance ~1e-13), split at the
   // JG transition w = 1.9 omega_c and at the Gaussian peak. For tests and table building.
