@@ -12,13 +12,13 @@ std::string states_csv(const std::vector<SolvedState>& rows, const std::string& 
   std::string out =
       "load_N,speed_rad_s," + cells::run_header(parameter_column, sliding_column) +
       "T_mean_C,T_max_C,hmin_over_sigma,gamma_x_ratio,gamma_y_ratio,fluid_share,"
-      "contact_share,torque_Nm,f_eff,stribeck,converged,iterations,residual,energy_error,wall_ms\n";
+      "contact_share,torque_Nm,f_eff,stribeck,converged,iterations,residual,energy_error,wall_ms,branch\n";
   for (const SolvedState& r : rows) {
     const BearingState& s = r.state;
     out += fmt::format("{:.10g},{:.10g},", finite(s.load, "load"), finite(s.speed, "speed")) +
            cells::run_cells(parameter_column, sliding_column, r.parameter, r.sliding);
     out += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},"
-                       "{:.10g},{:.10g},{},{},{:.3e},{:.3e},{:.3f}\n",
+                       "{:.10g},{:.10g},{},{},{:.3e},{:.3e},{:.3f},{}\n",
                        finite(s.washer_mean_temperature - kelvin_offset, "T_mean"),
                        finite(s.max_film_temperature - kelvin_offset, "T_max"),
                        finite(s.hmin_over_sigma, "hmin_over_sigma"), finite(s.gamma_x_ratio, "gamma_x_ratio"),
@@ -26,7 +26,7 @@ std::string states_csv(const std::vector<SolvedState>& rows, const std::string& 
                        finite(s.contact_share, "contact_share"), finite(s.torque, "torque"),
                        finite(s.f_eff, "f_eff"), finite(s.stribeck, "stribeck"), r.converged ? 1 : 0,
                        r.iterations, finite(r.residual, "residual"), finite(s.energy_error, "energy_error"),
-                       finite(r.wall_ms, "wall_ms"));
+                       finite(r.wall_ms, "wall_ms"), r.branch);
   }
   return out;
 }

@@ -146,9 +146,11 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
       }
       found.row.parameter = variant.parameter;
       found.row.sliding = variant.sliding;
-      for (SolvedState& state : found.states) {
+      for (std::size_t i = 0; i < found.states.size(); ++i) {
+        SolvedState& state = found.states[i];
         state.parameter = variant.parameter;
         state.sliding = variant.sliding;
+        state.branch = i < found.cool_states ? "cool" : "hot";
       }
       for (TrajectorySample& sample : found.runaway) {
         sample.parameter = variant.parameter;

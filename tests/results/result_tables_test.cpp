@@ -67,6 +67,13 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   EXPECT_EQ(states.rfind("load_N,speed_rad_s,friction_coefficient,sliding,T_mean_C,", 0), 0u) << states;
   EXPECT_NE(states.find("\n150,545,0.2,washer_gear,24,24,"), std::string::npos) << states;
   EXPECT_EQ(states_csv({a}).rfind("load_N,speed_rad_s,T_mean_C,", 0), 0u);
+  // The branch closes the row: empty for a state no branch was followed to.
+  EXPECT_NE(states.find(",wall_ms,branch\n"), std::string::npos) << states;
+  EXPECT_EQ(states.back(), '\n');
+  EXPECT_EQ(states[states.size() - 2], ',') << "an empty branch cell";
+  a.branch = "hot";
+  const std::string hot = states_csv({a});
+  EXPECT_EQ(hot.substr(hot.size() - 5), ",hot\n") << hot;
   // A run without its parameter's value is a bug upstream: an empty cell, never NaN.
   a.parameter.reset();
   EXPECT_NE(states_csv({a}, "friction_coefficient").find("\n150,545,,24,"), std::string::npos);

@@ -27,6 +27,9 @@ Scene coarse_grid(StudyType type, std::vector<double> speeds) {
   return s;
 }
 
+// The bracket's relative width: W_d is known to within it.
+double scene_bracket_width() { return Study{}.bracket_width; }
+
 StudyOutcome run(const Scene& scene) {
   BearingModel model(scene);
   return run_study(model, {});
@@ -59,6 +62,28 @@ TEST(StudyRunner, LoadSweepOverSpeeds) {
   EXPECT_LT(*out.distress[1].distress_load, 200.0);
   ASSERT_FALSE(out.trajectory.empty());
   for (const TrajectorySample& t : out.trajectory) EXPECT_EQ(t.state.speed, 545.0);
+  // Each state names its branch: at 136 rad/s (no fold) every state is on the cool one;
+  // at 545 rad/s the cool states lie below W_d and the hot ones, where the runaway
+  // settled and the sweep went on, above it, and the hot branch carries far more of
+  // the load on contact than the cool one did at a lighter load.
+  const double w_d = *out.distress[1].distress_load;
+  int hot = 0;
+  for (const SolvedState& s : out.states) {
+    if (s.state.speed == 136.0) {
+      EXPECT_EQ(s.branch, "cool") << s.state.load;
+    }
+    if (s.state.speed != 545.0) continue;
+    ASSERT_TRUE(s.branch == "cool" || s.branch == "hot") << s.branch;
+    if (s.branch == "cool") {
+      EXPECT_LT(s.state.load, w_d * (1 + scene_bracket_width()));
+    }
+    if (s.branch == "hot") {
+      ++hot;
+      EXPECT_GT(s.state.load, w_d * (1 - scene_bracket_width()));
+      EXPECT_GT(s.state.contact_share, 0.5);
+    }
+  }
+  EXPECT_GE(hot, 2) << "200 N and 300 N lie past distress";
 }
 
 // The second parameter tags every state, row and sample with its value; at 136 rad/s,

@@ -19,6 +19,10 @@ struct SolvedState {
   // of its parameter (SI) and the film that slides ("carrier_washer", "washer_gear").
   std::optional<double> parameter;
   std::string sliding;
+  // Which steady branch a load sweep found the state on: "cool" (continued from the
+  // lightest load, before distress) or "hot" (past distress: where the runaway settled
+  // and continued from there). Empty where a study follows no branch (point, transient).
+  std::string branch;
   // Film 1 and film 2 on their polar grids when the scene asks for them
   // (output.fields); empty otherwise. Written by fields_table.h.
   std::vector<FilmFields> fields;
