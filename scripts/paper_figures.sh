@@ -40,15 +40,8 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-if [ -z "$twb" ]; then
-  for candidate in "$root/build-rel/twb" "$root/build/twb"; do
-    if [ -x "$candidate" ]; then twb=$candidate; break; fi
-  done
-fi
-if [ -z "$twb" ] || [ ! -x "$twb" ]; then
-  echo "paper_figures.sh: no twb binary${twb:+ at '$twb'}; build it (README) or pass --twb PATH" >&2
-  exit 2
-fi
+. "$root/scripts/find_twb.sh"
+find_twb paper_figures.sh
 
 set -- # the mesh overrides of --quick, as positional parameters
 if [ -n "$quick" ]; then
