@@ -1,9 +1,10 @@
 #include "twb/physics/batch_math.h"
 
-#include <immintrin.h>
-
 #include <cmath>
 #include <cstddef>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
 
 // libmvec's AVX2 variants (x86_64 vector function ABI names: 'd' = AVX2, 4 lanes). They
 // and the loops calling them are compiled for AVX2 only, and called only when the CPU
@@ -32,6 +33,7 @@ __attribute__((target("avx2,fma"))) void map_avx2(const double* x, double* y, st
 
 }  // namespace
 #pragma GCC pop_options
+#endif
 
 namespace twb::batch {
 
@@ -41,6 +43,7 @@ double scalar_exp(double x) { return std::exp(x); }
 double scalar_log(double x) { return std::log(x); }
 double scalar_erfc(double x) { return std::erfc(x); }
 
+#if defined(__x86_64__)
 const bool has_avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 
 template <__m256d (*vector_f)(__m256d), double (*scalar_f)(double)>
@@ -51,12 +54,22 @@ void map(std::span<const double> x, std::span<double> y) {
   }
   for (std::size_t k = 0; k < x.size(); ++k) y[k] = scalar_f(x[k]);
 }
+#define TWB_BATCH(vector_f, scalar_f) map<vector_f, scalar_f>
+#else
+const bool has_avx2 = false;
+
+template <double (*scalar_f)(double)>
+void map(std::span<const double> x, std::span<double> y) {
+  for (std::size_t k = 0; k < x.size(); ++k) y[k] = scalar_f(x[k]);
+}
+#define TWB_BATCH(vector_f, scalar_f) map<scalar_f>
+#endif
 
 }  // namespace
 
-void exp(std::span<const double> x, std::span<double> y) { map<_ZGVdN4v_exp, scalar_exp>(x, y); }
-void log(std::span<const double> x, std::span<double> y) { map<_ZGVdN4v_log, scalar_log>(x, y); }
-void erfc(std::span<const double> x, std::span<double> y) { map<_ZGVdN4v_erfc, scalar_erfc>(x, y); }
+void exp(std::span<const double> x, std::span<double> y) { TWB_BATCH(_ZGVdN4v_exp, scalar_exp)(x, y); }
+void log(std::span<const double> x, std::span<double> y) { TWB_BATCH(_ZGVdN4v_log, scalar_log)(x, y); }
+void erfc(std::span<const double> x, std::span<double> y) { TWB_BATCH(_ZGVdN4v_erfc, scalar_erfc)(x, y); }
 bool vectorized() { return has_avx2; }
 
 }  // namespace twb::batch
