@@ -531,9 +531,17 @@ def figure_contact_vs_hmin(data):
     return fig
 
 
+# Where the paper puts the optimum (the Stribeck curve's minimum) in its text on Figs. 14
+# and 16: its simulation at Z N / P of about 2.0e-6, its experiments at about 1.0e-6.
+PAPER_STRIBECK_OPTIMA = ((2.0e-6, "paper, numerical: optimum near 2.0e-6", "--"),
+                         (1.0e-6, "paper, experiments: optimum near 1.0e-6", ":"))
+
+
 def figure_stribeck(data):
     fig, ax = new_figure("Stribeck curve", 14)
     unconverged = draw_by_speed(ax, data, "stribeck", "f_eff", logx=True)
+    for x, label, style in PAPER_STRIBECK_OPTIMA:
+        ax.axvline(x, color="0.4", linestyle=style, linewidth=1.0, label=label)
     ax.set_xlabel(STRIBECK_LABEL)
     ax.set_ylabel(FEFF_LABEL)
     finish_legend(ax, unconverged)

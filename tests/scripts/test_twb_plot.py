@@ -190,6 +190,10 @@ class TwbPlotTest(unittest.TestCase):
         fig6 = self.svg_text(os.path.join(out_dir, "fig06_f_eff_vs_load.svg"))
         for text in ("136 rad/s", "545 rad/s", "distress load", "not converged"):
             self.assertIn(text, fig6)
+        # Fig. 14 marks where the paper puts the optimum (Figs. 14 and 16, text).
+        fig14 = self.svg_text(os.path.join(out_dir, "fig14_stribeck.svg"))
+        for text in ("paper, numerical: optimum near 2.0e-6", "paper, experiments: optimum near 1.0e-6"):
+            self.assertIn(text, fig14)
 
     def test_directories_are_merged(self):
         a = self.results_dir("f_empirical", speeds=(136,), friction={"law": "empirical"})
