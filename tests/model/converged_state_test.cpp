@@ -5,6 +5,7 @@
 // over a node conductance), which bounds the balances well inside 1e-8.
 #include <gtest/gtest.h>
 
+#include "../support/converged_balances.h"
 #include "../support/table1_scene.h"
 #include "twb/model/bearing_model.h"
 #include "twb/solver/steady_solver.h"
@@ -23,9 +24,7 @@ TEST_P(ConvergedState, SatisfiesBalancesAndComplementarity) {
   const SteadyReport rep = solver.solve_cold(u);
   ASSERT_TRUE(rep.converged) << rep.message;
   const BearingState s = m.describe(u);
-  EXPECT_LT(s.force_balance_error, 1e-8);
-  EXPECT_LT(s.moment_balance_error, 1e-8);
-  EXPECT_LT(s.energy_error, 1e-8);
+  testing::expect_balanced(s);
   EXPECT_LT(s.complementarity_error, 1e-8);
   EXPECT_GT(s.heat_generated, 0.0);
   EXPECT_NEAR(s.fluid_share + s.contact_share, 1.0, 1e-8) << "the sliding film carries the whole load";

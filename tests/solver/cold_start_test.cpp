@@ -6,22 +6,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../support/state_difference.h"
 #include "../support/table1_scene.h"
 #include "twb/model/bearing_model.h"
 #include "twb/solver/steady_solver.h"
 
 namespace twb {
 namespace {
-
-// Largest difference relative to the state's largest scaled unknown.
-double state_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  double scale = 0.0, d = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    scale = std::max(scale, std::abs(b[k]));
-    d = std::max(d, std::abs(a[k] - b[k]));
-  }
-  return d / scale;
-}
 
 struct Case { double speed, load; };
 class ColdStart : public ::testing::TestWithParam<Case> {};
@@ -48,7 +39,7 @@ TEST_P(ColdStart, ReachesTheStateNewtonReachesFromANeighbour) {
   // Both meet the residual tolerance 1e-10 (scaled): their difference is J⁻¹ times
   // residuals of that size, 1e-15..3e-12 of the state here; 1e-9 is the project's
   // "same state" (a fold or a jump to another branch would differ by far more).
-  EXPECT_LT(state_difference(cold, warm), 1e-9);
+  EXPECT_LT(testing::relative_difference(cold, warm), 1e-9);
 }
 
 // Below distress (full film) and on the hot branch at 545 rad/s; below distress at 136.

@@ -14,21 +14,13 @@
 #include "../support/bratu_fold.h"
 #include "../support/lower_branch.h"
 #include "../support/model_problems.h"
+#include "../support/state_difference.h"
 #include "twb/solver/runaway.h"
 
 namespace twb {
 namespace {
 
 constexpr int bratu_nodes = 100;
-
-double relative_gap(const std::vector<double>& a, const std::vector<double>& b) {
-  double gap = 0.0, size = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    gap = std::max(gap, std::abs(a[k] - b[k]));
-    size = std::max(size, std::abs(b[k]));
-  }
-  return gap / size;
-}
 
 // A settled step ends on Newton's steady state, not on the trajectory: it must equal
 // the steady state at the new parameter to Newton's accuracy. Newton stops at a
@@ -39,7 +31,7 @@ TEST(Runaway, SmallStableStepSettlesOnTheSteadyState) {
   const StepOutcome s = classify_step(semenov, testing::SemenovProblem::lower_steady_state(0.3), 0.31, {});
   ASSERT_TRUE(s.settled()) << s.reason;
   EXPECT_EQ(s.evidence, StepEvidence::steady_state_found);
-  EXPECT_LT(relative_gap(s.final_state, testing::SemenovProblem::lower_steady_state(0.31)), 1e-8);
+  EXPECT_LT(testing::relative_difference(s.final_state, testing::SemenovProblem::lower_steady_state(0.31)), 1e-8);
   EXPECT_EQ(semenov.parameter(), 0.31);
 
   testing::BratuProblem bratu(bratu_nodes, 2.0);
@@ -50,7 +42,7 @@ TEST(Runaway, SmallStableStepSettlesOnTheSteadyState) {
   bratu.set_parameter(2.0);
   const StepOutcome b = classify_step(bratu, before, 2.1, {});
   ASSERT_TRUE(b.settled()) << b.reason;
-  EXPECT_LT(relative_gap(b.final_state, expected), 1e-8);
+  EXPECT_LT(testing::relative_difference(b.final_state, expected), 1e-8);
   std::cout << "Bratu 2 -> 2.1: settled at t = " << b.time << " (relaxation time " << b.relaxation_time << ", "
             << b.statistics.steps << " steps, " << b.newton_attempts << " Newton attempts)\n";
 }
@@ -62,7 +54,7 @@ TEST(Runaway, NoStepIsSettledAtOnce) {
   const StepOutcome s = classify_step(semenov, steady, 0.3, {});
   ASSERT_TRUE(s.settled()) << s.reason;
   EXPECT_EQ(s.time, 0.0);
-  EXPECT_LT(relative_gap(s.final_state, steady), 1e-12);
+  EXPECT_LT(testing::relative_difference(s.final_state, steady), 1e-12);
 }
 
 // Half a percent either side of the fold, from a steady state 5 % below it: below

@@ -18,8 +18,7 @@ namespace {
 // and the continuation see the same discrete system, so they must agree on it.
 Scene coarse_scene(double speed) {
   Scene s = testing::table1_scene(true, true, true, true, speed, 100.0);
-  s.mesh.radial_nodes = 5;
-  s.mesh.circumferential_nodes = 24;
+  testing::use_coarse_mesh(s);
   return s;
 }
 

@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "../support/table1_scene.h"
 #include "twb/physics/friction_law.h"
 #include "twb/physics/roelands_viscosity.h"
 #include "twb/scene/scene_loader.h"
@@ -43,8 +44,7 @@ constexpr double kPaperMaxLoad = 2000.0;         // N, the end of the paper's lo
 // given (fig. 15), eq. [18] otherwise.
 Scene paper_scene(double speed, std::optional<double> friction_coefficient = {}) {
   Scene s = load_scene(TWB_SOURCE_DIR "/configs/jackson_green_2006.yaml");
-  s.mesh.radial_nodes = 5;
-  s.mesh.circumferential_nodes = 24;
+  testing::use_coarse_mesh(s);
   s.operating.speed = speed;
   if (friction_coefficient) {
     s.friction.law = FrictionLaw::constant;

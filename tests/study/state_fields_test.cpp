@@ -14,8 +14,7 @@ namespace {
 
 Scene coarse(bool fields) {
   Scene s = testing::table1_scene(true, true, true, false, 545.0, 150.0);
-  s.mesh.radial_nodes = 5;
-  s.mesh.circumferential_nodes = 24;
+  testing::use_coarse_mesh(s);
   s.output.fields = fields;
   return s;
 }

@@ -17,8 +17,7 @@ namespace {
 // (near 161 N), so the grid holds the cool branch, the runaway and the hot branch.
 Scene coarse_grid(StudyType type, std::vector<double> speeds) {
   Scene s = testing::table1_scene(true, true, true, true, speeds.front(), 100.0);
-  s.mesh.radial_nodes = 5;
-  s.mesh.circumferential_nodes = 24;
+  testing::use_coarse_mesh(s);
   s.study.type = type;
   s.study.load_start = 100.0;
   s.study.load_end = 300.0;
