@@ -104,13 +104,18 @@ def _number(path, line, column, text, optional=False):
     return value
 
 
-def _header(path, records, required, what):
+def _header_line(path, records, expected):
+    """The header's line number and its column names; an empty file is an error that
+    says which header was expected."""
     try:
         line, header = next(records)
     except StopIteration:
-        raise InputError(f"{path}: line 1: expected the header {','.join(required)}, "
-                         f"got an empty file") from None
-    header = [h.strip() for h in header]
+        raise InputError(f"{path}: line 1: expected the header {expected}, got an empty file") from None
+    return line, [h.strip() for h in header]
+
+
+def _header(path, records, required, what):
+    line, header = _header_line(path, records, ",".join(required))
     missing = [c for c in required if c not in header]
     if missing:
         raise InputError(f"{path}: line {line}: expected the {what} header {','.join(required)}; "
@@ -201,12 +206,8 @@ class DistressRow:
 
 def read_distress(path):
     records = _records(path)
-    try:
-        line, header = next(records)
-    except StopIteration:
-        raise InputError(f"{path}: line 1: expected the header speed_rad_s[,<parameter>][,sliding],"
-                         f"{','.join(DISTRESS_TAIL)}, got an empty file") from None
-    header = [h.strip() for h in header]
+    line, header = _header_line(path, records,
+                                f"speed_rad_s[,<parameter>][,sliding],{','.join(DISTRESS_TAIL)}")
     middle = header[1:-5]
     sliding = bool(middle) and middle[-1] == "sliding"
     if sliding:
