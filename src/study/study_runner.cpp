@@ -175,11 +175,18 @@ std::vector<double> load_grid(const Study& st) {
   return grid;
 }
 
-DistressSearchSettings grid_settings(const Study& st) {
+// The study's load range and bracket width: a distress map's search.
+DistressSearchSettings range_settings(const Study& st) {
   DistressSearchSettings s;
   s.load_start = st.load_start;
   s.load_end = st.load_end;
   s.bracket_width = st.bracket_width;
+  return s;
+}
+
+// A sweep's search: the range, the requested grid, and on past distress.
+DistressSearchSettings grid_settings(const Study& st) {
+  DistressSearchSettings s = range_settings(st);
   s.grid = load_grid(st);
   s.continue_past_distress = true;
   return s;
@@ -203,13 +210,9 @@ void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport
 }
 
 void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress) {
-  const Study& st = base.scene().study;
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
-  DistressSearchSettings s;
-  s.load_start = st.load_start;
-  s.load_end = st.load_end;
-  s.bracket_width = st.bracket_width;
-  run_searches(base, variants, s, progress, [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
+  run_searches(base, variants, range_settings(base.scene().study), progress,
+               [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
     out.distress.push_back(found.row);
     // The cool branch's states are results too (f_eff, temperature against load).
     out.states.insert(out.states.end(), found.states.begin(),
