@@ -1,7 +1,8 @@
 // The modified Reynolds equation [1] on the sliding film (MODEL.md section 3), finite
 // volumes on the polar grid (second order), with the Reynolds cavitation condition as
-// the complementarity p ≥ 0, w ≥ 0, p·w = 0 solved inside Newton through the
-// Fischer–Burmeister function of the scaled pair (p̂, ŵ).
+// the complementarity p ≥ 0, w ≥ 0, p·w = 0 solved inside Newton through a
+// semismooth function of the scaled pair (p̂, ŵ): Fischer–Burmeister or the minimum
+// (CavitationRow, bearing_model.h).
 //
 // w is the net volumetric outflow of a node's control volume: Couette outflow minus
 // Poiseuille inflow. Where the film ruptures (p = 0, diverging gap) more oil leaves
@@ -23,12 +24,14 @@ namespace twb {
 
 namespace {
 
-// Fischer–Burmeister φ(a, b) = a + b − √(a² + b²) and its partial derivatives; at the
-// kink (0, 0) any element of the generalized Jacobian serves semismooth Newton.
-struct FischerBurmeister {
+// φ(a, b) and its partial derivatives: Fischer–Burmeister a + b − √(a² + b²) or
+// min(a, b). At their kinks (FB at (0, 0), min where a = b) any element of the
+// generalized Jacobian serves semismooth Newton.
+struct Complementarity {
   double value, da, db;
 };
-FischerBurmeister fischer_burmeister(double a, double b) {
+Complementarity complementarity(CavitationRow row, double a, double b) {
+  if (row == CavitationRow::minimum) return a <= b ? Complementarity{a, 1.0, 0.0} : Complementarity{b, 0.0, 1.0};
   const double n = std::hypot(a, b);
   if (n == 0.0) return {0.0, 1.0 - std::sqrt(0.5), 1.0 - std::sqrt(0.5)};
   return {a + b - n, 1.0 - a / n, 1.0 - b / n};
@@ -116,11 +119,11 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
     const Index row = p_col(k);
     const double scale = flow_scale_[k];
     const double w_hat = a.residual_value(row) / scale;
-    const FischerBurmeister fb = fischer_burmeister(u[row], w_hat);
-    a.set_residual(row, fb.value);
+    const Complementarity phi = complementarity(cavitation_row_, u[row], w_hat);
+    a.set_residual(row, phi.value);
     if (!jac) continue;
-    a.scale_row(row, fb.db / scale);
-    a.add_derivative(row, row, fb.da);
+    a.scale_row(row, phi.db / scale);
+    a.add_derivative(row, row, phi.da);
   }
 }
 

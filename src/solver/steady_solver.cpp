@@ -91,6 +91,20 @@ void SteadySolver::account(SteadyReport& rep, const NewtonReport& n) const {
   if (!n.converged) rep.message = n.message;
 }
 
+bool SteadySolver::newton(std::vector<double>& u, const NewtonSettings& s, SteadyReport& rep) {
+  // The minimum row only where Newton converges on its own; pseudo-time marches the
+  // model's row (Fischer–Burmeister), whose slopes do not jump between its steps.
+  struct RowScope {
+    BearingModel& model;
+    CavitationRow kept;
+    ~RowScope() { model.set_cavitation_row(kept); }
+  } scope{model_, model_.cavitation_row()};
+  model_.set_cavitation_row(CavitationRow::minimum);
+  const NewtonReport n = newton_.solve(u, s);
+  account(rep, n);
+  return n.converged;
+}
+
 bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep, bool newton_first) {
   std::vector<double> trial = u;
   if (newton_first) {
@@ -99,9 +113,7 @@ bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep, bool newton_
     // then as many damped ones) before pseudo-time takes over.
     NewtonSettings quick = settings_;
     quick.max_iterations = std::min(settings_.max_iterations, 8);
-    const NewtonReport n = newton_.solve(trial, quick);
-    account(rep, n);
-    if (n.converged) {
+    if (newton(trial, quick, rep)) {
       u = trial;
       return true;
     }
@@ -112,18 +124,26 @@ bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep, bool newton_
   // falls, and cut when a step leaves the domain. As Δτ → ∞ the steps become Newton's.
   rep.strategy = "pseudo-transient";
   PseudoTimeStepper stepper(model_, newton_.factorization());
-  // Pseudo-time moves in small steps anyway; a step that shifts the washer or gear by
-  // more than a couple of σ leaves the region where the contact law is nearly linear.
-  // Measured like KINSOL's step cap: ‖D δ‖₂ with D the model's step weights.
-  const double max_step = std::min(settings_.max_step, 2.0);
+  // A step that shifts the washer or gear by more than a few σ leaves the region where
+  // the contact law is nearly linear. Measured like KINSOL's step cap: ‖D δ‖₂ with D
+  // the model's step weights. The cap and the first Δτ below are tuned together on the
+  // paper's 36 cold starts (benchmarks/cold_start_survey, 9×66 mesh): with a first Δτ
+  // of 0.1 and a 2σ cap the steps were 31 (median) and 1367 rad/s, 300 N needed the
+  // speed ramp (332 iterations); a first Δτ of 3 with a 4σ cap gives 16, every state
+  // by pseudo-time (1367 rad/s, 300 N in 157 steps, the others in at most 21), on the
+  // same states (to 2e-12). Every pair within first Δτ 2…5 and cap 4…5σ reaches all 36
+  // without a ramp (median 15.5–16); a 3σ cap sends two 300 N states to the ramp. On the 5×24 and 17×132 meshes: median 30 → 19.5 and
+  // 37.5 → 20 steps, ramps 2 → 0 and 3 → 0.
+  const double max_step = std::min(settings_.max_step, 4.0);
   const std::vector<double> step_weight = model_.step_weights();
   std::vector<double> state = u, delta;
   double norm = stepper.assemble(state);
   ++rep.residual_evaluations;
   if (!std::isfinite(norm)) return false;
   stepper.accept();
-  // With diagonal weights Δτ is in units of each unknown's own relaxation time.
-  double dtau = 0.1;
+  // With diagonal weights Δτ is in units of each unknown's own relaxation time: the
+  // first step relaxes the cold state most of the way (the cap above bounds it).
+  double dtau = 3.0;
   std::vector<double> weight;
   // Successful runs take at most ~150 steps on the paper's 36 cold starts; the ones
   // that fail stagnate, and 250 leaves a margin before the ramps take over.
@@ -157,7 +177,7 @@ bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep, bool newton_
     }
     // Grow at least geometrically while the residual does not rise: SER alone stalls
     // when the residual falls slowly through a long transient. Hold Δτ while it rises
-    // (the heating transient raises the thermal rows' residual for tens of steps): SER
+    // (the heating transient raises the thermal rows' residual over several steps): SER
     // would shrink Δτ by the rise and then need as many steps to grow it back. Only a
     // rejected step (above) cuts Δτ. On the 36 paper cold starts this halves the steps.
     const double ratio = norm / next;
@@ -166,9 +186,7 @@ bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep, bool newton_
     if (dtau > 1e4 && norm < 1e-4) {
       // Close enough for Newton's quadratic convergence to take over.
       trial = state;
-      const NewtonReport nf = newton_.solve(trial, settings_);
-      account(rep, nf);
-      if (nf.converged) {
+      if (newton(trial, settings_, rep)) {
         u = trial;
         return true;
       }
@@ -243,11 +261,7 @@ bool SteadySolver::speed_ramp(std::vector<double>& u, SteadyReport& rep) {
   NewtonSettings quick = settings_;
   quick.max_iterations = 25;
   const double reached = walk([&](double w) { model_.set_speed(w); }, 0.0, target, 0.05 * target, state,
-                              [&](std::vector<double>& x) {
-                                const NewtonReport n = newton_.solve(x, quick);
-                                account(rep, n);
-                                return n.converged;
-                              });
+                              [&](std::vector<double>& x) { return newton(x, quick, rep); });
   if (reached < target) return false;
   u = state;
   return true;

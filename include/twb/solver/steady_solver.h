@@ -37,6 +37,9 @@ class SteadySolver {
 
  private:
   void account(SteadyReport& rep, const NewtonReport& n) const;
+  // KINSOL's Newton from u with the minimum as the cavitation row (CavitationRow), the
+  // model's own row restored afterwards; counted into rep.
+  bool newton(std::vector<double>& u, const NewtonSettings& s, SteadyReport& rep);
   SteadyReport ramp(std::vector<double>& u, SteadyReport rep);
   bool speed_ramp(std::vector<double>& u, SteadyReport& rep);
   // Newton (if newton_first), then pseudo-transient continuation from u; true when u
