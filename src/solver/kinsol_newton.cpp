@@ -34,13 +34,26 @@ struct KinsolNewton::Callbacks {
   // One assembly serves both callbacks. KINSOL asks for the Jacobian at the point its
   // line search has just accepted, usually the full Newton step, the first point
   // whose residual it asks for after a Jacobian. So that residual is assembled with its
-  // Jacobian (one pass costs about 1.25 residual-only passes, against 2.25 for a
+  // Jacobian (one pass costs about 1.4 residual-only passes, against 2.4 for a
   // residual and then both) and both are kept with the point, unshifted; the points of
   // a backtracking line search get the residual alone. The system does not change
   // during one solve, so the cache is cleared at the start of each.
   std::vector<double> point, point_residual, point_jacobian;
   bool point_has_jacobian = false;
   bool next_with_jacobian = true;
+  // The last Newton point needs no Jacobian: it meets the tolerance and KINSOL stops.
+  // Where Newton converges quadratically, ‖F_k+1‖ ≈ C‖F_k‖² with C = ‖F_k‖/‖F_k−1‖²
+  // from the last two points; when that guess is 100× below the tolerance the next
+  // point gets the residual alone (if the guess was wrong, KINSOL's Jacobian request
+  // assembles the point again: slower, never wrong).
+  std::vector<double> step_norms;  // ‖F‖∞ at the points assembled for a Jacobian
+  double tolerance = 0.0;
+  bool expects_convergence() const {
+    const std::size_t k = step_norms.size();
+    if (k < 2 || !(step_norms[k - 2] > 0.0)) return false;
+    const double rate = step_norms[k - 1] / (step_norms[k - 2] * step_norms[k - 2]);
+    return rate * step_norms[k - 1] * step_norms[k - 1] <= 1e-2 * tolerance;
+  }
   bool holds(std::span<const double> u) const {
     return point.size() == u.size() && std::equal(u.begin(), u.end(), point.begin());
   }
@@ -55,6 +68,7 @@ struct KinsolNewton::Callbacks {
   }
   void forget() {
     point.clear();
+    step_norms.clear();
     next_with_jacobian = true;
   }
 };
@@ -70,15 +84,15 @@ int residual_fn(N_Vector y, N_Vector f, void* data) {
     const auto n = std::size_t(N_VGetLength(y));
     std::span<const double> u(N_VGetArrayPointer(y), n);
     std::span<double> r(N_VGetArrayPointer(f), n);
-    cb->assemble_at(u, cb->next_with_jacobian);
+    const bool newton_point = cb->next_with_jacobian;
+    cb->assemble_at(u, newton_point && !cb->expects_convergence());
     cb->next_with_jacobian = false;
     std::copy(cb->point_residual.begin(), cb->point_residual.end(), r.begin());
     if (cb->shift)
       for (std::size_t k = 0; k < n; ++k) r[k] += cb->shift->coefficient(k) * (u[k] - cb->shift->anchor[k]);
-    for (std::size_t k = 0; k < n; ++k)
-      if (!std::isfinite(r[k])) {
-        return 1;
-      }
+    const double norm = max_norm(r);
+    if (!std::isfinite(norm)) return 1;
+    if (newton_point) cb->step_norms.push_back(norm);
     return 0;
   } catch (const std::exception& e) {
     cb->callback_error = e.what();
@@ -216,11 +230,13 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
       if (shift->coefficient(k) != 0.0 && callbacks_->diagonal[k] < 0)
         throw std::invalid_argument(fmt::format("pseudo-time shift on row {}, which has no diagonal entry", k));
   callbacks_->shift = shift;
+  callbacks_->tolerance = s.residual_tolerance;
   callbacks_->forget();
 
   auto run = [&](int strategy, int max_iterations) {
     check_flag(KINSetNumMaxIters(kin_, max_iterations), "KINSetNumMaxIters");
     callbacks_->next_with_jacobian = true;  // KINSOL's first request is a Jacobian's point
+    callbacks_->step_norms.clear();
     const int result = KINSol(kin_, y_.get(), strategy, scale_.get(), residual_scale_.get());
     long count = 0;
     KINGetNumNonlinSolvIters(kin_, &count);
