@@ -13,16 +13,17 @@
 //                       points: symbolic analyses (AMD ordering), full factorizations with
 //                       partial pivoting, and refactorizations that reuse a pivot sequence
 //
-// Measured (Release, medians of CPU time, load average 4 from other helpers' work;
-// docs/model.md has the table with wall times), before -> after batching the Gauss-point
-// kernels (exp, log, erfc four lanes at a time), in one session: cold start 112 -> 91.0,
-// 97.9 -> 75.9 and 74.5 -> 61.0 ms at 100 N, 500 N (545 rad/s) and 500 N (136 rad/s)
-// with 35 / 29 / 24 Jacobians, no symbolic analysis and 0.09-0.14 full factorizations
-// per state, the rest refactorizations; warm start +2 % 15.0 -> 12.5, 11.9 -> 9.87,
-// 14.0 -> 12.0, 11.1 -> 9.06 ms with 4 / 3 / 4 / 3 Jacobians, all refactored; the
-// predictor step 25.6-21.0 -> 21.5-16.8 ms with 2 full factorizations (its two
-// tangents); a residual with Jacobian 1.90 -> 1.30 ms, a residual 1.48 -> 0.90 ms.
-// Targets met only by the 3-iteration warm starts (docs/model.md says why).
+// Measured (Release, medians of CPU time, one run at load average 1.1; docs/model.md
+// has the table and the history): cold start 42.4, 38.0 and 32.7 ms at 100 N, 500 N
+// (545 rad/s) and 500 N (136 rad/s) with 16 / 15 / 13 Jacobians, no symbolic analysis
+// and 0.05-0.07 full factorizations per state, the rest refactorizations; warm start
+// +2 % 8.99, 9.00, 8.14 and 8.10 ms (100, 120, 500 N, 500 N at 136 rad/s) with 3
+// Jacobians each, all refactored, and 4 residuals (the last without its Jacobian); the
+// natural-continuation step 15.5-19.5 ms with 2 full factorizations (its two tangents);
+// a residual with Jacobian 1.26 ms, a residual 0.87 ms. Both targets are met. In an
+// earlier session, before Newton's minimum cavitation row and the retuned pseudo-time:
+// cold 91.0 / 75.9 / 61.0 ms with 35 / 29 / 24 Jacobians, warm 12.5 / 9.87 / 12.0 /
+// 9.06 ms with 4 / 3 / 4 / 3 (load average 4).
 //
 //   ./build/benchmarks/steady_state_benchmark --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
