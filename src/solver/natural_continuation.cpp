@@ -14,16 +14,22 @@ namespace twb {
 
 namespace {
 
-// u_λ from J·u_λ = −F_λ at the system's current λ; zeros if J is singular.
-std::vector<double> sensitivity(const SteadySystem& system, SparseLu& lu, std::span<const double> u) {
-  const auto n = u.size();
-  std::vector<double> r(n), jac(std::size_t(system.pattern().nnz())), s(n);
-  system.evaluate(u, r, jac);
-  if (!lu.factor(jac)) return std::vector<double>(n, 0.0);
+// u_λ from J·u_λ = −F_λ at u and the system's current λ, with the factors lu holds.
+std::vector<double> solve_sensitivity(const SteadySystem& system, const SparseLu& lu, std::span<const double> u) {
+  std::vector<double> s(u.size());
   system.parameter_derivative(u, s);
   for (double& c : s) c = -c;
   lu.solve(s);
   return s;
+}
+
+// The same with J assembled at u and factored afresh; zeros if J is singular.
+std::vector<double> sensitivity(const SteadySystem& system, SparseLu& lu, std::span<const double> u) {
+  const auto n = u.size();
+  std::vector<double> r(n), jac(std::size_t(system.pattern().nnz()));
+  system.evaluate(u, r, jac);
+  if (!lu.factor(jac)) return std::vector<double>(n, 0.0);
+  return solve_sensitivity(system, lu, u);
 }
 
 std::vector<double> difference(std::span<const double> a, std::span<const double> b) {
@@ -49,8 +55,8 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
   const double max_step = s.max_step > 0 ? s.max_step : 0.25 * interval;
   StepControl control(s.initial_step > 0 ? s.initial_step : interval / 20.0, min_step, max_step, s.growth,
                       s.easy_iterations);
-  // One symbolic analysis serves the tangents and the corrector, and each tangent's
-  // fresh pivots serve the next correction's refactorizations.
+  // One symbolic analysis serves the tangents and the corrector, and the first
+  // tangent's fresh pivots serve the corrections' refactorizations.
   KinsolNewton newton(system);
   SparseLu& lu = newton.factorization();
 
@@ -75,7 +81,11 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
 
     system.set_parameter(next);
     long iterations = 0;
-    std::string failure = correct(newton, trial, s.newton, iterations, rep.corrector_iterations);
+    std::string failure;
+    {
+      const NewtonForm form(system);  // the corrector starts close
+      failure = correct(newton, trial, s.newton, iterations, rep.corrector_iterations);
+    }
     if (failure.empty()) {
       const double predicted = metric.state_norm(difference(reference, u));
       const double missed = metric.state_norm(difference(trial, reference));
@@ -106,7 +116,16 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
     previous_step = dl;
     rep.lambda = next;
     ++rep.accepted;
-    slope = sensitivity(system, lu, u);
+    // The corrector's last factors are J at its last Newton point, one step δ from u:
+    // the step that brought F below the tolerance, Newton's shortest. They give u_λ to
+    // O(‖δ‖), far inside what the prediction test tolerates (half the predicted change);
+    // a fresh assembly and full factorization would cost more than a corrector
+    // iteration. A correction with no iteration left no factors of its own. Both are
+    // in the corrector's form, whose branch, and so whose tangent, is the system's.
+    {
+      const NewtonForm form(system);
+      slope = iterations > 0 && lu.factored() ? solve_sensitivity(system, lu, u) : sensitivity(system, lu, u);
+    }
     rep.sensitivity_growth = metric.state_norm(slope) / first_slope;
     control.accept(iterations);
     if (on_state && !on_state({rep.accepted, u, rep.lambda, 0.0, {}, iterations})) {

@@ -92,14 +92,9 @@ void SteadySolver::account(SteadyReport& rep, const NewtonReport& n) const {
 }
 
 bool SteadySolver::newton(std::vector<double>& u, const NewtonSettings& s, SteadyReport& rep) {
-  // The minimum row only where Newton converges on its own; pseudo-time marches the
-  // model's row (Fischer–Burmeister), whose slopes do not jump between its steps.
-  struct RowScope {
-    BearingModel& model;
-    CavitationRow kept;
-    ~RowScope() { model.set_cavitation_row(kept); }
-  } scope{model_, model_.cavitation_row()};
-  model_.set_cavitation_row(CavitationRow::minimum);
+  // Newton's form only where Newton converges on its own; pseudo-time marches the
+  // model's own rows, whose slopes do not jump between its steps.
+  const NewtonForm form(model_);
   const NewtonReport n = newton_.solve(u, s);
   account(rep, n);
   return n.converged;

@@ -10,6 +10,7 @@
 #include "../support/table1_scene.h"
 #include "twb/model/bearing_model.h"
 #include "twb/solver/kinsol_newton.h"
+#include "twb/solver/natural_continuation.h"
 #include "twb/solver/steady_solver.h"
 
 namespace twb {
@@ -63,6 +64,25 @@ TEST_P(CavitationRowTest, NewtonFromTheNeighbourConvergesQuadratically) {
   ASSERT_TRUE(w.report.converged) << w.report.message;
   EXPECT_LE(w.report.iterations, 3);
   EXPECT_EQ(w.report.jacobian_evaluations, w.report.iterations);
+}
+
+TEST_P(CavitationRowTest, ASweepCorrectsInNewtonsFormAndLeavesTheModelsOwn) {
+  // Natural continuation corrects each 2 % step from the tangent's prediction, close
+  // enough for Newton's form to converge quadratically: the residual after the
+  // prediction is O(Δλ²), ~1e-4, then ~1e-8, ~1e-16, so at most 3 iterations a step.
+  WarmStart w(GetParam());
+  ASSERT_TRUE(w.report.converged) << w.report.message;
+  NaturalSettings settings;
+  settings.predictor = Predictor::tangent;
+  const double load = w.model.load();
+  const double step = 0.02 * load;
+  settings.initial_step = settings.max_step = step;
+  const NaturalReport rep = continue_in_parameter(w.model, w.state, load + 5 * step, settings);
+  ASSERT_TRUE(rep.reached_target) << rep.message;
+  EXPECT_EQ(rep.accepted, 5);
+  EXPECT_EQ(rep.rejected, 0) << rep.last_rejection;
+  EXPECT_LE(rep.corrector_iterations, 3 * rep.accepted);
+  EXPECT_EQ(w.model.cavitation_row(), CavitationRow::fischer_burmeister) << "the sweep did not restore the row";
 }
 
 // Below distress (full film, cavitated half) and on the hot branch at 545 rad/s; below

@@ -32,13 +32,13 @@ enum class ComponentId { carrier = 0, washer = 1, gear = 2 };
 // (MODEL.md section 3). Both rows vanish at the same states.
 //  - fischer_burmeister: p̂ + ŵ − √(p̂² + ŵ²), whose slopes turn continuously except at
 //    (0, 0): what pseudo-time and the transient march, and what the fold and
-//    continuation systems differentiate.
+//    arclength systems differentiate. The model's own form.
 //  - minimum: min(p̂, ŵ), a row equal to p̂ or to ŵ. Once Newton has found which nodes
 //    are cavitated it converges as on a smooth system, where with Fischer–Burmeister
 //    the slopes at nodes on the cavitation boundary turn within |(p̂, ŵ)| of the
-//    solution and Newton's last steps converge only superlinearly (warm starts from
-//    a 2 % neighbouring load on the paper's mesh: 3 iterations instead of 4). Newton
-//    near a solution uses it (SteadySolver).
+//    solution and Newton's last steps converge only superlinearly (a 2 % warm start on
+//    the hot branch: 3 iterations instead of 4). Newton's form (SteadySystem::
+//    set_newton_form): the steady solver's Newton and natural continuation's corrector.
 enum class CavitationRow { fischer_burmeister, minimum };
 
 // A film between two components. Its gap is a plane in the unknowns (MODEL.md section 1):
@@ -133,7 +133,10 @@ class BearingModel final : public SteadySystem {
   std::vector<FilmFields> fields(std::span<const double> u) const;
 
   // The form of the pressure rows; the pattern and the roots do not change with it.
-  void set_cavitation_row(CavitationRow row) { cavitation_row_ = row; }
+  void set_newton_form(bool on) override {
+    cavitation_row_ = on ? CavitationRow::minimum : CavitationRow::fischer_burmeister;
+  }
+  bool newton_form() const override { return cavitation_row_ == CavitationRow::minimum; }
   CavitationRow cavitation_row() const { return cavitation_row_; }
 
   // Changes the external load; the pattern and every scale except F_ext-based ones are kept.

@@ -2,7 +2,7 @@
 // A + Aᵀ: dense rigid-body or bordering rows and columns are ordered last; COLAMD,
 // SUNDIALS' default, fills the bearing's arrow-shaped Jacobian about six-fold). The
 // symbolic analysis is done once per pattern. Two ways to factor:
-//  - factor() pivots afresh every time: for the tangent of a branch, the parameter
+//  - factor() pivots afresh every time: for the first tangent of a branch, the parameter
 //    sensitivity J·u_λ = −F_λ and the bordered systems that define a fold, where the
 //    matrix is nearly singular and an old pivot order may no longer be safe;
 //  - refactor() reuses the pivot sequence of the last full factorization while that is

@@ -37,8 +37,8 @@ class SteadySolver {
 
  private:
   void account(SteadyReport& rep, const NewtonReport& n) const;
-  // KINSOL's Newton from u with the minimum as the cavitation row (CavitationRow), the
-  // model's own row restored afterwards; counted into rep.
+  // KINSOL's Newton from u on the model's Newton form (SteadySystem::set_newton_form),
+  // its own form restored afterwards; counted into rep.
   bool newton(std::vector<double>& u, const NewtonSettings& s, SteadyReport& rep);
   SteadyReport ramp(std::vector<double>& u, SteadyReport rep);
   bool speed_ramp(std::vector<double>& u, SteadyReport& rep);

@@ -42,6 +42,29 @@ class SteadySystem {
   virtual std::vector<double> step_weights() const { return std::vector<double>(std::size_t(size()), 1.0); }
   // Name of the group of unknowns holding unknown k, for failure reports.
   virtual std::string block_name(Index) const { return "unknowns"; }
+
+  // Newton's form: rows with the same roots that Newton converges on faster from a
+  // close start, but whose slopes jump where a march (pseudo-time, a transient) or a
+  // differentiated system (a fold's) needs them continuous: the bearing's cavitation
+  // rows as min(p̂, ŵ) instead of Fischer–Burmeister (CavitationRow). Off unless a
+  // NewtonForm scope is open; a system without such rows ignores it.
+  virtual void set_newton_form(bool) {}
+  virtual bool newton_form() const { return false; }
+};
+
+// Newton's form of a system's rows while the scope lives; the form it found afterwards.
+class NewtonForm {
+ public:
+  explicit NewtonForm(SteadySystem& system) : system_(system), kept_(system.newton_form()) {
+    system_.set_newton_form(true);
+  }
+  ~NewtonForm() { system_.set_newton_form(kept_); }
+  NewtonForm(const NewtonForm&) = delete;
+  NewtonForm& operator=(const NewtonForm&) = delete;
+
+ private:
+  SteadySystem& system_;
+  bool kept_;
 };
 
 }  // namespace twb
