@@ -106,6 +106,8 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   mu_ref_ = viscosity(scene_.operating.ambient).value;
   smooth_rule_ = GaussRule::legendre(4);
   contact_rule_ = GaussRule::legendre(scene_.mesh.contact_quadrature);
+  flat_contact_rule_ =
+      GaussRule::legendre(std::min(scene_.mesh.flat_contact_quadrature, scene_.mesh.contact_quadrature));
 
   if (sf.pressure_offset >= 0) {
     // The Poiseuille diagonal of a uniform reference film: ŵ then reads like p̂.

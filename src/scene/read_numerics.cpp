@@ -9,13 +9,15 @@ namespace twb::scene_io {
 namespace {
 
 void read_mesh(const MapReader& scene, Scene& out) {
-  const MapReader mesh = scene.map("mesh", {"radial_nodes", "circumferential_nodes", "contact_quadrature"});
+  const MapReader mesh =
+      scene.map("mesh", {"radial_nodes", "circumferential_nodes", "contact_quadrature", "flat_contact_quadrature"});
   MeshSettings& m = out.mesh;
   m.radial_nodes = mesh.integer("radial_nodes", 3, m.radial_nodes,
                                 "both edges plus at least one interior node");
   m.circumferential_nodes = mesh.integer("circumferential_nodes", 8, m.circumferential_nodes,
                                          "enough to resolve the converging wedge around the circle");
   m.contact_quadrature = mesh.integer("contact_quadrature", 1, m.contact_quadrature);
+  m.flat_contact_quadrature = mesh.integer("flat_contact_quadrature", 1, m.flat_contact_quadrature);
 }
 
 void read_solver(const MapReader& scene, Scene& out) {

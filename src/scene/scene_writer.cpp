@@ -132,6 +132,7 @@ void write_numerics(Writer& w, const Scene& s) {
   w.entry(1, "radial_nodes", fmt::format("{}", s.mesh.radial_nodes));
   w.entry(1, "circumferential_nodes", fmt::format("{}", s.mesh.circumferential_nodes));
   w.entry(1, "contact_quadrature", fmt::format("{}", s.mesh.contact_quadrature));
+  w.entry(1, "flat_contact_quadrature", fmt::format("{}", s.mesh.flat_contact_quadrature));
 
   w.line(0, "solver:");
   w.entry(1, "residual_tolerance", quantity(s.solver.residual_tolerance, "1"));

@@ -208,6 +208,7 @@ class BearingModel final : public SteadySystem {
   std::vector<std::vector<double>> film_row_scale_;  // per film, per node: 1 / reference conductance
   std::vector<std::vector<double>> component_row_scale_;
   GaussRule smooth_rule_, contact_rule_;
+  GaussRule flat_contact_rule_;  // contact on cells where p varies little (film_loads.cpp)
   SparsePattern pattern_;
   std::vector<Index> slot_tape_;  // where each Jacobian entry of a pass lands (sparse_assembly.h)
   std::vector<std::vector<LinearForm>> viscosity_forms_;  // per film, per node
