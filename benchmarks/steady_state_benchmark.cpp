@@ -13,17 +13,18 @@
 //                       points: symbolic analyses (AMD ordering), full factorizations with
 //                       partial pivoting, and refactorizations that reuse a pivot sequence
 //
-// Measured (Release, medians of CPU time, one run at load average 1.1; docs/model.md
-// has the table and the history): cold start 42.4, 38.0 and 32.7 ms at 100 N, 500 N
+// Measured (Release, medians of CPU time, one run at load average 1.3; docs/model.md
+// has the table and the history): cold start 40.2, 38.7 and 33.7 ms at 100 N, 500 N
 // (545 rad/s) and 500 N (136 rad/s) with 16 / 15 / 13 Jacobians, no symbolic analysis
-// and 0.05-0.07 full factorizations per state, the rest refactorizations; warm start
-// +2 % 8.99, 9.00, 8.14 and 8.10 ms (100, 120, 500 N, 500 N at 136 rad/s) with 3
-// Jacobians each, all refactored, and 4 residuals (the last without its Jacobian); the
-// natural-continuation step 15.5-19.5 ms with 2 full factorizations (its two tangents);
-// a residual with Jacobian 1.26 ms, a residual 0.87 ms. Both targets are met. In an
-// earlier session, before Newton's minimum cavitation row and the retuned pseudo-time:
-// cold 91.0 / 75.9 / 61.0 ms with 35 / 29 / 24 Jacobians, warm 12.5 / 9.87 / 12.0 /
-// 9.06 ms with 4 / 3 / 4 / 3 (load average 4).
+// and 0.05-0.06 full factorizations per state, the rest refactorizations; warm start
+// +2 % 8.18, 8.26, 8.43 and 8.42 ms (100, 120, 500 N, 500 N at 136 rad/s) with 3
+// Jacobians each, all refactored, and 4 residuals (the last without its Jacobian); a
+// sweep state 7.47, 8.17 and 7.52 ms with 2-2.1 corrector iterations and 0.1 full
+// factorizations (the sweep's first tangent); a residual with Jacobian 1.30 ms, a
+// residual 0.93 ms. Both targets are met. In an earlier session, before Newton's form
+// of the cavitation rows, the retuned pseudo-time and the flat contact rule: cold
+// 91.0 / 75.9 / 61.0 ms with 35 / 29 / 24 Jacobians, warm 12.5 / 9.87 / 12.0 / 9.06 ms
+// with 4 / 3 / 4 / 3 (load average 4).
 //
 //   ./build/benchmarks/steady_state_benchmark --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
