@@ -170,12 +170,14 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
         std::array<std::array<double, 3>, 4> power_rigid{};
         // Where the pressure varies across the cell by less than a factor e^½ the
         // integrand is nearly polynomial and the flat rule (6 × 6 by default,
-        // mesh.flat_contact_quadrature) integrates it to rounding: the n-point rule's error is (n!)⁴/((2n+1)((2n)!)³) times the 2n-th
-        // derivative, and with ln p changing by λ ≤ ½ across the cell and the cubic
-        // weights (r, moment arms, hats) the 12th derivative is below 3, so the error is
-        // below 1e-15 of the cell's contact force. On the paper's mesh below distress
-        // the film that carries the load by contact (film 2) is nearly parallel, and all
-        // its cells are flat: 36 points each instead of 64.
+        // mesh.flat_contact_quadrature) integrates it to rounding: the n-point rule's
+        // error is (n!)⁴/((2n+1)((2n)!)³) times the 2n-th derivative, and with ln p
+        // changing by λ ≤ ½ across the cell and the cubic weights (r, moment arms,
+        // hats) the 12th derivative is below 3, so the error is below 1e-15 of the
+        // cell's contact force. On the paper's mesh below distress the film that
+        // carries the load by contact (film 2) is nearly parallel, and all its cells are
+        // flat: 36 points each instead of 64. (p(least) > 0 within the cutoff, so a
+        // greatest gap where p underflows to 0 is never flat.)
         const bool flat = !structural && flat_rule_is_cheaper &&
                           contact_->pressure(gap_range.least).value <=
                               std::exp(0.5) * contact_->pressure(gap_range.greatest).value;
