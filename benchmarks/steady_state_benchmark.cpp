@@ -131,6 +131,32 @@ BENCHMARK(BM_ColdStart)
     ->Repetitions(5)
     ->Unit(benchmark::kMillisecond);
 
+// What an effect costs: the cold start of the paper's case at 545 rad/s, 100 N with
+// effects switched off (issue 3: an effect that is off allocates no unknowns and
+// costs nothing). Arg: 0 all effects, 1 without thermal (isothermal, viscosity at
+// ambient), 2 without flow factors, 3 without hydrodynamics (contact and thermal),
+// 4 contact alone. Counter: unknowns.
+void BM_ColdStartByEffects(benchmark::State& state) {
+  twb::Scene s = paper_scene(100, 545);
+  switch (state.range(0)) {
+    case 1: s.effects.thermal = false; break;
+    case 2: s.effects.flow_factors = false; break;
+    case 3: s.effects.hydrodynamics = s.effects.flow_factors = false; break;
+    case 4: s.effects.hydrodynamics = s.effects.flow_factors = s.effects.thermal = false; break;
+    default: break;
+  }
+  twb::BearingModel model(s);
+  twb::SteadySolver solver(model, {});
+  Work work;
+  for (auto _ : state) {
+    std::vector<double> u;
+    work.add(solver.solve_cold(u));
+  }
+  work.report(state);
+  state.counters["unknowns"] = double(model.size());
+}
+BENCHMARK(BM_ColdStartByEffects)->DenseRange(0, 4)->Repetitions(5)->Unit(benchmark::kMillisecond);
+
 // From the converged state at the load, to 2 % more load; Args: load (N), speed (rad/s).
 void BM_WarmStartNeighbouringLoad(benchmark::State& state) {
   const double load = double(state.range(0));
