@@ -13,13 +13,13 @@
 //                       points: symbolic analyses (AMD ordering), full factorizations with
 //                       partial pivoting, and refactorizations that reuse a pivot sequence
 //
-// Measured (Release, medians of CPU time, one run at load average 1.3; docs/model.md
-// has the table and the history): cold start 40.2, 38.7 and 33.7 ms at 100 N, 500 N
+// Measured (Release, medians of CPU time, one run; docs/model.md has the table and
+// the history): cold start 41.2, 39.2 and 34.1 ms at 100 N, 500 N
 // (545 rad/s) and 500 N (136 rad/s) with 16 / 15 / 13 Jacobians, no symbolic analysis
 // and 0.05-0.06 full factorizations per state, the rest refactorizations; warm start
-// +2 % 8.18, 8.26, 8.43 and 8.42 ms (100, 120, 500 N, 500 N at 136 rad/s) with 3
+// +2 % 8.48, 8.47, 8.49 and 8.52 ms (100, 120, 500 N, 500 N at 136 rad/s) with 3
 // Jacobians each, all refactored, and 4 residuals (the last without its Jacobian); a
-// sweep state 7.47, 8.17 and 7.52 ms with 2-2.1 corrector iterations and 0.1 full
+// sweep state 7.37, 8.40 and 7.61 ms with 2-2.3 corrector iterations and 0.1 full
 // factorizations (the sweep's first tangent); a residual with Jacobian 1.30 ms, a
 // residual 0.93 ms. Both targets are met. In an earlier session, before Newton's form
 // of the cavitation rows, the retuned pseudo-time and the flat contact rule: cold

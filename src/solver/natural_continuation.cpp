@@ -65,7 +65,11 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
   // O(u_λλ·Δλ_prev) however short the new step; after a long step towards a fold that
   // error alone exceeds the rejection threshold and the continuation stalls (on the
   // bearing, 1.2 N below the fold). The tangent's error shrinks with the step.
-  std::vector<double> previous, slope = sensitivity(system, lu, u);
+  std::vector<double> previous, slope;
+  {
+    const NewtonForm form(system);  // every tangent in the corrector's form
+    slope = sensitivity(system, lu, u);
+  }
   const double first_slope = metric.state_norm(slope);
   double previous_step = 0.0;
   while (rep.lambda != target) {
@@ -84,7 +88,9 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
     std::string failure;
     {
       const NewtonForm form(system);  // the corrector starts close
-      failure = correct(newton, trial, s.newton, iterations, rep.corrector_iterations);
+      NewtonSettings in_form = s.newton;
+      in_form.residual_tolerance = form.tolerance(s.newton.residual_tolerance);
+      failure = correct(newton, trial, in_form, iterations, rep.corrector_iterations);
     }
     if (failure.empty()) {
       const double predicted = metric.state_norm(difference(reference, u));

@@ -95,7 +95,9 @@ bool SteadySolver::newton(std::vector<double>& u, const NewtonSettings& s, Stead
   // Newton's form only where Newton converges on its own; pseudo-time marches the
   // model's own rows, whose slopes do not jump between its steps.
   const NewtonForm form(model_);
-  const NewtonReport n = newton_.solve(u, s);
+  NewtonSettings in_form = s;
+  in_form.residual_tolerance = form.tolerance(s.residual_tolerance);
+  const NewtonReport n = newton_.solve(u, in_form);
   account(rep, n);
   return n.converged;
 }
@@ -125,10 +127,11 @@ bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep, bool newton_
   // paper's 36 cold starts (benchmarks/cold_start_survey, 9×66 mesh): with a first Δτ
   // of 0.1 and a 2σ cap the steps were 31 (median) and 1367 rad/s, 300 N needed the
   // speed ramp (332 iterations); a first Δτ of 3 with a 4σ cap gives 16, every state
-  // by pseudo-time (1367 rad/s, 300 N in 157 steps, the others in at most 21), on the
-  // same states (to 2e-12). Every pair within first Δτ 2…5 and cap 4…5σ reaches all 36
-  // without a ramp (median 15.5–16); a 3σ cap sends two 300 N states to the ramp. On the 5×24 and 17×132 meshes: median 30 → 19.5 and
-  // 37.5 → 20 steps, ramps 2 → 0 and 3 → 0.
+  // by pseudo-time (the others in at most 21, 1367 rad/s, 300 N, just past that speed's
+  // fold, in 85–157 depending on rounding), on the same states (to 2e-12). Every pair
+  // within first Δτ 2…5 and cap 4…5σ reaches all 36 without a ramp (median 15.5–16);
+  // with a 3σ cap a first Δτ of 2 or 3 sends two 300 N states to the ramp. On the 5×24
+  // and 17×132 meshes: median 30 → 19.5 and 37.5 → 20 steps, ramps 2 → 0 and 3 → 0.
   const double max_step = std::min(settings_.max_step, 4.0);
   const std::vector<double> step_weight = model_.step_weights();
   std::vector<double> state = u, delta;
@@ -201,7 +204,8 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
   // and its 8 damped ones lowered the residual by a few per cent, 16 assemblies and
   // factorizations and 32 residuals wasted per state before pseudo-time, which then
   // started from the same cold state. Pseudo-time goes first: the same 36 states (to
-  // 2e-16), 1468 iterations instead of 1870.
+  // 2e-16), 1468 iterations instead of 1870 (with the pseudo-time settings of then; now
+  // 640, docs/model.md).
   return settle(u, false);
 }
 

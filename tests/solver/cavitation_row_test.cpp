@@ -39,25 +39,41 @@ TEST_P(CavitationRowTest, NewtonsStateSatisfiesTheFischerBurmeisterRows) {
   ASSERT_EQ(w.report.strategy, "newton");
   EXPECT_EQ(w.model.cavitation_row(), CavitationRow::fischer_burmeister) << "the solver did not restore the row";
 
-  // With the minimum row every residual is within the tolerance 1e-10. The
-  // Fischer–Burmeister row differs only in the pressure rows, where
-  // (2 − √2)|min(a, b)| ≤ |φ_FB(a, b)| ≤ (2 + √2)|min(a, b)| (Tseng's bounds), so it is
-  // within (2 + √2)·1e-10 there and within 1e-10 everywhere else.
+  // Newton met 1e-10/(2 + √2) in the minimum rows. The Fischer–Burmeister rows differ
+  // only in the pressure rows, where |φ_FB(a, b)| ≤ (2 + √2)|min(a, b)| (Tseng), so the
+  // state meets the tolerance 1e-10 in the model's own rows, as every later check of
+  // it (arclength start, runaway, load-step march) expects.
   const NewtonSettings tolerance{};
   std::vector<double> r(w.state.size());
   w.model.evaluate(w.state, r, {});
-  for (const UnknownBlock& b : w.model.layout().blocks()) {
-    const double bound = (b.effect == "hydrodynamics" ? 2.0 + std::sqrt(2.0) : 1.0) * tolerance.residual_tolerance;
-    for (Index k = b.offset; k < b.offset + b.size; ++k)
-      EXPECT_LE(std::abs(r[std::size_t(k)]), bound) << b.name << ", row " << k;
+  for (std::size_t k = 0; k < r.size(); ++k)
+    EXPECT_LE(std::abs(r[k]), tolerance.residual_tolerance) << w.model.block_name(Index(k)) << ", row " << k;
+}
+
+TEST(NewtonFormScope, LeavesTheFormItFound) {
+  // A solve inside an open scope (a caller already in Newton's form) must not switch
+  // the model back to its own rows, and the scope must restore them when it closes.
+  Scene s = testing::table1_scene(true, true, true, true, 545.0, 500.0);
+  testing::use_coarse_mesh(s);
+  BearingModel m(s);
+  SteadySolver solver(m, {});
+  {
+    const NewtonForm outer(m);
+    std::vector<double> u;
+    ASSERT_TRUE(solver.solve_cold(u).converged);
+    m.set_load(510.0);
+    ASSERT_TRUE(solver.solve(u).converged);
+    EXPECT_EQ(m.cavitation_row(), CavitationRow::minimum);
   }
+  EXPECT_EQ(m.cavitation_row(), CavitationRow::fischer_burmeister);
 }
 
 TEST_P(CavitationRowTest, NewtonFromTheNeighbourConvergesQuadratically) {
   // The first residual is the 2 % load imbalance, 0.0196 of the load. Once the
   // cavitated nodes are known the minimum row makes the system smooth, and Newton
-  // squares the residual each step: ~4e-4, ~2e-7, ~4e-14, within the tolerance 1e-10 in
-  // 3 iterations. With Fischer–Burmeister rows the hot-branch case (545 rad/s, 500 N)
+  // squares the residual each step: 3.9e-4, 1.6e-7, 7e-14 at 100 N; on the hot branch
+  // the first step overshoots (0.035), then 6.8e-6, 9e-13. Either way within the
+  // tolerance in 3 iterations. With Fischer–Burmeister rows the hot-branch case (545 rad/s, 500 N)
   // needs a 4th: the nodes on the cavitation boundary slow its last steps to a
   // superlinear rate (3e-8 after the 3rd step).
   WarmStart w(GetParam());

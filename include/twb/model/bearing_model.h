@@ -8,6 +8,7 @@
 
 #include <array>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <string>
@@ -137,6 +138,9 @@ class BearingModel final : public SteadySystem {
     cavitation_row_ = on ? CavitationRow::minimum : CavitationRow::fischer_burmeister;
   }
   bool newton_form() const override { return cavitation_row_ == CavitationRow::minimum; }
+  // |φ_FB(a, b)| ≤ (2 + √2)|min(a, b)| (Tseng): a minimum row within tol/(2 + √2) is a
+  // Fischer–Burmeister row within tol; the other rows are the same in both forms.
+  double newton_form_tolerance_ratio() const override { return 1.0 / (2.0 + std::numbers::sqrt2); }
   CavitationRow cavitation_row() const { return cavitation_row_; }
 
   // Changes the external load; the pattern and every scale except F_ext-based ones are kept.

@@ -50,6 +50,9 @@ class SteadySystem {
   // NewtonForm scope is open; a system without such rows ignores it.
   virtual void set_newton_form(bool) {}
   virtual bool newton_form() const { return false; }
+  // Newton's form must meet the tolerance tighter by this ratio for the system's own
+  // rows to meet it too (states are checked in the own form afterwards).
+  virtual double newton_form_tolerance_ratio() const { return 1.0; }
 };
 
 // Newton's form of a system's rows while the scope lives; the form it found afterwards.
@@ -59,6 +62,9 @@ class NewtonForm {
     system_.set_newton_form(true);
   }
   ~NewtonForm() { system_.set_newton_form(kept_); }
+  // The residual tolerance for Newton in this form, tightened so that its state also
+  // meets the caller's tolerance in the system's own rows.
+  double tolerance(double own_rows) const { return own_rows * system_.newton_form_tolerance_ratio(); }
   NewtonForm(const NewtonForm&) = delete;
   NewtonForm& operator=(const NewtonForm&) = delete;
 
