@@ -120,6 +120,8 @@ bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep, bool newton_
   // with Δτ grown by switched evolution relaxation (Mulder & van Leer) as the residual
   // falls, and cut when a step leaves the domain. As Δτ → ∞ the steps become Newton's.
   rep.strategy = "pseudo-transient";
+  // Pseudo-time marches the model's own rows even inside a caller's Newton form.
+  const NewtonForm own_rows(model_, false);
   PseudoTimeStepper stepper(model_, newton_.factorization());
   // A step that shifts the washer or gear by more than a few σ leaves the region where
   // the contact law is nearly linear. Measured like KINSOL's step cap: ‖D δ‖₂ with D

@@ -55,11 +55,12 @@ class SteadySystem {
   virtual double newton_form_tolerance_ratio() const { return 1.0; }
 };
 
-// Newton's form of a system's rows while the scope lives; the form it found afterwards.
+// Newton's form of a system's rows while the scope lives (or, with on = false, its own
+// form); the form it found afterwards.
 class NewtonForm {
  public:
-  explicit NewtonForm(SteadySystem& system) : system_(system), kept_(system.newton_form()) {
-    system_.set_newton_form(true);
+  explicit NewtonForm(SteadySystem& system, bool on = true) : system_(system), kept_(system.newton_form()) {
+    system_.set_newton_form(on);
   }
   ~NewtonForm() { system_.set_newton_form(kept_); }
   // The residual tolerance for Newton in this form, tightened so that its state also
