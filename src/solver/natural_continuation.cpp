@@ -88,9 +88,7 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
     std::string failure;
     {
       const NewtonForm form(system);  // the corrector starts close
-      NewtonSettings in_form = s.newton;
-      in_form.residual_tolerance = form.tolerance(s.newton.residual_tolerance);
-      failure = correct(newton, trial, in_form, iterations, rep.corrector_iterations);
+      failure = correct(newton, trial, s.newton, iterations, rep.corrector_iterations);
     }
     if (failure.empty()) {
       const double predicted = metric.state_norm(difference(reference, u));

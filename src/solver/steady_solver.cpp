@@ -95,9 +95,7 @@ bool SteadySolver::newton(std::vector<double>& u, const NewtonSettings& s, Stead
   // Newton's form only where Newton converges on its own; pseudo-time marches the
   // model's own rows, whose slopes do not jump between its steps.
   const NewtonForm form(model_);
-  NewtonSettings in_form = s;
-  in_form.residual_tolerance = form.tolerance(s.residual_tolerance);
-  const NewtonReport n = newton_.solve(u, in_form);
+  const NewtonReport n = newton_.solve(u, s);
   account(rep, n);
   return n.converged;
 }
@@ -207,7 +205,7 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
   // factorizations and 32 residuals wasted per state before pseudo-time, which then
   // started from the same cold state. Pseudo-time goes first: the same 36 states (to
   // 2e-16), 1468 iterations instead of 1870 (with the pseudo-time settings of then; now
-  // 640, docs/model.md).
+  // 643, docs/model.md).
   return settle(u, false);
 }
 

@@ -51,7 +51,8 @@ class SteadySystem {
   virtual void set_newton_form(bool) {}
   virtual bool newton_form() const { return false; }
   // Newton's form must meet the tolerance tighter by this ratio for the system's own
-  // rows to meet it too (states are checked in the own form afterwards).
+  // rows to meet it too (states are checked in the own form afterwards); KinsolNewton
+  // applies it to every solve in Newton's form.
   virtual double newton_form_tolerance_ratio() const { return 1.0; }
 };
 
@@ -63,9 +64,6 @@ class NewtonForm {
     system_.set_newton_form(on);
   }
   ~NewtonForm() { system_.set_newton_form(kept_); }
-  // The residual tolerance for Newton in this form, tightened so that its state also
-  // meets the caller's tolerance in the system's own rows.
-  double tolerance(double own_rows) const { return own_rows * system_.newton_form_tolerance_ratio(); }
   NewtonForm(const NewtonForm&) = delete;
   NewtonForm& operator=(const NewtonForm&) = delete;
 
