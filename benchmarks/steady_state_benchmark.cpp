@@ -111,9 +111,10 @@ class Work {
   long iterations_ = 0, jacobians_ = 0, residuals_ = 0, states_ = 0;
 };
 
-// From the paper's cold start; Args: load (N), speed (rad/s).
-void BM_ColdStart(benchmark::State& state) {
-  twb::BearingModel model(paper_scene(double(state.range(0)), double(state.range(1))));
+// The scene's steady state from the paper's cold start, timed; returns the model's
+// unknown count.
+twb::Index time_cold_starts(benchmark::State& state, const twb::Scene& scene) {
+  twb::BearingModel model(scene);
   twb::SteadySolver solver(model, {});
   Work work;
   for (auto _ : state) {
@@ -121,6 +122,20 @@ void BM_ColdStart(benchmark::State& state) {
     work.add(solver.solve_cold(u));
   }
   work.report(state);
+  return model.size();
+}
+
+// The converged state of the model at its load and speed, from the cold start.
+std::vector<double> converged_state(twb::BearingModel& model) {
+  twb::SteadySolver solver(model, {});
+  std::vector<double> u;
+  if (!solver.solve_cold(u).converged) throw std::runtime_error("no converged state from the cold start");
+  return u;
+}
+
+// From the paper's cold start; Args: load (N), speed (rad/s).
+void BM_ColdStart(benchmark::State& state) {
+  time_cold_starts(state, paper_scene(double(state.range(0)), double(state.range(1))));
 }
 // 545 rad/s: 100 N is below our model's distress (full film, 34 °C), 500 N on its hot
 // branch (721 °C); 136 rad/s, 500 N below distress (199 °C).
@@ -145,15 +160,7 @@ void BM_ColdStartByEffects(benchmark::State& state) {
     case 4: s.effects.hydrodynamics = s.effects.flow_factors = s.effects.thermal = false; break;
     default: break;
   }
-  twb::BearingModel model(s);
-  twb::SteadySolver solver(model, {});
-  Work work;
-  for (auto _ : state) {
-    std::vector<double> u;
-    work.add(solver.solve_cold(u));
-  }
-  work.report(state);
-  state.counters["unknowns"] = double(model.size());
+  state.counters["unknowns"] = double(time_cold_starts(state, s));
 }
 BENCHMARK(BM_ColdStartByEffects)->DenseRange(0, 4)->Repetitions(5)->Unit(benchmark::kMillisecond);
 
@@ -188,9 +195,7 @@ void BM_LoadSweepStates(benchmark::State& state) {
   constexpr int steps = 10;
   const double load = double(state.range(0));
   twb::BearingModel model(paper_scene(load, double(state.range(1))));
-  twb::SteadySolver solver(model, {});
-  std::vector<double> base;
-  if (!solver.solve_cold(base).converged) throw std::runtime_error("no base state");
+  const std::vector<double> base = converged_state(model);
   twb::NaturalSettings settings;
   settings.predictor = twb::Predictor::tangent;
   settings.initial_step = settings.max_step = 0.02 * load;
@@ -220,13 +225,6 @@ BENCHMARK(BM_LoadSweepStates)
     ->Unit(benchmark::kMillisecond);
 
 // One assembly at the converged 500 N, 545 rad/s state.
-std::vector<double> converged_state(twb::BearingModel& model) {
-  twb::SteadySolver solver(model, {});
-  std::vector<double> u;
-  if (!solver.solve_cold(u).converged) throw std::runtime_error("no state to evaluate at");
-  return u;
-}
-
 void BM_ResidualAndJacobian(benchmark::State& state) {
   twb::BearingModel model(paper_scene(500, 545));
   const std::vector<double> u = converged_state(model);
