@@ -224,7 +224,10 @@ TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
   const PseudoTimeShift euler{1.0 / dtau, held, capacities_};
   NewtonReport rep;
   try {
-    rep = KinsolNewton(system_).solve(stepped, NewtonSettings{}, &euler);
+    // From the start itself, a step this short is well inside Newton's quadratic basin
+    // whenever its algebraic part has a root at all; where it has none (the film's
+    // equilibrium lost at an impasse of the DAE) more iterations only churn.
+    rep = KinsolNewton(system_).solve(stepped, NewtonSettings{.max_iterations = 25}, &euler);
   } catch (const std::exception& e) {
     rep.message = e.what();  // e.g. a differential row without a diagonal entry
   }

@@ -132,7 +132,7 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
     }
     rep.sensitivity_growth = metric.state_norm(slope) / first_slope;
     control.accept(iterations);
-    if (on_state && !on_state({rep.accepted, u, rep.lambda, 0.0, {}, iterations})) {
+    if (on_state && !on_state({rep.accepted, u, rep.lambda, 0.0, {}, iterations, lu.factored() ? &lu : nullptr})) {
       rep.message = fmt::format("stopped by the caller at λ = {:.10g}", rep.lambda);
       break;
     }

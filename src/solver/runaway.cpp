@@ -169,7 +169,7 @@ StepOutcome classify_step(SteadySystem& system, std::span<const double> start_st
 }
 
 Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<const double> low_state,
-                         double high_parameter, const RunawaySettings& settings) {
+                         double high_parameter, const RunawaySettings& settings, const BracketObserver& observer) {
   Bracket b;
   b.low = low_parameter;
   b.high = high_parameter;
@@ -198,6 +198,8 @@ Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<c
     system.set_parameter(b.low);
     StepOutcome o = classify_step(system, b.low_state, trial, settings);
     b.steps.push_back({trial, o.verdict, o.evidence, o.time, o.reason});
+    b.ida_steps += o.statistics.steps;
+    if (observer) observer(b.steps.back());
     if (o.evidence == StepEvidence::no_consistent_start) {
       const double nearer = 0.5 * (b.low + target);
       if (proven || nearer - b.low <= settings.relative_width * std::abs(nearer)) {

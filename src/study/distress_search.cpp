@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "load_step_march.h"
 #include "study_support.h"
 #include "twb/solver/arclength_continuation.h"
+#include "twb/solver/linear_stability.h"
 #include "twb/solver/natural_continuation.h"
 #include "twb/solver/runaway.h"
 #include "twb/solver/steady_solver.h"
@@ -53,6 +55,31 @@ double steepest_sensitivity(const std::vector<SolvedState>& states) {
   return best;
 }
 
+// Where the fold is, from the slowest relaxation rate μ of the states approaching it:
+// at a saddle-node μ vanishes like √(λ* − λ), so μ² is linear in λ near the fold, and
+// the line through the last two states' μ² meets zero near λ*. Farther away μ² bends
+// (the estimate then lies beyond the fold), so the estimate only says when to hand
+// over to arclength continuation, never where the fold is.
+class FoldApproach {
+ public:
+  void add(double load, double rate) {
+    previous_ = last_;
+    last_ = {load, rate * rate};
+  }
+  // No estimate (inf) until μ² falls between two states.
+  double fold_estimate() const {
+    if (!(previous_.first > 0.0) || !(last_.second < previous_.second)) return INFINITY;
+    const double slope = (previous_.second - last_.second) / (last_.first - previous_.first);
+    return last_.first + last_.second / slope;
+  }
+  // Within 3 % of the load: arclength continuation's first steps (0.2 % of the load,
+  // growing 1.5-fold) reach the fold in a few states from there.
+  bool near(double load) const { return fold_estimate() - load < 0.03 * load; }
+
+ private:
+  std::pair<double, double> previous_{0.0, 0.0}, last_{0.0, 0.0};
+};
+
 // Pseudo-arclength continuation from a state near the end of the cool branch round its
 // first turning point only: once the branch has turned back 2 % below the start the
 // fold has been passed (and located), and the rest of the S is not needed.
@@ -71,11 +98,74 @@ ArclengthReport round_the_fold(BearingModel& model, std::span<const double> stat
   return continue_by_arclength(model, state, arc);
 }
 
+
+// The fold proven by the dynamics: from the highest cool state below it, a load step to
+// just below the fold (half a bracket width) must settle on the cool branch, and from
+// there a step to just above it must run away. Those two transients are the bracket;
+// not valid, with the reason, when the dynamics disagree.
+struct FoldProof {
+  Bracket bracket;
+  // The step above the fold as far as its verdict: its trajectory and last state, from
+  // which the march to where it goes continues.
+  std::vector<TrajectorySample> runaway;
+  std::vector<double> runaway_state;
+  double runaway_time = 0.0;
+};
+
+template <class Say>
+FoldProof prove_fold(BearingModel& model, const std::vector<std::pair<double, std::vector<double>>>& cool,
+                     double fold, const RunawaySettings& runaway, SearchCounts& counts, const Say& say) {
+  FoldProof proof;
+  Bracket& b = proof.bracket;
+  const double half = 0.5 * runaway.relative_width;
+  b.low = fold * (1.0 - half);
+  b.high = fold * (1.0 + half);
+  auto start = std::find_if(cool.rbegin(), cool.rend(), [&](const auto& c) { return c.first < b.low; });
+  if (start == cool.rend()) {
+    b.message = fmt::format("no cool state below the fold's bracket at {:.6g} N to step from", b.low);
+    return proof;
+  }
+  say(fmt::format("  proving the fold at {:.2f} N: a load step {:.2f} -> {:.2f} N", fold, start->first, b.low));
+  model.set_load(start->first);
+  StepOutcome below = classify_step(model, start->second, b.low, runaway);
+  counts.add(below);
+  b.steps.push_back({b.low, below.verdict, below.evidence, below.time, below.reason});
+  if (!below.settled()) {
+    b.message = fmt::format("the dynamics disagree with the fold: the step to {:.6g} N, below it, runs away ({})", b.low,
+                            below.reason);
+    return proof;
+  }
+  say(fmt::format("  proving the fold at {:.2f} N: it settles; a load step {:.2f} -> {:.2f} N", fold, b.low, b.high));
+  model.set_load(b.low);
+  StepOutcome above = classify_step(model, below.final_state, b.high, runaway, [&](double t, std::span<const double> u) {
+    TrajectorySample& sample = proof.runaway.emplace_back();
+    sample.time = t;
+    sample.state = model.describe(u);
+  });
+  counts.add(above);
+  b.steps.push_back({b.high, above.verdict, above.evidence, above.time, above.reason});
+  if (above.settled()) {
+    b.message = fmt::format("the dynamics disagree with the fold: the step to {:.6g} N, above it, settles ({})",
+                            b.high, above.reason);
+    return proof;
+  }
+  say(fmt::format("  proving the fold at {:.2f} N: it runs away ({})", fold, above.reason));
+  b.low_state = std::move(below.final_state);
+  proof.runaway_state = std::move(above.final_state);
+  proof.runaway_time = above.time;
+  model.set_load(b.low);
+  b.valid = true;
+  return proof;
+}
+
 }  // namespace
 
 RunawaySettings distress_detector(const Scene& scene, double bracket_width) {
   RunawaySettings r;
+  // The scene's tolerances, the detector's own bound on the settle test's iterations.
+  const int settle_iterations = r.newton.max_iterations;
   r.newton = newton_settings(scene);
+  r.newton.max_iterations = std::min(r.newton.max_iterations, settle_iterations);
   r.relative_width = bracket_width;
   NaturalSettings natural;
   natural.newton = r.newton;
@@ -143,16 +233,17 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
   NaturalSettings natural;
   natural.newton = newton;
   natural.newton.max_iterations = 12;
-  // Natural continuation only has to bring the branch near its end: the bracket and the
-  // fold are found by transients and arclength. Creeping closer than a bracket width
-  // costs slow corrections (the Jacobian turns singular) and slow transient checks.
+  // Natural continuation only has to bring the branch near its end: the fold is located
+  // by arclength. Creeping closer than a bracket width costs slow corrections (the
+  // Jacobian turns singular).
   natural.min_step = settings.bracket_width * settings.load_start;
 
-  // Every state continuation accepts is checked by the transient: the load step from
-  // the previous state must settle, and on that state. Where it settles elsewhere the
-  // corrector had jumped branches: the transient's state is the one the machine
-  // reaches, and continuation restarts from it. The first step that runs away ends the
-  // cool branch.
+  // Every state continuation accepts is judged by its linear stability, with the
+  // corrector's own factors (linear_stability.h); only where that is not conclusive
+  // does the transient decide: the load step from the previous state must settle, and
+  // on that state. Where it settles elsewhere the corrector had jumped branches: the
+  // transient's state is the one the machine reaches, and continuation restarts from
+  // it. The first step that runs away ends the cool branch.
   // (The check against the continuation's own state replaces the detector's branch test here.)
   RunawaySettings runaway = distress_detector(model.scene(), settings.bracket_width);
   const auto branch_test = runaway.on_branch;
@@ -162,12 +253,16 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
     double load;
     long iterations;
     double wall_ms;
+    Stability stability;
+    std::string why;
   };
   std::vector<double> low_state = u;
   double low = settings.load_start;
-  bool branch_ended = false, ran_away = false;
+  // The cool branch's states (load, state), to start the proof of a fold from.
+  std::vector<std::pair<double, std::vector<double>>> cool{{low, low_state}};
+  bool branch_ended = false, ran_away = false, near_fold = false;
   double runaway_load = 0.0;
-  int checked = 0;
+  FoldApproach approach;
   for (std::size_t t = 0; t < targets.size() && !ran_away;) {
     std::vector<Pending> pending;
     natural.initial_step = natural.max_step = std::max(targets[t] - low, natural.min_step);
@@ -175,73 +270,91 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
     std::vector<double> x = low_state;
     model.set_load(low);
     const NaturalReport rep = continue_in_parameter(model, x, targets[t], natural, [&](const BranchPoint& p) {
-      if (p.index > 0) pending.push_back({{p.u.begin(), p.u.end()}, p.lambda, p.corrector_iterations, elapsed_ms(t0)});
+      if (p.index > 0) {
+        Pending& q = pending.emplace_back(
+            Pending{{p.u.begin(), p.u.end()}, p.lambda, p.corrector_iterations, 0.0, Stability::inconclusive, {}});
+        if (transient && p.factors) {
+          const StabilityReport st = linear_stability(model, *p.factors);
+          ++out.counts.stability_tests;
+          q.stability = st.verdict;
+          q.why = st.reason;
+          if (st.verdict == Stability::stable) approach.add(p.lambda, st.modes.front().real());
+        }
+        q.wall_ms = elapsed_ms(t0);
+        // Near the fold natural continuation only creeps (its Jacobian turns singular):
+        // arclength continuation takes over once the fold is near.
+        if (approach.near(p.lambda)) {
+          near_fold = true;
+          return false;
+        }
+      }
       t0 = std::chrono::steady_clock::now();
       return true;
     });
     bool replaced = false;
     for (Pending& p : pending) {
-      if (!transient) {
-        low = p.load;
-        low_state = p.u;
+      if (transient && p.stability != Stability::stable) {
+        say(fmt::format("  {:.2f} N: linear stability {} ({}); the transient decides", p.load,
+                        to_string(p.stability), p.why));
         model.set_load(low);
-        out.states.push_back(record(model, low_state, p.iterations, p.wall_ms));
-        continue;
-      }
-      model.set_load(low);
-      StepOutcome step;
-      try {
-        step = classify_step(model, low_state, p.load, runaway);
-      } catch (const std::exception& e) {
-        // Near a fold the Jacobian may turn singular under the detector's relaxation
-        // estimate: the branch ends here, and the bracket below takes over.
-        branch_ended = true;
-        say(fmt::format("  the step {:.2f} -> {:.2f} N could not be judged: {}", low, p.load, e.what()));
-        break;
-      }
-      ++checked;
-      if (!step.settled()) {
-        ran_away = true;
-        runaway_load = p.load;
-        say(fmt::format("  the step {:.2f} -> {:.2f} N runs away: {}", low, p.load, step.reason));
-        break;
-      }
-      replaced = !same_state(step.final_state, p.u);
-      if (replaced) {
-        // Either continuation jumped (the transient's state is the branch's) or the
-        // step itself jumped to the hot branch without an acceleration the detector
-        // saw: the branch test tells which.
-        const bool reachable = branch_test(model, low_state, low, step.final_state, p.load);
-        if (!reachable) {
-          ran_away = true;
-          runaway_load = p.load;
-          say(fmt::format("  the step {:.2f} -> {:.2f} N settles off the branch: a runaway", low, p.load));
+        StepOutcome step;
+        try {
+          step = classify_step(model, low_state, p.load, runaway);
+        } catch (const std::exception& e) {
+          // Near a fold the Jacobian may turn singular under the detector's relaxation
+          // estimate: the branch ends here, and the bracket below takes over.
+          branch_ended = true;
+          say(fmt::format("  the step {:.2f} -> {:.2f} N could not be judged: {}", low, p.load, e.what()));
           break;
         }
-        say(fmt::format("  at {:.2f} N continuation had jumped to another branch; the transient's state is kept",
-                        p.load));
-        p.u = step.final_state;
+        out.counts.add(step);
+        if (!step.settled()) {
+          ran_away = true;
+          runaway_load = p.load;
+          say(fmt::format("  the step {:.2f} -> {:.2f} N runs away: {}", low, p.load, step.reason));
+          break;
+        }
+        replaced = !same_state(step.final_state, p.u);
+        if (replaced) {
+          // Either continuation jumped (the transient's state is the branch's) or the
+          // step itself jumped to the hot branch without an acceleration the detector
+          // saw: the branch test tells which.
+          const bool reachable = branch_test(model, low_state, low, step.final_state, p.load);
+          if (!reachable) {
+            ran_away = true;
+            runaway_load = p.load;
+            say(fmt::format("  the step {:.2f} -> {:.2f} N settles off the branch: a runaway", low, p.load));
+            break;
+          }
+          say(fmt::format("  at {:.2f} N continuation had jumped to another branch; the transient's state is kept",
+                          p.load));
+          p.u = step.final_state;
+        }
       }
       low = p.load;
       low_state = p.u;
+      cool.emplace_back(low, low_state);
       model.set_load(low);
       out.states.push_back(record(model, low_state, p.iterations, p.wall_ms));
       const double done = (low - settings.load_start) / (settings.load_end - settings.load_start);
-      say(fmt::format("  {:.6g} rad/s: {:.2f} N on the cool branch ({:.2f} C mean; {:.0f} % of the load range, "
-                      "about {:.0f} s left if no distress comes)",
-                      model.speed(), low, out.states.back().state.washer_mean_temperature - 273.15, 100 * done,
-                      elapsed_ms(started) / 1000.0 * (1.0 - done) / std::max(done, 1e-3)));
+      say(fmt::format("  {:.6g} rad/s: {:.2f} N on the cool branch ({:.2f} C mean; {:.0f} % of the load range)",
+                      model.speed(), low, out.states.back().state.washer_mean_temperature - 273.15, 100 * done));
       if (replaced) break;
     }
-    if (ran_away || replaced) continue;
+    if (ran_away || replaced || branch_ended) continue;
+    if (near_fold) {
+      branch_ended = true;
+      say(fmt::format("  the slowest thermal mode says the fold is near {:.2f} N", approach.fold_estimate()));
+      break;
+    }
     if (!rep.reached_target) {
       branch_ended = true;
-      say(fmt::format("  the cool branch ends near {:.2f} N: {}", low, rep.message));
+      say(fmt::format("  the cool branch ends near {:.2f} N", low));
+      out.diagnostics.push_back(rep.message);
       break;
     }
     ++t;
   }
-  say(fmt::format("  {} load steps checked by the transient", checked));
   out.cool_states = out.states.size();
 
   if (!ran_away && !branch_ended && !transient) {
@@ -271,66 +384,119 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
 
   // From here on a step that settles must also land on the cool branch.
   runaway = distress_detector(model.scene(), settings.bracket_width);
-
-  // Bracket: from the last cool state, find a step that runs away, then bisect.
-  // Past the end of natural continuation the step that runs away is searched in
-  // increments of 1 % (or 4 bracket widths).
-  const double widen = std::max(4.0 * settings.bracket_width, 0.01);
-  double high = ran_away ? runaway_load : std::min(low * (1.0 + widen), settings.load_end);
   try {
-    for (int attempt = 0; !ran_away && attempt < 400 && low < settings.load_end; ++attempt) {
-      model.set_load(low);
-      const StepOutcome step = classify_step(model, low_state, high, runaway);
-      if (!step.settled()) break;
-      low = high;
-      low_state = step.final_state;
-      model.set_load(low);
-      out.states.push_back(record(model, low_state, step.newton_attempts, 0.0));
-      ++out.cool_states;
-      high = std::min(low * (1.0 + widen), settings.load_end);
+    // The fold first: pseudo-arclength continuation round the branch's end locates it
+    // (minimally augmented Newton); two transients then prove it.
+    std::optional<FoldPoint> fold;
+    FoldProof proof;
+    Bracket& bracket = proof.bracket;
+    std::string disagreement;
+    if (!ran_away) {
+      say(fmt::format("  locating the fold by arclength continuation from {:.2f} N", low));
+      const ArclengthReport around = round_the_fold(model, low_state, low, settings.load_end, newton);
+      if (!around.folds.empty()) {
+        fold = around.folds.front();
+        out.row.fold_load = fold->lambda;
+        proof = prove_fold(model, cool, fold->lambda, runaway, out.counts, say);
+        if (!bracket.valid) disagreement = bracket.message;
+      }
     }
-    if (!ran_away && low >= settings.load_end) {
-      out.row.method = fmt::format("no distress up to {:.6g} N: every load step settled on the branch",
-                                   settings.load_end);
-      return out;
-    }
-    model.set_load(low);
-    const Bracket bracket = bracket_critical(model, low, low_state, high, runaway);
+
     if (!bracket.valid) {
-      out.row.method = "no distress bracket: " + bracket.message;
-      out.message = out.row.method;
+      // Bisection by transients: no fold in range, a runaway continuation did not
+      // expect, or dynamics that disagree with the fold. From the last cool state, find
+      // a step that runs away (in increments of 1 %, or 4 bracket widths), then bisect.
+      say(fmt::format("  bisecting by transients from {:.2f} N", low));
+      const double widen = std::max(4.0 * settings.bracket_width, 0.01);
+      double high = ran_away ? runaway_load : std::min(low * (1.0 + widen), settings.load_end);
+      for (int attempt = 0; !ran_away && attempt < 400 && low < settings.load_end; ++attempt) {
+        model.set_load(low);
+        const StepOutcome step = classify_step(model, low_state, high, runaway);
+        out.counts.add(step);
+        if (!step.settled()) break;
+        low = high;
+        low_state = step.final_state;
+        model.set_load(low);
+        out.states.push_back(record(model, low_state, step.newton_attempts, 0.0));
+        ++out.cool_states;
+        say(fmt::format("  the step to {:.2f} N settles", low));
+        high = std::min(low * (1.0 + widen), settings.load_end);
+      }
+      if (!ran_away && low >= settings.load_end) {
+        out.row.method = fmt::format("no distress up to {:.6g} N: every load step settled on the branch",
+                                     settings.load_end);
+        return out;
+      }
+      model.set_load(low);
+      bracket = bracket_critical(model, low, low_state, high, runaway, [&](const BracketStep& step) {
+        say(fmt::format("  the step to {:.2f} N {}", step.parameter,
+                        step.verdict == StepVerdict::settled ? "settles" : "runs away"));
+      });
+      out.counts.transients += long(bracket.steps.size());
+      out.counts.ida_steps += bracket.ida_steps;
+      if (!bracket.valid) {
+        out.row.method = "no distress bracket: " + bracket.message;
+        out.message = out.row.method;
+        return out;
+      }
+      if (!fold) {
+        const ArclengthReport around = round_the_fold(model, bracket.low_state, bracket.low, settings.load_end, newton);
+        if (!around.folds.empty()) {
+          fold = around.folds.front();
+          out.row.fold_load = fold->lambda;
+        } else {
+          disagreement = "no fold: " + around.message;
+        }
+      }
+    }
+    out.bracket_state = bracket.low_state;
+    out.row.bracket_low = bracket.low;
+    out.row.bracket_high = bracket.high;
+    if (fold && disagreement.empty()) {
+      // The bracket is centred on the fold: W_d is the fold, proven to the bracket's width.
+      out.row.distress_load = fold->lambda;
+      out.row.method = fmt::format("runaway; fold at {:.6g} N ({}), proven by transients: the step to {:.6g} N "
+                                   "settles, to {:.6g} N runs away",
+                                   fold->lambda, to_string(fold->method), bracket.low, bracket.high);
+    } else {
+      out.row.distress_load = bracket.critical_estimate();
+      if (fold) {
+        const double gap = (*out.row.distress_load - fold->lambda) / fold->lambda;
+        out.row.method = fmt::format("runaway bracketed by bisection; fold at {:.6g} N ({}), {:+.2f} % from W_d ({})",
+                                     fold->lambda, to_string(fold->method), -100.0 * gap, disagreement);
+      } else {
+        out.row.method = "runaway bracketed by bisection; " + disagreement;
+      }
+    }
+    say(fmt::format("  distress between {:.2f} and {:.2f} N", bracket.low, bracket.high));
+
+    // Past W_d: march the first runaway step to where it goes and keep its trajectory
+    // (after a proof, on from where the step above the fold was judged a runaway).
+    const NewtonSettings settle = runaway.newton;
+    StepMarch hot;
+    if (!proof.runaway_state.empty() && !settings.march_past_distress) {
+      // W_d and its proof only: the runaway's trajectory ends where it was proven.
+      out.runaway = std::move(proof.runaway);
       return out;
     }
-  out.bracket_state = bracket.low_state;
-  out.row.bracket_low = bracket.low;
-  out.row.bracket_high = bracket.high;
-  out.row.distress_load = bracket.critical_estimate();
-  say(fmt::format("  distress between {:.2f} and {:.2f} N", bracket.low, bracket.high));
-
-  // The fold of the steady branch, by pseudo-arclength continuation round it.
-  const ArclengthReport around = round_the_fold(model, bracket.low_state, bracket.low, settings.load_end, newton);
-  say(fmt::format("  arclength continuation: {} states, {} folds", around.accepted, around.folds.size()));
-  if (!around.folds.empty()) {
-    const FoldPoint& fold = around.folds.front();
-    out.row.fold_load = fold.lambda;
-    const double gap = (*out.row.distress_load - fold.lambda) / fold.lambda;
-    out.row.method = fmt::format("runaway; fold at {:.6g} N ({}), {:+.2f} % from W_d", fold.lambda,
-                                 to_string(fold.method), -100.0 * gap);
-  } else {
-    out.row.method = "runaway; no fold: " + around.message;
-  }
-
-  // Past W_d: march the first runaway step to where it goes and keep its trajectory.
-  model.set_load(bracket.low);
-  StepMarch hot = march_load_step(model, bracket.low_state, bracket.high, runaway.transient, newton);
-  out.runaway = std::move(hot.trajectory);
-  say(fmt::format("  the step to {:.2f} N: {}", bracket.high, hot.message));
-  if (!hot.settled) {
-    out.message = "past distress: " + hot.message;
-    return out;
-  }
-  out.states.push_back(record(model, hot.state, hot.newton_iterations, hot.wall_ms));
-  u = hot.state;
+    if (!proof.runaway_state.empty()) {
+      model.set_load(bracket.high);
+      hot = march_load_step(model, proof.runaway_state, bracket.high, runaway.transient, settle, 0.0,
+                            proof.runaway_time);
+      out.runaway = std::move(proof.runaway);
+      out.runaway.insert(out.runaway.end(), hot.trajectory.begin() + 1, hot.trajectory.end());
+    } else {
+      model.set_load(bracket.low);
+      hot = march_load_step(model, bracket.low_state, bracket.high, runaway.transient, settle);
+      out.runaway = std::move(hot.trajectory);
+    }
+    say(fmt::format("  the step to {:.2f} N: {}", bracket.high, hot.message));
+    if (!hot.settled) {
+      out.message = "past distress: " + hot.message;
+      return out;
+    }
+    out.states.push_back(record(model, hot.state, hot.newton_iterations, hot.wall_ms));
+    u = hot.state;
   } catch (const std::exception& e) {
     // A singular Jacobian under the detector or the march, at the fold itself: what
     // was found so far stays, and the row says why the search stopped.

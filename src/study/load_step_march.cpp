@@ -27,7 +27,8 @@ constexpr double settle_fraction = 1e-3;
 }  // namespace
 
 StepMarch march_load_step(BearingModel& model, std::span<const double> start_state, double new_load,
-                          const TransientSettings& settings, const NewtonSettings& newton, double duration) {
+                          const TransientSettings& settings, const NewtonSettings& newton, double duration,
+                          double start_time) {
   const auto t0 = std::chrono::steady_clock::now();
   StepMarch out;
   // The horizon's time scale, needed only when no duration is given. Near a fold the
@@ -43,8 +44,8 @@ StepMarch march_load_step(BearingModel& model, std::span<const double> start_sta
   }
   model.set_load(new_load);
   IdaTransient ida(model, settings);
-  const double horizon = duration > 0 ? duration : horizon_multiple * tau;
-  TransientStatus status = ida.start(0.0, start_state);
+  const double horizon = start_time + (duration > 0 ? duration : horizon_multiple * tau);
+  TransientStatus status = ida.start(start_time, start_state);
   std::vector<double> r(start_state.size());
   auto sample = [&](double t, std::span<const double> u) {
     TrajectorySample& sample = out.trajectory.emplace_back();
@@ -64,7 +65,7 @@ StepMarch march_load_step(BearingModel& model, std::span<const double> start_sta
     out.message = "no consistent start after the load step: " + status.flag_name + " " + status.message;
     return out;
   }
-  sample(0.0, ida.state());
+  sample(start_time, ida.state());
 
   KinsolNewton polish(model);
   // Where IDA cannot go on, the film's mechanical equilibrium has typically lost its

@@ -29,7 +29,10 @@ struct StepMarch {
 // From start_state, steady at the model's current load, to new_load (left set).
 // duration > 0 fixes the span of pseudo-time; 0 marches until the state settles, up to
 // a horizon of many slowest relaxation times.
+// start_time > 0 goes on with a step already under way: start_state is the trajectory's
+// state at that time (not steady), and the march's samples follow on in time.
 StepMarch march_load_step(BearingModel& model, std::span<const double> start_state, double new_load,
-                          const TransientSettings& settings, const NewtonSettings& newton, double duration = 0.0);
+                          const TransientSettings& settings, const NewtonSettings& newton, double duration = 0.0,
+                          double start_time = 0.0);
 
 }  // namespace twb

@@ -211,7 +211,9 @@ void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport
 
 void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress) {
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
-  run_searches(base, variants, range_settings(base.scene().study), progress,
+  DistressSearchSettings settings = range_settings(base.scene().study);
+  settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
+  run_searches(base, variants, settings, progress,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
     out.distress.push_back(found.row);
     // The cool branch's states are results too (f_eff, temperature against load).

@@ -7,6 +7,8 @@
 
 namespace twb {
 
+class SparseLu;
+
 struct BranchPoint {
   int index = 0;  // 0: the start state
   std::span<const double> u;
@@ -14,6 +16,9 @@ struct BranchPoint {
   double arclength = 0.0;           // from the start, in the continuation metric; 0 in natural continuation
   std::span<const double> tangent;  // (t_u, t_μ), unit in the metric; empty in natural continuation
   long corrector_iterations = 0;    // of the correction that produced this state
+  // Natural continuation: the corrector's factors of ∂F/∂u at u or one Newton step from
+  // it, in Newton's form (a linear stability test needs no other); null otherwise.
+  const SparseLu* factors = nullptr;
 };
 
 // Called for every accepted state, the start included; returning false stops the

@@ -1,13 +1,20 @@
-// Where the bearing fails at one operating speed (MODEL.md section 8): the cool branch
-// is continued in load from a light load; every accepted state is checked by the
-// pseudo-time transient (a load step from the previous state must settle on it); where
-// the branch ends, the load steps that settle and those that run away bracket the
-// distress load W_d, which bisection refines; pseudo-arclength continuation goes round
-// the branch's turning point to locate the fold, which W_d must agree with.
+// Where the bearing fails at one operating speed (MODEL.md section 8): the fold first,
+// the dynamics as its proof. The cool branch is continued in load from a light load;
+// every accepted state is judged by its linear stability (linear_stability.h, with the
+// corrector's own factors), and only where that is inconclusive by the pseudo-time
+// transient (a load step from the previous state must settle on it). As the slowest
+// thermal mode slows towards the fold, pseudo-arclength continuation goes round the
+// branch's turning point and the minimally augmented system locates the fold. Two
+// transients then prove it: a load step to half a bracket width below the fold settles
+// on the cool branch, one from there to half a width above runs away; they are the
+// reported bracket. Bisection by transients is the fallback where no fold exists in
+// range, where a transient check of the branch ran away first, or where the dynamics
+// disagree with the fold.
 //
 // Verdicts (DistressRow::method):
-//   "runaway; fold at …"  bracketed by transients, and the steady branch folds there
-//   "runaway; no fold"    bracketed, but arclength continuation found no turning point
+//   "runaway; fold at …, proven by transients: …"  the fold, and the two steps that prove it
+//   "runaway bracketed by bisection; …"            bisection by transients, and why (no fold,
+//                                                  or the dynamics disagree with it)
 //   "no fold up to …"     the branch reaches load_end without a fold or a runaway
 //                         (gradual heating): W_d stays empty, and the method names the
 //                         load where the mean temperature rises fastest with load
@@ -31,8 +38,23 @@ struct DistressSearchSettings {
   // load_sweep: the loads that must appear among the states (the requested grid);
   // empty for a distress map, which needs only the branch up to distress.
   std::vector<double> grid;
+  // After W_d, march the first runaway step to the hot state it reaches (its trajectory
+  // and that state are results). A distress map needs neither: W_d is proven once the
+  // step above the fold is judged a runaway.
+  bool march_past_distress = true;
   // load_sweep: after distress, go on from the hot state the runaway reached.
   bool continue_past_distress = false;
+};
+
+// What a search cost: the work behind one W_d.
+struct SearchCounts {
+  long stability_tests = 0;  // linear stability tests of cool-branch states
+  long transients = 0;       // load-step transients integrated (IDA)
+  long ida_steps = 0;        // their internal steps
+  void add(const StepOutcome& step) {
+    ++transients;
+    ida_steps += step.statistics.steps;
+  }
 };
 
 struct DistressSearch {
@@ -43,6 +65,10 @@ struct DistressSearch {
   std::vector<TrajectorySample> runaway;  // the first load step past W_d, marched to the hot state
   bool failed = false;                    // the light load itself had no steady state
   std::string message;
+  SearchCounts counts;
+  // The solvers' own words where a search went on regardless (e.g. why natural
+  // continuation stopped at the fold): for --verbose, not for the progress lines.
+  std::vector<std::string> diagnostics;
 };
 
 // The runaway detector the search brackets W_d with: the scene's Newton tolerances, the
