@@ -1,6 +1,6 @@
 // Distress on the bearing (MODEL.md section 8), on a coarse mesh so it runs in CI: the
-// load bracketed by transients agrees with the fold of the steady branch, steps just
-// below it settle and just above it run away.
+// fold located by continuation is proven by two transients, the load bracketed by them
+// agrees with the fold, steps just below it settle and just above it run away.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -65,6 +65,21 @@ TEST_F(BearingDistress, TransientBracketAgreesWithFold) {
   EXPECT_LE(*row.fold_load, *row.bracket_high * (1 + 0.002));
 }
 
+// The fold comes first and two transients prove it: the bracket is half a width either
+// side of the fold, W_d is the fold, and on the paper's branch (every state decided by
+// its linear stability) those two are the only transients of the search.
+TEST_F(BearingDistress, TheFoldIsProvenByTwoTransients) {
+  const DistressRow& row = found_->row;
+  ASSERT_TRUE(row.distress_load && row.fold_load && row.bracket_low && row.bracket_high) << row.method;
+  EXPECT_NE(row.method.find("proven by transients"), std::string::npos) << row.method;
+  EXPECT_EQ(*row.distress_load, *row.fold_load);
+  EXPECT_DOUBLE_EQ(*row.bracket_low, *row.fold_load * (1 - 0.001));
+  EXPECT_DOUBLE_EQ(*row.bracket_high, *row.fold_load * (1 + 0.001));
+  EXPECT_EQ(found_->counts.transients, 2);
+  EXPECT_GT(found_->counts.ida_steps, 0);
+  EXPECT_GE(found_->counts.stability_tests, long(found_->cool_states) - 1);
+}
+
 // 1 % either side of W_d: from the steady state at the bracket's low load, the step
 // below settles on a steady state and the step above runs away.
 TEST_F(BearingDistress, StepBelowSettlesStepAboveRunsAway) {
@@ -120,6 +135,15 @@ TEST_P(DetectorRobustness, DistressLoadMovesLessThanHalfAPercent) {
   const Bracket b = bracket_critical(s.model, 0.99 * wd, low, 1.01 * wd, settings);
   ASSERT_TRUE(b.valid) << b.message;
   EXPECT_NEAR(b.critical_estimate(), wd, 0.005 * wd) << variant.name << " x" << factor;
+
+  // The proof's two steps keep their verdicts, so W_d (the fold) does not move at all:
+  // from 1 % below to the bracket's low end it settles, from there to its high end it
+  // runs away.
+  s.model.set_load(0.99 * wd);
+  const StepOutcome below = classify_step(s.model, low, *s.found.row.bracket_low, settings);
+  ASSERT_TRUE(below.settled()) << variant.name << " x" << factor << ": " << below.reason;
+  const StepOutcome above = classify_step(s.model, below.final_state, *s.found.row.bracket_high, settings);
+  EXPECT_FALSE(above.settled()) << variant.name << " x" << factor << ": " << above.reason;
 }
 
 const DetectorVariant kVariants[] = {
