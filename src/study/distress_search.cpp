@@ -40,6 +40,11 @@ bool same_state(std::span<const double> a, std::span<const double> b) {
   return d <= 1e-4;
 }
 
+// The light load a start is checked against: a tenth of it. On the paper's bearing the
+// cool branch is the only one a tenth of the distress load (the hot branch turns back
+// well above that), and the branch down there costs a handful of continuation steps.
+constexpr double light_load_fraction = 0.1;
+
 // Gradual heating (no fold): the load where the mean washer temperature rises fastest,
 // by centred differences over the branch's states.
 double steepest_sensitivity(const std::vector<SolvedState>& states) {
@@ -186,8 +191,11 @@ RunawaySettings distress_detector(const Scene& scene, double bracket_width) {
   return r;
 }
 
-DistressSearch search_distress(BearingModel& model, const DistressSearchSettings& settings,
-                               const SearchProgress& progress) {
+namespace {
+
+// The search from a steady state `u` at settings.load_start, on the cool branch.
+DistressSearch search_from(BearingModel& model, const DistressSearchSettings& settings, std::vector<double> u,
+                           const SteadyReport& first, const SearchProgress& progress) {
   DistressSearch out;
   out.row.speed = model.speed();
   const NewtonSettings newton = newton_settings(model.scene());
@@ -195,26 +203,16 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
   auto say = [&](const std::string& s) {
     if (progress) progress(fmt::format("{} [{:.1f} s]", s, elapsed_ms(started) / 1000.0));
   };
-
-  // The light load from the paper's cold start.
   model.set_load(settings.load_start);
-  std::vector<double> u;
-  SteadySolver steady(model, newton);
-  const SteadyReport first = steady.solve_cold(u);
-  if (!first.converged) {
-    out.failed = true;
-    out.message = fmt::format("no steady state at the starting load {:.6g} N: {}", settings.load_start,
-                              first.message);
-    out.row.method = "no steady state at load_start";
-    return out;
-  }
   out.states.push_back(record(model, u, first.iterations, first.wall_ms));
 
   // Without the thermal effect nothing has a heat capacity: there is no transient to
   // check states or bracket W_d with (thermo-viscous distress needs heat), and only the
   // steady branch and its fold remain.
   const std::vector<double> capacity = model.capacities();
-  const bool transient = std::any_of(capacity.begin(), capacity.end(), [](double c) { return c > 0.0; });
+  const bool dynamics = std::any_of(capacity.begin(), capacity.end(), [](double c) { return c > 0.0; });
+  // Only the fold (a mesh refined for the error estimate): the steady branch alone.
+  const bool transient = dynamics && !settings.fold_only;
 
   // The cool branch by natural continuation (secant predictor), segment by segment:
   // through the requested grid, and never more than 15 % of the load at once, since a
@@ -273,7 +271,7 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
       if (p.index > 0) {
         Pending& q = pending.emplace_back(
             Pending{{p.u.begin(), p.u.end()}, p.lambda, p.corrector_iterations, 0.0, Stability::inconclusive, {}});
-        if (transient && p.factors) {
+        if (dynamics && p.factors) {
           const StabilityReport st = linear_stability(model, *p.factors);
           ++out.counts.stability_tests;
           q.stability = st.verdict;
@@ -362,6 +360,12 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
                                  settings.load_end);
     return out;
   }
+  if (!ran_away && !branch_ended && model.scene().lubricant.viscosity_model == ViscosityModel::constant) {
+    out.row.method = fmt::format("no fold up to {:.6g} N (the oil's viscosity does not depend on temperature: no "
+                                 "thermo-viscous distress)",
+                                 settings.load_end);
+    return out;
+  }
   if (!ran_away && !branch_ended) {
     const double steepest = steepest_sensitivity(out.states);
     out.row.method = fmt::format("no fold up to {:.6g} N (gradual heating); steepest rise of T_mean at {:.6g} N",
@@ -373,6 +377,10 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
     // The steady branch's end only: locate its fold.
     const ArclengthReport around = round_the_fold(model, low_state, low, settings.load_end, newton);
     if (!around.folds.empty()) out.row.fold_load = around.folds.front().lambda;
+    if (settings.fold_only) {
+      out.row.method = out.row.fold_load ? "fold only" : "no fold located: " + around.message;
+      return out;
+    }
     out.row.method = out.row.fold_load
                          ? fmt::format("no thermal effect, so no transient to bracket W_d: the steady branch folds at "
                                        "{:.6g} N",
@@ -524,6 +532,74 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
       break;
     }
   }
+  return out;
+}
+
+}  // namespace
+
+DistressSearch search_distress(BearingModel& model, const DistressSearchSettings& settings,
+                               const SearchProgress& progress) {
+  const NewtonSettings newton = newton_settings(model.scene());
+  model.set_load(settings.load_start);
+  std::vector<double> u;
+  SteadySolver steady(model, newton);
+  const SteadyReport first = steady.solve_cold(u);
+  if (!first.converged) {
+    DistressSearch out;
+    out.row.speed = model.speed();
+    out.failed = true;
+    out.message = fmt::format("no steady state at the starting load {:.6g} N: {}", settings.load_start,
+                              first.message);
+    out.row.method = "no steady state at load_start";
+    return out;
+  }
+  const std::vector<double> capacity = model.capacities();
+  if (settings.fold_only || std::none_of(capacity.begin(), capacity.end(), [](double c) { return c > 0.0; }))
+    return search_from(model, settings, u, first, progress);
+
+  // Which branch the start lies on. The cold start finds some steady state, and past
+  // distress that is a hot one. The cool branch is the one that goes on down to light
+  // loads, where the bearing has one steady state: continued down to a tenth of the
+  // start, the start's branch must get there without a turning point and land on that
+  // light load's own cold start. If it does not, the search starts from the light load.
+  const double light = settings.load_start * light_load_fraction;
+  if (progress) progress(fmt::format("  is the start on the cool branch? following it down to {:.3g} N", light));
+  std::vector<double> down = u;
+  NaturalSettings natural;
+  natural.newton = newton;
+  natural.newton.max_iterations = 12;
+  natural.initial_step = natural.max_step = 0.15 * settings.load_start;
+  natural.min_step = settings.bracket_width * light;
+  const NaturalReport descent = continue_in_parameter(model, down, light, natural);
+  model.set_load(light);
+  std::vector<double> light_state;
+  const SteadyReport light_start = steady.solve_cold(light_state);
+  const bool cool_start = descent.reached_target && light_start.converged && same_state(down, light_state);
+  if (cool_start) {
+    model.set_load(settings.load_start);
+    return search_from(model, settings, u, first, progress);
+  }
+  if (!light_start.converged) {
+    // No reference to judge by: search from the start as it is, and say so.
+    DistressSearch out = search_from(model, settings, u, first, progress);
+    out.row.method = fmt::format("the start's branch could not be checked (no steady state at {:.3g} N); {}", light,
+                                 out.row.method);
+    return out;
+  }
+  if (progress)
+    progress(fmt::format("  the start at {:.6g} N is not on the cool branch ({}); searching from {:.3g} N",
+                         settings.load_start,
+                         descent.reached_target ? "it continues down to another state than the light load's"
+                                                : "its branch turns back on the way down",
+                         light));
+  DistressSearchSettings from_light = settings;
+  from_light.load_start = light;
+  DistressSearch out = search_from(model, from_light, light_state, light_start, progress);
+  out.start_past_distress = true;
+  const std::string where =
+      out.row.distress_load ? fmt::format("W_d ≈ {:.6g} N", *out.row.distress_load) : "no W_d found from there";
+  out.row.method = fmt::format("the start at {:.6g} N is already past distress ({}, continued from {:.3g} N): {}",
+                               settings.load_start, where, light, out.row.method);
   return out;
 }
 

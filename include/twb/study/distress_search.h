@@ -42,6 +42,9 @@ struct DistressSearchSettings {
   // and that state are results). A distress map needs neither: W_d is proven once the
   // step above the fold is judged a runaway.
   bool march_past_distress = true;
+  // The fold of the branch continued from load_start only, without transients or a
+  // check of the start's branch (the error estimate's refined meshes): row.fold_load.
+  bool fold_only = false;
   // load_sweep: after distress, go on from the hot state the runaway reached.
   bool continue_past_distress = false;
 };
@@ -64,6 +67,9 @@ struct DistressSearch {
   std::vector<double> bracket_state;      // the steady state at the bracket's low load
   std::vector<TrajectorySample> runaway;  // the first load step past W_d, marched to the hot state
   bool failed = false;                    // the light load itself had no steady state
+  // The study's start lay past distress (not on the branch continued from a light
+  // load): the search ran from a tenth of it instead, and its states begin there.
+  bool start_past_distress = false;
   std::string message;
   SearchCounts counts;
   // The solvers' own words where a search went on regardless (e.g. why natural
