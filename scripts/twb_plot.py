@@ -34,6 +34,8 @@ STATE_COLUMNS = (
 TRAJECTORY_COLUMNS = (
     "t_s", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff", "load_N")
 DISTRESS_TAIL = ("W_d_N", "bracket_low_N", "bracket_high_N", "fold_N", "method")
+# Written since W_d has an error bar (study.error_estimate: richardson), before the method.
+DISTRESS_ERROR_COLUMNS = ("W_d_fine_N", "W_d_extrapolated_N", "W_d_error_N")
 SLIDING_COLUMNS = (
     "speed_rad_s", "load_N", "sliding", "film_area_m2", "fluid_force_N", "fluid_share",
     "contact_share", "torque_Nm", "f_eff", "hmin_over_sigma", "T_mean_C", "chosen")
@@ -202,18 +204,23 @@ class DistressRow:
     fold: object
     method: str
     sliding: object = None  # the sliding film of a sliding choice's row
+    extrapolated: object = None  # mesh-converged W_d (Richardson), N
+    error: object = None  # its error bar, N
 
 
 def read_distress(path):
     records = _records(path)
     line, header = _header_line(path, records,
                                 f"speed_rad_s[,<parameter>][,sliding],{','.join(DISTRESS_TAIL)}")
-    middle = header[1:-5]
+    tail = DISTRESS_TAIL
+    if tuple(header[-4:-1]) == DISTRESS_ERROR_COLUMNS:
+        tail = DISTRESS_TAIL[:4] + DISTRESS_ERROR_COLUMNS + DISTRESS_TAIL[4:]
+    middle = header[1:-len(tail)]
     sliding = bool(middle) and middle[-1] == "sliding"
     if sliding:
         middle = middle[:-1]
     if (len(middle) > 1 or header[0] != "speed_rad_s" or "sliding" in middle
-            or tuple(header[-5:]) != DISTRESS_TAIL):
+            or tuple(header[-len(tail):]) != tail):
         raise InputError(f"{path}: line {line}: expected the header speed_rad_s[,<parameter>][,sliding],"
                          f"{','.join(DISTRESS_TAIL)}, got {','.join(header)}")
     parameter = middle[0] if middle else None
@@ -229,12 +236,15 @@ def read_distress(path):
         value = None
         if parameter is not None:
             value = _number(path, line, parameter, fields[1], optional=True)
-        k = len(header) - 5
-        w_d, low, high, fold = (_number(path, line, DISTRESS_TAIL[i], fields[k + i], optional=True)
+        k = len(header) - len(tail)
+        w_d, low, high, fold = (_number(path, line, tail[i], fields[k + i], optional=True)
                                 for i in range(4))
+        extrapolated = error = None
+        if len(tail) > len(DISTRESS_TAIL):
+            extrapolated, error = (_number(path, line, tail[i], fields[k + i], optional=True) for i in (5, 6))
         film = _run_tags(path, line, fields, header)[1] if sliding else None
         rows.append(DistressRow(speed, None if parameter is None else (parameter, value),
-                                w_d, low, high, fold, fields[-1].strip(), film))
+                                w_d, low, high, fold, fields[-1].strip(), film, extrapolated, error))
     return rows
 
 
@@ -603,7 +613,7 @@ def figure_distress_map(data):
                                   k[1] or ""))
     style = Style(range(len(plottable)))
     fig, ax = new_figure(r"Distress load $W_d$ vs speed")
-    any_fold = False
+    any_fold = any_estimate = False
     for i, key in enumerate(plottable):
         rows = sorted(series[key], key=lambda r: r.speed)
         color, marker = style.colors[i], style.markers[i]
@@ -618,6 +628,12 @@ def figure_distress_map(data):
             above = [max(r.high - r.w_d, 0.0) if r.high is not None else 0.0 for r in found]
             ax.errorbar(x, y, yerr=[below, above], color=color, marker=marker, markersize=5,
                         linewidth=1.2, capsize=4, label=label)
+        converged = [r for r in rows if r.extrapolated is not None and r.error is not None]
+        if converged:
+            any_estimate = True
+            ax.errorbar([r.speed for r in converged], [r.extrapolated for r in converged],
+                        yerr=[r.error for r in converged], color=color, marker="s", markersize=5,
+                        markerfacecolor="none", linestyle="--", linewidth=1.0, capsize=4)
         folds = [r for r in rows if r.fold is not None]
         if folds:
             any_fold = True
@@ -633,6 +649,9 @@ def figure_distress_map(data):
         handles.append(Line2D([], [], color="black", linestyle="none", marker="D",
                               markerfacecolor="none"))
         labels.append("fold of the steady branch")
+    if any_estimate:
+        handles.append(Line2D([], [], color="black", linestyle="--", marker="s", markerfacecolor="none"))
+        labels.append("mesh-converged W_d (Richardson) ± error")
     ax.legend(handles, labels, fontsize="small", framealpha=0.85)
     return fig
 

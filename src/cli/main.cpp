@@ -73,11 +73,17 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
                                                              outcome.timings, verdict));
   std::cout << twb::states_summary(outcome.states);
   for (const twb::DistressRow& d : outcome.distress)
-    std::cout << fmt::format("distress at {:.6g} rad/s{}{}: {} ({})\n", d.speed,
-                             d.parameter ? fmt::format(", {} = {:.6g}", outcome.parameter_column, *d.parameter) : "",
-                             d.sliding.empty() ? "" : ", sliding " + d.sliding,
-                             d.distress_load ? fmt::format("W_d = {:.2f} N", *d.distress_load) : "none",
-                             d.method);
+    std::cout << fmt::format(
+        "distress at {:.6g} rad/s{}{}: {}{} ({})\n", d.speed,
+        d.parameter ? fmt::format(", {} = {:.6g}", outcome.parameter_column, *d.parameter) : "",
+        d.sliding.empty() ? "" : ", sliding " + d.sliding,
+        d.distress_load ? fmt::format("W_d = {:.2f} N", *d.distress_load) : "none",
+        d.extrapolated_load && d.discretization_error
+            ? fmt::format(" on the scene's mesh; mesh-converged {:.1f} ± {:.1f} N (Richardson, {:.2f} N on the "
+                          "mesh refined by two)",
+                          *d.extrapolated_load, *d.discretization_error, *d.fine_fold_load)
+            : "",
+        d.method);
   std::cout << fmt::format("results: {}  ({} states, {:.1f} ms)\n", dir.string(), outcome.states.size(),
                            outcome.timings.total_ms);
   if (!outcome.message.empty()) std::cerr << "twb: " << outcome.message << "\n";

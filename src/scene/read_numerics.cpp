@@ -100,7 +100,7 @@ void read_load_grid(const MapReader& study, Scene& out) {
 
 void read_study(const MapReader& scene, Scene& out) {
   const MapReader study = scene.map("study", {"type", "load_start", "load_end", "load_steps", "speeds",
-                                              "parameter", "bracket_width", "duration"});
+                                              "parameter", "bracket_width", "duration", "error_estimate"});
   Study& s = out.study;
   s.type = read_choice(study, "type", kStudyTypes, s.type);
   switch (s.type) {
@@ -120,9 +120,11 @@ void read_study(const MapReader& scene, Scene& out) {
       s.duration = study.quantity("duration", si::time, non_negative, 0.0);
       break;
     case StudyType::load_sweep:
-      study.restrict_to({"type", "load_start", "load_end", "load_steps", "speeds", "parameter", "bracket_width"},
+      study.restrict_to({"type", "load_start", "load_end", "load_steps", "speeds", "parameter", "bracket_width",
+                         "error_estimate"},
                         "with type: load_sweep");
       read_load_grid(study, out);
+      s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
       read_map_parameter(study, s, out);
       break;
     case StudyType::sliding_choice:
@@ -131,8 +133,9 @@ void read_study(const MapReader& scene, Scene& out) {
       read_load_grid(study, out);
       break;
     case StudyType::distress_map: {
-      study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width"},
+      study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate"},
                         "with type: distress_map");
+      s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
       read_speeds(study, s);
       read_load_range(study, s, " (distress is searched between them)");
       read_map_parameter(study, s, out);

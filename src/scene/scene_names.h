@@ -33,6 +33,9 @@ inline constexpr EnumNames<StudyType, 5> kStudyTypes{
     {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient,
      StudyType::sliding_choice}};
 
+inline constexpr EnumNames<ErrorEstimate, 2> kErrorEstimates{
+    {"none", "richardson"}, {ErrorEstimate::none, ErrorEstimate::richardson}};
+
 inline constexpr EnumNames<MapParameter, 3> kMapParameters{
     {"friction_coefficient", "gear_tilt", "roughness"},
     {MapParameter::friction_coefficient, MapParameter::gear_tilt, MapParameter::roughness}};

@@ -166,6 +166,8 @@ void write_numerics(Writer& w, const Scene& s) {
   }
   if (grid || st.type == StudyType::distress_map)
     w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
+  if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map)
+    w.entry(1, "error_estimate", std::string(kErrorEstimates.name(st.error_estimate)));
   if (st.type == StudyType::transient) w.entry(1, "duration", quantity(st.duration, "s"));
 
   w.line(0, "output:");

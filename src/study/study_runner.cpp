@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "load_step_march.h"
+#include "richardson.h"
 #include "study_support.h"
 #include "twb/scene/scene_loader.h"
 #include "twb/solver/steady_solver.h"
@@ -117,6 +118,36 @@ std::vector<double> study_speeds(const BearingModel& model) {
 // Called after each search with the speed's index in study_speeds.
 using SearchResult = std::function<void(const Variant&, std::size_t speed, const BearingModel&, DistressSearch&)>;
 
+// W_d's error bar (study.error_estimate: richardson) for a search that found a fold.
+void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings& settings, DistressSearch& found,
+                         const ProgressReport& progress) {
+  const Study& st = model.scene().study;
+  const bool searches_distress = st.type == StudyType::load_sweep || st.type == StudyType::distress_map;
+  if (!searches_distress || st.error_estimate != ErrorEstimate::richardson || !found.row.distress_load ||
+      !found.row.fold_load || found.states.empty())
+    return;
+  const Scene fine = refined_mesh(model.scene());
+  if (progress)
+    progress(fmt::format("  error bar: the fold on the {} x {} mesh", fine.mesh.radial_nodes,
+                         fine.mesh.circumferential_nodes));
+  DistressSearchSettings from = settings;
+  from.load_start = found.states.front().state.load;  // where the search began (a light load past distress)
+  std::string why;
+  const auto t0 = Clock::now();
+  const std::optional<MeshErrorEstimate> e =
+      richardson_estimate(model.scene(), model.speed(), *found.row.fold_load, from, why);
+  if (!e) {
+    found.row.method += "; no error estimate: " + why;
+    return;
+  }
+  found.row.fine_fold_load = e->fine_fold;
+  found.row.extrapolated_load = e->extrapolated;
+  found.row.discretization_error = e->error;
+  if (progress)
+    progress(fmt::format("  error bar: fold {:.2f} N on {}; extrapolated W_d = {:.2f} ± {:.2f} N [{:.1f} s]",
+                         e->fine_fold, e->fine_mesh, e->extrapolated, e->error, elapsed_ms(t0) / 1000.0));
+}
+
 // One distress search per variant and speed, with progress lines "[k/n] ..." and the
 // time left; a search that throws becomes a failed row, so that the study's other
 // searches are kept.
@@ -144,6 +175,7 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
         found.row.method = std::string("solver failure: ") + e.what();
         found.message = found.row.method;
       }
+      estimate_mesh_error(model, settings, found, progress);
       found.row.parameter = variant.parameter;
       found.row.sliding = variant.sliding;
       for (std::size_t i = 0; i < found.states.size(); ++i) {

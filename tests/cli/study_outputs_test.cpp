@@ -43,10 +43,13 @@ TEST(StudyOutputs, DistressMapWritesOneRowPerSpeed) {
   ASSERT_EQ(run_twb("distress_map.yaml", dir, "--set 'study.speeds=[136 rad/s, 545 rad/s]' --set study.load_end='600 N'"), 0);
   const auto rows = lines_of(dir / "distress.csv");
   ASSERT_EQ(rows.size(), 3u);
-  EXPECT_EQ(rows[0], "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method");
+  EXPECT_EQ(rows[0],
+            "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,method");
   EXPECT_EQ(rows[1].rfind("136,", 0), 0u);
   EXPECT_EQ(rows[2].rfind("545,", 0), 0u);
   EXPECT_EQ(rows[2].find("nan"), std::string::npos);
+  // The error bar is on by default: at 545 rad/s every number up to the method is there.
+  EXPECT_EQ(rows[2].find(",,"), std::string::npos) << rows[2];
   EXPECT_TRUE(fs::exists(dir / "states.csv"));
   fs::remove_all(dir);
 }

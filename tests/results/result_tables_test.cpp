@@ -13,26 +13,34 @@ namespace twb {
 namespace {
 
 TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
-  DistressRow found{545.0, 0.1, 185.25, 185.0, 185.5, 185.3, "runaway; fold", {}};
-  DistressRow none{136.0, 0.2, std::nullopt, std::nullopt, std::nullopt, std::nullopt, "not reached below 2000 N", {}};
+  DistressRow found{545.0, 0.1, 185.25, 185.0, 185.5, 185.3, "runaway; fold", {}, {}, {}, {}};
+  DistressRow none{136.0, 0.2, std::nullopt, std::nullopt, std::nullopt, std::nullopt, "not reached below 2000 N", {}, {}, {}, {}};
   EXPECT_EQ(distress_csv({found, none}, "friction_coefficient"),
-            "speed_rad_s,friction_coefficient,W_d_N,bracket_low_N,bracket_high_N,fold_N,method\n"
-            "545,0.1,185.25,185,185.5,185.3,runaway; fold\n"
-            "136,0.2,,,,,not reached below 2000 N\n");
+            "speed_rad_s,friction_coefficient,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,"
+            "W_d_extrapolated_N,W_d_error_N,method\n"
+            "545,0.1,185.25,185,185.5,185.3,,,,runaway; fold\n"
+            "136,0.2,,,,,,,,not reached below 2000 N\n");
   found.parameter.reset();
   EXPECT_EQ(distress_csv({found}, ""),
-            "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method\n"
-            "545,185.25,185,185.5,185.3,runaway; fold\n");
+            "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,method\n"
+            "545,185.25,185,185.5,185.3,,,,runaway; fold\n");
+  found.fine_fold_load = 195.0;
+  found.extrapolated_load = 198.25;
+  found.discretization_error = 4.0625;
+  EXPECT_EQ(distress_csv({found}, ""),
+            "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,method\n"
+            "545,185.25,185,185.5,185.3,195,198.25,4.0625,runaway; fold\n");
 }
 
 TEST(DistressTable, QuotesAMethodWithCommas) {
-  DistressRow row{545.0, std::nullopt, 1.0, 1.0, 1.0, std::nullopt, "a, \"b\"", {}};
-  EXPECT_EQ(distress_csv({row}, ""), "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method\n"
-                                     "545,1,1,1,,\"a, \"\"b\"\"\"\n");
+  DistressRow row{545.0, std::nullopt, 1.0, 1.0, 1.0, std::nullopt, "a, \"b\"", {}, {}, {}, {}};
+  EXPECT_EQ(distress_csv({row}, ""),
+            "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,method\n"
+            "545,1,1,1,,,,,\"a, \"\"b\"\"\"\n");
 }
 
 TEST(DistressTable, RefusesNaN) {
-  DistressRow bad{545.0, std::nullopt, std::nan(""), 1.0, 2.0, std::nullopt, "x", {}};
+  DistressRow bad{545.0, std::nullopt, std::nan(""), 1.0, 2.0, std::nullopt, "x", {}, {}, {}, {}};
   EXPECT_THROW(distress_csv({bad}, ""), std::runtime_error);
 }
 
@@ -87,9 +95,10 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
             "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,friction_coefficient,sliding");
   EXPECT_NE(trajectory.find(",150,545,0.05,carrier_washer\n"), std::string::npos) << trajectory;
 
-  DistressRow row{953.0, std::nullopt, 400.0, 399.0, 401.0, 400.5, "runaway", "washer_gear"};
-  EXPECT_EQ(distress_csv({row}, "", true), "speed_rad_s,sliding,W_d_N,bracket_low_N,bracket_high_N,fold_N,method\n"
-                                           "953,washer_gear,400,399,401,400.5,runaway\n");
+  DistressRow row{953.0, std::nullopt, 400.0, 399.0, 401.0, 400.5, "runaway", "washer_gear", {}, {}, {}};
+  EXPECT_EQ(distress_csv({row}, "", true), "speed_rad_s,sliding,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,"
+            "method\n"
+                                           "953,washer_gear,400,399,401,400.5,,,,runaway\n");
 }
 
 TEST(SlidingTable, OneRowPerConfigurationWithTheChoiceMarked) {

@@ -69,6 +69,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"distress_map_unknown_parameter", 17, 21, {"study.parameter.name: unknown value 'viscosity'", "allowed: friction_coefficient, gear_tilt, roughness"}},
     {"distress_map_friction_with_empirical_law", 19, 11, {"friction_coefficient varies the constant friction law's coefficient", "set friction.law: constant"}},
     {"distress_map_without_loads", 13, 3, {"missing required key 'load_start' in 'study'"}},
+    {"error_estimate_unknown", 12, 95, {"study.error_estimate: unknown value 'extrapolated'", "allowed: none, richardson"}},
     {"bracket_width_too_wide", 12, 94, {"study.bracket_width: '0.5' is out of range; must be in (0, 0.1]"}},
     {"transient_duration_wrong_dimension", 12, 72, {"study.duration: '60 mm' has the dimension of length, expected a time"}},
     {"transient_without_thermal", 12, 15, {"study.type: a transient study marches the heat balance", "add 'thermal' to effects"}},

@@ -14,6 +14,8 @@ import unittest
 import xml.etree.ElementTree as ET
 
 SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "twb_plot.py")
+sys.path.insert(0, os.path.dirname(SCRIPT))
+import twb_plot  # noqa: E402  (the reader functions, beside the script's command line)
 
 STATES_HEADER = ("load_N,speed_rad_s,T_mean_C,T_max_C,hmin_over_sigma,gamma_x_ratio,gamma_y_ratio,"
                  "fluid_share,contact_share,torque_Nm,f_eff,stribeck,converged,iterations,residual,"
@@ -227,6 +229,26 @@ class TwbPlotTest(unittest.TestCase):
         for label in ("dry friction coefficient 0.1", "dry friction coefficient 0.3",
                       "fold of the steady branch"):
             self.assertIn(label, text)
+
+    def test_distress_map_with_error_bars(self):
+        """distress.csv as twb writes it with study.error_estimate: richardson: the three
+        columns before the method, drawn as the mesh-converged W_d with its bar; a row
+        without an estimate keeps empty cells."""
+        d = self.results_dir(
+            "map_error",
+            distress=["speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,"
+                      "W_d_extrapolated_N,W_d_error_N,method",
+                      "545,188.38,188.19,188.57,188.38,198.58,201.98,4.25,\"runaway; fold at 188.381 N, proven\"",
+                      "953,221.5,221.28,221.72,221.5,,,,runaway; fold at 221.497 N",
+                      "136,,,,,,,,no fold up to 2000 N (gradual heating)"])
+        out_dir = os.path.join(self.tmp, "figs_error")
+        result = plot(d, "--out", out_dir)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        text = self.svg_text(os.path.join(out_dir, "distress_map.svg"))
+        self.assertIn("mesh-converged W_d (Richardson)", text)
+        rows = twb_plot.read_distress(os.path.join(d, "distress.csv"))
+        self.assertEqual([(r.extrapolated, r.error) for r in rows], [(201.98, 4.25), (None, None), (None, None)])
+        self.assertEqual(rows[0].method, "runaway; fold at 188.381 N, proven")
 
     def test_load_sweep_over_speeds_and_a_parameter(self):
         """One directory of a load sweep over speeds and friction coefficients: a curve per

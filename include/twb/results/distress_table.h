@@ -1,5 +1,6 @@
 // distress.csv: one row per distress search (issue contract):
-//   speed_rad_s, <param>, sliding, W_d_N, bracket_low_N, bracket_high_N, fold_N, method
+//   speed_rad_s, <param>, sliding, W_d_N, bracket_low_N, bracket_high_N, fold_N,
+//   W_d_fine_N, W_d_extrapolated_N, W_d_error_N, method
 // <param> is the study's second axis (e.g. friction_coefficient), sliding the film that
 // slides (sliding_choice); each column is left out when the study has none. A value that does not exist (no fold on the branch,
 // no distress below the highest load searched) is an empty cell, never NaN.
@@ -20,6 +21,11 @@ struct DistressRow {
   std::optional<double> fold_load;        // turning point of the steady branch, N
   std::string method;                     // how W_d was decided (see distress_search.h)
   std::string sliding;                    // sliding_choice: "carrier_washer" or "washer_gear"
+  // study.error_estimate: richardson (study/richardson.h): the fold on the mesh refined
+  // by two, the extrapolated W_d and its error bar.
+  std::optional<double> fine_fold_load;      // N
+  std::optional<double> extrapolated_load;   // N
+  std::optional<double> discretization_error;  // N
 };
 
 // parameter_column: e.g. "friction_coefficient", "gear_tilt_rad"; empty for none.

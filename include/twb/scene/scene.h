@@ -35,6 +35,12 @@ enum class StudyType { point, load_sweep, distress_map, transient, sliding_choic
 // roughness: the Rq of every surface (see docs/scenes.md for how the texture scales).
 enum class MapParameter { none, friction_coefficient, gear_tilt, roughness };
 
+// How a distress search estimates the discretization error of W_d.
+enum class ErrorEstimate {
+  none,
+  richardson,  // the fold again on the mesh refined by two in each direction, extrapolated
+};
+
 struct Effects {
   bool hydrodynamics = false;
   CavitationModel cavitation = CavitationModel::reynolds;
@@ -129,6 +135,8 @@ struct Study {
   std::vector<double> parameter_values;  // SI (dimensionless, rad, m)
   // Distress bracket refined by bisection to (high − low)/high <= bracket_width.
   double bracket_width = 0.002;
+  // load_sweep, distress_map: W_d's discretization error (study/richardson.h).
+  ErrorEstimate error_estimate = ErrorEstimate::richardson;
   // transient: pseudo-time span in s; 0 marches until the state settles or runs away.
   double duration = 0.0;
 };

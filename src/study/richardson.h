@@ -1,0 +1,44 @@
+// W_d's discretization error (issue: an error bar on every W_d). The fold is located
+// again on the mesh refined by two in each direction (radial intervals and
+// circumferential nodes doubled), where it needs no transients: the dynamics already
+// proved it on the scene's mesh. Richardson extrapolation with the discretization's
+// formal order p = 2 (docs/model.md: second-order finite volumes),
+//
+//     W_ext = W_fine + (W_fine − W_coarse)/(2^p − 1),
+//
+// and Roache's grid convergence index as the error bar,
+//
+//     error = F_s·|W_fine − W_coarse|/(2^p − 1),   F_s = 1.25.
+//
+// The bar covers the extrapolation for any observed order down to p ≈ 1.25 (the
+// extrapolated value moves by |Δ|·(1/(2^p − 1) − 1/3), which reaches 1.25·|Δ|/3 there).
+// W_d's observed order on the paper's bearing is 1.5 (5/9/17 radial nodes) rising to 1.8
+// (9/17/33): contact and cavitation boundaries cost it the full second order on coarse
+// meshes. tests/study/richardson_test.cpp checks the order and the cover on three meshes.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "twb/scene/scene.h"
+#include "twb/study/distress_search.h"
+
+namespace twb {
+
+struct MeshErrorEstimate {
+  double fine_fold = 0.0;     // N, the fold on the refined mesh
+  double extrapolated = 0.0;  // N
+  double error = 0.0;         // N, the error bar of the extrapolated value
+  std::string fine_mesh;      // e.g. "17 x 132"
+};
+
+// The scene with its mesh refined by two in each direction.
+Scene refined_mesh(const Scene& scene);
+
+// From the fold on the scene's mesh at `speed`; the fold on the refined mesh is searched
+// from settings.load_start to settings.load_end. Empty, with the reason in `why`, when
+// the refined mesh has no fold there.
+std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double speed, double coarse_fold,
+                                                     DistressSearchSettings settings, std::string& why);
+
+}  // namespace twb
