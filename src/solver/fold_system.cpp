@@ -92,6 +92,26 @@ void FoldSystem::evaluate(std::span<const double> x, std::span<double> residual,
   matrix().assemble(base_jac, column, gradient, -parameter_part * scale, jacobian);
 }
 
+double FoldSystem::fold_curvature(std::span<const double> x) const {
+  const auto n = std::size_t(base().size());
+  std::vector<double> f(n), base_jac(std::size_t(base().pattern().nnz())), vg;
+  if (!solve_bordered(x, f, base_jac, vg)) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> w(n + 1, 0.0);
+  w[n] = 1.0;
+  lu_->solve_transposed(w);
+  const std::span<const double> u = x.first(n), v = std::span<const double>(vg).first(n);
+  std::vector<double> gradient(n), f_lambda(n);
+  double parameter_part = 0.0;
+  second_derivatives(u, v, std::span<const double>(w).first(n), gradient, parameter_part);
+  base().parameter_derivative(u, f_lambda);
+  double bend = 0.0, push = 0.0;  // ψᵀF_uu[v, v], ψᵀF_λ
+  for (std::size_t k = 0; k < n; ++k) {
+    bend += gradient[k] * v[k];
+    push += w[k] * f_lambda[k];
+  }
+  return bend / push;
+}
+
 std::vector<double> FoldSystem::null_vector(std::span<const double> x) const {
   const auto n = std::size_t(base().size());
   std::vector<double> f(n), base_jac(std::size_t(base().pattern().nnz())), vg;

@@ -56,6 +56,9 @@ class SemenovProblem final : public SteadySystem {
   }
   double parameter() const override { return psi_; }
   void set_parameter(double v) override { psi_ = v; }
+  // The second parameter of the fold curve test: ε.
+  double activation() const { return epsilon_; }
+  void set_activation(double e) { epsilon_ = e; }
   void parameter_derivative(std::span<const double> u, std::span<double> d) const override {
     d[0] = -u[1];
     d[1] = 0.0;
@@ -96,7 +99,7 @@ class BratuProblem final : public SteadySystem {
   // F_i = −(u_{i−1} − 2u_i + u_{i+1})/h² − λ e^{u_i}: u' = −F is the heat equation with
   // an Arrhenius source.
   void evaluate(std::span<const double> u, std::span<double> r, std::span<double> jac) const override {
-    const double h = 1.0 / double(n_ + 1), ih2 = 1.0 / (h * h);
+    const double h = length_ / double(n_ + 1), ih2 = 1.0 / (h * h);
     Index pos = 0;
     for (Index i = 0; i < n_; ++i) {
       const double left = i > 0 ? u[std::size_t(i - 1)] : 0.0;
@@ -118,10 +121,13 @@ class BratuProblem final : public SteadySystem {
   // Grid coordinate of interior node i.
   double x(Index i) const { return double(i + 1) / double(n_ + 1); }
   static double critical_parameter() { return 3.513830719; }
+  // The domain (0, L): the problem is the unit one with λ·L², so its fold is λ*(1)/L².
+  double length() const { return length_; }
+  void set_length(double length) { length_ = length; }
 
  private:
   Index n_;
-  double lambda_;
+  double lambda_, length_ = 1.0;
   SparsePattern pattern_;
 };
 

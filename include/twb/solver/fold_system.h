@@ -45,6 +45,12 @@ class FoldSystem final : public BorderedSystem {
 
   // The null vector v of J at x, unit in the metric's state norm.
   std::vector<double> null_vector(std::span<const double> x) const;
+  // At a fold x: the branch through it bends as λ ≈ λ* − ½κs² along u* + s·v, with
+  // κ = ψᵀF_uu[v, v]/ψᵀF_λ (ψ the left null vector). κ > 0: the branch's largest λ
+  // (on the bearing, distress: the cool branch ends); κ < 0: its smallest (the hot
+  // branch's turning point back to the cool one); κ changes sign at a cusp. NaN where
+  // the bordered matrix is singular.
+  double fold_curvature(std::span<const double> x) const;
 
   // A singular bordered matrix (far from the fold) gives a non-finite residual, which
   // KINSOL's line search treats as a step too long.
