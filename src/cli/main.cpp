@@ -65,6 +65,9 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
     twb::write_file_atomically(dir / "distress.csv", twb::distress_csv(outcome.distress, parameter, sliding));
   if (type == twb::StudyType::sliding_choice)
     twb::write_file_atomically(dir / "sliding.csv", twb::sliding_csv(outcome.sliding));
+  if (type == twb::StudyType::distress_curve)
+    twb::write_file_atomically(dir / "fold_curve.csv",
+                               twb::fold_curve_csv(outcome.fold_curve, outcome.fold_curve_column));
   if (!outcome.trajectory.empty())
     twb::write_file_atomically(dir / "trajectory.csv", twb::trajectory_csv(outcome.trajectory, parameter, sliding));
   const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message
@@ -84,6 +87,7 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
                           *d.extrapolated_load, *d.discretization_error, *d.fine_fold_load)
             : "",
         d.method);
+  for (const std::string& line : outcome.summary) std::cout << line << "\n";
   std::cout << fmt::format("results: {}  ({} states, {:.1f} ms)\n", dir.string(), outcome.states.size(),
                            outcome.timings.total_ms);
   if (!outcome.message.empty()) std::cerr << "twb: " << outcome.message << "\n";

@@ -206,6 +206,40 @@ void BearingModel::set_speed(double speed) {
   scene_.operating.speed = speed;
 }
 
+double BearingModel::curve_parameter(CurveParameter p) const {
+  switch (p) {
+    case CurveParameter::speed: return scene_.operating.speed;
+    case CurveParameter::friction_coefficient: return scene_.friction.coefficient;
+    case CurveParameter::gear_tilt: return scene_.gear.tilt;
+    case CurveParameter::ambient_temperature: return scene_.operating.ambient;
+  }
+  return 0.0;
+}
+
+void BearingModel::set_curve_parameter(CurveParameter p, double value) {
+  if (!std::isfinite(value)) throw std::invalid_argument("a curve parameter must be finite");
+  switch (p) {
+    case CurveParameter::speed:
+      set_speed(value);
+      break;
+    case CurveParameter::friction_coefficient:
+      if (scene_.friction.law != FrictionLaw::constant)
+        throw std::invalid_argument("the dry friction coefficient is a parameter of the constant friction law only");
+      scene_.friction.coefficient = value;
+      break;
+    case CurveParameter::gear_tilt:
+      // Film 2's imposed tilt (MODEL.md section 1); the tilt scale stays.
+      scene_.gear.tilt = value;
+      films_[1].imposed_tilt = value;
+      break;
+    case CurveParameter::ambient_temperature:
+      // Temperatures are unknowns relative to ambient; the viscosity scale stays.
+      if (!(value > 0)) throw std::invalid_argument("the ambient temperature must be positive (K)");
+      scene_.operating.ambient = value;
+      break;
+  }
+}
+
 double BearingModel::body_resistance(ComponentId id) const {
   return id == ComponentId::washer ? scene_.washer.thickness / (2.0 * scene_.washer.material.conductivity) : 0.0;
 }

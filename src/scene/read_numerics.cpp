@@ -98,9 +98,53 @@ void read_load_grid(const MapReader& study, Scene& out) {
   s.bracket_width = read_bracket_width(study, s.bracket_width);
 }
 
+// distress_curve: `parameter: speed`, `from`, `to` in its unit, the first fold's load
+// range optional.
+void read_fold_curve(const MapReader& study, Scene& out) {
+  Study& s = out.study;
+  const Node name = study.get("parameter", "speed, friction_coefficient, gear_tilt or ambient_temperature");
+  s.curve_parameter = kCurveParameters.values[name.choice(kCurveParameters.names)];
+  if (s.curve_parameter == CurveParameter::friction_coefficient && out.friction.law != FrictionLaw::constant)
+    name.fail(fmt::format("{}: friction_coefficient varies the constant friction law's coefficient; "
+                          "set friction.law: constant",
+                          name.path()));
+  auto value = [&](const char* key) {
+    switch (s.curve_parameter) {
+      case CurveParameter::speed:
+        return study.quantity(key, si::angular_speed, non_negative);
+      case CurveParameter::friction_coefficient:
+        return study.quantity(key, si::dimensionless, non_negative);
+      case CurveParameter::gear_tilt:
+        return study.quantity(key, si::angle, non_negative);
+      case CurveParameter::ambient_temperature:
+        return study.quantity(key, si::temperature,
+                              Range{.low = kRoelandsLowestTemperature, .low_open = true,
+                                    .reason = "Roelands' viscosity law needs T > -135 degC"});
+    }
+    return 0.0;
+  };
+  s.from = value("from");
+  s.to = value("to");
+  if (s.to == s.from) {
+    const Node to = study.get("to", "");
+    to.fail(fmt::format("{}: '{}' must differ from 'from': the curve needs a range", to.path(), to.yaml().Scalar()));
+  }
+  // The first fold is searched between these loads (defaults: a fifth and four times
+  // operating.load).
+  s.load_start = study.quantity("load_start", si::force, positive, 0.2 * out.operating.load);
+  s.load_end = study.quantity("load_end", si::force, positive, 4.0 * out.operating.load);
+  if (s.load_end <= s.load_start) {
+    const Node node = study.has("load_end") ? study.get("load_end", "") : study.get("load_start", "");
+    node.fail(fmt::format("{}: load_end must be greater than load_start (here {:.6g} N and {:.6g} N)", node.path(),
+                          s.load_end, s.load_start));
+  }
+  s.bracket_width = read_bracket_width(study, s.bracket_width);
+}
+
 void read_study(const MapReader& scene, Scene& out) {
   const MapReader study = scene.map("study", {"type", "load_start", "load_end", "load_steps", "speeds",
-                                              "parameter", "bracket_width", "duration", "error_estimate"});
+                                              "parameter", "bracket_width", "duration", "error_estimate",
+                                              "from", "to"});
   Study& s = out.study;
   s.type = read_choice(study, "type", kStudyTypes, s.type);
   switch (s.type) {
@@ -131,6 +175,11 @@ void read_study(const MapReader& scene, Scene& out) {
       study.restrict_to({"type", "load_start", "load_end", "load_steps", "speeds", "bracket_width"},
                         "with type: sliding_choice");
       read_load_grid(study, out);
+      break;
+    case StudyType::distress_curve:
+      study.restrict_to({"type", "parameter", "from", "to", "load_start", "load_end", "bracket_width"},
+                        "with type: distress_curve");
+      read_fold_curve(study, out);
       break;
     case StudyType::distress_map: {
       study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate"},

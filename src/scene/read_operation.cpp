@@ -8,10 +8,6 @@
 namespace twb::scene_io {
 namespace {
 
-// Roelands' law raises (1 + T/135 degC) to a fractional power: it is undefined at and
-// below -135 degC.
-constexpr double kRoelandsLowestTemperature = 138.15;  // K, -135 degC
-
 void read_lubricant(const MapReader& scene, Scene& out) {
   const MapReader oil = scene.map("lubricant", {"conductivity", "viscosity"});
   Lubricant& l = out.lubricant;

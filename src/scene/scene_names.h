@@ -28,10 +28,15 @@ inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
 inline constexpr EnumNames<FrictionLaw, 2> kFrictionLaws{
     {"empirical", "constant"}, {FrictionLaw::empirical, FrictionLaw::constant}};
 
-inline constexpr EnumNames<StudyType, 5> kStudyTypes{
-    {"point", "load_sweep", "distress_map", "transient", "sliding_choice"},
+inline constexpr EnumNames<StudyType, 6> kStudyTypes{
+    {"point", "load_sweep", "distress_map", "transient", "sliding_choice", "distress_curve"},
     {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient,
-     StudyType::sliding_choice}};
+     StudyType::sliding_choice, StudyType::distress_curve}};
+
+inline constexpr EnumNames<CurveParameter, 4> kCurveParameters{
+    {"speed", "friction_coefficient", "gear_tilt", "ambient_temperature"},
+    {CurveParameter::speed, CurveParameter::friction_coefficient, CurveParameter::gear_tilt,
+     CurveParameter::ambient_temperature}};
 
 inline constexpr EnumNames<ErrorEstimate, 2> kErrorEstimates{
     {"none", "richardson"}, {ErrorEstimate::none, ErrorEstimate::richardson}};

@@ -8,6 +8,10 @@
 
 namespace twb::scene_io {
 
+// Roelands' law raises (1 + T/135 degC) to a fractional power: it is undefined at and
+// below -135 degC.
+inline constexpr double kRoelandsLowestTemperature = 138.15;  // K, -135 degC
+
 Effects read_effects(const MapReader& scene);
 // geometry, materials, surfaces (with the asperity parameters)
 void read_bodies(const MapReader& scene, Scene& out);

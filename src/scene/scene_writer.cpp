@@ -169,6 +169,16 @@ void write_numerics(Writer& w, const Scene& s) {
   if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map)
     w.entry(1, "error_estimate", std::string(kErrorEstimates.name(st.error_estimate)));
   if (st.type == StudyType::transient) w.entry(1, "duration", quantity(st.duration, "s"));
+  if (st.type == StudyType::distress_curve) {
+    const char* unit = st.curve_parameter == CurveParameter::speed                  ? "rad/s"
+                       : st.curve_parameter == CurveParameter::gear_tilt            ? "rad"
+                       : st.curve_parameter == CurveParameter::ambient_temperature ? "K"
+                                                                                    : "1";
+    w.entry(1, "parameter", std::string(kCurveParameters.name(st.curve_parameter)));
+    w.entry(1, "from", quantity(st.from, unit));
+    w.entry(1, "to", quantity(st.to, unit));
+    w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
+  }
 
   w.line(0, "output:");
   w.entry(1, "directory", quoted(s.output.directory));

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "twb/solver/natural_continuation.h"
+
 namespace twb {
 
 FoldCurveSystem::FoldCurveSystem(SteadySystem& base, SecondParameter& parameter, ContinuationMetric metric,
@@ -39,6 +41,27 @@ void FoldCurveSystem::parameter_derivative(std::span<const double> x, std::span<
   fold_->evaluate(x, minus, {});
   parameter_.set(p_);
   for (std::size_t k = 0; k < x.size(); ++k) derivative[k] = (plus[k] - minus[k]) / (2.0 * h);
+}
+
+std::optional<FoldCurvePoint> fold_at(SteadySystem& base, SecondParameter& parameter, const FoldPoint& fold,
+                                      const FoldCurvePoint& near, double p, const NewtonSettings& newton) {
+  const auto n = std::size_t(base.size());
+  const double load_scale = std::abs(fold.lambda) > 0.0 ? std::abs(fold.lambda) : 1.0;
+  FoldCurveSystem curve(base, parameter, ContinuationMetric::of(base, load_scale), fold.u, fold.lambda,
+                        fold.null_vector);
+  curve.set_parameter(near.p);
+  std::vector<double> x(near.u.begin(), near.u.end());
+  x.push_back(near.lambda / load_scale);
+  NaturalSettings natural;
+  natural.newton = newton;
+  const NaturalReport rep = continue_in_parameter(curve, x, p, natural);
+  if (!rep.reached_target) return std::nullopt;
+  FoldCurvePoint out;
+  out.p = p;
+  out.lambda = x[n] * load_scale;
+  out.u.assign(x.begin(), x.begin() + std::ptrdiff_t(n));
+  out.curvature = curve.fold().fold_curvature(x);
+  return out;
 }
 
 FoldCurve trace_fold_curve(SteadySystem& base, SecondParameter& parameter, const FoldPoint& fold,

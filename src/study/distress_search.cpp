@@ -376,7 +376,10 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   if (!transient) {
     // The steady branch's end only: locate its fold.
     const ArclengthReport around = round_the_fold(model, low_state, low, settings.load_end, newton);
-    if (!around.folds.empty()) out.row.fold_load = around.folds.front().lambda;
+    if (!around.folds.empty()) {
+      out.row.fold_load = around.folds.front().lambda;
+      out.fold = around.folds.front();
+    }
     if (settings.fold_only) {
       out.row.method = out.row.fold_load ? "fold only" : "no fold located: " + around.message;
       return out;
@@ -457,6 +460,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
         }
       }
     }
+    out.fold = fold;
     out.bracket_state = bracket.low_state;
     out.row.bracket_low = bracket.low;
     out.row.bracket_high = bracket.high;

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "distress_curve.h"
 #include "load_step_march.h"
 #include "richardson.h"
 #include "study_support.h"
@@ -344,6 +345,9 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress) {
       break;
     case StudyType::sliding_choice:
       run_sliding_choice(model, out, progress);
+      break;
+    case StudyType::distress_curve:
+      run_distress_curve(model, out, progress);
       break;
   }
   out.timings.states = int(out.states.size());

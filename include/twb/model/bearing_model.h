@@ -150,6 +150,12 @@ class BearingModel final : public SteadySystem {
   void set_speed(double speed);
   double speed() const { return scene_.operating.speed; }
 
+  // A parameter a fold curve is continued in (SI: rad/s, 1, rad, K). The pattern and
+  // every scale are kept, so states stay comparable along the curve; the dry friction
+  // coefficient needs the constant friction law (std::invalid_argument otherwise).
+  double curve_parameter(CurveParameter p) const;
+  void set_curve_parameter(CurveParameter p, double value);
+
   // Scales (physical value = scale · unknown).
   double clearance_scale() const { return sigma_ref_; }
   double tilt_scale() const { return gamma_ref_; }

@@ -29,11 +29,15 @@ enum class FrictionLaw { constant, empirical };
 
 // sliding_choice: both sliding configurations over a load grid, the one of lower
 // friction torque kept (MODEL.md section 2, the paper's "Component Rotational Speed").
-enum class StudyType { point, load_sweep, distress_map, transient, sliding_choice };
+enum class StudyType { point, load_sweep, distress_map, transient, sliding_choice, distress_curve };
 
 // The optional second axis of a distress map or load sweep (besides speed).
 // roughness: the Rq of every surface (see docs/scenes.md for how the texture scales).
 enum class MapParameter { none, friction_coefficient, gear_tilt, roughness };
+
+// A parameter of the bearing a fold curve is continued in (study type distress_curve),
+// set on a built model without rebuilding it (BearingModel::set_curve_parameter).
+enum class CurveParameter { speed, friction_coefficient, gear_tilt, ambient_temperature };
 
 // How a distress search estimates the discretization error of W_d.
 enum class ErrorEstimate {
@@ -135,6 +139,9 @@ struct Study {
   std::vector<double> parameter_values;  // SI (dimensionless, rad, m)
   // Distress bracket refined by bisection to (high − low)/high <= bracket_width.
   double bracket_width = 0.002;
+  // distress_curve: the fold continued in this parameter from `from` to `to` (SI).
+  CurveParameter curve_parameter = CurveParameter::speed;
+  double from = 0.0, to = 0.0;
   // load_sweep, distress_map: W_d's discretization error (study/richardson.h).
   ErrorEstimate error_estimate = ErrorEstimate::richardson;
   // transient: pseudo-time span in s; 0 marches until the state settles or runs away.

@@ -17,6 +17,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -95,5 +96,11 @@ using FoldCurveCallback = std::function<bool(const FoldCurvePoint&)>;
 // Leaves p and λ wherever the curve stopped.
 FoldCurve trace_fold_curve(SteadySystem& base, SecondParameter& parameter, const FoldPoint& fold,
                            const FoldCurveSettings& settings, const FoldCurveCallback& on_point = {});
+
+// The fold at exactly p, by natural continuation of the fold system in p from a point of
+// the curve traced from `fold` (whose borders it reuses), p on the same side of any turn
+// as `near`. Empty when the continuation does not reach p.
+std::optional<FoldCurvePoint> fold_at(SteadySystem& base, SecondParameter& parameter, const FoldPoint& fold,
+                                      const FoldCurvePoint& near, double p, const NewtonSettings& newton);
 
 }  // namespace twb

@@ -21,6 +21,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@
 #include "twb/results/distress_table.h"
 #include "twb/results/states_table.h"
 #include "twb/results/trajectory_table.h"
+#include "twb/solver/fold_location.h"
 #include "twb/solver/runaway.h"
 
 namespace twb {
@@ -65,6 +67,7 @@ struct DistressSearch {
   std::size_t cool_states = 0;            // how many of them lie on the cool branch
   DistressRow row;
   std::vector<double> bracket_state;      // the steady state at the bracket's low load
+  std::optional<FoldPoint> fold;          // the located fold (state, load, null vector)
   std::vector<TrajectorySample> runaway;  // the first load step past W_d, marched to the hot state
   bool failed = false;                    // the light load itself had no steady state
   // The study's start lay past distress (not on the branch continued from a light

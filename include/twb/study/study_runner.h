@@ -8,6 +8,7 @@
 
 #include "twb/model/bearing_model.h"
 #include "twb/results/distress_table.h"
+#include "twb/results/fold_curve_table.h"
 #include "twb/results/run_record.h"
 #include "twb/results/sliding_table.h"
 #include "twb/results/states_table.h"
@@ -23,6 +24,10 @@ struct StudyOutcome {
   // transient; load_sweep, sliding_choice: the first step past distress of each search
   std::vector<TrajectorySample> trajectory;
   std::vector<SlidingRow> sliding;    // sliding_choice: both configurations at every grid load
+  // distress_curve: the fold along the curve parameter (fold_curve.csv) and its column
+  std::vector<FoldCurveRow> fold_curve;
+  std::string fold_curve_column;
+  std::vector<std::string> summary;  // lines for the end of the run's output (e.g. the cusp)
   bool solver_failed = false;  // a state the study needed could not be solved
   std::string message;
   RunTimings timings;

@@ -1,0 +1,136 @@
+#include "distress_curve.h"
+
+#include <cmath>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "study_support.h"
+#include "twb/solver/fold_curve.h"
+#include "twb/study/distress_search.h"
+
+namespace twb {
+
+namespace {
+
+// The bearing's curve parameter as the continuation's second parameter.
+class BearingParameter final : public SecondParameter {
+ public:
+  BearingParameter(BearingModel& model, CurveParameter which) : model_(model), which_(which) {}
+  double value() const override { return model_.curve_parameter(which_); }
+  void set(double p) override { model_.set_curve_parameter(which_, p); }
+
+ private:
+  BearingModel& model_;
+  CurveParameter which_;
+};
+
+std::string column_of(CurveParameter p) {
+  switch (p) {
+    case CurveParameter::speed: return "speed_rad_s";
+    case CurveParameter::friction_coefficient: return "friction_coefficient";
+    case CurveParameter::gear_tilt: return "gear_tilt_rad";
+    case CurveParameter::ambient_temperature: return "ambient_C";
+  }
+  return "parameter";
+}
+
+// A parameter value as a user reads it.
+std::string shown(CurveParameter p, double v) {
+  switch (p) {
+    case CurveParameter::speed: return fmt::format("{:.6g} rad/s", v);
+    case CurveParameter::friction_coefficient: return fmt::format("f = {:.6g}", v);
+    case CurveParameter::gear_tilt: return fmt::format("{:.6g} mrad", 1e3 * v);
+    case CurveParameter::ambient_temperature: return fmt::format("{:.6g} C", v - 273.15);
+  }
+  return fmt::format("{:.6g}", v);
+}
+
+}  // namespace
+
+void run_distress_curve(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
+  const Study& st = model.scene().study;
+  const CurveParameter which = st.curve_parameter;
+  out.fold_curve_column = column_of(which);
+  if (which != CurveParameter::speed) out.parameter_column = out.fold_curve_column == "ambient_C" ? "ambient_K" : out.fold_curve_column;
+  auto say = [&](const std::string& s) {
+    if (progress) progress(s);
+  };
+
+  // The first fold, found and proven by the dynamics: at `from`, else at `to`.
+  DistressSearchSettings settings;
+  settings.load_start = st.load_start;
+  settings.load_end = st.load_end;
+  settings.bracket_width = st.bracket_width;
+  settings.march_past_distress = false;
+  std::optional<DistressSearch> first;
+  double start = st.from, other = st.to;
+  for (const double end : {st.from, st.to}) {
+    model.set_curve_parameter(which, end);
+    say(fmt::format("[curve] the first fold at {}", shown(which, end)));
+    DistressSearch found = search_distress(model, settings, progress);
+    if (which != CurveParameter::speed) found.row.parameter = end;
+    out.distress.push_back(found.row);
+    out.states.insert(out.states.end(), found.states.begin(), found.states.begin() + std::ptrdiff_t(found.cool_states));
+    if (found.fold && found.row.distress_load) {
+      first = std::move(found);
+      start = end;
+      other = end == st.from ? st.to : st.from;
+      break;
+    }
+  }
+  if (!first) {
+    out.summary.push_back(fmt::format("fold curve: no fold between {:.6g} and {:.6g} N at either end ({} and {}): "
+                                      "no sudden distress to follow",
+                                      st.load_start, st.load_end, shown(which, st.from), shown(which, st.to)));
+    return;
+  }
+
+  BearingParameter parameter(model, which);
+  model.set_curve_parameter(which, start);
+  FoldCurveSettings fs;
+  fs.p_min = std::min(st.from, st.to);
+  fs.p_max = std::max(st.from, st.to);
+  fs.direction = other > start ? +1 : -1;
+  fs.arclength.newton = newton_settings(model.scene());
+  fs.arclength.newton.max_iterations = 12;
+  // Steps in the metric over (u, W/W_0, p/p_0): a few hundredths of the parameter's own
+  // size at first, up to a tenth.
+  fs.arclength.initial_step = 0.02;
+  fs.arclength.max_step = 0.2;
+  fs.arclength.max_points = 400;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto describe_at = [&](double p, double load, std::span<const double> u) {
+    model.set_curve_parameter(which, p);
+    model.set_load(load);
+    return model.describe(u);
+  };
+  const FoldCurve curve = trace_fold_curve(model, parameter, *first->fold, fs, [&](const FoldCurvePoint& pt) {
+    say(fmt::format("[curve] {}: fold at {:.2f} N ({}) [{:.1f} s]", shown(which, pt.p), pt.lambda,
+                    pt.curvature > 0 ? "distress" : "recovery", elapsed_ms(t0) / 1000.0));
+    return true;
+  });
+  const auto n = std::size_t(model.size());
+  std::size_t next_turn = 0;
+  for (std::size_t k = 0; k < curve.points.size(); ++k) {
+    const FoldCurvePoint& pt = curve.points[k];
+    out.fold_curve.push_back({pt.p, pt.curvature > 0 ? "distress" : "recovery", describe_at(pt.p, pt.lambda, pt.u)});
+    const bool turns = k + 1 < curve.points.size() && pt.tangent_p * curve.points[k + 1].tangent_p < 0.0;
+    if (turns && next_turn < curve.turns.size()) {
+      const CurveTurn& t = curve.turns[next_turn++];
+      out.fold_curve.push_back(
+          {t.p, t.cusp ? "cusp" : "turn", describe_at(t.p, t.lambda, std::span<const double>(t.point.u).first(n))});
+      out.summary.push_back(
+          t.cusp ? fmt::format("fold curve: cusp at {}, {:.2f} N: the cool and hot branches merge; on the side "
+                               "without a fold the bearing heats gradually, with no sudden distress",
+                               shown(which, t.p), t.lambda)
+                 : fmt::format("fold curve: turns back at {}, {:.2f} N without a cusp", shown(which, t.p), t.lambda));
+    }
+  }
+  if (curve.turns.empty())
+    out.summary.push_back(fmt::format("fold curve: {} points from {} to {}, no cusp in range ({})", curve.points.size(),
+                                      shown(which, curve.points.front().p), shown(which, curve.points.back().p),
+                                      curve.message));
+}
+
+}  // namespace twb

@@ -1,0 +1,137 @@
+// The fold curve W_d(ω) of the paper's bearing (study type distress_curve; solver/
+// fold_curve.h) on the coarse mesh: it passes through the W_d a distress search brackets
+// at four speeds, and its cusp lies between the speeds where a direct search does and
+// does not find a fold.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "../support/table1_scene.h"
+#include "twb/solver/fold_curve.h"
+#include "twb/study/distress_search.h"
+#include "twb/study/study_runner.h"
+
+namespace twb {
+namespace {
+
+struct Speed final : SecondParameter {
+  explicit Speed(BearingModel& m) : model(m) {}
+  double value() const override { return model.speed(); }
+  void set(double w) override { model.set_speed(w); }
+  BearingModel& model;
+};
+
+Scene coarse_scene() {
+  Scene s = testing::table1_scene(true, true, true, true, 2000.0, 100.0);
+  testing::use_coarse_mesh(s);
+  return s;
+}
+
+DistressSearchSettings search_range() {
+  DistressSearchSettings s;
+  s.load_start = 100.0;
+  s.load_end = 1000.0;
+  s.march_past_distress = false;
+  return s;
+}
+
+struct SharedCurve {
+  BearingModel model{coarse_scene()};
+  DistressSearch start;
+  FoldCurve curve;
+  SharedCurve() {
+    model.set_speed(2000.0);
+    start = search_distress(model, search_range(), {});
+    if (!start.fold) return;
+    Speed speed(model);
+    FoldCurveSettings fs;
+    fs.p_min = 136.0;
+    fs.p_max = 2000.0;
+    fs.direction = -1;
+    fs.arclength.newton.max_iterations = 12;
+    fs.arclength.initial_step = 0.02;
+    fs.arclength.max_step = 0.2;
+    fs.arclength.max_points = 400;
+    curve = trace_fold_curve(model, speed, *start.fold, fs);
+  }
+};
+SharedCurve& shared() {
+  static SharedCurve s;
+  return s;
+}
+
+// Where the curve has a distress fold at ω, the same as a whole distress search at ω
+// finds and proves by transients: the bracket's W_d is the fold, so they agree to the
+// solvers' tolerances; 0.2 % is the bound.
+TEST(DistressCurve, PassesThroughTheSearchedDistressLoads) {
+  SharedCurve& s = shared();
+  ASSERT_TRUE(s.start.fold) << s.start.row.method;
+  ASSERT_GT(s.curve.points.size(), 5u) << s.curve.message;
+  Speed speed(s.model);
+  for (const double w : {545.0, 953.0, 1367.0, 1800.0}) {
+    SCOPED_TRACE(w);
+    // The nearest point on the distress side of the curve.
+    const FoldCurvePoint* near = nullptr;
+    for (const FoldCurvePoint& p : s.curve.points)
+      if (p.curvature > 0 && (!near || std::abs(p.p - w) < std::abs(near->p - w))) near = &p;
+    ASSERT_NE(near, nullptr);
+    const auto on_curve = fold_at(s.model, speed, *s.start.fold, *near, w, NewtonSettings{.max_iterations = 12});
+    ASSERT_TRUE(on_curve);
+    BearingModel fresh(coarse_scene());
+    fresh.set_speed(w);
+    const DistressSearch found = search_distress(fresh, search_range(), {});
+    ASSERT_TRUE(found.row.distress_load && found.row.bracket_low && found.row.bracket_high) << found.row.method;
+    EXPECT_NEAR(on_curve->lambda, *found.row.distress_load, 0.002 * *found.row.distress_load);
+    EXPECT_GT(on_curve->lambda, *found.row.bracket_low);
+    EXPECT_LT(on_curve->lambda, *found.row.bracket_high);
+  }
+}
+
+// The curve turns back in ω once, at a cusp: the fold's curvature changes sign (distress
+// becomes the hot branch's recovery). A direct search 3 % above the cusp speed finds a
+// fold, 3 % below it finds none (gradual heating).
+TEST(DistressCurve, CuspBetweenFoldAndNoFold) {
+  SharedCurve& s = shared();
+  ASSERT_EQ(s.curve.turns.size(), 1u) << s.curve.message;
+  const CurveTurn& cusp = s.curve.turns.front();
+  EXPECT_TRUE(cusp.cusp);
+  EXPECT_GT(cusp.p, 136.0);
+  EXPECT_LT(cusp.p, 2000.0);
+  for (const auto& [factor, fold_expected] : {std::pair{1.03, true}, std::pair{0.97, false}}) {
+    BearingModel fresh(coarse_scene());
+    fresh.set_speed(factor * cusp.p);
+    DistressSearchSettings settings = search_range();
+    settings.fold_only = true;
+    const DistressSearch found = search_distress(fresh, settings, {});
+    EXPECT_EQ(found.row.fold_load.has_value(), fold_expected)
+        << factor << " x cusp speed " << cusp.p << ": " << found.row.method;
+  }
+}
+
+// The study writes the same curve: its rows run from the start's distress fold through
+// the cusp to recovery folds, and the cusp row is the solver's.
+TEST(DistressCurve, StudyWritesTheCurveAndTheCusp) {
+  Scene scene = coarse_scene();
+  scene.study.type = StudyType::distress_curve;
+  scene.study.curve_parameter = CurveParameter::speed;
+  scene.study.from = 2000.0;
+  scene.study.to = 136.0;
+  scene.study.load_start = 100.0;
+  scene.study.load_end = 1000.0;
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.fold_curve.empty());
+  EXPECT_EQ(out.fold_curve_column, "speed_rad_s");
+  EXPECT_EQ(out.fold_curve.front().fold, "distress");
+  EXPECT_EQ(out.fold_curve.back().fold, "recovery");
+  const auto cusp = std::find_if(out.fold_curve.begin(), out.fold_curve.end(), [](const FoldCurveRow& r) { return r.fold == "cusp"; });
+  ASSERT_NE(cusp, out.fold_curve.end());
+  ASSERT_EQ(shared().curve.turns.size(), 1u);
+  EXPECT_NEAR(cusp->parameter, shared().curve.turns.front().p, 1e-6 * cusp->parameter);
+  ASSERT_FALSE(out.summary.empty());
+  EXPECT_NE(out.summary.front().find("cusp"), std::string::npos) << out.summary.front();
+}
+
+}  // namespace
+}  // namespace twb
