@@ -16,6 +16,7 @@ import csv
 import json
 import math
 import os
+import re
 import sys
 from dataclasses import dataclass, field
 
@@ -177,6 +178,38 @@ def read_trajectory(path):
     return _read_table(path, TRAJECTORY_COLUMNS, "trajectory.csv", optional=("speed_rad_s",))
 
 
+# fold_curve.csv (study type distress_curve): the curve's parameter first, then these.
+FOLD_CURVE_PARAMETERS = {
+    "speed_rad_s": r"speed $\omega$ (rad/s)", "friction_coefficient": "dry friction coefficient",
+    "gear_tilt_rad": "gear tilt (rad)", "ambient_C": "ambient temperature (°C)"}
+FOLD_CURVE_TAIL = ("W_fold_N", "fold", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff")
+FOLD_KINDS = ("distress", "recovery", "cusp", "turn")
+
+
+def read_fold_curve(path):
+    """fold_curve.csv: (parameter column, rows as dicts with 'p', 'load', 'fold', ...)."""
+    records = _records(path)
+    expected = f"<parameter>,{','.join(FOLD_CURVE_TAIL)}"
+    line, header = _header_line(path, records, expected)
+    if len(header) != len(FOLD_CURVE_TAIL) + 1 or header[0] not in FOLD_CURVE_PARAMETERS \
+            or tuple(header[1:]) != FOLD_CURVE_TAIL:
+        raise InputError(f"{path}: line {line}: expected the header {expected} with <parameter> one of "
+                         f"{', '.join(FOLD_CURVE_PARAMETERS)}, got {','.join(header)}")
+    rows = []
+    for line, fields in records:
+        _check_width(path, line, fields, header)
+        kind = fields[2].strip()
+        if kind not in FOLD_KINDS:
+            raise InputError(f"{path}: line {line}: column 'fold': expected one of {', '.join(FOLD_KINDS)}, "
+                             f"got {kind!r}")
+        row = {"p": _number(path, line, header[0], fields[0]), "load": _number(path, line, "W_fold_N", fields[1]),
+               "fold": kind}
+        for k, c in enumerate(FOLD_CURVE_TAIL[2:], start=3):
+            row[c] = _number(path, line, c, fields[k])
+        rows.append(row)
+    return header[0], rows
+
+
 def read_sliding(path):
     """sliding.csv: the sliding choice's rows, as dicts of floats plus 'sliding'."""
     records = _records(path)
@@ -324,6 +357,7 @@ class Run:
     sliding: list = field(default_factory=list)
     friction: object = None
     has_fields: bool = False
+    fold_curve: object = None  # (parameter column, rows) of fold_curve.csv
 
 
 def read_run(directory):
@@ -344,6 +378,9 @@ def read_run(directory):
     sliding_path = os.path.join(directory, "sliding.csv")
     if os.path.isfile(sliding_path):
         run.sliding = read_sliding(sliding_path)
+    fold_curve_path = os.path.join(directory, "fold_curve.csv")
+    if os.path.isfile(fold_curve_path):
+        run.fold_curve = read_fold_curve(fold_curve_path)
     run.friction = friction_setting(os.path.join(directory, "run.json"))
     run.has_fields = os.path.isdir(os.path.join(directory, "fields"))
     return run
@@ -385,6 +422,8 @@ class Data:
     trajectories: list      # (label, columns)
     sliding: list           # rows of sliding.csv
     speed_style: Style
+    fold_curves: list = field(default_factory=list)  # (run name, parameter column, rows)
+    rpm: bool = False       # speeds drawn in rpm
 
 
 def _split_trajectory(columns, tags):
@@ -433,7 +472,9 @@ def merge(runs):
     sliding = [row for r in runs for row in r.sliding]
     keys = ([speed_key(v) for v in states["speed_rad_s"]] + [speed_key(d.speed) for d in distress]
             + [speed_key(row["speed_rad_s"]) for row in sliding])
-    return Data(states, friction, parameters, distress, trajectories, sliding, Style(keys))
+    data = Data(states, friction, parameters, distress, trajectories, sliding, Style(keys))
+    data.fold_curves = [(r.name,) + r.fold_curve for r in runs if r.fold_curve is not None]
+    return data
 
 
 def parameter_order(parameters):
@@ -457,6 +498,7 @@ def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
     speeds = np.array([speed_key(v) for v in s["speed_rad_s"]])
     runs = parameter_order(data.parameters)
     styles = {p: LINESTYLES[i % len(LINESTYLES)] for i, p in enumerate(runs)}
+    jumps = {(speed, parameter): w_d for speed, parameter, w_d in distress_lines(data)}
     any_unconverged = False
     for key in data.speed_style.keys:
         for run in [None] + runs:
@@ -475,7 +517,20 @@ def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
             ok = s["converged"][idx] == 1
             color, marker = data.speed_style.colors[key], data.speed_style.markers[key]
             label = speed_label(key) + ("" if run is None else ", " + parameter_label(run))
-            ax.plot(x[ok], y[ok], color=color, marker=marker, markersize=4, linewidth=1.2,
+            # Past W_d the state jumps to the hot branch: no line through the jump, an
+            # arrow across it.
+            w_d = jumps.get((key, run))
+            loads = s["load_N"][idx]
+            cut = np.flatnonzero((loads[:-1] <= w_d) & (loads[1:] > w_d)) if w_d is not None else []
+            xs, ys = x[ok].astype(float), y[ok].astype(float)
+            if len(cut) and ok[cut[0]] and ok[cut[0] + 1]:
+                k = int(np.count_nonzero(ok[:cut[0] + 1]))
+                # (an end off a log axis, a zero share, gets the break without the arrow)
+                if np.isfinite([xs[k], ys[k], xs[k - 1], ys[k - 1]]).all():
+                    ax.annotate("", xy=(xs[k], ys[k]), xytext=(xs[k - 1], ys[k - 1]),
+                                arrowprops=dict(arrowstyle="->", color=color, linestyle=":", linewidth=1.0))
+                xs, ys = np.insert(xs, k, np.nan), np.insert(ys, k, np.nan)
+            ax.plot(xs, ys, color=color, marker=marker, markersize=4, linewidth=1.2,
                     linestyle=styles.get(run, "-"), label=label)
             if not ok.all():
                 any_unconverged = True
@@ -600,6 +655,77 @@ def series_label(key):
     return ", ".join(parts) if parts else r"$W_d$"
 
 
+def speed_axis(data):
+    """Scale from rad/s and the axis label: rpm when asked for."""
+    if data.rpm:
+        return 60.0 / (2.0 * math.pi), r"speed (rpm)"
+    return 1.0, r"speed $\omega$ (rad/s)"
+
+
+def searched_up_to(method):
+    """The highest load a search without W_d reached, from its method ("no fold up to 2000 N ...")."""
+    m = re.search(r"up to ([0-9.eE+-]+) N", method or "")
+    return float(m.group(1)) if m else None
+
+
+def figure_fold_curve(data, name, column, rows):
+    """The fold curve of a distress_curve study as the safe operating region: W_d against
+    the parameter (solid), the hot branch's recovery fold (dashed), the cusp where the two
+    meet and sudden distress ends; below W_d no sudden distress, between the two folds a
+    bearing that once passed W_d stays hot."""
+    title = "Safe operating region: distress load along the curve"
+    fig, ax = new_figure(title)
+    scale, xlabel = (speed_axis(data) if column == "speed_rad_s" else (1.0, FOLD_CURVE_PARAMETERS[column]))
+    branches = {}
+    for r in rows:
+        if r["fold"] in ("distress", "recovery"):
+            branches.setdefault(r["fold"], []).append((scale * r["p"], r["load"]))
+    for kind in branches:
+        branches[kind].sort()
+    # The whole range the study searched: its end searches are distress.csv's rows.
+    ends = [scale * (d.speed if column == "speed_rad_s" else d.parameter[1]) for d in data.distress
+            if column == "speed_rad_s" or (d.parameter is not None and d.parameter[1] is not None)]
+    unit = re.search(r"\(([^)]*)\)$", xlabel)
+    unit = " " + unit.group(1) if unit else ""
+    distress = np.array(branches.get("distress", []), dtype=float).reshape(-1, 2)
+    recovery = np.array(branches.get("recovery", []), dtype=float).reshape(-1, 2)
+    if len(distress):
+        ax.plot(distress[:, 0], distress[:, 1], color="tab:red", linewidth=1.8, label=r"distress load $W_d$ (fold)")
+        ax.fill_between(distress[:, 0], 0, distress[:, 1], color="tab:green", alpha=0.15, linewidth=0,
+                        label="below $W_d$: no sudden distress")
+    if len(recovery):
+        ax.plot(recovery[:, 0], recovery[:, 1], color="tab:blue", linestyle="--", linewidth=1.4,
+                label="recovery: the hot branch's lowest load")
+    if len(distress) and len(recovery):
+        lo, hi = max(distress[0, 0], recovery[0, 0]), min(distress[-1, 0], recovery[-1, 0])
+        if hi > lo:
+            x = np.linspace(lo, hi, 200)
+            ax.fill_between(x, np.interp(x, recovery[:, 0], recovery[:, 1]), np.interp(x, distress[:, 0], distress[:, 1]),
+                            facecolor="none", edgecolor="tab:orange", hatch="//", linewidth=0,
+                            label="between the folds: stays hot once past $W_d$")
+    for r in rows:
+        if r["fold"] in ("cusp", "turn"):
+            x = scale * r["p"]
+            ax.plot([x], [r["load"]], marker="*", markersize=14, color="black", linestyle="none",
+                    label="cusp: sudden distress ends" if r["fold"] == "cusp" else "the curve turns back")
+            if r["fold"] == "cusp" and len(distress):
+                # The side of the cusp the curve does not reach has no fold: gradual heating.
+                left = distress[:, 0].mean() > x
+                xmin, xmax = ax.get_xlim()
+                if ends:
+                    xmin, xmax = min(xmin, min(ends)), max(xmax, max(ends))
+                ax.axvspan(xmin if left else x, x if left else xmax, color="0.85", alpha=0.5, linewidth=0,
+                           label="no fold: gradual heating")
+                ax.set_xlim(xmin, xmax)
+                ax.annotate(f"cusp {x:.4g}{unit}, {r['load']:.4g} N", (x, r["load"]), textcoords="offset points",
+                            xytext=(8, -14), fontsize="small")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("load (N)")
+    ax.set_ylim(bottom=0)
+    ax.legend(fontsize="small", framealpha=0.85, loc="lower right")
+    return fig
+
+
 def figure_distress_map(data):
     series = {}
     for d in data.distress:
@@ -612,16 +738,29 @@ def figure_distress_map(data):
                                   -math.inf if k[0] is None or k[0][1] is None else k[0][1],
                                   k[1] or ""))
     style = Style(range(len(plottable)))
-    fig, ax = new_figure(r"Distress load $W_d$ vs speed")
-    any_fold = any_estimate = False
+    fig, ax = new_figure(r"Distress load $W_d$ vs speed: below it, no sudden distress")
+    scale, xlabel = speed_axis(data)
+    any_fold = any_estimate = any_beyond = False
     for i, key in enumerate(plottable):
         rows = sorted(series[key], key=lambda r: r.speed)
         color, marker = style.colors[i], style.markers[i]
         label = series_label(key)
         found = [r for r in rows if r.w_d is not None]
+        # A speed without W_d up to the highest load searched is drawn there, as "> load_end".
+        beyond = [(r.speed, searched_up_to(r.method)) for r in rows
+                  if r.w_d is None and searched_up_to(r.method) is not None]
+        if beyond:
+            any_beyond = True
+            ax.plot([scale * b[0] for b in beyond], [b[1] for b in beyond], linestyle="none", marker="^",
+                    markersize=9, markerfacecolor="none", markeredgecolor=color)
+            for speed, load in beyond:
+                ax.annotate(f"> {load:g} N", (scale * speed, load), textcoords="offset points", xytext=(7, -4),
+                            fontsize="small", color=color)
         if found:
-            x = [r.speed for r in found]
+            x = [scale * r.speed for r in found]
             y = [r.w_d for r in found]
+            if len(found) > 1:
+                ax.fill_between(x, 0, y, color=color, alpha=0.08, linewidth=0)
             # A missing bracket side draws no bar; a W_d outside its bracket would be a
             # twb bug, drawn as a zero-length bar rather than hidden.
             below = [max(r.w_d - r.low, 0.0) if r.low is not None else 0.0 for r in found]
@@ -631,20 +770,24 @@ def figure_distress_map(data):
         converged = [r for r in rows if r.extrapolated is not None and r.error is not None]
         if converged:
             any_estimate = True
-            ax.errorbar([r.speed for r in converged], [r.extrapolated for r in converged],
+            ax.errorbar([scale * r.speed for r in converged], [r.extrapolated for r in converged],
                         yerr=[r.error for r in converged], color=color, marker="s", markersize=5,
                         markerfacecolor="none", linestyle="--", linewidth=1.0, capsize=4)
         folds = [r for r in rows if r.fold is not None]
         if folds:
             any_fold = True
-            ax.plot([r.speed for r in folds], [r.fold for r in folds], linestyle="none",
+            ax.plot([scale * r.speed for r in folds], [r.fold for r in folds], linestyle="none",
                     marker="D", markersize=8, markerfacecolor="none", markeredgecolor=color,
                     markeredgewidth=1.2)
-    ax.set_xlabel(r"speed $\omega$ (rad/s)")
+    ax.set_xlabel(xlabel)
     ax.set_ylabel("load (N)")
+    ax.set_ylim(bottom=0)
     handles, labels = ax.get_legend_handles_labels()
     handles.append(Line2D([], [], color="black", marker="|", linestyle="none", markersize=10))
     labels.append("bracket: settled / ran away")
+    if any_beyond:
+        handles.append(Line2D([], [], color="black", linestyle="none", marker="^", markerfacecolor="none"))
+        labels.append("no W_d up to the highest load searched (> load_end)")
     if any_fold:
         handles.append(Line2D([], [], color="black", linestyle="none", marker="D",
                               markerfacecolor="none"))
@@ -902,6 +1045,9 @@ def make_figures(data, out_dir, formats):
                 if d.sliding is not None:
                     where += ", " + SLIDING_LABELS[d.sliding]
                 print(f"twb_plot: note: no distress load at {where}: {d.method}", file=sys.stderr)
+    for k, (name, column, rows) in enumerate(data.fold_curves):
+        stem = "fold_curve" if len(data.fold_curves) == 1 else f"fold_curve_{k + 1}_{name}"
+        save(figure_fold_curve(data, name, column, rows), out_dir, stem, formats, written)
     if data.trajectories:
         save(figure_trajectory(data), out_dir, "transient_trajectory", formats, written)
     if data.sliding:
@@ -942,6 +1088,8 @@ def main(argv=None):
                         help="where to write the figures (default: RESULTS_DIR/figures of the first)")
     parser.add_argument("--format", type=parse_formats, default=["png", "svg"], metavar="LIST",
                         help="comma-separated file formats among png, svg, pdf (default: png,svg)")
+    parser.add_argument("--rpm", action="store_true",
+                        help="speeds in revolutions per minute on the distress map and fold curve axes")
     parser.add_argument("--state", type=parse_state, metavar="N",
                         help="polar maps of the fields of state N (1-based row of states.csv); "
                              "default: the last state below the distress load, else the last")
@@ -964,7 +1112,9 @@ def main(argv=None):
     except OSError as e:
         print(f"twb_plot: error: {out_dir}: cannot create: {e.strerror}", file=sys.stderr)
         return 2
-    written = make_figures(merge(runs), out_dir, args.format)
+    data = merge(runs)
+    data.rpm = args.rpm
+    written = make_figures(data, out_dir, args.format)
     make_field_maps(maps, out_dir, args.format, written)
     if not written:
         print("twb_plot: error: nothing to plot", file=sys.stderr)

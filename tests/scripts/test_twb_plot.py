@@ -250,6 +250,44 @@ class TwbPlotTest(unittest.TestCase):
         self.assertEqual([(r.extrapolated, r.error) for r in rows], [(201.98, 4.25), (None, None), (None, None)])
         self.assertEqual(rows[0].method, "runaway; fold at 188.381 N, proven")
 
+    def test_fold_curve_as_safe_operating_region(self):
+        """fold_curve.csv of a distress_curve study: the figure shades the safe region,
+        marks the cusp (in rpm with --rpm) and keeps the search without W_d as '> load_end'
+        on the distress map; a damaged fold column is an input error with its line."""
+        tail = "T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff"
+        d = self.results_dir(
+            "curve",
+            distress=["speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,"
+                      "W_d_extrapolated_N,W_d_error_N,method",
+                      "136,,,,,,,,no fold up to 2000 N (gradual heating)",
+                      "2000,227.5,227.3,227.8,227.5,,,,runaway; fold at 227.5 N"])
+        curve = [f"speed_rad_s,W_fold_N,fold,{tail}",
+                 "2000,227.5,distress,64.9,132.9,2.7,0.014,0.028",
+                 "1000,223.0,distress,50.0,120.0,2.5,0.02,0.03",
+                 "400,165.0,distress,38.0,108.0,1.95,0.15,0.06",
+                 "381.18,162.2,cusp,37.5,106.2,1.89,0.19,0.067",
+                 "400,163.9,recovery,40.0,110.0,1.85,0.2,0.07",
+                 "1000,151.0,recovery,45.0,115.0,1.7,0.3,0.08",
+                 "2000,126.0,recovery,50.0,120.0,1.5,0.4,0.09"]
+        with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
+            f.write("\n".join(curve) + "\n")
+        out_dir = os.path.join(self.tmp, "figs_curve")
+        result = plot(d, "--out", out_dir, "--rpm")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        text = self.svg_text(os.path.join(out_dir, "fold_curve.svg"))
+        for label in ("cusp: sudden distress ends", "no fold: gradual heating", "speed (rpm)",
+                      f"cusp {381.18 * 60 / (2 * math.pi):.4g} rpm"):
+            self.assertIn(label, text)
+        self.assertIn("&gt; 2000 N", self.svg_text(os.path.join(out_dir, "distress_map.svg")))
+        column, rows = twb_plot.read_fold_curve(os.path.join(d, "fold_curve.csv"))
+        self.assertEqual(column, "speed_rad_s")
+        self.assertEqual([r["fold"] for r in rows].count("cusp"), 1)
+        with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
+            f.write("\n".join(curve[:2] + ["1000,223.0,sudden,50.0,120.0,2.5,0.02,0.03"]) + "\n")
+        result = plot(d, "--out", out_dir)
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("line 3: column 'fold': expected one of distress, recovery, cusp, turn", result.stderr)
+
     def test_load_sweep_over_speeds_and_a_parameter(self):
         """One directory of a load sweep over speeds and friction coefficients: a curve per
         (speed, coefficient), Fig. 15 from the states' own coefficients, one transient
