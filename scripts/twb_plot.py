@@ -187,27 +187,32 @@ FOLD_KINDS = ("distress", "recovery", "cusp", "turn")
 
 
 def read_fold_curve(path):
-    """fold_curve.csv: (parameter column, rows as dicts with 'p', 'load', 'fold', ...)."""
+    """fold_curve.csv: (parameter column, rows as dicts with 'p', 'load', 'fold', ...,
+    and 'member': (family column, value) of a family of curves, else None)."""
     records = _records(path)
-    expected = f"<parameter>,{','.join(FOLD_CURVE_TAIL)}"
+    expected = f"[<family>,]<parameter>,{','.join(FOLD_CURVE_TAIL)}"
     line, header = _header_line(path, records, expected)
-    if len(header) != len(FOLD_CURVE_TAIL) + 1 or header[0] not in FOLD_CURVE_PARAMETERS \
-            or tuple(header[1:]) != FOLD_CURVE_TAIL:
+    family = header[0] if len(header) == len(FOLD_CURVE_TAIL) + 2 and header[0] in PARAMETER_COLUMNS else None
+    first = 1 if family else 0
+    if len(header) != len(FOLD_CURVE_TAIL) + 1 + first or header[first] not in FOLD_CURVE_PARAMETERS \
+            or tuple(header[first + 1:]) != FOLD_CURVE_TAIL:
         raise InputError(f"{path}: line {line}: expected the header {expected} with <parameter> one of "
-                         f"{', '.join(FOLD_CURVE_PARAMETERS)}, got {','.join(header)}")
+                         f"{', '.join(FOLD_CURVE_PARAMETERS)} and <family> one of {', '.join(PARAMETER_COLUMNS)}, "
+                         f"got {','.join(header)}")
     rows = []
     for line, fields in records:
         _check_width(path, line, fields, header)
-        kind = fields[2].strip()
+        kind = fields[first + 2].strip()
         if kind not in FOLD_KINDS:
             raise InputError(f"{path}: line {line}: column 'fold': expected one of {', '.join(FOLD_KINDS)}, "
                              f"got {kind!r}")
-        row = {"p": _number(path, line, header[0], fields[0]), "load": _number(path, line, "W_fold_N", fields[1]),
-               "fold": kind}
-        for k, c in enumerate(FOLD_CURVE_TAIL[2:], start=3):
+        row = {"p": _number(path, line, header[first], fields[first]),
+               "load": _number(path, line, "W_fold_N", fields[first + 1]), "fold": kind,
+               "member": (family, _number(path, line, family, fields[0])) if family else None}
+        for k, c in enumerate(FOLD_CURVE_TAIL[2:], start=first + 3):
             row[c] = _number(path, line, c, fields[k])
         rows.append(row)
-    return header[0], rows
+    return header[first], rows
 
 
 def read_sliding(path):
@@ -672,43 +677,56 @@ def figure_fold_curve(data, name, column, rows):
     """The fold curve of a distress_curve study as the safe operating region: W_d against
     the parameter (solid), the hot branch's recovery fold (dashed), the cusp where the two
     meet and sudden distress ends; below W_d no sudden distress, between the two folds a
-    bearing that once passed W_d stays hot."""
-    title = "Safe operating region: distress load along the curve"
-    fig, ax = new_figure(title)
+    bearing that once passed W_d stays hot. A family of curves (one per value of a second
+    parameter) gets a colour per curve."""
+    fig, ax = new_figure("Safe operating region: distress load along the curve")
     scale, xlabel = (speed_axis(data) if column == "speed_rad_s" else (1.0, FOLD_CURVE_PARAMETERS[column]))
-    branches = {}
-    for r in rows:
-        if r["fold"] in ("distress", "recovery"):
-            branches.setdefault(r["fold"], []).append((scale * r["p"], r["load"]))
-    for kind in branches:
-        branches[kind].sort()
     # The whole range the study searched: its end searches are distress.csv's rows.
-    ends = [scale * (d.speed if column == "speed_rad_s" else d.parameter[1]) for d in data.distress
-            if column == "speed_rad_s" or (d.parameter is not None and d.parameter[1] is not None)]
+    ends = [scale * d.speed for d in data.distress] if column == "speed_rad_s" else []
     unit = re.search(r"\(([^)]*)\)$", xlabel)
     unit = " " + unit.group(1) if unit else ""
-    distress = np.array(branches.get("distress", []), dtype=float).reshape(-1, 2)
-    recovery = np.array(branches.get("recovery", []), dtype=float).reshape(-1, 2)
-    if len(distress):
-        ax.plot(distress[:, 0], distress[:, 1], color="tab:red", linewidth=1.8, label=r"distress load $W_d$ (fold)")
-        ax.fill_between(distress[:, 0], 0, distress[:, 1], color="tab:green", alpha=0.15, linewidth=0,
-                        label="below $W_d$: no sudden distress")
-    if len(recovery):
-        ax.plot(recovery[:, 0], recovery[:, 1], color="tab:blue", linestyle="--", linewidth=1.4,
-                label="recovery: the hot branch's lowest load")
-    if len(distress) and len(recovery):
-        lo, hi = max(distress[0, 0], recovery[0, 0]), min(distress[-1, 0], recovery[-1, 0])
-        if hi > lo:
-            x = np.linspace(lo, hi, 200)
-            ax.fill_between(x, np.interp(x, recovery[:, 0], recovery[:, 1]), np.interp(x, distress[:, 0], distress[:, 1]),
-                            facecolor="none", edgecolor="tab:orange", hatch="//", linewidth=0,
-                            label="between the folds: stays hot once past $W_d$")
-    for r in rows:
-        if r["fold"] in ("cusp", "turn"):
+    members = sorted({r["member"] for r in rows if r["member"] is not None}, key=lambda m: m[1]) or [None]
+    single = len(members) == 1
+    style = Style(range(len(members)))
+    for i, member in enumerate(members):
+        mine = [r for r in rows if r["member"] == member]
+        color = "tab:red" if single else style.colors[i]
+        tag = "" if member is None else f" ({parameter_label(member)})"
+        branches = {}
+        for r in mine:
+            if r["fold"] in ("distress", "recovery"):
+                branches.setdefault(r["fold"], []).append((scale * r["p"], r["load"]))
+        distress = np.array(sorted(branches.get("distress", [])), dtype=float).reshape(-1, 2)
+        recovery = np.array(sorted(branches.get("recovery", [])), dtype=float).reshape(-1, 2)
+        if len(distress):
+            ax.plot(distress[:, 0], distress[:, 1], color=color, linewidth=1.8,
+                    label=r"distress load $W_d$ (fold)" + tag)
+            ax.fill_between(distress[:, 0], 0, distress[:, 1], color="tab:green" if single else color,
+                            alpha=0.15 if single else 0.06, linewidth=0,
+                            label="below $W_d$: no sudden distress" if single else None)
+        if len(recovery):
+            ax.plot(recovery[:, 0], recovery[:, 1], color="tab:blue" if single else color, linestyle="--",
+                    linewidth=1.4, label="recovery: the hot branch's lowest load" if single else None)
+        if single and len(distress) and len(recovery):
+            lo, hi = max(distress[0, 0], recovery[0, 0]), min(distress[-1, 0], recovery[-1, 0])
+            if hi > lo:
+                x = np.linspace(lo, hi, 200)
+                ax.fill_between(x, np.interp(x, recovery[:, 0], recovery[:, 1]),
+                                np.interp(x, distress[:, 0], distress[:, 1]), facecolor="none",
+                                edgecolor="tab:orange", hatch="//", linewidth=0,
+                                label="between the folds: stays hot once past $W_d$")
+        for r in mine:
+            if r["fold"] not in ("cusp", "turn"):
+                continue
             x = scale * r["p"]
-            ax.plot([x], [r["load"]], marker="*", markersize=14, color="black", linestyle="none",
-                    label="cusp: sudden distress ends" if r["fold"] == "cusp" else "the curve turns back")
-            if r["fold"] == "cusp" and len(distress):
+            ax.plot([x], [r["load"]], marker="*", markersize=14, color="black" if single else color,
+                    linestyle="none",
+                    label=("cusp: sudden distress ends" if r["fold"] == "cusp" else "the curve turns back")
+                    if single or i == 0 else None)
+            if r["fold"] == "cusp":
+                ax.annotate(f"cusp {x:.4g}{unit}, {r['load']:.4g} N", (x, r["load"]), textcoords="offset points",
+                            xytext=(8, -14), fontsize="small", color="black" if single else color)
+            if r["fold"] == "cusp" and single and len(distress):
                 # The side of the cusp the curve does not reach has no fold: gradual heating.
                 left = distress[:, 0].mean() > x
                 xmin, xmax = ax.get_xlim()
@@ -717,8 +735,8 @@ def figure_fold_curve(data, name, column, rows):
                 ax.axvspan(xmin if left else x, x if left else xmax, color="0.85", alpha=0.5, linewidth=0,
                            label="no fold: gradual heating")
                 ax.set_xlim(xmin, xmax)
-                ax.annotate(f"cusp {x:.4g}{unit}, {r['load']:.4g} N", (x, r["load"]), textcoords="offset points",
-                            xytext=(8, -14), fontsize="small")
+    if not single:
+        ax.plot([], [], color="0.3", linestyle="--", label="recovery folds (dashed)")
     ax.set_xlabel(xlabel)
     ax.set_ylabel("load (N)")
     ax.set_ylim(bottom=0)

@@ -67,7 +67,7 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
     twb::write_file_atomically(dir / "sliding.csv", twb::sliding_csv(outcome.sliding));
   if (type == twb::StudyType::distress_curve)
     twb::write_file_atomically(dir / "fold_curve.csv",
-                               twb::fold_curve_csv(outcome.fold_curve, outcome.fold_curve_column));
+                               twb::fold_curve_csv(outcome.fold_curve, outcome.fold_curve_column, parameter));
   if (!outcome.trajectory.empty())
     twb::write_file_atomically(dir / "trajectory.csv", twb::trajectory_csv(outcome.trajectory, parameter, sliding));
   const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message

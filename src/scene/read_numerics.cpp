@@ -48,10 +48,11 @@ double read_bracket_width(const MapReader& study, double fallback) {
                         fallback);
 }
 
-// The second axis of a distress map or load sweep: `parameter: {name: friction_coefficient, values: [...]}`.
-void read_map_parameter(const MapReader& study, Study& s, const Scene& scene) {
-  if (!study.has("parameter")) return;
-  const MapReader p = study.map("parameter", {"name", "values"});
+// The second axis of a distress map or load sweep: `parameter: {name: friction_coefficient, values: [...]}`;
+// of a distress curve, its family of curves: `family: {...}` alike.
+void read_map_parameter(const MapReader& study, Study& s, const Scene& scene, const char* key = "parameter") {
+  if (!study.has(key)) return;
+  const MapReader p = study.map(key, {"name", "values"});
   s.parameter = kMapParameters.values[p.get("name", "friction_coefficient, gear_tilt or roughness")
                                           .choice(kMapParameters.names)];
   const Node values = p.get("values", "a list of values, e.g. [0.05, 0.1, 0.2]");
@@ -144,7 +145,7 @@ void read_fold_curve(const MapReader& study, Scene& out) {
 void read_study(const MapReader& scene, Scene& out) {
   const MapReader study = scene.map("study", {"type", "load_start", "load_end", "load_steps", "speeds",
                                               "parameter", "bracket_width", "duration", "error_estimate",
-                                              "from", "to"});
+                                              "from", "to", "family"});
   Study& s = out.study;
   s.type = read_choice(study, "type", kStudyTypes, s.type);
   switch (s.type) {
@@ -177,9 +178,10 @@ void read_study(const MapReader& scene, Scene& out) {
       read_load_grid(study, out);
       break;
     case StudyType::distress_curve:
-      study.restrict_to({"type", "parameter", "from", "to", "load_start", "load_end", "bracket_width"},
+      study.restrict_to({"type", "parameter", "from", "to", "load_start", "load_end", "bracket_width", "family"},
                         "with type: distress_curve");
       read_fold_curve(study, out);
+      read_map_parameter(study, s, out, "family");
       break;
     case StudyType::distress_map: {
       study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate"},

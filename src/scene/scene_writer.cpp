@@ -154,16 +154,18 @@ void write_numerics(Writer& w, const Scene& s) {
     for (double speed : st.speeds) speeds += (speeds.empty() ? "" : ", ") + quantity(speed, "rad/s");
     w.entry(1, "speeds", fmt::format("[{}]", speeds));
   }
-  if (st.parameter != MapParameter::none) {
+  // A map's second axis, or a distress curve's family of curves.
+  auto map_parameter = [&](const char* key) {
     const char* unit = st.parameter == MapParameter::gear_tilt   ? "rad"
                        : st.parameter == MapParameter::roughness ? "m"
                                                                  : "1";
     std::string values;
     for (double v : st.parameter_values) values += (values.empty() ? "" : ", ") + quantity(v, unit);
-    w.line(1, "parameter:");
+    w.line(1, std::string(key) + ":");
     w.entry(2, "name", std::string(kMapParameters.name(st.parameter)));
     w.entry(2, "values", fmt::format("[{}]", values));
-  }
+  };
+  if (st.parameter != MapParameter::none && st.type != StudyType::distress_curve) map_parameter("parameter");
   if (grid || st.type == StudyType::distress_map)
     w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
   if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map)
@@ -178,6 +180,7 @@ void write_numerics(Writer& w, const Scene& s) {
     w.entry(1, "from", quantity(st.from, unit));
     w.entry(1, "to", quantity(st.to, unit));
     w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
+    if (st.parameter != MapParameter::none) map_parameter("family");
   }
 
   w.line(0, "output:");

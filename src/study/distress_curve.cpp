@@ -25,7 +25,9 @@ class BearingParameter final : public SecondParameter {
   CurveParameter which_;
 };
 
-std::string column_of(CurveParameter p) {
+}  // namespace
+
+std::string fold_curve_column(CurveParameter p) {
   switch (p) {
     case CurveParameter::speed: return "speed_rad_s";
     case CurveParameter::friction_coefficient: return "friction_coefficient";
@@ -34,6 +36,8 @@ std::string column_of(CurveParameter p) {
   }
   return "parameter";
 }
+
+namespace {
 
 // A parameter value as a user reads it.
 std::string shown(CurveParameter p, double v) {
@@ -48,14 +52,14 @@ std::string shown(CurveParameter p, double v) {
 
 }  // namespace
 
-void run_distress_curve(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
+void run_fold_curve(BearingModel& model, std::optional<double> member, const std::string& label, StudyOutcome& out,
+                    const ProgressReport& progress) {
   const Study& st = model.scene().study;
   const CurveParameter which = st.curve_parameter;
-  out.fold_curve_column = column_of(which);
-  if (which != CurveParameter::speed) out.parameter_column = out.fold_curve_column == "ambient_C" ? "ambient_K" : out.fold_curve_column;
   auto say = [&](const std::string& s) {
     if (progress) progress(s);
   };
+  const auto first_row = out.fold_curve.size();
 
   // The first fold, found and proven by the dynamics: at `from`, else at `to`.
   DistressSearchSettings settings;
@@ -67,11 +71,16 @@ void run_distress_curve(BearingModel& model, StudyOutcome& out, const ProgressRe
   double start = st.from, other = st.to;
   for (const double end : {st.from, st.to}) {
     model.set_curve_parameter(which, end);
-    say(fmt::format("[curve] the first fold at {}", shown(which, end)));
+    say(fmt::format("[curve{}] the first fold at {}", label, shown(which, end)));
     DistressSearch found = search_distress(model, settings, progress);
-    if (which != CurveParameter::speed) found.row.parameter = end;
+    found.row.parameter = member;
+    if (which != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown(which, end), found.row.method);
     out.distress.push_back(found.row);
-    out.states.insert(out.states.end(), found.states.begin(), found.states.begin() + std::ptrdiff_t(found.cool_states));
+    for (std::size_t k = 0; k < found.cool_states; ++k) {
+      out.states.push_back(found.states[k]);
+      out.states.back().parameter = member;
+      out.states.back().branch = "cool";
+    }
     if (found.fold && found.row.distress_load) {
       first = std::move(found);
       start = end;
@@ -80,9 +89,9 @@ void run_distress_curve(BearingModel& model, StudyOutcome& out, const ProgressRe
     }
   }
   if (!first) {
-    out.summary.push_back(fmt::format("fold curve: no fold between {:.6g} and {:.6g} N at either end ({} and {}): "
+    out.summary.push_back(fmt::format("fold curve{}: no fold between {:.6g} and {:.6g} N at either end ({} and {}): "
                                       "no sudden distress to follow",
-                                      st.load_start, st.load_end, shown(which, st.from), shown(which, st.to)));
+                                      label, st.load_start, st.load_end, shown(which, st.from), shown(which, st.to)));
     return;
   }
 
@@ -106,7 +115,7 @@ void run_distress_curve(BearingModel& model, StudyOutcome& out, const ProgressRe
     return model.describe(u);
   };
   const FoldCurve curve = trace_fold_curve(model, parameter, *first->fold, fs, [&](const FoldCurvePoint& pt) {
-    say(fmt::format("[curve] {}: fold at {:.2f} N ({}) [{:.1f} s]", shown(which, pt.p), pt.lambda,
+    say(fmt::format("[curve{}] {}: fold at {:.2f} N ({}) [{:.1f} s]", label, shown(which, pt.p), pt.lambda,
                     pt.curvature > 0 ? "distress" : "recovery", elapsed_ms(t0) / 1000.0));
     return true;
   });
@@ -121,14 +130,17 @@ void run_distress_curve(BearingModel& model, StudyOutcome& out, const ProgressRe
       out.fold_curve.push_back(
           {t.p, t.cusp ? "cusp" : "turn", describe_at(t.p, t.lambda, std::span<const double>(t.point.u).first(n))});
       out.summary.push_back(
-          t.cusp ? fmt::format("fold curve: cusp at {}, {:.2f} N: the cool and hot branches merge; on the side "
+          t.cusp ? fmt::format("fold curve{}: cusp at {}, {:.2f} N: the cool and hot branches merge; on the side "
                                "without a fold the bearing heats gradually, with no sudden distress",
-                               shown(which, t.p), t.lambda)
-                 : fmt::format("fold curve: turns back at {}, {:.2f} N without a cusp", shown(which, t.p), t.lambda));
+                               label, shown(which, t.p), t.lambda)
+                 : fmt::format("fold curve{}: turns back at {}, {:.2f} N without a cusp", label, shown(which, t.p),
+                               t.lambda));
     }
   }
+  for (std::size_t k = first_row; k < out.fold_curve.size(); ++k) out.fold_curve[k].member = member;
   if (curve.turns.empty())
-    out.summary.push_back(fmt::format("fold curve: {} points from {} to {}, no cusp in range ({})", curve.points.size(),
+    out.summary.push_back(fmt::format("fold curve{}: {} points from {} to {}, no cusp in range ({})", label,
+                                      curve.points.size(),
                                       shown(which, curve.points.front().p), shown(which, curve.points.back().p),
                                       curve.message));
 }

@@ -5,11 +5,21 @@
 // bearing heats gradually), and the curve goes on as the hot branch's turning point.
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include "twb/model/bearing_model.h"
 #include "twb/study/study_runner.h"
 
 namespace twb {
 
-void run_distress_curve(BearingModel& model, StudyOutcome& out, const ProgressReport& progress);
+// One curve, on `model` (the scene's bearing, or one member of the study's family);
+// `member` (the family parameter's value, if any) tags its rows. Rows and summary lines
+// are appended to `out`.
+void run_fold_curve(BearingModel& model, std::optional<double> member, const std::string& label, StudyOutcome& out,
+                    const ProgressReport& progress);
+
+// The column of fold_curve.csv that holds the curve's parameter.
+std::string fold_curve_column(CurveParameter p);
 
 }  // namespace twb

@@ -109,6 +109,18 @@ std::vector<Variant> parameter_variants(const Scene& scene, std::string& column)
   return out;
 }
 
+// distress_curve: one fold curve for the scene's bearing, or one per member of its family
+// (study.family: the map parameters).
+void run_distress_curve(BearingModel& base, StudyOutcome& out, const ProgressReport& progress) {
+  const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
+  out.fold_curve_column = fold_curve_column(base.scene().study.curve_parameter);
+  for (const Variant& variant : variants) {
+    std::optional<BearingModel> own;
+    if (variant.scene) own.emplace(*variant.scene);
+    run_fold_curve(own ? *own : base, variant.parameter, variant.label, out, progress);
+  }
+}
+
 // The speeds a study searches at: study.speeds, or the model's speed for a scene built
 // without them (the loader fills them in).
 std::vector<double> study_speeds(const BearingModel& model) {

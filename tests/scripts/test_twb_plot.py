@@ -282,6 +282,16 @@ class TwbPlotTest(unittest.TestCase):
         column, rows = twb_plot.read_fold_curve(os.path.join(d, "fold_curve.csv"))
         self.assertEqual(column, "speed_rad_s")
         self.assertEqual([r["fold"] for r in rows].count("cusp"), 1)
+        # A family of curves: the family's column first, a colour and a cusp per member.
+        with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
+            f.write("\n".join(["friction_coefficient," + curve[0]] + [f"{c}," + row for c in (0.1, 0.3)
+                                                                       for row in curve[1:]]) + "\n")
+        column, rows = twb_plot.read_fold_curve(os.path.join(d, "fold_curve.csv"))
+        self.assertEqual({r["member"] for r in rows}, {("friction_coefficient", 0.1), ("friction_coefficient", 0.3)})
+        result = plot(d, "--out", out_dir)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        text = self.svg_text(os.path.join(out_dir, "fold_curve.svg"))
+        self.assertIn("dry friction coefficient 0.3", text)
         with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
             f.write("\n".join(curve[:2] + ["1000,223.0,sudden,50.0,120.0,2.5,0.02,0.03"]) + "\n")
         result = plot(d, "--out", out_dir)

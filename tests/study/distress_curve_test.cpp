@@ -133,5 +133,34 @@ TEST(DistressCurve, StudyWritesTheCurveAndTheCusp) {
   EXPECT_NE(out.summary.front().find("cusp"), std::string::npos) << out.summary.front();
 }
 
+// A family of curves, one per dry friction coefficient (the constant law, Fig. 15): each
+// has its cusp, and more friction heats the contact more, so the cusp moves to lower
+// speeds (at 545 rad/s the paper's f = 0.1 has no fold while 0.2 has one).
+TEST(DistressCurve, FamilyOfCurvesByFrictionCoefficient) {
+  Scene scene = coarse_scene();
+  scene.friction.law = FrictionLaw::constant;
+  scene.study.type = StudyType::distress_curve;
+  scene.study.curve_parameter = CurveParameter::speed;
+  scene.study.from = 2000.0;
+  scene.study.to = 136.0;
+  scene.study.load_start = 100.0;
+  scene.study.load_end = 1000.0;
+  scene.study.parameter = MapParameter::friction_coefficient;
+  scene.study.parameter_values = {0.1, 0.3};
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  EXPECT_EQ(out.parameter_column, "friction_coefficient");
+  std::vector<double> cusps;
+  for (const double f : {0.1, 0.3}) {
+    const auto cusp = std::find_if(out.fold_curve.begin(), out.fold_curve.end(),
+                                   [&](const FoldCurveRow& r) { return r.fold == "cusp" && r.member == f; });
+    ASSERT_NE(cusp, out.fold_curve.end()) << "f = " << f;
+    cusps.push_back(cusp->parameter);
+  }
+  EXPECT_GT(cusps[0], cusps[1]);
+  EXPECT_EQ(std::count_if(out.fold_curve.begin(), out.fold_curve.end(), [](const FoldCurveRow& r) { return !r.member; }),
+            0);
+}
+
 }  // namespace
 }  // namespace twb

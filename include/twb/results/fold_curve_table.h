@@ -8,6 +8,7 @@
 // back in the parameter without a cusp). The state columns describe the state at the fold.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,9 +20,13 @@ struct FoldCurveRow {
   double parameter = 0.0;  // SI
   std::string fold;
   BearingState state;  // at the fold; state.load is W_fold
+  // A family of curves (study.family): this curve's value of the family parameter (SI).
+  std::optional<double> member;
 };
 
-// parameter_column as above; ambient_C converts the SI (K) values it holds.
-std::string fold_curve_csv(const std::vector<FoldCurveRow>& rows, const std::string& parameter_column);
+// parameter_column as above; ambient_C converts the SI (K) values it holds. family_column
+// (e.g. friction_coefficient), when not empty, comes first and holds each row's member.
+std::string fold_curve_csv(const std::vector<FoldCurveRow>& rows, const std::string& parameter_column,
+                           const std::string& family_column = {});
 
 }  // namespace twb
