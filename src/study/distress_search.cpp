@@ -79,9 +79,11 @@ class FoldApproach {
   }
   // Within 3 % of the load: arclength continuation's first steps (0.2 % of the load,
   // growing 1.5-fold) reach the fold in a few states from there.
-  bool near(double load) const { return fold_estimate() - load < 0.03 * load; }
+  bool near(double load) const { return !disabled_ && fold_estimate() - load < 0.03 * load; }
+  void disable() { disabled_ = true; }
 
  private:
+  bool disabled_ = false;
   std::pair<double, double> previous_{0.0, 0.0}, last_{0.0, 0.0};
 };
 
@@ -261,6 +263,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   bool branch_ended = false, ran_away = false, near_fold = false;
   double runaway_load = 0.0;
   FoldApproach approach;
+  std::optional<ArclengthReport> around_fold;  // the arclength round the fold, once run
   for (std::size_t t = 0; t < targets.size() && !ran_away;) {
     std::vector<Pending> pending;
     natural.initial_step = natural.max_step = std::max(targets[t] - low, natural.min_step);
@@ -341,9 +344,25 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
     }
     if (ran_away || replaced || branch_ended) continue;
     if (near_fold) {
-      branch_ended = true;
-      say(fmt::format("  the slowest thermal mode says the fold is near {:.2f} N", approach.fold_estimate()));
-      break;
+      say(fmt::format("  the slowest thermal mode says a fold is near {:.2f} N; arclength continuation from "
+                      "{:.2f} N",
+                      approach.fold_estimate(), low));
+      // The estimate lies beyond a fold it sees coming (μ² bends away from its chord): a
+      // branch that climbs 10 % past it without turning has no fold there.
+      around_fold = round_the_fold(model, low_state, low,
+                                   std::min(settings.load_end, 1.1 * std::max(approach.fold_estimate(), low)), newton);
+      if (!around_fold->folds.empty()) {
+        branch_ended = true;
+        break;
+      }
+      // Near a cusp the slowest mode slows without a fold (steep, gradual heating): the
+      // estimate is no longer trusted, and natural continuation goes on as without it.
+      say("  no fold there: the branch only steepens; natural continuation goes on");
+      out.diagnostics.push_back("arclength found no fold: " + around_fold->message);
+      around_fold.reset();
+      approach.disable();
+      near_fold = false;
+      continue;
     }
     if (!rep.reached_target) {
       branch_ended = true;
@@ -375,7 +394,8 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
 
   if (!transient) {
     // The steady branch's end only: locate its fold.
-    const ArclengthReport around = round_the_fold(model, low_state, low, settings.load_end, newton);
+    const ArclengthReport around =
+        around_fold ? *around_fold : round_the_fold(model, low_state, low, settings.load_end, newton);
     if (!around.folds.empty()) {
       out.row.fold_load = around.folds.front().lambda;
       out.fold = around.folds.front();
@@ -403,8 +423,11 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
     Bracket& bracket = proof.bracket;
     std::string disagreement;
     if (!ran_away) {
-      say(fmt::format("  locating the fold by arclength continuation from {:.2f} N", low));
-      const ArclengthReport around = round_the_fold(model, low_state, low, settings.load_end, newton);
+      if (!around_fold) {
+        say(fmt::format("  locating the fold by arclength continuation from {:.2f} N", low));
+        around_fold = round_the_fold(model, low_state, low, settings.load_end, newton);
+      }
+      const ArclengthReport& around = *around_fold;
       if (!around.folds.empty()) {
         fold = around.folds.front();
         out.row.fold_load = fold->lambda;

@@ -90,7 +90,9 @@ TEST(DistressCurve, PassesThroughTheSearchedDistressLoads) {
 
 // The curve turns back in ω once, at a cusp: the fold's curvature changes sign (distress
 // becomes the hot branch's recovery). A direct search 3 % above the cusp speed finds a
-// fold, 3 % below it finds none (gradual heating).
+// fold, 3 % below it finds none (gradual heating); so does the whole distress search
+// below it, where the slowest mode slows without a fold (it once bisected a runaway
+// there that the transients of every state never saw).
 TEST(DistressCurve, CuspBetweenFoldAndNoFold) {
   SharedCurve& s = shared();
   ASSERT_EQ(s.curve.turns.size(), 1u) << s.curve.message;
@@ -107,6 +109,11 @@ TEST(DistressCurve, CuspBetweenFoldAndNoFold) {
     EXPECT_EQ(found.row.fold_load.has_value(), fold_expected)
         << factor << " x cusp speed " << cusp.p << ": " << found.row.method;
   }
+  BearingModel below(coarse_scene());
+  below.set_speed(0.97 * cusp.p);
+  const DistressSearch gradual = search_distress(below, search_range(), {});
+  EXPECT_FALSE(gradual.row.distress_load) << gradual.row.method;
+  EXPECT_NE(gradual.row.method.find("gradual heating"), std::string::npos) << gradual.row.method;
 }
 
 // The study writes the same curve: its rows run from the start's distress fold through
