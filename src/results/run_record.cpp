@@ -96,8 +96,10 @@ std::string run_json(const std::string& scene_path, const std::string& resolved_
   out += fmt::format(",\n    \"total\": {}\n  }},\n", layout.size());
   out += fmt::format(
       "  \"timings\": {{\"total_ms\": {:.3f}, \"setup_ms\": {:.3f}, \"solve_ms\": {:.3f}, \"states\": {}, "
-      "\"newton_iterations\": {}, \"jacobian_evaluations\": {}}},\n",
-      t.total_ms, t.setup_ms, t.solve_ms, t.states, t.newton_iterations, t.jacobian_evaluations);
+      "\"newton_iterations\": {}, \"jacobian_evaluations\": {}, \"transients\": {}, \"ida_steps\": {}, "
+      "\"klu_factorizations\": {}}},\n",
+      t.total_ms, t.setup_ms, t.solve_ms, t.states, t.newton_iterations, t.jacobian_evaluations, t.transients,
+      t.ida_steps, t.klu_factorizations);
   out += "  \"scene\": " + yaml_to_json(YAML::Load(resolved_scene_yaml), 2) + "\n}\n";
   return out;
 }

@@ -287,6 +287,7 @@ TransientStatistics IdaTransient::statistics() const {
   IDAGetNumSteps(ida_, &s.steps);
   IDAGetNumResEvals(ida_, &s.residual_evaluations);
   IDAGetNumJacEvals(ida_, &s.jacobian_evaluations);
+  IDAGetNumLinSolvSetups(ida_, &s.linear_setups);
   IDAGetNumNonlinSolvIters(ida_, &s.nonlinear_iterations);
   IDAGetNumErrTestFails(ida_, &s.error_test_failures);
   IDAGetNumNonlinSolvConvFails(ida_, &s.convergence_failures);

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include <klu.h>
 
+#include "twb/solver/sparse_lu.h"
 #include "twb/solver/sundials_context.h"
 
 namespace twb {
@@ -31,19 +31,8 @@ double slowest_relaxation_time(const SteadySystem& system, std::span<const doubl
   std::vector<double> residual(n), jacobian(std::size_t(p.nnz()));
   system.evaluate(u, residual, jacobian);
 
-  // The CSR arrays of J are the CSC arrays of Jᵀ: KLU factors Jᵀ and klu_l_tsolve
-  // solves with its transpose, J.
-  std::vector<SuiteSparse_long> start(p.row_start.begin(), p.row_start.end()), column(p.column.begin(), p.column.end());
-  klu_l_common common;
-  klu_l_defaults(&common);
-  common.ordering = 0;  // AMD, as everywhere in twb (kinsol_newton.cpp)
-  klu_l_symbolic* symbolic = klu_l_analyze(SuiteSparse_long(n), start.data(), column.data(), &common);
-  klu_l_numeric* numeric =
-      symbolic ? klu_l_factor(start.data(), column.data(), jacobian.data(), symbolic, &common) : nullptr;
-  if (!numeric) {
-    klu_l_free_symbolic(&symbolic, &common);
-    throw SolverFailure("slowest_relaxation_time: the Jacobian is singular at the state", int(common.status));
-  }
+  SparseLu lu(p);
+  if (!lu.factor(jacobian)) throw SolverFailure("slowest_relaxation_time: the Jacobian is singular at the state", -1);
 
   // Start with every differential unknown displaced alike: the slowest mode of a
   // heated body is one-signed, so the start has a large component along it.
@@ -52,14 +41,12 @@ double slowest_relaxation_time(const SteadySystem& system, std::span<const doubl
   double previous_growth = 0.0, growth = 0.0;
   for (int it = 0; it < std::max(iterations, 2); ++it) {
     for (std::size_t k = 0; k < n; ++k) x[k] = capacities[k] * v[k];
-    klu_l_tsolve(symbolic, numeric, SuiteSparse_long(n), 1, x.data(), &common);
+    lu.solve(x);
     previous_growth = growth;
     growth = differential_max(x, capacities) / differential_max(v, capacities);
     if (!std::isfinite(growth) || growth == 0.0) break;
     for (std::size_t k = 0; k < n; ++k) v[k] = x[k] / growth;
   }
-  klu_l_free_numeric(&numeric, &common);
-  klu_l_free_symbolic(&symbolic, &common);
   if (!std::isfinite(growth) || growth == 0.0)
     throw SolverFailure("slowest_relaxation_time: inverse iteration broke down", -1);
   // The geometric mean of the last two growth factors also converges when the two

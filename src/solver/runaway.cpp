@@ -199,6 +199,7 @@ Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<c
     StepOutcome o = classify_step(system, b.low_state, trial, settings);
     b.steps.push_back({trial, o.verdict, o.evidence, o.time, o.reason});
     b.ida_steps += o.statistics.steps;
+    b.ida_factorizations += o.statistics.linear_setups;
     if (observer) observer(b.steps.back());
     if (o.evidence == StepEvidence::no_consistent_start) {
       const double nearer = 0.5 * (b.low + target);

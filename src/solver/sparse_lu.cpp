@@ -7,6 +7,13 @@
 
 namespace twb {
 
+namespace {
+// Every SparseLu of this thread together (a search's work, whatever solver it was in).
+thread_local SparseLu::Counts tally;
+}  // namespace
+
+const SparseLu::Counts& SparseLu::thread_counts() { return tally; }
+
 // KLU reads column-compressed arrays; handed our row-compressed ones it factors Aᵀ, so
 // klu_l_tsolve solves with A and klu_l_solve with Aᵀ.
 struct SparseLu::Klu {
@@ -31,6 +38,7 @@ struct SparseLu::Klu {
     if (numeric) klu_l_free_numeric(&numeric, &common);
     numeric = klu_l_factor(row_start.data(), column.data(), values.data(), symbolic, &common);
     ++counts.factorizations;
+    ++tally.factorizations;
     if (!numeric) return false;
     growth_at_factor = growth();
     return true;
@@ -46,6 +54,7 @@ SparseLu::SparseLu(const SparsePattern& p) : klu_(std::make_unique<Klu>()) {
   klu_->column.assign(p.column.begin(), p.column.end());
   klu_->symbolic = klu_l_analyze(klu_->n, klu_->row_start.data(), klu_->column.data(), &klu_->common);
   ++klu_->counts.analyses;
+  ++tally.analyses;
   if (!klu_->symbolic)
     throw std::runtime_error("KLU symbolic analysis failed (status " + std::to_string(klu_->common.status) + ")");
 }
@@ -62,6 +71,7 @@ bool SparseLu::refactor(std::span<const double> values) {
   k.values.assign(values.begin(), values.end());
   if (k.numeric) {
     ++k.counts.refactorizations;
+    ++tally.refactorizations;
     if (klu_l_refactor(k.row_start.data(), k.column.data(), k.values.data(), k.symbolic, k.numeric, &k.common) &&
         k.growth() >= 1e-2 * k.growth_at_factor)
       return true;

@@ -468,6 +468,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
       });
       out.counts.transients += long(bracket.steps.size());
       out.counts.ida_steps += bracket.ida_steps;
+      out.counts.ida_factorizations += bracket.ida_factorizations;
       if (!bracket.valid) {
         out.row.method = "no distress bracket: " + bracket.message;
         out.message = out.row.method;
@@ -564,8 +565,10 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
 
 }  // namespace
 
-DistressSearch search_distress(BearingModel& model, const DistressSearchSettings& settings,
-                               const SearchProgress& progress) {
+namespace {
+
+DistressSearch search_from_start(BearingModel& model, const DistressSearchSettings& settings,
+                                 const SearchProgress& progress) {
   const NewtonSettings newton = newton_settings(model.scene());
   model.set_load(settings.load_start);
   std::vector<double> u;
@@ -627,6 +630,18 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
       out.row.distress_load ? fmt::format("W_d ≈ {:.6g} N", *out.row.distress_load) : "no W_d found from there";
   out.row.method = fmt::format("the start at {:.6g} N is already past distress ({}, continued from {:.3g} N): {}",
                                settings.load_start, where, light, out.row.method);
+  return out;
+}
+
+}  // namespace
+
+DistressSearch search_distress(BearingModel& model, const DistressSearchSettings& settings,
+                               const SearchProgress& progress) {
+  const SparseLu::Counts before = SparseLu::thread_counts();
+  DistressSearch out = search_from_start(model, settings, progress);
+  const SparseLu::Counts& after = SparseLu::thread_counts();
+  out.counts.klu_factorizations = after.factorizations - before.factorizations + after.refactorizations -
+                                  before.refactorizations + out.counts.ida_factorizations;
   return out;
 }
 

@@ -13,6 +13,7 @@
 #include "richardson.h"
 #include "study_support.h"
 #include "twb/scene/scene_loader.h"
+#include "twb/solver/sparse_lu.h"
 #include "twb/solver/steady_solver.h"
 #include "twb/study/distress_search.h"
 
@@ -165,7 +166,7 @@ void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings
 // time left; a search that throws becomes a failed row, so that the study's other
 // searches are kept.
 void run_searches(BearingModel& base, const std::vector<Variant>& variants, const DistressSearchSettings& settings,
-                  const ProgressReport& progress, const SearchResult& take) {
+                  const ProgressReport& progress, RunTimings& timings, const SearchResult& take) {
   const std::vector<double> speeds = study_speeds(base);
   const std::size_t total = variants.size() * speeds.size();
   std::size_t done = 0;
@@ -189,6 +190,9 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
         found.message = found.row.method;
       }
       estimate_mesh_error(model, settings, found, progress);
+      timings.transients += found.counts.transients;
+      timings.ida_steps += found.counts.ida_steps;
+      timings.ida_factorizations += found.counts.ida_factorizations;
       found.row.parameter = variant.parameter;
       found.row.sliding = variant.sliding;
       for (std::size_t i = 0; i < found.states.size(); ++i) {
@@ -205,9 +209,13 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
       ++done;
       if (progress) {
         const double per_search = elapsed_ms(t0) / double(done);
-        progress(fmt::format("[{}/{}] done: W_d = {} ({}); about {:.0f} s left", done, total,
+        progress(fmt::format("[{}/{}] done: W_d = {} ({}); {} stability tests, {} transients ({} IDA steps), {} KLU "
+                             "factorizations; about {:.0f} s left",
+                             done, total,
                              found.row.distress_load ? fmt::format("{:.2f} N", *found.row.distress_load) : "none",
-                             found.row.method, per_search * double(total - done) / 1000.0));
+                             found.row.method, found.counts.stability_tests, found.counts.transients,
+                             found.counts.ida_steps, found.counts.klu_factorizations,
+                             per_search * double(total - done) / 1000.0));
       }
     }
   }
@@ -245,7 +253,7 @@ void keep_failure(StudyOutcome& out, const DistressSearch& found) {
 
 void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
   const std::vector<Variant> variants = parameter_variants(model.scene(), out.parameter_column);
-  run_searches(model, variants, grid_settings(model.scene().study), progress,
+  run_searches(model, variants, grid_settings(model.scene().study), progress, out.timings,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
                  out.states.insert(out.states.end(), found.states.begin(), found.states.end());
                  out.trajectory.insert(out.trajectory.end(), found.runaway.begin(), found.runaway.end());
@@ -258,7 +266,7 @@ void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressRepor
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
   DistressSearchSettings settings = range_settings(base.scene().study);
   settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
-  run_searches(base, variants, settings, progress,
+  run_searches(base, variants, settings, progress, out.timings,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
     out.distress.push_back(found.row);
     // The cool branch's states are results too (f_eff, temperature against load).
@@ -287,7 +295,7 @@ void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressRep
   // Per speed and grid load, the state of each configuration that reached it.
   std::vector<std::vector<std::vector<SlidingRow>>> at(study_speeds(base).size(),
                                                         std::vector<std::vector<SlidingRow>>(grid.size()));
-  run_searches(base, variants, grid_settings(st), progress,
+  run_searches(base, variants, grid_settings(st), progress, out.timings,
                [&](const Variant&, std::size_t speed, const BearingModel& model, DistressSearch& found) {
     const auto film = std::find_if(model.films().begin(), model.films().end(), [](const Film& f) { return f.sliding; });
     const double area = film->mesh.area();
@@ -342,6 +350,7 @@ void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport&
 StudyOutcome run_study(BearingModel& model, const ProgressReport& progress) {
   StudyOutcome out;
   const auto t0 = Clock::now();
+  const SparseLu::Counts klu_before = SparseLu::thread_counts();
   switch (model.scene().study.type) {
     case StudyType::point:
       run_point(model, out);
@@ -362,6 +371,10 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress) {
       run_distress_curve(model, out, progress);
       break;
   }
+  const SparseLu::Counts& klu_after = SparseLu::thread_counts();
+  out.timings.klu_factorizations = klu_after.factorizations - klu_before.factorizations +
+                                   klu_after.refactorizations - klu_before.refactorizations +
+                                   out.timings.ida_factorizations;
   out.timings.states = int(out.states.size());
   out.timings.solve_ms = elapsed_ms(t0);
   return out;

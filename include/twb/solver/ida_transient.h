@@ -51,6 +51,7 @@ struct TransientStatistics {
   long steps = 0;
   long residual_evaluations = 0;
   long jacobian_evaluations = 0;
+  long linear_setups = 0;  // each a KLU factorization of ∂F/∂u + c_j·C
   long nonlinear_iterations = 0;
   long error_test_failures = 0;
   long convergence_failures = 0;

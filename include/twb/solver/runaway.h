@@ -137,6 +137,7 @@ struct Bracket {
   std::vector<BracketStep> steps;
   std::string message;  // why the bracket is not valid
   long ida_steps = 0;   // over all its transients
+  long ida_factorizations = 0;
   double critical_estimate() const { return 0.5 * (low + high); }
 };
 

@@ -48,6 +48,8 @@ class SparseLu {
     long analyses = 0, factorizations = 0, refactorizations = 0;
   };
   const Counts& counts() const;
+  // The same over every SparseLu of the calling thread since it started.
+  static const Counts& thread_counts();
 
  private:
   struct Klu;

@@ -56,9 +56,12 @@ struct SearchCounts {
   long stability_tests = 0;  // linear stability tests of cool-branch states
   long transients = 0;       // load-step transients integrated (IDA)
   long ida_steps = 0;        // their internal steps
+  long ida_factorizations = 0;  // KLU factorizations inside IDA (its linear solver setups)
+  long klu_factorizations = 0;  // all KLU factorizations of the search: twb's own and IDA's
   void add(const StepOutcome& step) {
     ++transients;
     ida_steps += step.statistics.steps;
+    ida_factorizations += step.statistics.linear_setups;
   }
 };
 
