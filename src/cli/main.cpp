@@ -42,7 +42,8 @@ int check(const std::string& path, const std::vector<std::string>& overrides) {
   return 0;
 }
 
-int run(const std::string& path, const std::vector<std::string>& overrides, std::string out_dir, bool quiet) {
+int run(const std::string& path, const std::vector<std::string>& overrides, std::string out_dir, bool quiet,
+        bool verbose) {
   const auto t0 = std::chrono::steady_clock::now();
   const twb::Scene scene = twb::load_scene(path, overrides);
   if (out_dir.empty()) out_dir = scene.output.directory;
@@ -90,6 +91,8 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
   for (const std::string& line : outcome.summary) std::cout << line << "\n";
   std::cout << fmt::format("results: {}  ({} states, {:.1f} ms)\n", dir.string(), outcome.states.size(),
                            outcome.timings.total_ms);
+  if (verbose)
+    for (const std::string& line : outcome.diagnostics) std::cerr << "twb: (solver) " << line << "\n";
   if (!outcome.message.empty()) std::cerr << "twb: " << outcome.message << "\n";
   return outcome.solver_failed ? exit_solver_failure : 0;
 }
@@ -114,6 +117,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out", out_dir, "results directory (default: the scene's output.directory)");
   run_cmd->add_option("--set", overrides, "override a key: path=value, e.g. operating.load=\"800 N\"");
   run_cmd->add_flag("-q,--quiet", quiet, "no progress on stderr");
+  bool verbose = false;
+  run_cmd->add_flag("-v,--verbose", verbose,
+                    "also the solvers' own words where a search went on regardless (e.g. why natural "
+                    "continuation stopped at a fold)");
 
   try {
     app.parse(argc, argv);
@@ -124,7 +131,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*check_cmd) return check(scene_path, overrides);
-    return run(scene_path, overrides, out_dir, quiet);
+    return run(scene_path, overrides, out_dir, quiet, verbose);
   } catch (const twb::InputError& e) {
     std::cerr << e.what() << "\n";
     return exit_invalid_input;

@@ -15,6 +15,16 @@ void BearingModel::parameter_derivative(std::span<const double> u, std::span<dou
   if (derivative.size() != u.size()) throw std::invalid_argument("parameter_derivative: size mismatch");
   std::vector<double> r(u.size());
   evaluate(u, r, {});
+  parameter_derivative_given(u, r, derivative);
+}
+
+// The load enters only the four rigid rows, the force and moment balances divided by W:
+// r_k = δ_k3 − G_k(u)/W (F_ext/W = 1 in the axial force row), so ∂r_k/∂W = G_k/W² =
+// (δ_k3 − r_k)/W from the residual alone.
+void BearingModel::parameter_derivative_given(std::span<const double> u, std::span<const double> r,
+                                              std::span<double> derivative) const {
+  if (derivative.size() != u.size() || r.size() != u.size())
+    throw std::invalid_argument("parameter_derivative: size mismatch");
   std::fill(derivative.begin(), derivative.end(), 0.0);
   for (Index k = 0; k < 4; ++k) {
     const std::size_t row = std::size_t(rigid_offset_ + k);

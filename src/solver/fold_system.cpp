@@ -35,7 +35,9 @@ bool FoldSystem::solve_bordered(std::span<const double> x, std::span<double> f, 
   base().evaluate(x.first(n), f, base_jac);
   std::vector<double> values(std::size_t(matrix().pattern().nnz()));
   matrix().assemble(base_jac, b_, c_, 0.0, values);
-  if (!lu_->factor(values)) return false;
+  // The bordered matrix is regular at and near the fold, and consecutive evaluations
+  // differ little: the pivot sequence is reused while KLU's growth check allows.
+  if (!lu_->refactor(values)) return false;
   vg.assign(n + 1, 0.0);
   vg[n] = 1.0;
   lu_->solve(vg);
@@ -57,7 +59,7 @@ void FoldSystem::second_derivatives(std::span<const double> u, std::span<const d
   for (const double side : {1.0, -1.0}) {
     for (std::size_t k = 0; k < n; ++k) shifted[k] = u[k] + side * eps * v[k];
     base().evaluate(shifted, f, jac);
-    base().parameter_derivative(shifted, f_lambda);
+    base().parameter_derivative_given(shifted, f, f_lambda);
     const double weight = side / (2.0 * eps);
     for (std::size_t row = 0; row < n; ++row) {
       for (Index at = p.row_start[row]; at < p.row_start[row + 1]; ++at)
@@ -86,7 +88,7 @@ void FoldSystem::evaluate(std::span<const double> x, std::span<double> residual,
   second_derivatives(u, std::span<const double>(vg).first(n), std::span<const double>(w).first(n), gradient,
                      parameter_part);
   for (double& g : gradient) g = -g;
-  base().parameter_derivative(u, column);
+  base().parameter_derivative_given(u, residual.first(n), column);
   const double scale = metric().parameter_scale();
   for (double& c : column) c *= scale;
   matrix().assemble(base_jac, column, gradient, -parameter_part * scale, jacobian);
@@ -103,7 +105,7 @@ double FoldSystem::fold_curvature(std::span<const double> x) const {
   std::vector<double> gradient(n), f_lambda(n);
   double parameter_part = 0.0;
   second_derivatives(u, v, std::span<const double>(w).first(n), gradient, parameter_part);
-  base().parameter_derivative(u, f_lambda);
+  base().parameter_derivative_given(u, f, f_lambda);
   double bend = 0.0, push = 0.0;  // ψᵀF_uu[v, v], ψᵀF_λ
   for (std::size_t k = 0; k < n; ++k) {
     bend += gradient[k] * v[k];

@@ -90,8 +90,12 @@ class FoldApproach {
 // Pseudo-arclength continuation from a state near the end of the cool branch round its
 // first turning point only: once the branch has turned back 2 % below the start the
 // fold has been passed (and located), and the rest of the S is not needed.
+// The cool branch's states, (load, state), in the order continuation found them.
+using BranchStates = std::vector<std::pair<double, std::vector<double>>>;
+
+// cool_side, if given, receives the states arclength continuation passes before the turn.
 ArclengthReport round_the_fold(BearingModel& model, std::span<const double> state, double load, double load_end,
-                               const NewtonSettings& newton) {
+                               const NewtonSettings& newton, BranchStates* cool_side = nullptr) {
   ArclengthSettings arc;
   arc.newton = newton;
   arc.newton.max_iterations = 12;
@@ -102,7 +106,12 @@ ArclengthReport round_the_fold(BearingModel& model, std::span<const double> stat
   arc.lambda_max = load_end;
   arc.max_points = 200;
   model.set_load(load);
-  return continue_by_arclength(model, state, arc);
+  bool turned = false;
+  return continue_by_arclength(model, state, arc, [&](const BranchPoint& p) {
+    turned = turned || (!p.tangent.empty() && p.tangent.back() < 0.0);
+    if (cool_side && !turned && p.index > 0) cool_side->emplace_back(p.lambda, std::vector<double>(p.u.begin(), p.u.end()));
+    return true;
+  });
 }
 
 
@@ -120,8 +129,8 @@ struct FoldProof {
 };
 
 template <class Say>
-FoldProof prove_fold(BearingModel& model, const std::vector<std::pair<double, std::vector<double>>>& cool,
-                     double fold, const RunawaySettings& runaway, SearchCounts& counts, const Say& say) {
+FoldProof prove_fold(BearingModel& model, const BranchStates& cool, const BranchStates& approach, double fold,
+                     const RunawaySettings& runaway, SearchCounts& counts, const Say& say) {
   FoldProof proof;
   Bracket& b = proof.bracket;
   const double half = 0.5 * runaway.relative_width;
@@ -133,8 +142,20 @@ FoldProof prove_fold(BearingModel& model, const std::vector<std::pair<double, st
     return proof;
   }
   say(fmt::format("  proving the fold at {:.2f} N: a load step {:.2f} -> {:.2f} N", fold, start->first, b.low));
+  // Where the step settles must be the cool branch's state: the branch test continues
+  // the branch there, from the nearest state arclength continuation passed on its way to
+  // the fold when that is nearer than the step's start (near the fold, natural
+  // continuation over the whole step creeps).
+  RunawaySettings below_settings = runaway;
+  const auto nearest = std::find_if(approach.rbegin(), approach.rend(), [&](const auto& c) { return c.first < b.low; });
+  if (runaway.on_branch && nearest != approach.rend() && nearest->first > start->first)
+    below_settings.on_branch = [test = runaway.on_branch, &nearest](SteadySystem& system, std::span<const double>,
+                                                                     double, std::span<const double> settled,
+                                                                     double load) {
+      return test(system, nearest->second, nearest->first, settled, load);
+    };
   model.set_load(start->first);
-  StepOutcome below = classify_step(model, start->second, b.low, runaway);
+  StepOutcome below = classify_step(model, start->second, b.low, below_settings);
   counts.add(below);
   b.steps.push_back({b.low, below.verdict, below.evidence, below.time, below.reason});
   if (!below.settled()) {
@@ -259,11 +280,12 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   std::vector<double> low_state = u;
   double low = settings.load_start;
   // The cool branch's states (load, state), to start the proof of a fold from.
-  std::vector<std::pair<double, std::vector<double>>> cool{{low, low_state}};
+  BranchStates cool{{low, low_state}};
   bool branch_ended = false, ran_away = false, near_fold = false;
   double runaway_load = 0.0;
   FoldApproach approach;
   std::optional<ArclengthReport> around_fold;  // the arclength round the fold, once run
+  BranchStates approach_states;                // its states before the turn
   for (std::size_t t = 0; t < targets.size() && !ran_away;) {
     std::vector<Pending> pending;
     natural.initial_step = natural.max_step = std::max(targets[t] - low, natural.min_step);
@@ -349,8 +371,10 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
                       approach.fold_estimate(), low));
       // The estimate lies beyond a fold it sees coming (μ² bends away from its chord): a
       // branch that climbs 10 % past it without turning has no fold there.
+      approach_states.clear();
       around_fold = round_the_fold(model, low_state, low,
-                                   std::min(settings.load_end, 1.1 * std::max(approach.fold_estimate(), low)), newton);
+                                   std::min(settings.load_end, 1.1 * std::max(approach.fold_estimate(), low)), newton,
+                                   &approach_states);
       if (!around_fold->folds.empty()) {
         branch_ended = true;
         break;
@@ -425,13 +449,13 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
     if (!ran_away) {
       if (!around_fold) {
         say(fmt::format("  locating the fold by arclength continuation from {:.2f} N", low));
-        around_fold = round_the_fold(model, low_state, low, settings.load_end, newton);
+        around_fold = round_the_fold(model, low_state, low, settings.load_end, newton, &approach_states);
       }
       const ArclengthReport& around = *around_fold;
       if (!around.folds.empty()) {
         fold = around.folds.front();
         out.row.fold_load = fold->lambda;
-        proof = prove_fold(model, cool, fold->lambda, runaway, out.counts, say);
+        proof = prove_fold(model, cool, approach_states, fold->lambda, runaway, out.counts, say);
         if (!bracket.valid) disagreement = bracket.message;
       }
     }

@@ -21,14 +21,18 @@ Scene refined_mesh(const Scene& scene) {
 }
 
 std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double speed, double coarse_fold,
-                                                     DistressSearchSettings settings, std::string& why) {
+                                                     DistressSearchSettings settings, std::string& why,
+                                                     const SearchProgress& progress) {
   const Scene fine_scene = refined_mesh(scene);
   BearingModel fine(fine_scene);
   fine.set_speed(speed);
   settings.fold_only = true;
   settings.grid.clear();
   settings.continue_past_distress = false;
-  const DistressSearch found = search_distress(fine, settings, {});
+  const std::string mesh = fmt::format("{} x {}", fine_scene.mesh.radial_nodes, fine_scene.mesh.circumferential_nodes);
+  const DistressSearch found =
+      search_distress(fine, settings, progress ? [&](const std::string& s) { progress("  [" + mesh + "]" + s); }
+                                               : SearchProgress{});
   if (!found.row.fold_load) {
     why = fmt::format("no fold on the refined mesh ({} x {}): {}", fine_scene.mesh.radial_nodes,
                       fine_scene.mesh.circumferential_nodes, found.message.empty() ? found.row.method : found.message);

@@ -39,6 +39,7 @@ Scene refined_mesh(const Scene& scene);
 // from settings.load_start to settings.load_end. Empty, with the reason in `why`, when
 // the refined mesh has no fold there.
 std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double speed, double coarse_fold,
-                                                     DistressSearchSettings settings, std::string& why);
+                                                     DistressSearchSettings settings, std::string& why,
+                                                     const SearchProgress& progress = {});
 
 }  // namespace twb

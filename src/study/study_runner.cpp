@@ -149,7 +149,7 @@ void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings
   std::string why;
   const auto t0 = Clock::now();
   const std::optional<MeshErrorEstimate> e =
-      richardson_estimate(model.scene(), model.speed(), *found.row.fold_load, from, why);
+      richardson_estimate(model.scene(), model.speed(), *found.row.fold_load, from, why, progress);
   if (!e) {
     found.row.method += "; no error estimate: " + why;
     return;
@@ -166,7 +166,8 @@ void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings
 // time left; a search that throws becomes a failed row, so that the study's other
 // searches are kept.
 void run_searches(BearingModel& base, const std::vector<Variant>& variants, const DistressSearchSettings& settings,
-                  const ProgressReport& progress, RunTimings& timings, const SearchResult& take) {
+                  const ProgressReport& progress, RunTimings& timings, std::vector<std::string>& diagnostics,
+                  const SearchResult& take) {
   const std::vector<double> speeds = study_speeds(base);
   const std::size_t total = variants.size() * speeds.size();
   std::size_t done = 0;
@@ -190,6 +191,8 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
         found.message = found.row.method;
       }
       estimate_mesh_error(model, settings, found, progress);
+      for (const std::string& d : found.diagnostics)
+        diagnostics.push_back(fmt::format("{:.6g} rad/s{}: {}", speed, variant.label, d));
       timings.transients += found.counts.transients;
       timings.ida_steps += found.counts.ida_steps;
       timings.ida_factorizations += found.counts.ida_factorizations;
@@ -253,7 +256,7 @@ void keep_failure(StudyOutcome& out, const DistressSearch& found) {
 
 void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
   const std::vector<Variant> variants = parameter_variants(model.scene(), out.parameter_column);
-  run_searches(model, variants, grid_settings(model.scene().study), progress, out.timings,
+  run_searches(model, variants, grid_settings(model.scene().study), progress, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
                  out.states.insert(out.states.end(), found.states.begin(), found.states.end());
                  out.trajectory.insert(out.trajectory.end(), found.runaway.begin(), found.runaway.end());
@@ -266,7 +269,7 @@ void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressRepor
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
   DistressSearchSettings settings = range_settings(base.scene().study);
   settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
-  run_searches(base, variants, settings, progress, out.timings,
+  run_searches(base, variants, settings, progress, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
     out.distress.push_back(found.row);
     // The cool branch's states are results too (f_eff, temperature against load).
@@ -295,7 +298,7 @@ void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressRep
   // Per speed and grid load, the state of each configuration that reached it.
   std::vector<std::vector<std::vector<SlidingRow>>> at(study_speeds(base).size(),
                                                         std::vector<std::vector<SlidingRow>>(grid.size()));
-  run_searches(base, variants, grid_settings(st), progress, out.timings,
+  run_searches(base, variants, grid_settings(st), progress, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t speed, const BearingModel& model, DistressSearch& found) {
     const auto film = std::find_if(model.films().begin(), model.films().end(), [](const Film& f) { return f.sliding; });
     const double area = film->mesh.area();

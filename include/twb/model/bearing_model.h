@@ -121,6 +121,8 @@ class BearingModel final : public SteadySystem {
   double parameter() const override { return load_; }
   void set_parameter(double value) override { set_load(value); }
   void parameter_derivative(std::span<const double> u, std::span<double> derivative) const override;
+  void parameter_derivative_given(std::span<const double> u, std::span<const double> residual,
+                                  std::span<double> derivative) const override;
   std::vector<double> capacities() const override;
   std::vector<double> step_weights() const override;
   std::string block_name(Index k) const override { return layout_.block_of(k).name; }

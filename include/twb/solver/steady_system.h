@@ -34,6 +34,12 @@ class SteadySystem {
   virtual void set_parameter(double value) = 0;
   // ∂F/∂λ at u and the current λ.
   virtual void parameter_derivative(std::span<const double> u, std::span<double> derivative) const = 0;
+  // The same when F(u) is at hand: a system whose ∂F/∂λ follows from F (the bearing's
+  // load enters its force balance as F_ext/λ) saves an evaluation; the default ignores it.
+  virtual void parameter_derivative_given(std::span<const double> u, std::span<const double> /*residual*/,
+                                          std::span<double> derivative) const {
+    parameter_derivative(u, derivative);
+  }
 
   // Diagonal of C (time units of the transient); 0 marks an algebraic unknown.
   virtual std::vector<double> capacities() const = 0;

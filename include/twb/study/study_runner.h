@@ -28,6 +28,8 @@ struct StudyOutcome {
   std::vector<FoldCurveRow> fold_curve;
   std::string fold_curve_column;
   std::vector<std::string> summary;  // lines for the end of the run's output (e.g. the cusp)
+  // The solvers' own words where a search went on regardless (twb run --verbose).
+  std::vector<std::string> diagnostics;
   bool solver_failed = false;  // a state the study needed could not be solved
   std::string message;
   RunTimings timings;
