@@ -81,6 +81,7 @@ class FoldApproach {
   // growing 1.5-fold) reach the fold in a few states from there.
   bool near(double load) const { return !disabled_ && fold_estimate() - load < 0.03 * load; }
   void disable() { disabled_ = true; }
+  bool disabled() const { return disabled_; }
 
  private:
   bool disabled_ = false;
@@ -130,7 +131,7 @@ struct FoldProof {
 
 template <class Say>
 FoldProof prove_fold(BearingModel& model, const BranchStates& cool, const BranchStates& approach, double fold,
-                     const RunawaySettings& runaway, SearchCounts& counts, const Say& say) {
+                     const RunawaySettings& runaway, bool keep_trajectory, SearchCounts& counts, const Say& say) {
   FoldProof proof;
   Bracket& b = proof.bracket;
   const double half = 0.5 * runaway.relative_width;
@@ -165,11 +166,13 @@ FoldProof prove_fold(BearingModel& model, const BranchStates& cool, const Branch
   }
   say(fmt::format("  proving the fold at {:.2f} N: it settles; a load step {:.2f} -> {:.2f} N", fold, b.low, b.high));
   model.set_load(b.low);
-  StepOutcome above = classify_step(model, below.final_state, b.high, runaway, [&](double t, std::span<const double> u) {
+  const TransientObserver record_runaway = [&](double t, std::span<const double> u) {
     TrajectorySample& sample = proof.runaway.emplace_back();
     sample.time = t;
     sample.state = model.describe(u);
-  });
+  };
+  StepOutcome above =
+      classify_step(model, below.final_state, b.high, runaway, keep_trajectory ? record_runaway : TransientObserver{});
   counts.add(above);
   b.steps.push_back({b.high, above.verdict, above.evidence, above.time, above.reason});
   if (above.settled()) {
@@ -288,11 +291,19 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   BranchStates approach_states;                // its states before the turn
   for (std::size_t t = 0; t < targets.size() && !ran_away;) {
     std::vector<Pending> pending;
-    natural.initial_step = natural.max_step = std::max(targets[t] - low, natural.min_step);
+    // A segment that would cross the fold the slowest mode foresees costs rejected
+    // corrections: stop short of it, at 70 % of the way there (the estimate lies beyond
+    // the fold, and once within 3 % of it arclength continuation takes over).
+    double target = targets[t];
+    const double foreseen = approach.fold_estimate();
+    if (std::isfinite(foreseen) && foreseen > low && !approach.disabled())
+      target = std::min(target, low + 0.7 * (foreseen - low));
+    bool replan = false;
+    natural.initial_step = natural.max_step = std::max(target - low, natural.min_step);
     auto t0 = std::chrono::steady_clock::now();
     std::vector<double> x = low_state;
     model.set_load(low);
-    const NaturalReport rep = continue_in_parameter(model, x, targets[t], natural, [&](const BranchPoint& p) {
+    const NaturalReport rep = continue_in_parameter(model, x, target, natural, [&](const BranchPoint& p) {
       if (p.index > 0) {
         Pending& q = pending.emplace_back(
             Pending{{p.u.begin(), p.u.end()}, p.lambda, p.corrector_iterations, 0.0, Stability::inconclusive, {}});
@@ -308,6 +319,12 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
         // arclength continuation takes over once the fold is near.
         if (approach.near(p.lambda)) {
           near_fold = true;
+          return false;
+        }
+        // A fold foreseen short of this segment's end: plan the segment again (above).
+        const double ahead = approach.fold_estimate();
+        if (std::isfinite(ahead) && ahead < target && !approach.disabled()) {
+          replan = true;
           return false;
         }
       }
@@ -388,13 +405,14 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
       near_fold = false;
       continue;
     }
+    if (replan) continue;
     if (!rep.reached_target) {
       branch_ended = true;
       say(fmt::format("  the cool branch ends near {:.2f} N", low));
       out.diagnostics.push_back(rep.message);
       break;
     }
-    ++t;
+    if (target == targets[t]) ++t;
   }
   out.cool_states = out.states.size();
 
@@ -455,7 +473,8 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
       if (!around.folds.empty()) {
         fold = around.folds.front();
         out.row.fold_load = fold->lambda;
-        proof = prove_fold(model, cool, approach_states, fold->lambda, runaway, out.counts, say);
+        proof = prove_fold(model, cool, approach_states, fold->lambda, runaway, settings.march_past_distress,
+                           out.counts, say);
         if (!bracket.valid) disagreement = bracket.message;
       }
     }
@@ -535,7 +554,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
     const NewtonSettings settle = runaway.newton;
     StepMarch hot;
     if (!proof.runaway_state.empty() && !settings.march_past_distress) {
-      // W_d and its proof only: the runaway's trajectory ends where it was proven.
+      // W_d and its proof only (the proof kept no trajectory: nothing marches on).
       out.runaway = std::move(proof.runaway);
       return out;
     }

@@ -76,6 +76,35 @@ TEST(StudyOutputs, LoadSweepWritesStatesDistressAndTheRunaway) {
   fs::remove_all(dir);
 }
 
+// The distress curve on its shipped scene, and the safe region in one command
+// (scripts/safe_region.sh runs twb and draws the figure): a cusp per family member, the
+// curve's file, the figure.
+TEST(StudyOutputs, DistressCurveAndSafeRegionInOneCommand) {
+  const fs::path dir = scratch("curve");
+  ASSERT_EQ(run_twb("distress_curve.yaml", dir, "--set study.load_end='1000 N'"), 0);
+  const auto rows = lines_of(dir / "fold_curve.csv");
+  ASSERT_GT(rows.size(), 5u);
+  EXPECT_EQ(rows[0], "speed_rad_s,W_fold_N,fold,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff");
+  EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const std::string& r) { return r.find(",cusp,") != std::string::npos; }),
+            1);
+  fs::remove_all(dir);
+
+  const fs::path region = scratch("region");
+  const std::string command = std::string("'") + TWB_SOURCE_DIR + "/scripts/safe_region.sh' --twb '" + TWB_BINARY +
+                              "' --out '" + region.string() + "' --set mesh.radial_nodes=5 --set " +
+                              "mesh.circumferential_nodes=24 --set 'study.family.values=[0.1, 0.3]' " +
+                              "--set study.load_end='1000 N' >/dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command;
+  const auto curve = lines_of(region / "fold_curve.csv");
+  ASSERT_FALSE(curve.empty());
+  EXPECT_EQ(curve[0].rfind("friction_coefficient,speed_rad_s,", 0), 0u) << curve[0];
+  EXPECT_EQ(std::count_if(curve.begin(), curve.end(), [](const std::string& r) { return r.find(",cusp,") != std::string::npos; }),
+            2);
+  EXPECT_TRUE(fs::exists(region / "figures" / "fold_curve.png"));
+  fs::remove_all(region);
+}
+
 std::string header(const fs::path& p) {
   const auto rows = lines_of(p);
   return rows.empty() ? std::string() : rows.front();
