@@ -141,11 +141,17 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     }
   }
   for (std::size_t k = first_row; k < out.fold_curve.size(); ++k) out.fold_curve[k].member = member;
-  if (curve.turns.empty())
-    out.summary.push_back(fmt::format("fold curve{}: {} points from {} to {}, no cusp in range ({})", label,
-                                      curve.points.size(),
-                                      shown(which, curve.points.front().p), shown(which, curve.points.back().p),
-                                      curve.message));
+  // Where the curve ended: past the range's end, or inside it where continuation could
+  // not go on (the reason is the continuation's own, in terms of the curve parameter).
+  const double last = curve.points.back().p;
+  const bool finished = last < fs.p_min || last > fs.p_max;
+  if (!finished)
+    out.summary.push_back(fmt::format("fold curve{}: stopped at {}, inside the range: no continuation step was "
+                                      "accepted there ({}); the curve may turn sharply or end there",
+                                      label, shown(which, last), curve.message));
+  else if (curve.turns.empty())
+    out.summary.push_back(fmt::format("fold curve{}: {} points from {} to {}, no cusp in range", label,
+                                      curve.points.size(), shown(which, curve.points.front().p), shown(which, last)));
 }
 
 }  // namespace twb
