@@ -181,7 +181,8 @@ def read_trajectory(path):
 # fold_curve.csv (study type distress_curve): the curve's parameter first, then these.
 FOLD_CURVE_PARAMETERS = {
     "speed_rad_s": r"speed $\omega$ (rad/s)", "friction_coefficient": "dry friction coefficient",
-    "gear_tilt_rad": "gear tilt (rad)", "ambient_C": "ambient temperature (°C)"}
+    "gear_tilt_rad": "gear tilt (rad)", "ambient_C": "ambient temperature (°C)",
+    "viscosity_scale": "oil viscosity / the scene's"}
 FOLD_CURVE_TAIL = ("W_fold_N", "fold", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff")
 FOLD_KINDS = ("distress", "recovery", "cusp", "turn")
 

@@ -212,6 +212,7 @@ double BearingModel::curve_parameter(CurveParameter p) const {
     case CurveParameter::friction_coefficient: return scene_.friction.coefficient;
     case CurveParameter::gear_tilt: return scene_.gear.tilt;
     case CurveParameter::ambient_temperature: return scene_.operating.ambient;
+    case CurveParameter::viscosity_scale: return viscosity_scale_;
   }
   return 0.0;
 }
@@ -237,6 +238,13 @@ void BearingModel::set_curve_parameter(CurveParameter p, double value) {
       if (!(value > 0)) throw std::invalid_argument("the ambient temperature must be positive (K)");
       scene_.operating.ambient = value;
       break;
+    case CurveParameter::viscosity_scale:
+      // Roelands' μ∞ is a prefactor: scaling it scales μ(T) and leaves dlnμ/dT alone;
+      // the viscosity scale of the unknowns stays.
+      if (!(value > 0)) throw std::invalid_argument("the viscosity scale must be positive");
+      viscosity_scale_ = value;
+      roelands_.mu_infinity = value * scene_.lubricant.mu_infinity;
+      break;
   }
 }
 
@@ -246,13 +254,13 @@ double BearingModel::body_resistance(ComponentId id) const {
 
 ValueSlope BearingModel::viscosity(double temperature) const {
   if (scene_.lubricant.viscosity_model == ViscosityModel::constant)
-    return {scene_.lubricant.constant_viscosity, 0.0};
+    return {viscosity_scale_ * scene_.lubricant.constant_viscosity, 0.0};
   return roelands_(temperature);
 }
 
 void BearingModel::viscosity(std::span<const double> temperature, std::span<ValueSlope> out) const {
   if (scene_.lubricant.viscosity_model == ViscosityModel::constant) {
-    std::fill(out.begin(), out.end(), ValueSlope{scene_.lubricant.constant_viscosity, 0.0});
+    std::fill(out.begin(), out.end(), ValueSlope{viscosity_scale_ * scene_.lubricant.constant_viscosity, 0.0});
     return;
   }
   roelands_(temperature, out);

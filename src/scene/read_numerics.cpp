@@ -103,7 +103,8 @@ void read_load_grid(const MapReader& study, Scene& out) {
 // range optional.
 void read_fold_curve(const MapReader& study, Scene& out) {
   Study& s = out.study;
-  const Node name = study.get("parameter", "speed, friction_coefficient, gear_tilt or ambient_temperature");
+  const Node name =
+      study.get("parameter", "speed, friction_coefficient, gear_tilt, ambient_temperature or viscosity_scale");
   s.curve_parameter = kCurveParameters.values[name.choice(kCurveParameters.names)];
   if (s.curve_parameter == CurveParameter::friction_coefficient && out.friction.law != FrictionLaw::constant)
     name.fail(fmt::format("{}: friction_coefficient varies the constant friction law's coefficient; "
@@ -121,6 +122,10 @@ void read_fold_curve(const MapReader& study, Scene& out) {
         return study.quantity(key, si::temperature,
                               Range{.low = kRoelandsLowestTemperature, .low_open = true,
                                     .reason = "Roelands' viscosity law needs T > -135 degC"});
+      case CurveParameter::viscosity_scale:
+        return study.quantity(key, si::dimensionless,
+                              Range{.low = 0.0, .low_open = true,
+                                    .reason = "a factor on the oil's viscosity, e.g. 0.5 for half as viscous"});
     }
     return 0.0;
   };

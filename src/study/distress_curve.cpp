@@ -33,6 +33,7 @@ std::string fold_curve_column(CurveParameter p) {
     case CurveParameter::friction_coefficient: return "friction_coefficient";
     case CurveParameter::gear_tilt: return "gear_tilt_rad";
     case CurveParameter::ambient_temperature: return "ambient_C";
+    case CurveParameter::viscosity_scale: return "viscosity_scale";
   }
   return "parameter";
 }
@@ -46,6 +47,7 @@ std::string shown(CurveParameter p, double v) {
     case CurveParameter::friction_coefficient: return fmt::format("f = {:.6g}", v);
     case CurveParameter::gear_tilt: return fmt::format("{:.6g} mrad", 1e3 * v);
     case CurveParameter::ambient_temperature: return fmt::format("{:.6g} C", v - 273.15);
+    case CurveParameter::viscosity_scale: return fmt::format("viscosity x {:.6g}", v);
   }
   return fmt::format("{:.6g}", v);
 }

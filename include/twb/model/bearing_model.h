@@ -215,6 +215,7 @@ class BearingModel final : public SteadySystem {
   std::optional<StatisticalContact> contact_;
   double contact_cutoff_ = 0.0;  // gap above which contact is negligible (p < 1e-20 p(0))
   RoelandsViscosity roelands_{};
+  double viscosity_scale_ = 1.0;  // CurveParameter::viscosity_scale
   double sigma_ref_ = 0, gamma_ref_ = 0, p_ref_ = 0, h_ref_ = 0, mu_ref_ = 0;
   std::vector<double> flow_scale_;  // per interior pressure node: p_ref · reference conductance
   std::vector<std::vector<double>> film_row_scale_;  // per film, per node: 1 / reference conductance

@@ -37,7 +37,8 @@ enum class MapParameter { none, friction_coefficient, gear_tilt, roughness };
 
 // A parameter of the bearing a fold curve is continued in (study type distress_curve),
 // set on a built model without rebuilding it (BearingModel::set_curve_parameter).
-enum class CurveParameter { speed, friction_coefficient, gear_tilt, ambient_temperature };
+// viscosity_scale multiplies the oil's viscosity at every temperature (1: the scene's oil).
+enum class CurveParameter { speed, friction_coefficient, gear_tilt, ambient_temperature, viscosity_scale };
 
 // How a distress search estimates the discretization error of W_d.
 enum class ErrorEstimate {
