@@ -182,7 +182,7 @@ def read_trajectory(path):
 FOLD_CURVE_PARAMETERS = {
     "speed_rad_s": r"speed $\omega$ (rad/s)", "friction_coefficient": "dry friction coefficient",
     "gear_tilt_rad": "gear tilt (rad)", "ambient_C": "ambient temperature (°C)",
-    "viscosity_scale": "oil viscosity / the scene's"}
+    "viscosity_scale": "oil viscosity / the scene's", "roughness_Rq_m": "roughness Rq (m)"}
 FOLD_CURVE_TAIL = ("W_fold_N", "fold", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff")
 FOLD_KINDS = ("distress", "recovery", "cusp", "turn")
 

@@ -83,18 +83,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
                   FilmMesh(scene_.gear.inner_radius, scene_.gear.outer_radius, nr, nt), true, true, "gear");
   }
 
-  if (fx.asperity_contact) {
-    const Material& m1 = scene_.washer.material;
-    const Material& m2 = scene_.carrier.material;
-    const double e_eff = JacksonGreenAsperity::effective_modulus(m1.youngs_modulus, m1.poisson_ratio,
-                                                                 m2.youngs_modulus, m2.poisson_ratio);
-    // The softer material yields first (MODEL.md section 4).
-    const Material& soft = (m1.yield_strength <= m2.yield_strength) ? m1 : m2;
-    JacksonGreenAsperity asperity(e_eff, soft.yield_strength, soft.poisson_ratio,
-                                  scene_.asperities.summit_radius);
-    contact_.emplace(asperity, scene_.asperities.summit_density, scene_.asperities.summit_sigma);
-    contact_cutoff_ = contact_->cutoff_gap(1e-20);
-  }
+  build_contact();
   roelands_ = RoelandsViscosity{scene_.lubricant.mu_infinity, scene_.lubricant.g0, scene_.lubricant.s0};
 
   // Reference scales.
@@ -206,6 +195,19 @@ void BearingModel::set_speed(double speed) {
   scene_.operating.speed = speed;
 }
 
+void BearingModel::build_contact() {
+  if (!scene_.effects.asperity_contact) return;
+  const Material& m1 = scene_.washer.material;
+  const Material& m2 = scene_.carrier.material;
+  const double e_eff = JacksonGreenAsperity::effective_modulus(m1.youngs_modulus, m1.poisson_ratio,
+                                                               m2.youngs_modulus, m2.poisson_ratio);
+  // The softer material yields first (MODEL.md section 4).
+  const Material& soft = (m1.yield_strength <= m2.yield_strength) ? m1 : m2;
+  JacksonGreenAsperity asperity(e_eff, soft.yield_strength, soft.poisson_ratio, scene_.asperities.summit_radius);
+  contact_.emplace(asperity, scene_.asperities.summit_density, scene_.asperities.summit_sigma);
+  contact_cutoff_ = contact_->cutoff_gap(1e-20);
+}
+
 double BearingModel::curve_parameter(CurveParameter p) const {
   switch (p) {
     case CurveParameter::speed: return scene_.operating.speed;
@@ -213,6 +215,7 @@ double BearingModel::curve_parameter(CurveParameter p) const {
     case CurveParameter::gear_tilt: return scene_.gear.tilt;
     case CurveParameter::ambient_temperature: return scene_.operating.ambient;
     case CurveParameter::viscosity_scale: return viscosity_scale_;
+    case CurveParameter::roughness: return uniform_roughness_ ? *uniform_roughness_ : scene_.washer.roughness.rq;
   }
   return 0.0;
 }
@@ -244,6 +247,35 @@ void BearingModel::set_curve_parameter(CurveParameter p, double value) {
       if (!(value > 0)) throw std::invalid_argument("the viscosity scale must be positive");
       viscosity_scale_ = value;
       roelands_.mu_infinity = value * scene_.lubricant.mu_infinity;
+      break;
+    case CurveParameter::roughness:
+      // The films' σ and the summit population follow; the clearance scale σ_ref stays.
+      if (!(value > 0)) throw std::invalid_argument("the roughness must be positive");
+      // Rebuilding the summit population costs; the fold curve sets the same value at
+      // every evaluation.
+      if (uniform_roughness_ == value) break;
+      // Always from the scene's own surfaces, so that a value gives the same bearing
+      // whatever values came before (rounding would otherwise accumulate).
+      if (!uniform_roughness_) roughness_origin_ = {scene_.carrier, scene_.washer, scene_.gear, scene_.asperities};
+      uniform_roughness_ = value;
+      std::tie(scene_.carrier, scene_.washer, scene_.gear, scene_.asperities) = roughness_origin_;
+      set_roughness(scene_, value);
+      films_[0].sigma = combined_sigma(scene_.carrier, scene_.washer);
+      films_[1].sigma = combined_sigma(scene_.washer, scene_.gear);
+      // Its tables take ~0.1 s to integrate, and a fold curve's ∂/∂p visits p ± h and p
+      // at every corrector iteration: the last three populations are kept.
+      if (auto kept = std::find_if(roughness_contacts_.begin(), roughness_contacts_.end(),
+                                   [&](const auto& c) { return c.first == value; });
+          kept != roughness_contacts_.end()) {
+        contact_ = kept->second;
+        contact_cutoff_ = contact_->cutoff_gap(1e-20);
+        break;
+      }
+      build_contact();
+      if (contact_) {
+        if (roughness_contacts_.size() == 3) roughness_contacts_.erase(roughness_contacts_.begin());
+        roughness_contacts_.emplace_back(value, *contact_);
+      }
       break;
   }
 }

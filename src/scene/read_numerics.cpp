@@ -104,7 +104,7 @@ void read_load_grid(const MapReader& study, Scene& out) {
 void read_fold_curve(const MapReader& study, Scene& out) {
   Study& s = out.study;
   const Node name =
-      study.get("parameter", "speed, friction_coefficient, gear_tilt, ambient_temperature or viscosity_scale");
+      study.get("parameter", "speed, friction_coefficient, gear_tilt, ambient_temperature, viscosity_scale or roughness");
   s.curve_parameter = kCurveParameters.values[name.choice(kCurveParameters.names)];
   if (s.curve_parameter == CurveParameter::friction_coefficient && out.friction.law != FrictionLaw::constant)
     name.fail(fmt::format("{}: friction_coefficient varies the constant friction law's coefficient; "
@@ -126,6 +126,8 @@ void read_fold_curve(const MapReader& study, Scene& out) {
         return study.quantity(key, si::dimensionless,
                               Range{.low = 0.0, .low_open = true,
                                     .reason = "a factor on the oil's viscosity, e.g. 0.5 for half as viscous"});
+      case CurveParameter::roughness:
+        return study.quantity(key, si::length, positive);
     }
     return 0.0;
   };

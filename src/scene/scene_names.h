@@ -33,10 +33,10 @@ inline constexpr EnumNames<StudyType, 6> kStudyTypes{
     {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient,
      StudyType::sliding_choice, StudyType::distress_curve}};
 
-inline constexpr EnumNames<CurveParameter, 5> kCurveParameters{
-    {"speed", "friction_coefficient", "gear_tilt", "ambient_temperature", "viscosity_scale"},
+inline constexpr EnumNames<CurveParameter, 6> kCurveParameters{
+    {"speed", "friction_coefficient", "gear_tilt", "ambient_temperature", "viscosity_scale", "roughness"},
     {CurveParameter::speed, CurveParameter::friction_coefficient, CurveParameter::gear_tilt,
-     CurveParameter::ambient_temperature, CurveParameter::viscosity_scale}};
+     CurveParameter::ambient_temperature, CurveParameter::viscosity_scale, CurveParameter::roughness}};
 
 inline constexpr EnumNames<ErrorEstimate, 2> kErrorEstimates{
     {"none", "richardson"}, {ErrorEstimate::none, ErrorEstimate::richardson}};

@@ -174,6 +174,7 @@ void write_numerics(Writer& w, const Scene& s) {
   if (st.type == StudyType::distress_curve) {
     const char* unit = st.curve_parameter == CurveParameter::speed                  ? "rad/s"
                        : st.curve_parameter == CurveParameter::gear_tilt            ? "rad"
+                       : st.curve_parameter == CurveParameter::roughness            ? "m"
                        : st.curve_parameter == CurveParameter::ambient_temperature ? "K"
                                                                                     : "1";
     w.entry(1, "parameter", std::string(kCurveParameters.name(st.curve_parameter)));

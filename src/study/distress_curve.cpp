@@ -34,6 +34,7 @@ std::string fold_curve_column(CurveParameter p) {
     case CurveParameter::gear_tilt: return "gear_tilt_rad";
     case CurveParameter::ambient_temperature: return "ambient_C";
     case CurveParameter::viscosity_scale: return "viscosity_scale";
+    case CurveParameter::roughness: return "roughness_Rq_m";
   }
   return "parameter";
 }
@@ -48,6 +49,7 @@ std::string shown(CurveParameter p, double v) {
     case CurveParameter::gear_tilt: return fmt::format("{:.6g} mrad", 1e3 * v);
     case CurveParameter::ambient_temperature: return fmt::format("{:.6g} C", v - 273.15);
     case CurveParameter::viscosity_scale: return fmt::format("viscosity x {:.6g}", v);
+    case CurveParameter::roughness: return fmt::format("Rq {:.4g} um", 1e6 * v);
   }
   return fmt::format("{:.6g}", v);
 }

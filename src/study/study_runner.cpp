@@ -70,20 +70,9 @@ Scene with_parameter(Scene scene, MapParameter p, double value) {
     case MapParameter::gear_tilt:
       scene.gear.tilt = value;
       break;
-    case MapParameter::roughness: {
-      // Every surface gets Rq = value, Ra in the same ratio; the summits follow a texture
-      // scaled in height by k (McCool's spectral moments m0, m2, m4 all scale with k²):
-      // σs ∝ k, R ∝ 1/k, η unchanged (MODEL.md section 4).
-      const double before = std::hypot(scene.carrier.roughness.rq, scene.washer.roughness.rq);
-      for (Component* c : {&scene.carrier, &scene.washer, &scene.gear}) {
-        c->roughness.ra *= value / c->roughness.rq;
-        c->roughness.rq = value;
-      }
-      const double k = std::hypot(value, value) / before;
-      scene.asperities.summit_sigma *= k;
-      scene.asperities.summit_radius /= k;
+    case MapParameter::roughness:
+      set_roughness(scene, value);
       break;
-    }
     case MapParameter::none:
       break;
   }

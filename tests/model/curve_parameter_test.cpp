@@ -64,7 +64,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"ambient_temperature", CurveParameter::ambient_temperature, 333.15,
                            [](Scene& s) { s.operating.ambient = 333.15; }},
                       Case{"viscosity_scale", CurveParameter::viscosity_scale, 1.7,
-                           [](Scene& s) { s.lubricant.mu_infinity *= 1.7; }}),
+                           [](Scene& s) { s.lubricant.mu_infinity *= 1.7; }},
+                      Case{"roughness", CurveParameter::roughness, 0.5e-6,
+                           [](Scene& s) { set_roughness(s, 0.5e-6); }}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

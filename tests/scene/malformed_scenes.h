@@ -69,7 +69,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"distress_map_unknown_parameter", 17, 21, {"study.parameter.name: unknown value 'viscosity'", "allowed: friction_coefficient, gear_tilt, roughness"}},
     {"distress_map_friction_with_empirical_law", 19, 11, {"friction_coefficient varies the constant friction law's coefficient", "set friction.law: constant"}},
     {"distress_map_without_loads", 13, 3, {"missing required key 'load_start' in 'study'"}},
-    {"distress_curve_unknown_parameter", 12, 42, {"study.parameter: unknown value 'viscosity'", "allowed: speed, friction_coefficient, gear_tilt, ambient_temperature, viscosity_scale"}},
+    {"distress_curve_unknown_parameter", 12, 42, {"study.parameter: unknown value 'viscosity'", "allowed: speed, friction_coefficient, gear_tilt, ambient_temperature, viscosity_scale, roughness"}},
     {"distress_curve_empty_range", 12, 70, {"study.to: '545 rad/s' must differ from 'from'"}},
     {"distress_curve_with_load_steps", 12, 82, {"key 'load_steps' in 'study' does not apply with type: distress_curve", "allowed with type: distress_curve: type, parameter, from, to, load_start, load_end, bracket_width, family"}},
     {"error_estimate_unknown", 12, 95, {"study.error_estimate: unknown value 'extrapolated'", "allowed: none, richardson"}},

@@ -10,6 +10,7 @@
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <tuple>
 #include <span>
 #include <string>
 #include <vector>
@@ -203,6 +204,7 @@ class BearingModel final : public SteadySystem {
   double body_resistance(ComponentId id) const;
   const ComponentHeat* component(ComponentId id) const;
   const Film& sliding_film() const;
+  void build_contact();  // the summit population of the scene (MODEL.md section 4), if contact is on
 
   Scene scene_;
   double load_ = 0;
@@ -216,6 +218,9 @@ class BearingModel final : public SteadySystem {
   double contact_cutoff_ = 0.0;  // gap above which contact is negligible (p < 1e-20 p(0))
   RoelandsViscosity roelands_{};
   double viscosity_scale_ = 1.0;  // CurveParameter::viscosity_scale
+  std::optional<double> uniform_roughness_;  // CurveParameter::roughness, once set
+  std::tuple<Component, Component, Component, AsperityParameters> roughness_origin_;  // the scene's surfaces
+  std::vector<std::pair<double, StatisticalContact>> roughness_contacts_;  // the last few, by roughness
   double sigma_ref_ = 0, gamma_ref_ = 0, p_ref_ = 0, h_ref_ = 0, mu_ref_ = 0;
   std::vector<double> flow_scale_;  // per interior pressure node: p_ref · reference conductance
   std::vector<std::vector<double>> film_row_scale_;  // per film, per node: 1 / reference conductance

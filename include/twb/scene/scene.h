@@ -38,7 +38,8 @@ enum class MapParameter { none, friction_coefficient, gear_tilt, roughness };
 // A parameter of the bearing a fold curve is continued in (study type distress_curve),
 // set on a built model without rebuilding it (BearingModel::set_curve_parameter).
 // viscosity_scale multiplies the oil's viscosity at every temperature (1: the scene's oil).
-enum class CurveParameter { speed, friction_coefficient, gear_tilt, ambient_temperature, viscosity_scale };
+// roughness: the Rq of every surface (set_roughness).
+enum class CurveParameter { speed, friction_coefficient, gear_tilt, ambient_temperature, viscosity_scale, roughness };
 
 // How a distress search estimates the discretization error of W_d.
 enum class ErrorEstimate {
@@ -167,5 +168,10 @@ struct Scene {
   Study study;
   Output output;
 };
+
+// Every surface's roughness set to Rq = rq (Ra in the same ratio), the summits following
+// a texture scaled in height by k = new/old combined σ: McCool's spectral moments m0, m2,
+// m4 all scale with k², so σs ∝ k, R ∝ 1/k and η is unchanged (MODEL.md section 4).
+void set_roughness(Scene& scene, double rq);
 
 }  // namespace twb
