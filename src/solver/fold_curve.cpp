@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "twb/solver/kinsol_newton.h"
 #include "twb/solver/natural_continuation.h"
 
 namespace twb {
@@ -75,8 +76,20 @@ FoldCurve trace_fold_curve(SteadySystem& base, SecondParameter& parameter, const
   std::vector<double> x(fold.u.begin(), fold.u.end());
   x.push_back(fold.lambda / load_scale);
 
+  // The fold with the curve system's own borders: the located fold meets F and g within
+  // the tolerance with the borders it was located with (or was bracketed without g at
+  // all); a Newton polish at fixed p makes it a point of this system.
+  {
+    KinsolNewton polish(curve);
+    const NewtonReport rep = polish.solve(x, settings.arclength.newton);
+    if (!rep.converged) {
+      out.message = "the fold is not a solution of the fold system at the start: " + rep.message;
+      return out;
+    }
+  }
   ArclengthSettings arc = settings.arclength;
   arc.parameter_scale = settings.p_scale > 0.0 ? settings.p_scale : std::abs(parameter.value());
+  if (!(arc.parameter_scale > 0.0)) arc.parameter_scale = 1.0;
   arc.lambda_min = settings.p_min;
   arc.lambda_max = settings.p_max;
   arc.direction = settings.direction;

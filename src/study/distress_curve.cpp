@@ -107,6 +107,9 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   FoldCurveSettings fs;
   fs.p_min = std::min(st.from, st.to);
   fs.p_max = std::max(st.from, st.to);
+  // The metric's unit of the parameter: its range's size, not its value at the start
+  // (which may be 0: a speed, coefficient or tilt range from zero).
+  fs.p_scale = std::max(std::abs(st.from), std::abs(st.to));
   fs.direction = other > start ? +1 : -1;
   fs.arclength.newton = newton_settings(model.scene());
   fs.arclength.newton.max_iterations = 12;
@@ -121,16 +124,30 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     model.set_load(load);
     return model.describe(u);
   };
-  const FoldCurve curve = trace_fold_curve(model, parameter, *first->fold, fs, [&](const FoldCurvePoint& pt) {
-    say(fmt::format("[curve{}] {}: fold at {:.2f} N ({}) [{:.1f} s]", label, shown(which, pt.p), pt.lambda,
-                    pt.curvature > 0 ? "distress" : "recovery", elapsed_ms(t0) / 1000.0));
-    return true;
-  });
+  FoldCurve curve;
+  try {
+    curve = trace_fold_curve(model, parameter, *first->fold, fs, [&](const FoldCurvePoint& pt) {
+      say(fmt::format("[curve{}] {}: fold at {:.2f} N ({}) [{:.1f} s]", label, shown(which, pt.p), pt.lambda,
+                      pt.curvature > 0 ? "distress" : pt.curvature < 0 ? "recovery" : "of unknown kind",
+                      elapsed_ms(t0) / 1000.0));
+      return true;
+    });
+  } catch (const std::exception& e) {
+    curve.message = std::string("the curve could not be continued: ") + e.what();
+  }
+  if (curve.points.empty()) {
+    out.summary.push_back(fmt::format("fold curve{}: not traced from {}: {}", label, shown(which, start), curve.message));
+    return;
+  }
   const auto n = std::size_t(model.size());
   std::size_t next_turn = 0;
+  std::string kind = "distress";  // the start's: W_d, proven
   for (std::size_t k = 0; k < curve.points.size(); ++k) {
     const FoldCurvePoint& pt = curve.points[k];
-    out.fold_curve.push_back({pt.p, pt.curvature > 0 ? "distress" : "recovery", describe_at(pt.p, pt.lambda, pt.u)});
+    // (a curvature that could not be computed, NaN, keeps the previous point's kind)
+    if (pt.curvature > 0) kind = "distress";
+    if (pt.curvature < 0) kind = "recovery";
+    out.fold_curve.push_back({pt.p, kind, describe_at(pt.p, pt.lambda, pt.u)});
     const bool turns = k + 1 < curve.points.size() && pt.tangent_p * curve.points[k + 1].tangent_p < 0.0;
     if (turns && next_turn < curve.turns.size()) {
       const CurveTurn& t = curve.turns[next_turn++];

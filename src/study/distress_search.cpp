@@ -289,8 +289,9 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   FoldApproach approach;
   std::optional<ArclengthReport> around_fold;  // the arclength round the fold, once run
   BranchStates approach_states;                // its states before the turn
-  for (std::size_t t = 0; t < targets.size() && !ran_away;) {
+  for (std::size_t t = 0; t < targets.size() && !ran_away && !branch_ended;) {
     std::vector<Pending> pending;
+    near_fold = false;
     // A segment that would cross the fold the slowest mode foresees costs rejected
     // corrections: stop short of it, at 70 % of the way there (the estimate lies beyond
     // the fold, and once within 3 % of it arclength continuation takes over).
@@ -381,6 +382,13 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
                       model.speed(), low, out.states.back().state.washer_mean_temperature - 273.15, 100 * done));
       if (replaced) break;
     }
+    if (replaced) {
+      // The states after the replaced one were never accepted: their slow modes must not
+      // feed the fold estimate.
+      const bool was_disabled = approach.disabled();
+      approach = FoldApproach{};
+      if (was_disabled) approach.disable();
+    }
     if (ran_away || replaced || branch_ended) continue;
     if (near_fold) {
       say(fmt::format("  the slowest thermal mode says a fold is near {:.2f} N; arclength continuation from "
@@ -401,6 +409,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
       say("  no fold there: the branch only steepens; natural continuation goes on");
       out.diagnostics.push_back("arclength found no fold: " + around_fold->message);
       around_fold.reset();
+      approach_states.clear();
       approach.disable();
       near_fold = false;
       continue;
@@ -563,7 +572,8 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
       hot = march_load_step(model, proof.runaway_state, bracket.high, runaway.transient, settle, 0.0,
                             proof.runaway_time);
       out.runaway = std::move(proof.runaway);
-      out.runaway.insert(out.runaway.end(), hot.trajectory.begin() + 1, hot.trajectory.end());
+      // (the march's first sample is the proof's last; a march that could not start has none)
+      if (hot.trajectory.size() > 1) out.runaway.insert(out.runaway.end(), hot.trajectory.begin() + 1, hot.trajectory.end());
     } else {
       model.set_load(bracket.low);
       hot = march_load_step(model, bracket.low_state, bracket.high, runaway.transient, settle);
@@ -668,11 +678,18 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
   DistressSearchSettings from_light = settings;
   from_light.load_start = light;
   DistressSearch out = search_from(model, from_light, light_state, light_start, progress);
-  out.start_past_distress = true;
-  const std::string where =
-      out.row.distress_load ? fmt::format("W_d ≈ {:.6g} N", *out.row.distress_load) : "no W_d found from there";
-  out.row.method = fmt::format("the start at {:.6g} N is already past distress ({}, continued from {:.3g} N): {}",
-                               settings.load_start, where, light, out.row.method);
+  if (out.row.distress_load && *out.row.distress_load < settings.load_start) {
+    out.start_past_distress = true;
+    out.row.method = fmt::format("the start at {:.6g} N is already past distress (W_d ≈ {:.6g} N, continued from "
+                                 "{:.3g} N): {}",
+                                 settings.load_start, *out.row.distress_load, light, out.row.method);
+  } else {
+    // The start's branch did not lead down to the light load's state, yet the branch from
+    // there has no distress below the start: say what was done, claim nothing more.
+    out.row.method = fmt::format("the start at {:.6g} N did not continue down to the light load's state; searched "
+                                 "from {:.3g} N instead: {}",
+                                 settings.load_start, light, out.row.method);
+  }
   return out;
 }
 

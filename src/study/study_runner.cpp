@@ -137,8 +137,12 @@ void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings
   from.load_start = found.states.front().state.load;  // where the search began (a light load past distress)
   std::string why;
   const auto t0 = Clock::now();
-  const std::optional<MeshErrorEstimate> e =
-      richardson_estimate(model.scene(), model.speed(), *found.row.fold_load, from, why, progress);
+  std::optional<MeshErrorEstimate> e;
+  try {
+    e = richardson_estimate(model.scene(), model.speed(), *found.row.fold_load, from, why, progress);
+  } catch (const std::exception& failure) {
+    why = std::string("the refined mesh's search failed: ") + failure.what();
+  }
   if (!e) {
     found.row.method += "; no error estimate: " + why;
     return;

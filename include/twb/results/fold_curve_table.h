@@ -2,7 +2,7 @@
 // type distress_curve), one row per point of the curve and one per turn:
 //   <parameter>, W_fold_N, fold, T_mean_C, T_max_C, hmin_over_sigma, contact_share, f_eff
 // <parameter> is the curve's parameter with its unit (speed_rad_s, friction_coefficient,
-// gear_tilt_rad, ambient_C, viscosity_scale); fold says which fold the row is: "distress" (the branch's
+// gear_tilt_rad, ambient_C, viscosity_scale, roughness_Rq_m); fold says which fold the row is: "distress" (the branch's
 // largest load: W_d), "recovery" (its smallest: the hot branch turning back to the cool
 // one), "cusp" (where the two merge and sudden distress ends) or "turn" (the curve turns
 // back in the parameter without a cusp). The state columns describe the state at the fold.
