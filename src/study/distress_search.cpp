@@ -263,8 +263,12 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   natural.min_step = settings.bracket_width * settings.load_start;
 
   // Every state continuation accepts is judged by its linear stability, with the
-  // corrector's own factors (linear_stability.h); only where that is not conclusive
-  // does the transient decide: the load step from the previous state must settle, and
+  // corrector's own factors (linear_stability.h). A stable verdict cannot tell a jump to
+  // the hot branch (stable too): that is natural continuation's own test, which rejects
+  // a corrected state farther from the tangent's prediction than half the predicted
+  // change (a jump moves tens of kelvins where a cool step predicts a few), and near the
+  // fold, where the prediction grows, arclength continuation has taken over. Only where
+  // the stability test is not conclusive does the transient decide: the load step from the previous state must settle, and
   // on that state. Where it settles elsewhere the corrector had jumped branches: the
   // transient's state is the one the machine reaches, and continuation restarts from
   // it. The first step that runs away ends the cool branch.
