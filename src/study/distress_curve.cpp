@@ -63,7 +63,6 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   auto say = [&](const std::string& s) {
     if (progress) progress(s);
   };
-  const auto first_row = out.fold_curve.size();
 
   // The first fold, found and proven by the dynamics: at `from`, else at `to`.
   DistressSearchSettings settings;
@@ -147,12 +146,13 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     // (a curvature that could not be computed, NaN, keeps the previous point's kind)
     if (pt.curvature > 0) kind = "distress";
     if (pt.curvature < 0) kind = "recovery";
-    out.fold_curve.push_back({pt.p, kind, describe_at(pt.p, pt.lambda, pt.u)});
+    out.fold_curve.push_back({pt.p, kind, describe_at(pt.p, pt.lambda, pt.u), member});
     const bool turns = k + 1 < curve.points.size() && pt.tangent_p * curve.points[k + 1].tangent_p < 0.0;
     if (turns && next_turn < curve.turns.size()) {
       const CurveTurn& t = curve.turns[next_turn++];
       out.fold_curve.push_back(
-          {t.p, t.cusp ? "cusp" : "turn", describe_at(t.p, t.lambda, std::span<const double>(t.point.u).first(n))});
+          {t.p, t.cusp ? "cusp" : "turn", describe_at(t.p, t.lambda, std::span<const double>(t.point.u).first(n)),
+           member});
       out.summary.push_back(
           t.cusp ? fmt::format("fold curve{}: cusp at {}, {:.2f} N: the cool and hot branches merge; on the side "
                                "without a fold the bearing heats gradually, with no sudden distress",
@@ -161,7 +161,6 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
                                t.lambda));
     }
   }
-  for (std::size_t k = first_row; k < out.fold_curve.size(); ++k) out.fold_curve[k].member = member;
   // Where the curve ended: past the range's end, or inside it where continuation could
   // not go on (the reason is the continuation's own, in terms of the curve parameter).
   const double last = curve.points.back().p;
