@@ -697,6 +697,9 @@ def figure_fold_curve(data, name, column, rows):
         for r in mine:
             if r["fold"] in ("distress", "recovery"):
                 branches.setdefault(r["fold"], []).append((scale * r["p"], r["load"]))
+            elif r["fold"] == "cusp":  # where both branches end: drawn into each
+                for kind in ("distress", "recovery"):
+                    branches.setdefault(kind, []).append((scale * r["p"], r["load"]))
         distress = np.array(sorted(branches.get("distress", [])), dtype=float).reshape(-1, 2)
         recovery = np.array(sorted(branches.get("recovery", [])), dtype=float).reshape(-1, 2)
         if len(distress):

@@ -114,9 +114,10 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   fs.arclength.newton.max_iterations = 12;
   // Steps in the metric over (u, W/W_0, p/p_0): a few hundredths of the parameter's own
   // size at first, up to a tenth.
-  fs.arclength.initial_step = 0.02;
+  fs.arclength.initial_step = 0.05;
   fs.arclength.max_step = 0.2;
   fs.arclength.max_points = 400;
+  fs.arclength.easy_iterations = 4;
   const auto t0 = std::chrono::steady_clock::now();
   auto describe_at = [&](double p, double load, std::span<const double> u) {
     model.set_curve_parameter(which, p);
