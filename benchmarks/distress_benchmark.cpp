@@ -9,13 +9,13 @@
 // KLU factorization or refactorization, twb's own and inside IDA), and per W_d where the
 // study finds several.
 //
-// Measured (Release, this 2-core machine, medians of 3, CPU): map 4.76 s (3 W_d, 2
+// Measured (Release, this 2-core machine, medians of 3, CPU): map 4.86 s (3 W_d, 2
 // transients, 183 IDA steps and 350 KLU factorizations each; the previous search by
-// bisection took 60.0 s in the same session), curve 5.50 s (its cusp is located 4.0 s
-// in; 1651 KLU factorizations, mostly the fold system's), W_d with its error bar 5.22 s
-// (399 KLU factorizations), default run 6.60 s (was 16.0 s). Met: W_d with error bar and
-// the default run. Not met: the map (2.4x over) and the whole curve (1.1x; with the cusp
-// located, met): two transients near the fold take 0.7 s per W_d.
+// bisection took 60.0 s in the same session), curve 4.49 s with its cusp and recovery
+// branch (1274 KLU factorizations, mostly the fold system's), W_d with its error bar
+// 5.25 s (399 KLU factorizations), default run 6.74 s (was 16.0 s). Met: the curve, W_d
+// with error bar, the default run. Not met: the map (2.4x over): two transients near the
+// fold take 0.7 s of each W_d.
 //
 //   ./build/benchmarks/distress_benchmark --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
