@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "fold_approach.h"
+#include "fold_proof.h"
 #include "load_step_march.h"
 #include "study_support.h"
 #include "twb/solver/arclength_continuation.h"
@@ -30,16 +32,6 @@ SolvedState record(const BearingModel& model, std::span<const double> u, long it
   return row;
 }
 
-// Two Newton-converged states of the same branch at the same load agree to about the
-// residual tolerance times the Jacobian's conditioning (≲ 1e-7 in the scaled unknowns:
-// σ, K); states of different branches differ by whole kelvins and σ. 1e-4 separates
-// them with orders of magnitude on either side.
-bool same_state(std::span<const double> a, std::span<const double> b) {
-  double d = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) d = std::max(d, std::abs(a[k] - b[k]));
-  return d <= 1e-4;
-}
-
 // The light load a start is checked against: a tenth of it. On the paper's bearing the
 // cool branch is the only one a tenth of the distress load (the hot branch turns back
 // well above that), and the branch down there costs a handful of continuation steps.
@@ -60,41 +52,10 @@ double steepest_sensitivity(const std::vector<SolvedState>& states) {
   return best;
 }
 
-// Where the fold is, from the slowest relaxation rate μ of the states approaching it:
-// at a saddle-node μ vanishes like √(λ* − λ), so μ² is linear in λ near the fold, and
-// the line through the last two states' μ² meets zero near λ*. Farther away μ² bends
-// (the estimate then lies beyond the fold), so the estimate only says when to hand
-// over to arclength continuation, never where the fold is.
-class FoldApproach {
- public:
-  void add(double load, double rate) {
-    previous_ = last_;
-    last_ = {load, rate * rate};
-  }
-  // No estimate (inf) until μ² falls between two states.
-  double fold_estimate() const {
-    if (!(previous_.first > 0.0) || !(last_.second < previous_.second)) return INFINITY;
-    const double slope = (previous_.second - last_.second) / (last_.first - previous_.first);
-    return last_.first + last_.second / slope;
-  }
-  // Within 3 % of the load: arclength continuation's first steps (0.2 % of the load,
-  // growing 1.5-fold) reach the fold in a few states from there.
-  bool near(double load) const { return !disabled_ && fold_estimate() - load < 0.03 * load; }
-  void disable() { disabled_ = true; }
-  bool disabled() const { return disabled_; }
-
- private:
-  bool disabled_ = false;
-  std::pair<double, double> previous_{0.0, 0.0}, last_{0.0, 0.0};
-};
-
 // Pseudo-arclength continuation from a state near the end of the cool branch round its
 // first turning point only: once the branch has turned back 2 % below the start the
-// fold has been passed (and located), and the rest of the S is not needed.
-// The cool branch's states, (load, state), in the order continuation found them.
-using BranchStates = std::vector<std::pair<double, std::vector<double>>>;
-
-// cool_side, if given, receives the states arclength continuation passes before the turn.
+// fold has been passed (and located), and the rest of the S is not needed. cool_side,
+// if given, receives the states it passes before the turn.
 ArclengthReport round_the_fold(BearingModel& model, std::span<const double> state, double load, double load_end,
                                const NewtonSettings& newton, BranchStates* cool_side = nullptr) {
   ArclengthSettings arc;
@@ -115,79 +76,6 @@ ArclengthReport round_the_fold(BearingModel& model, std::span<const double> stat
   });
 }
 
-
-// The fold proven by the dynamics: from the highest cool state below it, a load step to
-// just below the fold (half a bracket width) must settle on the cool branch, and from
-// there a step to just above it must run away. Those two transients are the bracket;
-// not valid, with the reason, when the dynamics disagree.
-struct FoldProof {
-  Bracket bracket;
-  // The step above the fold as far as its verdict: its trajectory and last state, from
-  // which the march to where it goes continues.
-  std::vector<TrajectorySample> runaway;
-  std::vector<double> runaway_state;
-  double runaway_time = 0.0;
-};
-
-template <class Say>
-FoldProof prove_fold(BearingModel& model, const BranchStates& cool, const BranchStates& approach, double fold,
-                     const RunawaySettings& runaway, bool keep_trajectory, SearchCounts& counts, const Say& say) {
-  FoldProof proof;
-  Bracket& b = proof.bracket;
-  const double half = 0.5 * runaway.relative_width;
-  b.low = fold * (1.0 - half);
-  b.high = fold * (1.0 + half);
-  auto start = std::find_if(cool.rbegin(), cool.rend(), [&](const auto& c) { return c.first < b.low; });
-  if (start == cool.rend()) {
-    b.message = fmt::format("no cool state below the fold's bracket at {:.6g} N to step from", b.low);
-    return proof;
-  }
-  say(fmt::format("  proving the fold at {:.2f} N: a load step {:.2f} -> {:.2f} N", fold, start->first, b.low));
-  // Where the step settles must be the cool branch's state: the branch test continues
-  // the branch there, from the nearest state arclength continuation passed on its way to
-  // the fold when that is nearer than the step's start (near the fold, natural
-  // continuation over the whole step creeps).
-  RunawaySettings below_settings = runaway;
-  const auto nearest = std::find_if(approach.rbegin(), approach.rend(), [&](const auto& c) { return c.first < b.low; });
-  if (runaway.on_branch && nearest != approach.rend() && nearest->first > start->first)
-    below_settings.on_branch = [test = runaway.on_branch, &nearest](SteadySystem& system, std::span<const double>,
-                                                                     double, std::span<const double> settled,
-                                                                     double load) {
-      return test(system, nearest->second, nearest->first, settled, load);
-    };
-  model.set_load(start->first);
-  StepOutcome below = classify_step(model, start->second, b.low, below_settings);
-  counts.add(below);
-  b.steps.push_back({b.low, below.verdict, below.evidence, below.time, below.reason});
-  if (!below.settled()) {
-    b.message = fmt::format("the dynamics disagree with the fold: the step to {:.6g} N, below it, runs away ({})", b.low,
-                            below.reason);
-    return proof;
-  }
-  say(fmt::format("  proving the fold at {:.2f} N: it settles; a load step {:.2f} -> {:.2f} N", fold, b.low, b.high));
-  model.set_load(b.low);
-  const TransientObserver record_runaway = [&](double t, std::span<const double> u) {
-    TrajectorySample& sample = proof.runaway.emplace_back();
-    sample.time = t;
-    sample.state = model.describe(u);
-  };
-  StepOutcome above =
-      classify_step(model, below.final_state, b.high, runaway, keep_trajectory ? record_runaway : TransientObserver{});
-  counts.add(above);
-  b.steps.push_back({b.high, above.verdict, above.evidence, above.time, above.reason});
-  if (above.settled()) {
-    b.message = fmt::format("the dynamics disagree with the fold: the step to {:.6g} N, above it, settles ({})",
-                            b.high, above.reason);
-    return proof;
-  }
-  say(fmt::format("  proving the fold at {:.2f} N: it runs away ({})", fold, above.reason));
-  b.low_state = std::move(below.final_state);
-  proof.runaway_state = std::move(above.final_state);
-  proof.runaway_time = above.time;
-  model.set_load(b.low);
-  b.valid = true;
-  return proof;
-}
 
 }  // namespace
 
