@@ -201,7 +201,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
         Pending& q = pending.emplace_back(
             Pending{{p.u.begin(), p.u.end()}, p.lambda, p.corrector_iterations, 0.0, Stability::inconclusive, {}});
         if (dynamics && p.factors) {
-          const StabilityReport st = linear_stability(model, *p.factors);
+          const StabilityReport st = linear_stability(model, *p.factors, settings.stability);
           ++out.counts.stability_tests;
           q.stability = st.verdict;
           q.why = st.reason;

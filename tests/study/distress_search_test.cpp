@@ -80,6 +80,27 @@ TEST_F(BearingDistress, TheFoldIsProvenByTwoTransients) {
   EXPECT_GE(found_->counts.stability_tests, long(found_->cool_states) - 1);
 }
 
+// Where the stability test cannot decide (here made to: two Arnoldi vectors cannot
+// resolve the three slowest modes it asks for), every state goes to the transient, as
+// before the test existed, and the search reaches the same proven fold.
+TEST_F(BearingDistress, InconclusiveStabilityFallsBackToTransients) {
+  BearingModel model(coarse_scene(545.0));
+  DistressSearchSettings settings;
+  settings.load_start = 100.0;
+  settings.load_end = 600.0;
+  settings.stability.krylov_dimension = 2;
+  const DistressSearch found = search_distress(model, settings, {});
+  ASSERT_TRUE(found.row.distress_load && found_->row.distress_load) << found.row.method;
+  // The fold located again from another state of the branch: the same root of the
+  // minimally augmented system to its tolerance (F and g within 1e-10; W* then moves by
+  // ~1e-9 relative), far inside 1e-7.
+  EXPECT_NEAR(*found.row.fold_load, *found_->row.fold_load, 1e-7 * *found_->row.fold_load);
+  EXPECT_NE(found.row.method.find("proven by transients"), std::string::npos) << found.row.method;
+  // One transient per state past the start, besides the proof's two.
+  EXPECT_GE(found.counts.transients, long(found.cool_states) - 1 + 2);
+  EXPECT_GT(found.counts.transients, found_->counts.transients);
+}
+
 // 1 % either side of W_d: from the steady state at the bracket's low load, the step
 // below settles on a steady state and the step above runs away.
 TEST_F(BearingDistress, StepBelowSettlesStepAboveRunsAway) {

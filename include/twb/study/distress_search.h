@@ -30,6 +30,7 @@
 #include "twb/results/states_table.h"
 #include "twb/results/trajectory_table.h"
 #include "twb/solver/fold_location.h"
+#include "twb/solver/linear_stability.h"
 #include "twb/solver/runaway.h"
 
 namespace twb {
@@ -47,6 +48,9 @@ struct DistressSearchSettings {
   // The fold of the branch continued from load_start only, without transients or a
   // check of the start's branch (the error estimate's refined meshes): row.fold_load.
   bool fold_only = false;
+  // How each cool-branch state's stability is judged (an inconclusive verdict sends the
+  // state to the transient).
+  StabilitySettings stability;
   // load_sweep: after distress, go on from the hot state the runaway reached.
   bool continue_past_distress = false;
 };
