@@ -43,7 +43,7 @@ int check(const std::string& path, const std::vector<std::string>& overrides) {
 }
 
 int run(const std::string& path, const std::vector<std::string>& overrides, std::string out_dir, bool quiet,
-        bool verbose) {
+        bool verbose, int threads) {
   const auto t0 = std::chrono::steady_clock::now();
   const twb::Scene scene = twb::load_scene(path, overrides);
   if (out_dir.empty()) out_dir = scene.output.directory;
@@ -52,7 +52,8 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
   if (!quiet) std::cerr << fmt::format("twb: {} unknowns, {} Jacobian nonzeros\n", model.size(), model.pattern().nnz());
 
   twb::StudyOutcome outcome =
-      twb::run_study(model, quiet ? twb::ProgressReport{} : [](const std::string& s) { std::cerr << s << "\n"; });
+      twb::run_study(model, quiet ? twb::ProgressReport{} : [](const std::string& s) { std::cerr << s << "\n"; },
+                     twb::RunOptions{.threads = threads});
   outcome.timings.setup_ms = setup_ms;
   outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
@@ -118,6 +119,11 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--set", overrides, "override a key: path=value, e.g. operating.load=\"800 N\"");
   run_cmd->add_flag("-q,--quiet", quiet, "no progress on stderr");
   bool verbose = false;
+  int threads = 0;
+  run_cmd->add_option("--threads", threads,
+                      "threads for a study's independent searches (speeds, parameter values); default: one per core. "
+                      "The results are the same for any number")
+      ->check(CLI::NonNegativeNumber);
   run_cmd->add_flag("-v,--verbose", verbose,
                     "also the solvers' own words where a search went on regardless (e.g. why natural "
                     "continuation stopped at a fold)");
@@ -131,7 +137,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*check_cmd) return check(scene_path, overrides);
-    return run(scene_path, overrides, out_dir, quiet, verbose);
+    return run(scene_path, overrides, out_dir, quiet, verbose, threads);
   } catch (const twb::InputError& e) {
     std::cerr << e.what() << "\n";
     return exit_invalid_input;

@@ -1,7 +1,12 @@
 #include "twb/study/study_runner.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <thread>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -155,66 +160,119 @@ void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings
                          e->fine_fold, e->fine_mesh, e->extrapolated, e->error, elapsed_ms(t0) / 1000.0));
 }
 
-// One distress search per variant and speed, with progress lines "[k/n] ..." and the
-// time left; a search that throws becomes a failed row, so that the study's other
-// searches are kept.
+// One search of run_searches: its own model (no state shared between threads), found
+// and tagged with its run.
+struct SearchTask {
+  const Variant* variant = nullptr;
+  std::size_t speed_index = 0;
+  double speed = 0.0;
+};
+struct SearchDone {
+  std::unique_ptr<BearingModel> model;
+  DistressSearch found;
+  long klu_factorizations = 0;  // the whole task's, its error bar's search included
+};
+
+SearchDone search_one(const BearingModel& base, const SearchTask& task, const DistressSearchSettings& settings,
+                      const ProgressReport& progress) {
+  SearchDone done;
+  DistressSearch& found = done.found;
+  const Variant& variant = *task.variant;
+  const SparseLu::Counts before = SparseLu::thread_counts();  // this thread's, so this task's
+  try {
+    done.model = std::make_unique<BearingModel>(variant.scene ? *variant.scene : base.scene());
+    done.model->set_speed(task.speed);
+    found = search_distress(*done.model, settings, progress);
+  } catch (const std::exception& e) {
+    found = DistressSearch{};
+    found.failed = true;
+    found.row.speed = task.speed;
+    found.row.method = std::string("solver failure: ") + e.what();
+    found.message = found.row.method;
+  }
+  if (done.model) estimate_mesh_error(*done.model, settings, found, progress);
+  const SparseLu::Counts& after = SparseLu::thread_counts();
+  done.klu_factorizations = after.factorizations - before.factorizations + after.refactorizations -
+                            before.refactorizations + found.counts.ida_factorizations;
+  found.row.parameter = variant.parameter;
+  found.row.sliding = variant.sliding;
+  for (std::size_t i = 0; i < found.states.size(); ++i) {
+    SolvedState& state = found.states[i];
+    state.parameter = variant.parameter;
+    state.sliding = variant.sliding;
+    state.branch = i < found.cool_states ? "cool" : "hot";
+  }
+  for (TrajectorySample& sample : found.runaway) {
+    sample.parameter = variant.parameter;
+    sample.sliding = variant.sliding;
+  }
+  return done;
+}
+
+// One distress search per variant and speed, on `threads` threads. Every search builds
+// its own model and solvers, so a search's numbers do not depend on which thread ran it
+// or on what ran before; results are handed to `take` in the order of the study (variant
+// outer, speed inner), each as soon as all before it are, so the study's files are the
+// same, byte for byte, whatever the thread count. Progress lines "[k/n] ..." with the time
+// left; a search that throws becomes a failed row, so that the study's other searches are
+// kept.
 void run_searches(BearingModel& base, const std::vector<Variant>& variants, const DistressSearchSettings& settings,
-                  const ProgressReport& progress, RunTimings& timings, std::vector<std::string>& diagnostics,
-                  const SearchResult& take) {
+                  const ProgressReport& progress, int threads, RunTimings& timings,
+                  std::vector<std::string>& diagnostics, const SearchResult& take) {
   const std::vector<double> speeds = study_speeds(base);
-  const std::size_t total = variants.size() * speeds.size();
-  std::size_t done = 0;
+  std::vector<SearchTask> tasks;
+  for (const Variant& variant : variants)
+    for (std::size_t k = 0; k < speeds.size(); ++k) tasks.push_back({&variant, k, speeds[k]});
+  const std::size_t total = tasks.size();
+  std::mutex lock;  // guards everything below it and the progress stream
+  const ProgressReport say = progress ? ProgressReport([&](const std::string& s) {
+    const std::lock_guard<std::mutex> hold(lock);
+    progress(s);
+  })
+                                      : ProgressReport{};
+  std::map<std::size_t, SearchDone> ready;
+  std::size_t next_to_take = 0, done = 0;
   const auto t0 = Clock::now();
-  for (const Variant& variant : variants) {
-    std::optional<BearingModel> own;
-    if (variant.scene) own.emplace(*variant.scene);
-    BearingModel& model = own ? *own : base;
-    for (std::size_t k = 0; k < speeds.size(); ++k) {
-      const double speed = speeds[k];
-      model.set_speed(speed);
-      if (progress) progress(fmt::format("[{}/{}] {:.6g} rad/s{}", done + 1, total, speed, variant.label));
-      DistressSearch found;
-      try {
-        found = search_distress(model, settings, progress);
-      } catch (const std::exception& e) {
-        found = DistressSearch{};
-        found.failed = true;
-        found.row.speed = speed;
-        found.row.method = std::string("solver failure: ") + e.what();
-        found.message = found.row.method;
-      }
-      estimate_mesh_error(model, settings, found, progress);
-      for (const std::string& d : found.diagnostics)
-        diagnostics.push_back(fmt::format("{:.6g} rad/s{}: {}", speed, variant.label, d));
-      timings.transients += found.counts.transients;
-      timings.ida_steps += found.counts.ida_steps;
-      timings.ida_factorizations += found.counts.ida_factorizations;
-      found.row.parameter = variant.parameter;
-      found.row.sliding = variant.sliding;
-      for (std::size_t i = 0; i < found.states.size(); ++i) {
-        SolvedState& state = found.states[i];
-        state.parameter = variant.parameter;
-        state.sliding = variant.sliding;
-        state.branch = i < found.cool_states ? "cool" : "hot";
-      }
-      for (TrajectorySample& sample : found.runaway) {
-        sample.parameter = variant.parameter;
-        sample.sliding = variant.sliding;
-      }
-      take(variant, k, model, found);
+  std::atomic<std::size_t> next_task{0};
+  auto work = [&]() {
+    for (std::size_t i; (i = next_task++) < total;) {
+      const SearchTask& task = tasks[i];
+      if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
+      SearchDone result = search_one(base, task, settings, say);
+      const std::lock_guard<std::mutex> hold(lock);
+      ready.emplace(i, std::move(result));
       ++done;
-      if (progress) {
-        const double per_search = elapsed_ms(t0) / double(done);
-        progress(fmt::format("[{}/{}] done: W_d = {} ({}); {} stability tests, {} transients ({} IDA steps), {} KLU "
-                             "factorizations; about {:.0f} s left",
-                             done, total,
-                             found.row.distress_load ? fmt::format("{:.2f} N", *found.row.distress_load) : "none",
-                             found.row.method, found.counts.stability_tests, found.counts.transients,
-                             found.counts.ida_steps, found.counts.klu_factorizations,
-                             per_search * double(total - done) / 1000.0));
+      for (auto it = ready.find(next_to_take); it != ready.end(); it = ready.find(next_to_take)) {
+        const SearchTask& t = tasks[it->first];
+        DistressSearch& found = it->second.found;
+        for (const std::string& d : found.diagnostics)
+          diagnostics.push_back(fmt::format("{:.6g} rad/s{}: {}", t.speed, t.variant->label, d));
+        timings.transients += found.counts.transients;
+        timings.ida_steps += found.counts.ida_steps;
+        timings.ida_factorizations += found.counts.ida_factorizations;
+        timings.klu_factorizations += it->second.klu_factorizations;
+        if (it->second.model) take(*t.variant, t.speed_index, *it->second.model, found);
+        else take(*t.variant, t.speed_index, base, found);
+        if (progress) {
+          const double per_search = elapsed_ms(t0) / double(done);
+          progress(fmt::format("[{}/{}] done: W_d = {} ({}); {} stability tests, {} transients ({} IDA steps), {} "
+                               "KLU factorizations; about {:.0f} s left",
+                               it->first + 1, total,
+                               found.row.distress_load ? fmt::format("{:.2f} N", *found.row.distress_load) : "none",
+                               found.row.method, found.counts.stability_tests, found.counts.transients,
+                               found.counts.ida_steps, found.counts.klu_factorizations,
+                               per_search * double(total - done) / 1000.0));
+        }
+        ready.erase(it);
+        ++next_to_take;
       }
     }
-  }
+  };
+  const std::size_t workers = std::min<std::size_t>(std::max(threads, 1), std::max<std::size_t>(total, 1));
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
 }
 
 std::vector<double> load_grid(const Study& st) {
@@ -247,9 +305,9 @@ void keep_failure(StudyOutcome& out, const DistressSearch& found) {
   out.message += (out.message.empty() ? "" : "; ") + found.message;
 }
 
-void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
+void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads) {
   const std::vector<Variant> variants = parameter_variants(model.scene(), out.parameter_column);
-  run_searches(model, variants, grid_settings(model.scene().study), progress, out.timings, out.diagnostics,
+  run_searches(model, variants, grid_settings(model.scene().study), progress, threads, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
                  out.states.insert(out.states.end(), found.states.begin(), found.states.end());
                  out.trajectory.insert(out.trajectory.end(), found.runaway.begin(), found.runaway.end());
@@ -258,11 +316,11 @@ void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport
                });
 }
 
-void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress) {
+void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, int threads) {
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
   DistressSearchSettings settings = range_settings(base.scene().study);
   settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
-  run_searches(base, variants, settings, progress, out.timings, out.diagnostics,
+  run_searches(base, variants, settings, progress, threads, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
     out.distress.push_back(found.row);
     // The cool branch's states are results too (f_eff, temperature against load).
@@ -277,7 +335,7 @@ void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressRepor
 // at every speed, each continued past its own distress; at every grid load the one of
 // lower friction torque is chosen, the paper's assumption that the washer settles where
 // the friction loss is least.
-void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressReport& progress) {
+void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, int threads) {
   const Study& st = base.scene().study;
   out.sliding_column = true;
   std::vector<Variant> variants;
@@ -291,7 +349,7 @@ void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressRep
   // Per speed and grid load, the state of each configuration that reached it.
   std::vector<std::vector<std::vector<SlidingRow>>> at(study_speeds(base).size(),
                                                         std::vector<std::vector<SlidingRow>>(grid.size()));
-  run_searches(base, variants, grid_settings(st), progress, out.timings, out.diagnostics,
+  run_searches(base, variants, grid_settings(st), progress, threads, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t speed, const BearingModel& model, DistressSearch& found) {
     const auto film = std::find_if(model.films().begin(), model.films().end(), [](const Film& f) { return f.sliding; });
     const double area = film->mesh.area();
@@ -343,7 +401,8 @@ void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport&
 
 }  // namespace
 
-StudyOutcome run_study(BearingModel& model, const ProgressReport& progress) {
+StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, const RunOptions& options) {
+  const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   StudyOutcome out;
   const auto t0 = Clock::now();
   const SparseLu::Counts klu_before = SparseLu::thread_counts();
@@ -352,25 +411,29 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress) {
       run_point(model, out);
       break;
     case StudyType::load_sweep:
-      run_load_sweep(model, out, progress);
+      run_load_sweep(model, out, progress, threads);
       break;
     case StudyType::distress_map:
-      run_distress_map(model, out, progress);
+      run_distress_map(model, out, progress, threads);
       break;
     case StudyType::transient:
       run_transient(model, out, progress);
       break;
     case StudyType::sliding_choice:
-      run_sliding_choice(model, out, progress);
+      run_sliding_choice(model, out, progress, threads);
       break;
     case StudyType::distress_curve:
       run_distress_curve(model, out, progress);
       break;
   }
-  const SparseLu::Counts& klu_after = SparseLu::thread_counts();
-  out.timings.klu_factorizations = klu_after.factorizations - klu_before.factorizations +
-                                   klu_after.refactorizations - klu_before.refactorizations +
-                                   out.timings.ida_factorizations;
+  // Searches run on worker threads count their own (run_searches); the rest ran here.
+  const StudyType type = model.scene().study.type;
+  if (type != StudyType::load_sweep && type != StudyType::distress_map && type != StudyType::sliding_choice) {
+    const SparseLu::Counts& klu_after = SparseLu::thread_counts();
+    out.timings.klu_factorizations = klu_after.factorizations - klu_before.factorizations +
+                                     klu_after.refactorizations - klu_before.refactorizations +
+                                     out.timings.ida_factorizations;
+  }
   out.timings.states = int(out.states.size());
   out.timings.solve_ms = elapsed_ms(t0);
   return out;

@@ -145,5 +145,30 @@ TEST(StudyRunner, SlidingChoiceKeepsTheLowerTorque) {
   EXPECT_GT(out.sliding[0].solved.state.fluid_force, out.sliding[1].solved.state.fluid_force);
 }
 
+// Independent searches on several threads give the same study: every number written
+// (the timing column wall_ms aside) and the order of rows, whatever the thread count. A
+// distress map over three speeds and two friction coefficients (six searches of unequal
+// length: with and without a fold) on one, two and four threads.
+TEST(StudyRunner, ThreadsGiveTheSameResults) {
+  Scene scene = coarse_grid(StudyType::distress_map, {136.0, 545.0, 953.0});
+  scene.friction.law = FrictionLaw::constant;
+  scene.study.parameter = MapParameter::friction_coefficient;
+  scene.study.parameter_values = {0.2, 0.3};
+  scene.study.error_estimate = ErrorEstimate::none;
+  auto outcome = [&](int threads) {
+    BearingModel model(scene);
+    StudyOutcome out = run_study(model, {}, RunOptions{.threads = threads});
+    for (SolvedState& s : out.states) s.wall_ms = 0.0;
+    return std::pair{distress_csv(out.distress, out.parameter_column), states_csv(out.states, out.parameter_column)};
+  };
+  const auto one = outcome(1);
+  ASSERT_NE(one.first.find("545,0.2,"), std::string::npos) << one.first;
+  for (const int threads : {2, 4}) {
+    const auto many = outcome(threads);
+    EXPECT_EQ(many.first, one.first) << threads << " threads";
+    EXPECT_EQ(many.second, one.second) << threads << " threads";
+  }
+}
+
 }  // namespace
 }  // namespace twb

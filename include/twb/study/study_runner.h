@@ -37,7 +37,13 @@ struct StudyOutcome {
 
 using ProgressReport = std::function<void(const std::string&)>;
 
+struct RunOptions {
+  // Threads for the study's independent searches (speeds, parameter values, sliding
+  // films); 0: one per core. The results do not depend on it.
+  int threads = 1;
+};
+
 // Throws std::invalid_argument for a study this version cannot run.
-StudyOutcome run_study(BearingModel& model, const ProgressReport& progress);
+StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, const RunOptions& options = {});
 
 }  // namespace twb
