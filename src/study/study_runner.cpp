@@ -1,7 +1,6 @@
 #include "twb/study/study_runner.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <map>
 #include <memory>
@@ -15,6 +14,7 @@
 
 #include "distress_curve.h"
 #include "load_step_march.h"
+#include "parallel.h"
 #include "richardson.h"
 #include "study_support.h"
 #include "twb/scene/scene_loader.h"
@@ -106,13 +106,37 @@ std::vector<Variant> parameter_variants(const Scene& scene, std::string& column)
 
 // distress_curve: one fold curve for the scene's bearing, or one per member of its family
 // (study.family: the map parameters).
-void run_distress_curve(BearingModel& base, StudyOutcome& out, const ProgressReport& progress) {
+// The members of a family are independent: on `threads` threads, each with its own
+// model, their outcomes joined in the family's order (the same files for any count).
+void run_distress_curve(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, int threads) {
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
   out.fold_curve_column = fold_curve_column(base.scene().study.curve_parameter);
-  for (const Variant& variant : variants) {
-    std::optional<BearingModel> own;
-    if (variant.scene) own.emplace(*variant.scene);
-    run_fold_curve(own ? *own : base, variant.parameter, variant.label, out, progress);
+  std::vector<StudyOutcome> parts(variants.size());
+  std::mutex lock;
+  const ProgressReport say = one_line_at_a_time(progress, lock);
+  run_in_parallel(variants.size(), threads, [&](std::size_t i) {
+    const SparseLu::Counts before = SparseLu::thread_counts();
+    StudyOutcome& part = parts[i];
+    try {
+      BearingModel model(variants[i].scene ? *variants[i].scene : base.scene());
+      run_fold_curve(model, variants[i].parameter, variants[i].label, part, say);
+    } catch (const std::exception& e) {
+      part.summary.push_back(fmt::format("fold curve{}: failed: {}", variants[i].label, e.what()));
+    }
+    const SparseLu::Counts& after = SparseLu::thread_counts();
+    part.timings.klu_factorizations = after.factorizations - before.factorizations + after.refactorizations -
+                                      before.refactorizations + part.timings.ida_factorizations;
+  });
+  for (StudyOutcome& part : parts) {
+    out.states.insert(out.states.end(), part.states.begin(), part.states.end());
+    out.distress.insert(out.distress.end(), part.distress.begin(), part.distress.end());
+    out.fold_curve.insert(out.fold_curve.end(), part.fold_curve.begin(), part.fold_curve.end());
+    out.summary.insert(out.summary.end(), part.summary.begin(), part.summary.end());
+    out.diagnostics.insert(out.diagnostics.end(), part.diagnostics.begin(), part.diagnostics.end());
+    out.timings.transients += part.timings.transients;
+    out.timings.ida_steps += part.timings.ida_steps;
+    out.timings.ida_factorizations += part.timings.ida_factorizations;
+    out.timings.klu_factorizations += part.timings.klu_factorizations;
   }
 }
 
@@ -225,54 +249,43 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
     for (std::size_t k = 0; k < speeds.size(); ++k) tasks.push_back({&variant, k, speeds[k]});
   const std::size_t total = tasks.size();
   std::mutex lock;  // guards everything below it and the progress stream
-  const ProgressReport say = progress ? ProgressReport([&](const std::string& s) {
-    const std::lock_guard<std::mutex> hold(lock);
-    progress(s);
-  })
-                                      : ProgressReport{};
+  const ProgressReport say = one_line_at_a_time(progress, lock);
   std::map<std::size_t, SearchDone> ready;
   std::size_t next_to_take = 0, done = 0;
   const auto t0 = Clock::now();
-  std::atomic<std::size_t> next_task{0};
-  auto work = [&]() {
-    for (std::size_t i; (i = next_task++) < total;) {
-      const SearchTask& task = tasks[i];
-      if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
-      SearchDone result = search_one(base, task, settings, say);
-      const std::lock_guard<std::mutex> hold(lock);
-      ready.emplace(i, std::move(result));
-      ++done;
-      for (auto it = ready.find(next_to_take); it != ready.end(); it = ready.find(next_to_take)) {
-        const SearchTask& t = tasks[it->first];
-        DistressSearch& found = it->second.found;
-        for (const std::string& d : found.diagnostics)
-          diagnostics.push_back(fmt::format("{:.6g} rad/s{}: {}", t.speed, t.variant->label, d));
-        timings.transients += found.counts.transients;
-        timings.ida_steps += found.counts.ida_steps;
-        timings.ida_factorizations += found.counts.ida_factorizations;
-        timings.klu_factorizations += it->second.klu_factorizations;
-        if (it->second.model) take(*t.variant, t.speed_index, *it->second.model, found);
-        else take(*t.variant, t.speed_index, base, found);
-        if (progress) {
-          const double per_search = elapsed_ms(t0) / double(done);
-          progress(fmt::format("[{}/{}] done: W_d = {} ({}); {} stability tests, {} transients ({} IDA steps), {} "
-                               "KLU factorizations; about {:.0f} s left",
-                               it->first + 1, total,
-                               found.row.distress_load ? fmt::format("{:.2f} N", *found.row.distress_load) : "none",
-                               found.row.method, found.counts.stability_tests, found.counts.transients,
-                               found.counts.ida_steps, found.counts.klu_factorizations,
-                               per_search * double(total - done) / 1000.0));
-        }
-        ready.erase(it);
-        ++next_to_take;
+  run_in_parallel(total, threads, [&](std::size_t i) {
+    const SearchTask& task = tasks[i];
+    if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
+    SearchDone result = search_one(base, task, settings, say);
+    const std::lock_guard<std::mutex> hold(lock);
+    ready.emplace(i, std::move(result));
+    ++done;
+    for (auto it = ready.find(next_to_take); it != ready.end(); it = ready.find(next_to_take)) {
+      const SearchTask& t = tasks[it->first];
+      DistressSearch& found = it->second.found;
+      for (const std::string& d : found.diagnostics)
+        diagnostics.push_back(fmt::format("{:.6g} rad/s{}: {}", t.speed, t.variant->label, d));
+      timings.transients += found.counts.transients;
+      timings.ida_steps += found.counts.ida_steps;
+      timings.ida_factorizations += found.counts.ida_factorizations;
+      timings.klu_factorizations += it->second.klu_factorizations;
+      if (it->second.model) take(*t.variant, t.speed_index, *it->second.model, found);
+      else take(*t.variant, t.speed_index, base, found);
+      if (progress) {
+        // Wall time per finished search (the threads' searches finish in parallel).
+        const double per_search = elapsed_ms(t0) / double(done);
+        progress(fmt::format("[{}/{}] done: W_d = {} ({}); {} stability tests, {} transients ({} IDA steps), {} "
+                             "KLU factorizations; about {:.0f} s left",
+                             it->first + 1, total,
+                             found.row.distress_load ? fmt::format("{:.2f} N", *found.row.distress_load) : "none",
+                             found.row.method, found.counts.stability_tests, found.counts.transients,
+                             found.counts.ida_steps, found.counts.klu_factorizations,
+                             per_search * double(total - done) / 1000.0));
       }
+      ready.erase(it);
+      ++next_to_take;
     }
-  };
-  const std::size_t workers = std::min<std::size_t>(std::max(threads, 1), std::max<std::size_t>(total, 1));
-  std::vector<std::thread> pool;
-  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  });
 }
 
 std::vector<double> load_grid(const Study& st) {
@@ -423,12 +436,13 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
       run_sliding_choice(model, out, progress, threads);
       break;
     case StudyType::distress_curve:
-      run_distress_curve(model, out, progress);
+      run_distress_curve(model, out, progress, threads);
       break;
   }
   // Searches run on worker threads count their own (run_searches); the rest ran here.
   const StudyType type = model.scene().study.type;
-  if (type != StudyType::load_sweep && type != StudyType::distress_map && type != StudyType::sliding_choice) {
+  if (type != StudyType::load_sweep && type != StudyType::distress_map && type != StudyType::sliding_choice &&
+      type != StudyType::distress_curve) {
     const SparseLu::Counts& klu_after = SparseLu::thread_counts();
     out.timings.klu_factorizations = klu_after.factorizations - klu_before.factorizations +
                                      klu_after.refactorizations - klu_before.refactorizations +

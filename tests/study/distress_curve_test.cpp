@@ -167,6 +167,12 @@ TEST(DistressCurve, FamilyOfCurvesByFrictionCoefficient) {
   EXPECT_GT(cusps[0], cusps[1]);
   EXPECT_EQ(std::count_if(out.fold_curve.begin(), out.fold_curve.end(), [](const FoldCurveRow& r) { return !r.member; }),
             0);
+  // The members on two threads: the same curves, row for row, to the last bit.
+  BearingModel again(scene);
+  const StudyOutcome parallel = run_study(again, {}, RunOptions{.threads = 2});
+  EXPECT_EQ(fold_curve_csv(parallel.fold_curve, parallel.fold_curve_column, parallel.parameter_column),
+            fold_curve_csv(out.fold_curve, out.fold_curve_column, out.parameter_column));
+  EXPECT_EQ(distress_csv(parallel.distress, parallel.parameter_column), distress_csv(out.distress, out.parameter_column));
 }
 
 }  // namespace

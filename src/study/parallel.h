@@ -1,0 +1,42 @@
+// The study's independent pieces on several threads: each piece runs whole on one thread
+// with its own model and solvers (no state shared between them), so the results do not
+// depend on the thread count; callers put them in order themselves.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "twb/study/study_runner.h"
+
+namespace twb {
+
+// Calls piece(i) for every i in [0, count), on up to `threads` threads (the calling one
+// among them), each i exactly once; returns when all are done.
+template <class Piece>
+void run_in_parallel(std::size_t count, int threads, const Piece& piece) {
+  std::atomic<std::size_t> next{0};
+  auto work = [&]() {
+    for (std::size_t i; (i = next++) < count;) piece(i);
+  };
+  const std::size_t workers = std::min<std::size_t>(std::max(threads, 1), std::max<std::size_t>(count, 1));
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+}
+
+// The same report, one line at a time whatever thread calls it (empty stays empty).
+inline ProgressReport one_line_at_a_time(const ProgressReport& progress, std::mutex& lock) {
+  if (!progress) return {};
+  return [&progress, &lock](const std::string& s) {
+    const std::lock_guard<std::mutex> hold(lock);
+    progress(s);
+  };
+}
+
+}  // namespace twb
