@@ -17,7 +17,12 @@
 //                                                  or the dynamics disagree with it)
 //   "no fold up to …"     the branch reaches load_end without a fold or a runaway
 //                         (gradual heating): W_d stays empty, and the method names the
-//                         load where the mean temperature rises fastest with load
+//                         load where the mean temperature rises fastest with load, or
+//                         why nothing can produce thermo-viscous distress (no thermal
+//                         effect, an oil whose viscosity does not depend on temperature)
+//   "the start at … is already past distress (W_d ≈ …)"   prefixed when the cold start at
+//                         load_start lay on another branch than the one continued from a
+//                         tenth of it, from where the search then ran
 #pragma once
 
 #include <functional>
