@@ -591,9 +591,7 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
                                const SearchProgress& progress) {
   const SparseLu::Counts before = SparseLu::thread_counts();
   DistressSearch out = search_from_start(model, settings, progress);
-  const SparseLu::Counts& after = SparseLu::thread_counts();
-  out.counts.klu_factorizations = after.factorizations - before.factorizations + after.refactorizations -
-                                  before.refactorizations + out.counts.ida_factorizations;
+  out.counts.klu_factorizations = SparseLu::thread_counts().factored_since(before) + out.counts.ida_factorizations;
   return out;
 }
 

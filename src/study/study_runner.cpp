@@ -123,9 +123,8 @@ void run_distress_curve(BearingModel& base, StudyOutcome& out, const ProgressRep
     } catch (const std::exception& e) {
       part.summary.push_back(fmt::format("fold curve{}: failed: {}", variants[i].label, e.what()));
     }
-    const SparseLu::Counts& after = SparseLu::thread_counts();
-    part.timings.klu_factorizations = after.factorizations - before.factorizations + after.refactorizations -
-                                      before.refactorizations + part.timings.ida_factorizations;
+    part.timings.klu_factorizations =
+        SparseLu::thread_counts().factored_since(before) + part.timings.ida_factorizations;
   });
   for (StudyOutcome& part : parts) {
     out.states.insert(out.states.end(), part.states.begin(), part.states.end());
@@ -215,9 +214,7 @@ SearchDone search_one(const BearingModel& base, const SearchTask& task, const Di
     found.message = found.row.method;
   }
   if (done.model) estimate_mesh_error(*done.model, settings, found, progress);
-  const SparseLu::Counts& after = SparseLu::thread_counts();
-  done.klu_factorizations = after.factorizations - before.factorizations + after.refactorizations -
-                            before.refactorizations + found.counts.ida_factorizations;
+  done.klu_factorizations = SparseLu::thread_counts().factored_since(before) + found.counts.ida_factorizations;
   found.row.parameter = variant.parameter;
   found.row.sliding = variant.sliding;
   for (std::size_t i = 0; i < found.states.size(); ++i) {
@@ -443,10 +440,8 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
   const StudyType type = model.scene().study.type;
   if (type != StudyType::load_sweep && type != StudyType::distress_map && type != StudyType::sliding_choice &&
       type != StudyType::distress_curve) {
-    const SparseLu::Counts& klu_after = SparseLu::thread_counts();
-    out.timings.klu_factorizations = klu_after.factorizations - klu_before.factorizations +
-                                     klu_after.refactorizations - klu_before.refactorizations +
-                                     out.timings.ida_factorizations;
+    out.timings.klu_factorizations =
+        SparseLu::thread_counts().factored_since(klu_before) + out.timings.ida_factorizations;
   }
   out.timings.states = int(out.states.size());
   out.timings.solve_ms = elapsed_ms(t0);

@@ -49,6 +49,10 @@ class SparseLu {
   // KLU's work so far (diagnostics: TWB_KINSOL_PRINT).
   struct Counts {
     long analyses = 0, factorizations = 0, refactorizations = 0;
+    // Numeric factorizations, full or reusing a pivot sequence, since `earlier`.
+    long factored_since(const Counts& earlier) const {
+      return factorizations - earlier.factorizations + refactorizations - earlier.refactorizations;
+    }
   };
   const Counts& counts() const;
   // The same over every SparseLu of the calling thread since it started.
