@@ -76,7 +76,6 @@ ArclengthReport round_the_fold(BearingModel& model, std::span<const double> stat
   });
 }
 
-
 }  // namespace
 
 RunawaySettings distress_detector(const Scene& scene, double bracket_width) {
@@ -156,10 +155,11 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   // a corrected state farther from the tangent's prediction than half the predicted
   // change (a jump moves tens of kelvins where a cool step predicts a few), and near the
   // fold, where the prediction grows, arclength continuation has taken over. Only where
-  // the stability test is not conclusive does the transient decide: the load step from the previous state must settle, and
-  // on that state. Where it settles elsewhere the corrector had jumped branches: the
-  // transient's state is the one the machine reaches, and continuation restarts from
-  // it. The first step that runs away ends the cool branch.
+  // the stability test is not conclusive does the transient decide: the load step from
+  // the previous state must settle, and on that state. Where it settles elsewhere the
+  // corrector had jumped branches: the transient's state is the one the machine
+  // reaches, and continuation restarts from it. The first step that runs away ends the
+  // cool branch.
   // (The check against the continuation's own state replaces the detector's branch test here.)
   RunawaySettings runaway = distress_detector(model.scene(), settings.bracket_width);
   const auto branch_test = runaway.on_branch;
@@ -189,7 +189,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
     // the fold, and once within 3 % of it arclength continuation takes over).
     double target = targets[t];
     const double foreseen = approach.fold_estimate();
-    if (std::isfinite(foreseen) && foreseen > low && !approach.disabled())
+    if (std::isfinite(foreseen) && foreseen > low)
       target = std::min(target, low + 0.7 * (foreseen - low));
     bool replan = false;
     natural.initial_step = natural.max_step = std::max(target - low, natural.min_step);
@@ -216,7 +216,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
         }
         // A fold foreseen short of this segment's end: plan the segment again (above).
         const double ahead = approach.fold_estimate();
-        if (std::isfinite(ahead) && ahead < target && !approach.disabled()) {
+        if (std::isfinite(ahead) && ahead < target) {
           replan = true;
           return false;
         }
@@ -274,13 +274,9 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
                       model.speed(), low, out.states.back().state.washer_mean_temperature - 273.15, 100 * done));
       if (replaced) break;
     }
-    if (replaced) {
-      // The states after the replaced one were never accepted: their slow modes must not
-      // feed the fold estimate.
-      const bool was_disabled = approach.disabled();
-      approach = FoldApproach{};
-      if (was_disabled) approach.disable();
-    }
+    // The states after a replaced one were never accepted: their slow modes must not feed
+    // the fold estimate.
+    if (replaced) approach.forget();
     if (ran_away || replaced || branch_ended) continue;
     if (near_fold) {
       say(fmt::format("  the slowest thermal mode says a fold is near {:.2f} N; arclength continuation from "
@@ -507,10 +503,6 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   }
   return out;
 }
-
-}  // namespace
-
-namespace {
 
 DistressSearch search_from_start(BearingModel& model, const DistressSearchSettings& settings,
                                  const SearchProgress& progress) {

@@ -18,17 +18,20 @@ class FoldApproach {
     previous_ = last_;
     last_ = {load, rate * rate};
   }
-  // No estimate (inf) until μ² falls between two states.
+  // No estimate (inf) until μ² falls between two states, nor once disabled.
   double fold_estimate() const {
-    if (!(previous_.first > 0.0) || !(last_.second < previous_.second)) return INFINITY;
+    if (disabled_ || !(previous_.first > 0.0) || !(last_.second < previous_.second)) return INFINITY;
     const double slope = (previous_.second - last_.second) / (last_.first - previous_.first);
     return last_.first + last_.second / slope;
   }
   // Within 3 % of the load: arclength continuation's first steps (0.2 % of the load,
   // growing 1.5-fold) reach the fold in a few states from there.
-  bool near(double load) const { return !disabled_ && fold_estimate() - load < 0.03 * load; }
+  bool near(double load) const { return fold_estimate() - load < 0.03 * load; }
+  // Where the slowest mode slowed without a fold (near a cusp) it is no guide: no estimate
+  // from here on.
   void disable() { disabled_ = true; }
-  bool disabled() const { return disabled_; }
+  // The states added so far were not kept (the branch restarts from an earlier one).
+  void forget() { previous_ = last_ = {0.0, 0.0}; }
 
  private:
   bool disabled_ = false;
