@@ -44,22 +44,30 @@ void FoldCurveSystem::parameter_derivative(std::span<const double> x, std::span<
   for (std::size_t k = 0; k < x.size(); ++k) derivative[k] = (plus[k] - minus[k]) / (2.0 * h);
 }
 
+namespace {
+
+// The fold system through a located fold, as a system in p: its load scaled by the fold's.
+FoldCurveSystem curve_through(SteadySystem& base, SecondParameter& parameter, const FoldPoint& fold) {
+  const double load_scale = std::abs(fold.lambda) > 0.0 ? std::abs(fold.lambda) : 1.0;
+  return FoldCurveSystem(base, parameter, ContinuationMetric::of(base, load_scale), fold.u, fold.lambda,
+                         fold.null_vector);
+}
+
+}  // namespace
+
 std::optional<FoldCurvePoint> fold_at(SteadySystem& base, SecondParameter& parameter, const FoldPoint& fold,
                                       const FoldCurvePoint& near, double p, const NewtonSettings& newton) {
   const auto n = std::size_t(base.size());
-  const double load_scale = std::abs(fold.lambda) > 0.0 ? std::abs(fold.lambda) : 1.0;
-  FoldCurveSystem curve(base, parameter, ContinuationMetric::of(base, load_scale), fold.u, fold.lambda,
-                        fold.null_vector);
+  FoldCurveSystem curve = curve_through(base, parameter, fold);
   curve.set_parameter(near.p);
-  std::vector<double> x(near.u.begin(), near.u.end());
-  x.push_back(near.lambda / load_scale);
+  std::vector<double> x = curve.fold().extend(near.u, near.lambda);
   NaturalSettings natural;
   natural.newton = newton;
   const NaturalReport rep = continue_in_parameter(curve, x, p, natural);
   if (!rep.reached_target) return std::nullopt;
   FoldCurvePoint out;
   out.p = p;
-  out.lambda = x[n] * load_scale;
+  out.lambda = curve.fold().lambda_of(x);
   out.u.assign(x.begin(), x.begin() + std::ptrdiff_t(n));
   out.curvature = curve.fold().fold_curvature(x);
   return out;
@@ -69,12 +77,9 @@ FoldCurve trace_fold_curve(SteadySystem& base, SecondParameter& parameter, const
                            const FoldCurveSettings& settings, const FoldCurveCallback& on_point) {
   FoldCurve out;
   const auto n = std::size_t(base.size());
-  const double load_scale = std::abs(fold.lambda) > 0.0 ? std::abs(fold.lambda) : 1.0;
-  FoldCurveSystem curve(base, parameter, ContinuationMetric::of(base, load_scale), fold.u, fold.lambda,
-                        fold.null_vector);
+  FoldCurveSystem curve = curve_through(base, parameter, fold);
   curve.set_parameter(parameter.value());
-  std::vector<double> x(fold.u.begin(), fold.u.end());
-  x.push_back(fold.lambda / load_scale);
+  std::vector<double> x = curve.fold().extend(fold.u, fold.lambda);
 
   // The fold with the curve system's own borders: the located fold meets F and g within
   // the tolerance with the borders it was located with (or was bracketed without g at
@@ -102,7 +107,7 @@ FoldCurve trace_fold_curve(SteadySystem& base, SecondParameter& parameter, const
         FoldCurvePoint& pt = out.points.emplace_back();
         pt.index = b.index;
         pt.p = b.lambda;
-        pt.lambda = b.u[n] * load_scale;
+        pt.lambda = curve.fold().lambda_of(b.u);
         pt.u.assign(b.u.begin(), b.u.begin() + std::ptrdiff_t(n));
         pt.tangent_p = b.tangent.empty() ? 0.0 : b.tangent.back();
         curve.set_parameter(pt.p);  // the corrector sets it again before its next evaluation
@@ -119,7 +124,7 @@ FoldCurve trace_fold_curve(SteadySystem& base, SecondParameter& parameter, const
     CurveTurn turn;
     turn.point = f;
     turn.p = f.lambda;
-    turn.lambda = f.u[n] * load_scale;
+    turn.lambda = curve.fold().lambda_of(f.u);
     turn.cusp = out.points[k].curvature * out.points[k + 1].curvature < 0.0;
     out.turns.push_back(std::move(turn));
   }
