@@ -76,6 +76,11 @@ TEST(StudyOutputs, LoadSweepWritesStatesDistressAndTheRunaway) {
   fs::remove_all(dir);
 }
 
+// The rows of a fold_curve.csv that mark a cusp.
+long cusp_rows(const std::vector<std::string>& rows) {
+  return std::count_if(rows.begin(), rows.end(), [](const std::string& r) { return r.find(",cusp,") != std::string::npos; });
+}
+
 // The distress curve on its shipped scene, and the safe region in one command
 // (scripts/safe_region.sh runs twb and draws the figure): a cusp per family member, the
 // curve's file, the figure.
@@ -85,8 +90,7 @@ TEST(StudyOutputs, DistressCurveAndSafeRegionInOneCommand) {
   const auto rows = lines_of(dir / "fold_curve.csv");
   ASSERT_GT(rows.size(), 5u);
   EXPECT_EQ(rows[0], "speed_rad_s,W_fold_N,fold,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff");
-  EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [](const std::string& r) { return r.find(",cusp,") != std::string::npos; }),
-            1);
+  EXPECT_EQ(cusp_rows(rows), 1);
   fs::remove_all(dir);
 
   const fs::path region = scratch("region");
@@ -99,8 +103,7 @@ TEST(StudyOutputs, DistressCurveAndSafeRegionInOneCommand) {
   const auto curve = lines_of(region / "fold_curve.csv");
   ASSERT_FALSE(curve.empty());
   EXPECT_EQ(curve[0].rfind("friction_coefficient,speed_rad_s,", 0), 0u) << curve[0];
-  EXPECT_EQ(std::count_if(curve.begin(), curve.end(), [](const std::string& r) { return r.find(",cusp,") != std::string::npos; }),
-            2);
+  EXPECT_EQ(cusp_rows(curve), 2);
   EXPECT_TRUE(fs::exists(region / "figures" / "fold_curve.png"));
   fs::remove_all(region);
 }

@@ -28,6 +28,18 @@ Scene coarse_scene() {
   return s;
 }
 
+// The study of the curve traced above: W_d(ω) from 2000 down to 136 rad/s.
+Scene speed_curve_scene() {
+  Scene scene = coarse_scene();
+  scene.study.type = StudyType::distress_curve;
+  scene.study.curve_parameter = CurveParameter::speed;
+  scene.study.from = 2000.0;
+  scene.study.to = 136.0;
+  scene.study.load_start = 100.0;
+  scene.study.load_end = 1000.0;
+  return scene;
+}
+
 DistressSearchSettings search_range() {
   DistressSearchSettings s;
   s.load_start = 100.0;
@@ -119,13 +131,7 @@ TEST(DistressCurve, CuspBetweenFoldAndNoFold) {
 // The study writes the same curve: its rows run from the start's distress fold through
 // the cusp to recovery folds, and the cusp row is the solver's.
 TEST(DistressCurve, StudyWritesTheCurveAndTheCusp) {
-  Scene scene = coarse_scene();
-  scene.study.type = StudyType::distress_curve;
-  scene.study.curve_parameter = CurveParameter::speed;
-  scene.study.from = 2000.0;
-  scene.study.to = 136.0;
-  scene.study.load_start = 100.0;
-  scene.study.load_end = 1000.0;
+  Scene scene = speed_curve_scene();
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
   ASSERT_FALSE(out.fold_curve.empty());
@@ -144,14 +150,8 @@ TEST(DistressCurve, StudyWritesTheCurveAndTheCusp) {
 // has its cusp, and more friction heats the contact more, so the cusp moves to lower
 // speeds (at 545 rad/s the paper's f = 0.1 has no fold while 0.2 has one).
 TEST(DistressCurve, FamilyOfCurvesByFrictionCoefficient) {
-  Scene scene = coarse_scene();
+  Scene scene = speed_curve_scene();
   scene.friction.law = FrictionLaw::constant;
-  scene.study.type = StudyType::distress_curve;
-  scene.study.curve_parameter = CurveParameter::speed;
-  scene.study.from = 2000.0;
-  scene.study.to = 136.0;
-  scene.study.load_start = 100.0;
-  scene.study.load_end = 1000.0;
   scene.study.parameter = MapParameter::friction_coefficient;
   scene.study.parameter_values = {0.1, 0.3};
   BearingModel model(scene);
