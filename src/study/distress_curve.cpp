@@ -76,9 +76,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     model.set_curve_parameter(which, end);
     say(fmt::format("[curve{}] the first fold at {}", label, shown(which, end)));
     DistressSearch found = search_distress(model, settings, progress);
-    out.timings.transients += found.counts.transients;
-    out.timings.ida_steps += found.counts.ida_steps;
-    out.timings.ida_factorizations += found.counts.ida_factorizations;
+    add_search_work(out.timings, found.counts);
     found.row.parameter = member;
     if (which != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown(which, end), found.row.method);
     out.distress.push_back(found.row);

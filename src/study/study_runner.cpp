@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <thread>
-#include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -262,9 +262,7 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
       DistressSearch& found = it->second.found;
       for (const std::string& d : found.diagnostics)
         diagnostics.push_back(fmt::format("{:.6g} rad/s{}: {}", t.speed, t.variant->label, d));
-      timings.transients += found.counts.transients;
-      timings.ida_steps += found.counts.ida_steps;
-      timings.ida_factorizations += found.counts.ida_factorizations;
+      add_search_work(timings, found.counts);
       timings.klu_factorizations += it->second.klu_factorizations;
       if (it->second.model) take(*t.variant, t.speed_index, *it->second.model, found);
       else take(*t.variant, t.speed_index, base, found);

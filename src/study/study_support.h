@@ -6,9 +6,11 @@
 #include <span>
 
 #include "twb/model/bearing_model.h"
+#include "twb/results/run_record.h"
 #include "twb/results/states_table.h"
 #include "twb/scene/scene.h"
 #include "twb/solver/kinsol_newton.h"
+#include "twb/study/distress_search.h"
 
 namespace twb {
 
@@ -32,6 +34,13 @@ inline SolvedState solved_state(const BearingModel& model, std::span<const doubl
   row.state = model.describe(u);
   if (model.scene().output.fields) row.fields = model.fields(u);
   return row;
+}
+
+// A distress search's transients and IDA work, added to the study's (run.json).
+inline void add_search_work(RunTimings& timings, const SearchCounts& counts) {
+  timings.transients += counts.transients;
+  timings.ida_steps += counts.ida_steps;
+  timings.ida_factorizations += counts.ida_factorizations;
 }
 
 }  // namespace twb
