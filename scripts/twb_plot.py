@@ -769,8 +769,8 @@ def figure_distress_map(data):
         label = series_label(key)
         found = [r for r in rows if r.w_d is not None]
         # A speed without W_d up to the highest load searched is drawn there, as "> load_end".
-        beyond = [(r.speed, searched_up_to(r.method)) for r in rows
-                  if r.w_d is None and searched_up_to(r.method) is not None]
+        beyond = [(r.speed, load) for r in rows
+                  if r.w_d is None and (load := searched_up_to(r.method)) is not None]
         if beyond:
             any_beyond = True
             ax.plot([scale * b[0] for b in beyond], [b[1] for b in beyond], linestyle="none", marker="^",
