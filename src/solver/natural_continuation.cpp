@@ -74,7 +74,9 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
   double previous_step = 0.0;
   while (rep.lambda != target) {
     const double step = control.step();
-    const bool last = std::abs(target - rep.lambda) <= step;
+    // A step within rounding of the rest ends there: steps that add up to the interval
+    // (its quarters, say) must not leave a sliver of 1e-14 whose correction is noise.
+    const bool last = std::abs(target - rep.lambda) <= step * (1.0 + 1e-9);
     const double next = last ? target : rep.lambda + direction * step;
     const double dl = next - rep.lambda;
     std::vector<double> reference = u, trial = u;
