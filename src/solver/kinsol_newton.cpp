@@ -283,9 +283,9 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   if (!shift && s.max_iterations > 0) {
     flag = run(KIN_NONE, std::min(s.max_iterations, full_step_budget));
     done = settled(flag);
-    if (!done) std::copy(u.begin(), u.end(), N_VGetArrayPointer(y_.get()));
+    if (!done && s.line_search) std::copy(u.begin(), u.end(), N_VGetArrayPointer(y_.get()));
   }
-  if (!done) {
+  if (!done && (s.line_search || shift)) {
     flag = run(KIN_LINESEARCH, s.max_iterations);
     done = settled(flag);
   }

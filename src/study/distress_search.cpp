@@ -144,6 +144,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   NaturalSettings natural;
   natural.newton = newton;
   natural.newton.max_iterations = 12;
+  natural.newton.line_search = false;
   // Natural continuation only has to bring the branch near its end: the fold is located
   // by arclength. Creeping closer than a bracket width costs slow corrections (the
   // Jacobian turns singular).
@@ -535,6 +536,7 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
   NaturalSettings natural;
   natural.newton = newton;
   natural.newton.max_iterations = 12;
+  natural.newton.line_search = false;
   natural.initial_step = natural.max_step = 0.15 * settings.load_start;
   natural.min_step = settings.bracket_width * light;
   const NaturalReport descent = continue_in_parameter(model, down, light, natural);

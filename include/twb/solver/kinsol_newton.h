@@ -21,6 +21,12 @@ struct NewtonSettings {
   double step_tolerance = 1e-14;
   int max_iterations = 200;
   double max_step = 20.0;  // largest rigid-body move per Newton step, in units of σ (and γ_ref)
+  // False: undamped steps only, no line search after them. For starts that belong in
+  // Newton's quadratic basin (a continuation's prediction, a trajectory slowed near a
+  // steady state): there a solve converges in a few full steps, and a failure, which
+  // the line search would stretch to max_iterations more, only tells the caller to
+  // shorten the step or to wait.
+  bool line_search = true;
 };
 
 struct NewtonReport {
