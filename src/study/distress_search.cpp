@@ -431,6 +431,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
     out.row.bracket_high = bracket.high;
     if (fold && disagreement.empty()) {
       // The bracket is centred on the fold: W_d is the fold, proven to the bracket's width.
+      out.fold_proven = !ran_away;
       out.row.distress_load = fold->lambda;
       out.row.method = fmt::format("runaway; fold at {:.6g} N ({}), proven by transients: the step to {:.6g} N "
                                    "settles, to {:.6g} N runs away",
@@ -521,15 +522,21 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
     out.row.method = "no steady state at load_start";
     return out;
   }
+  DistressSearch out = search_from(model, settings, u, first, progress);
   const std::vector<double> capacity = model.capacities();
   if (settings.fold_only || std::none_of(capacity.begin(), capacity.end(), [](double c) { return c > 0.0; }))
-    return search_from(model, settings, u, first, progress);
+    return out;
 
   // Which branch the start lies on. The cold start finds some steady state, and past
-  // distress that is a hot one. The cool branch is the one that goes on down to light
-  // loads, where the bearing has one steady state: continued down to a tenth of the
-  // start, the start's branch must get there without a turning point and land on that
-  // light load's own cold start. If it does not, the search starts from the light load.
+  // distress that is a hot one. A branch continued up from the start through stable
+  // states to a turning point the dynamics confirm (the step below settles, the step
+  // above runs away) is the cool branch of the S: the hot branch turns back only at its
+  // lower end, and a start on the unstable middle branch runs away at its first step.
+  // Otherwise the start's branch is checked: the cool branch is the one that goes on down
+  // to light loads, where the bearing has one steady state, so continued down to a tenth
+  // of the start, the start's branch must get there without a turning point and land on
+  // that light load's own cold start. If it does not, the search starts from the light load.
+  if (out.fold_proven) return out;
   const double light = settings.load_start * light_load_fraction;
   if (progress) progress(fmt::format("  is the start on the cool branch? following it down to {:.3g} N", light));
   std::vector<double> down = u;
@@ -539,18 +546,14 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
   natural.newton.line_search = false;
   natural.initial_step = natural.max_step = 0.15 * settings.load_start;
   natural.min_step = settings.bracket_width * light;
+  model.set_load(settings.load_start);
   const NaturalReport descent = continue_in_parameter(model, down, light, natural);
   model.set_load(light);
   std::vector<double> light_state;
   const SteadyReport light_start = steady.solve_cold(light_state);
-  const bool cool_start = descent.reached_target && light_start.converged && same_state(down, light_state);
-  if (cool_start) {
-    model.set_load(settings.load_start);
-    return search_from(model, settings, u, first, progress);
-  }
+  if (descent.reached_target && light_start.converged && same_state(down, light_state)) return out;
   if (!light_start.converged) {
-    // No reference to judge by: search from the start as it is, and say so.
-    DistressSearch out = search_from(model, settings, u, first, progress);
+    // No reference to judge by: the search from the start as it is, and say so.
     out.row.method = fmt::format("the start's branch could not be checked (no steady state at {:.3g} N); {}", light,
                                  out.row.method);
     return out;
@@ -561,9 +564,12 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
                          descent.reached_target ? "it continues down to another state than the light load's"
                                                 : "its branch turns back on the way down",
                          light));
+  // The first search's work counts too.
+  const SearchCounts spent = out.counts;
   DistressSearchSettings from_light = settings;
   from_light.load_start = light;
-  DistressSearch out = search_from(model, from_light, light_state, light_start, progress);
+  out = search_from(model, from_light, light_state, light_start, progress);
+  out.counts.add(spent);
   if (out.row.distress_load && *out.row.distress_load < settings.load_start) {
     out.start_past_distress = true;
     out.row.method = fmt::format("the start at {:.6g} N is already past distress (W_d ≈ {:.6g} N, continued from "

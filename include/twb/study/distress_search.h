@@ -67,6 +67,13 @@ struct SearchCounts {
   long ida_steps = 0;        // their internal steps
   long ida_factorizations = 0;  // KLU factorizations inside IDA (its linear solver setups)
   long klu_factorizations = 0;  // all KLU factorizations of the search: twb's own and IDA's
+  void add(const SearchCounts& other) {
+    stability_tests += other.stability_tests;
+    transients += other.transients;
+    ida_steps += other.ida_steps;
+    ida_factorizations += other.ida_factorizations;
+    klu_factorizations += other.klu_factorizations;
+  }
   void add(const StepOutcome& step) {
     ++transients;
     ida_steps += step.statistics.steps;
@@ -85,6 +92,9 @@ struct DistressSearch {
   // The study's start lay past distress (not on the branch continued from a light
   // load): the search ran from a tenth of it instead, and its states begin there.
   bool start_past_distress = false;
+  // W_d is a fold the branch from the start reached through stable states, proven by
+  // the two transients beside it (no bisection, no runaway on the way).
+  bool fold_proven = false;
   std::string message;
   SearchCounts counts;
   // The solvers' own words where a search went on regardless (e.g. why natural
