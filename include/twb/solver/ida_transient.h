@@ -26,8 +26,9 @@ struct TransientSettings {
   // IDA's local error test is ‖e‖_WRMS ≤ 1 with weights 1/(rtol·|u_k| + atol_k).
   // 1e-6 relative: the runaway detector reads the trajectory's slow drift near a
   // saddle-node's ghost, where an error δ in u acts like a shift of λ of relative size
-  // O(δ); 1e-6 keeps that three orders below the 2e-3 bracket width, and the state a
-  // step settles to is polished by Newton anyway.
+  // O(δ); 1e-6 keeps that three orders below a 2e-3 bracket width, and the state a
+  // step settles to is polished by Newton anyway. (The distress search ties it to its
+  // bracket width: distress_detector.)
   double relative_tolerance = 1e-6;
   // twb's unknowns are O(1) (scaled pressures, clearances in σ) to O(100) (temperature
   // rises in K): 1e-8 lets the relative tolerance govern except where an unknown
