@@ -53,9 +53,10 @@ double steepest_sensitivity(const std::vector<SolvedState>& states) {
 }
 
 // Pseudo-arclength continuation from a state near the end of the cool branch round its
-// first turning point only: once the branch has turned back 2 % below the start the
-// fold has been passed (and located), and the rest of the S is not needed. cool_side,
-// if given, receives the states it passes before the turn.
+// first turning point only: the step whose tangent turns back in load has passed the
+// fold and located it, and the rest of the S is not needed (nor is the middle branch
+// below the fold: a bound 2 % below the start stops a continuation that turns without
+// a located fold). cool_side, if given, receives the states it passes before the turn.
 ArclengthReport round_the_fold(BearingModel& model, std::span<const double> state, double load, double load_end,
                                const NewtonSettings& newton, BranchStates* cool_side = nullptr) {
   ArclengthSettings arc;
@@ -68,11 +69,10 @@ ArclengthReport round_the_fold(BearingModel& model, std::span<const double> stat
   arc.lambda_max = load_end;
   arc.max_points = 200;
   model.set_load(load);
-  bool turned = false;
   return continue_by_arclength(model, state, arc, [&](const BranchPoint& p) {
-    turned = turned || (!p.tangent.empty() && p.tangent.back() < 0.0);
+    const bool turned = !p.tangent.empty() && p.tangent.back() < 0.0;
     if (cool_side && !turned && p.index > 0) cool_side->emplace_back(p.lambda, std::vector<double>(p.u.begin(), p.u.end()));
-    return true;
+    return !turned;
   });
 }
 
