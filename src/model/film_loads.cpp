@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "assembly_totals.h"
 #include "twb/physics/average_gap.h"
@@ -20,28 +21,39 @@ namespace {
 
 // Least and greatest value of the plane h = c + a·x + b·y over the polar cell
 // [r0, r1] × [t0, t1]: linear along rays, so each is at a corner or on an arc where the
-// direction (cos θ, sin θ) is opposite to (a, b) (least) or along it (greatest).
+// direction (cos θ, sin θ) is opposite to (a, b) (least) or along it (greatest). Those
+// two directions are the plane's, the same for every cell: their angles are found once.
 struct GapRange { double least, greatest; };
-GapRange cell_gap_range(double c, double a, double b, double r0, double r1, double t0, double t1, double c0,
-                        double s0, double c1, double s1) {
-  auto h = [&](double r, double t) { return c + r * (a * std::cos(t) + b * std::sin(t)); };
-  const double e0 = a * c0 + b * s0, e1 = a * c1 + b * s1;
-  const std::array<double, 4> corners{c + r0 * e0, c + r0 * e1, c + r1 * e0, c + r1 * e1};
-  GapRange range{*std::min_element(corners.begin(), corners.end()), *std::max_element(corners.begin(), corners.end())};
-  if (a == 0.0 && b == 0.0) return range;
-  const double two_pi = 2.0 * std::numbers::pi;
-  // The angle of direction (dx, dy) if it lies on the cell's arc, else NaN.
-  auto on_arc = [&](double dy, double dx) {
-    double ts = std::atan2(dy, dx);
+class PlaneOverCells {
+ public:
+  PlaneOverCells(double c, double a, double b)
+      : c_(c), a_(a), b_(b), tilted_(a != 0.0 || b != 0.0), down_(std::atan2(-b, -a)), up_(std::atan2(b, a)) {}
+
+  GapRange range(double r0, double r1, double t0, double t1, double c0, double s0, double c1, double s1) const {
+    const double e0 = a_ * c0 + b_ * s0, e1 = a_ * c1 + b_ * s1;
+    const std::array<double, 4> corners{c_ + r0 * e0, c_ + r0 * e1, c_ + r1 * e0, c_ + r1 * e1};
+    GapRange range{*std::min_element(corners.begin(), corners.end()),
+                   *std::max_element(corners.begin(), corners.end())};
+    if (!tilted_) return range;
+    // Along the plane's steepest descent (ascent) the gap is c ∓ r·|(a, b)|.
+    const double slope = std::hypot(a_, b_);
+    if (on_arc(down_, t0, t1)) range.least = std::min(range.least, c_ - r1 * slope);
+    if (on_arc(up_, t0, t1)) range.greatest = std::max(range.greatest, c_ + r1 * slope);
+    return range;
+  }
+
+ private:
+  // Whether the direction at angle ts (in (−π, π]) lies on the arc [t0, t1].
+  static bool on_arc(double ts, double t0, double t1) {
+    const double two_pi = 2.0 * std::numbers::pi;
     while (ts < t0) ts += two_pi;
     while (ts - two_pi >= t0) ts -= two_pi;
-    return ts <= t1 ? ts : NAN;
-  };
-  if (const double ts = on_arc(-b, -a); !std::isnan(ts)) range.least = std::min({range.least, h(r0, ts), h(r1, ts)});
-  if (const double ts = on_arc(b, a); !std::isnan(ts))
-    range.greatest = std::max({range.greatest, h(r0, ts), h(r1, ts)});
-  return range;
-}
+    return ts <= t1;
+  }
+  double c_, a_, b_;
+  bool tilted_;
+  double down_, up_;
+};
 
 }  // namespace
 
@@ -65,6 +77,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
   const bool contact = contact_.has_value();
   const double omega = film.sliding ? scene_.operating.speed : 0.0;
   const double cutoff = contact_cutoff_;
+  const PlaneOverCells plane(c, pa, pb);
   // Angles of nodes and of the rule's points within a cell: every Gauss point's
   // cos/sin follows by the addition theorem, without calling sincos per point.
   std::vector<double> cos_node(nt + 1), sin_node(nt + 1);
@@ -142,8 +155,8 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       }
       const double r0 = m.radius(i), r1 = m.radius(i + 1);
       const double t0 = m.angle(j), t1 = t0 + m.dtheta();
-      const GapRange gap_range = contact ? cell_gap_range(c, pa, pb, r0, r1, t0, t1, cos_node[j], sin_node[j],
-                                                          cos_node[j + 1], sin_node[j + 1])
+      const GapRange gap_range = contact ? plane.range(r0, r1, t0, t1, cos_node[j], sin_node[j], cos_node[j + 1],
+                                                       sin_node[j + 1])
                                          : GapRange{};
       const bool near_contact = contact && (structural || gap_range.least < cutoff);
 
