@@ -42,6 +42,14 @@ std::vector<double> difference(std::span<const double> a, std::span<const double
 
 NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u, double target,
                                     const NaturalSettings& s, const BranchCallback& on_state) {
+  return NaturalContinuation(system).continue_to(u, target, s, on_state);
+}
+
+NaturalContinuation::NaturalContinuation(SteadySystem& system) : system_(system), newton_(system) {}
+
+NaturalReport NaturalContinuation::continue_to(std::vector<double>& u, double target, const NaturalSettings& s,
+                                               const BranchCallback& on_state) {
+  SteadySystem& system = system_;
   NaturalReport rep;
   const double start = system.parameter(), interval = std::abs(target - start);
   const double direction = target >= start ? 1.0 : -1.0;
@@ -57,7 +65,7 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
                       s.easy_iterations);
   // One symbolic analysis serves the tangents and the corrector, and the first
   // tangent's fresh pivots serve the corrections' refactorizations.
-  KinsolNewton newton(system);
+  KinsolNewton& newton = newton_;
   SparseLu& lu = newton.factorization();
 
   // The state before u, and u_λ at u: the exact local slope, which judges every
@@ -66,12 +74,16 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
   // error alone exceeds the rejection threshold and the continuation stalls (on the
   // bearing, 1.2 N below the fold). The tangent's error shrinks with the step.
   std::vector<double> previous, slope;
-  {
+  double previous_step = 0.0;
+  if (!end_.empty() && system.parameter() == end_lambda_ && u == end_) {
+    // The leg starts where the last one ended: its slope holds here. (Each leg still
+    // starts with the tangent predictor, as a fresh continuation does.)
+    slope = slope_;
+  } else {
     const NewtonForm form(system);  // every tangent in the corrector's form
     slope = sensitivity(system, lu, u);
   }
   const double first_slope = metric.state_norm(slope);
-  double previous_step = 0.0;
   while (rep.lambda != target) {
     const double step = control.step();
     // A step within rounding of the rest ends there: steps that add up to the interval
@@ -141,6 +153,9 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
   }
   rep.reached_target = rep.lambda == target;
   system.set_parameter(rep.lambda);
+  end_ = u;
+  end_lambda_ = rep.lambda;
+  slope_ = slope;
   return rep;
 }
 

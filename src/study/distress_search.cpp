@@ -187,6 +187,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   bool branch_ended = false, ran_away = false, near_fold = false;
   double runaway_load = 0.0;
   FoldApproach approach;
+  NaturalContinuation cool_branch(model);
   std::optional<ArclengthReport> around_fold;  // the arclength round the fold, once run
   BranchStates approach_states;                // its states before the turn
   for (std::size_t t = 0; t < targets.size() && !ran_away && !branch_ended;) {
@@ -204,7 +205,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
     auto t0 = std::chrono::steady_clock::now();
     std::vector<double> x = low_state;
     model.set_load(low);
-    const NaturalReport rep = continue_in_parameter(model, x, target, natural, [&](const BranchPoint& p) {
+    const NaturalReport rep = cool_branch.continue_to(x, target, natural, [&](const BranchPoint& p) {
       if (p.index > 0) {
         Pending& q = pending.emplace_back(
             Pending{{p.u.begin(), p.u.end()}, p.lambda, p.corrector_iterations, 0.0, Stability::inconclusive, {}});

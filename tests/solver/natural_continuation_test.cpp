@@ -9,6 +9,7 @@
 #include "../support/model_problems.h"
 #include "twb/solver/arclength_continuation.h"
 #include "twb/solver/natural_continuation.h"
+#include "twb/solver/sparse_lu.h"
 
 namespace twb {
 namespace {
@@ -52,6 +53,39 @@ TEST(NaturalContinuation, PredictorSavesCorrectorIterations) {
   const long tangent = bratu_ramp(Predictor::tangent).corrector_iterations;
   EXPECT_LE(4 * secant, 3 * constant);
   EXPECT_LE(4 * tangent, 3 * constant);
+}
+
+// One branch in legs (as the distress search walks it, stopping to judge states): each
+// leg that starts where the last ended reuses the solver's symbolic analysis and the
+// slope there, so five legs cost one analysis instead of five, and land on the same
+// state as one continuation over the whole interval (both converge to the residual
+// tolerance on a branch with one state per λ: they agree to the tolerance over the
+// smallest singular value of J, far from the fold O(1) on Bratu).
+TEST(NaturalContinuation, LegsReuseTheAnalysisAndReachTheSameState) {
+  testing::BratuProblem bratu(100, 0.5);
+  NaturalSettings s = settings_with(Predictor::tangent);
+  const std::vector<double> start = testing::steady_state(bratu, std::vector<double>(100, 0.0), s.newton);
+  s.initial_step = s.max_step = 0.1;
+
+  std::vector<double> whole = start;
+  ASSERT_TRUE(continue_in_parameter(bratu, whole, 3.0, s).reached_target);
+
+  bratu.set_parameter(0.5);
+  std::vector<double> legs = start;
+  const SparseLu::Counts before = SparseLu::thread_counts();
+  NaturalContinuation branch(bratu);
+  for (double target : {1.0, 1.5, 2.0, 2.5, 3.0}) ASSERT_TRUE(branch.continue_to(legs, target, s).reached_target);
+  EXPECT_EQ(SparseLu::thread_counts().analyses - before.analyses, 1);
+  EXPECT_EQ(SparseLu::thread_counts().factorizations - before.factorizations, 1);  // the first slope's
+  for (std::size_t k = 0; k < legs.size(); ++k) EXPECT_NEAR(legs[k], whole[k], 1e3 * tolerance);
+
+  // A leg from another state (or λ) than the last one's end computes its slope afresh.
+  std::vector<double> elsewhere = start;
+  bratu.set_parameter(0.5);
+  const SparseLu::Counts again = SparseLu::thread_counts();
+  ASSERT_TRUE(branch.continue_to(elsewhere, 1.0, s).reached_target);
+  EXPECT_EQ(SparseLu::thread_counts().analyses - again.analyses, 0);
+  EXPECT_GE(SparseLu::thread_counts().factorizations - again.factorizations, 1);
 }
 
 // Every accepted state is handed over, converged, at increasing λ; false stops there.

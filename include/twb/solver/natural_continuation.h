@@ -55,4 +55,23 @@ struct NaturalReport {
 NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u, double target,
                                     const NaturalSettings& settings, const BranchCallback& on_state = {});
 
+// The same over several legs of one branch (a search that stops at grid loads, judges
+// the states between legs and plans the next): Newton's solver with its symbolic
+// analysis, and the slope u_λ at the last state, carry over to a leg that starts where
+// the last one ended, instead of a fresh analysis and factorization per leg. Between
+// legs the system may change only through its parameter.
+class NaturalContinuation {
+ public:
+  explicit NaturalContinuation(SteadySystem& system);
+  NaturalReport continue_to(std::vector<double>& u, double target, const NaturalSettings& settings,
+                            const BranchCallback& on_state = {});
+
+ private:
+  SteadySystem& system_;
+  KinsolNewton newton_;
+  // Where the last leg ended: its state, λ and slope there.
+  std::vector<double> end_, slope_;
+  double end_lambda_ = 0.0;
+};
+
 }  // namespace twb
