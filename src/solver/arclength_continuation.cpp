@@ -61,7 +61,8 @@ ArclengthReport continue_by_arclength(SteadySystem& system, std::span<const doub
       std::vector<double> correction(n + 1);
       for (std::size_t k = 0; k <= n; ++k) correction[k] = trial[k] - predicted[k];
       try {
-        next_t = arc.tangent(trial, t);
+        // The corrector's last factors hold the bordered Jacobian with t as its last row.
+        next_t = arc.tangent(trial, t, iterations > 0 ? &newton.factorization() : nullptr);
       } catch (const std::exception& e) {
         failure = e.what();
       }

@@ -46,15 +46,20 @@ void ArclengthSystem::evaluate(std::span<const double> x, std::span<double> resi
   residual[x.size() - 1] = metric().dot(direction_, offset) - parameter();
 }
 
-std::vector<double> ArclengthSystem::tangent(std::span<const double> x, std::span<const double> reference) {
-  std::vector<double> values(std::size_t(pattern().nnz()));
-  assemble(x, reference, {}, values);
-  if (!lu_) lu_ = std::make_unique<SparseLu>(pattern());
-  if (!lu_->factor(values))
-    throw SolverFailure("the bordered tangent matrix is singular (a branch point rather than a fold?)", -1);
+std::vector<double> ArclengthSystem::tangent(std::span<const double> x, std::span<const double> reference,
+                                             const SparseLu* corrector_factors) {
   std::vector<double> t(x.size(), 0.0);
   t.back() = 1.0;
-  lu_->solve(t);
+  if (corrector_factors && corrector_factors->factored()) {
+    corrector_factors->solve(t);
+  } else {
+    std::vector<double> values(std::size_t(pattern().nnz()));
+    assemble(x, reference, {}, values);
+    if (!lu_) lu_ = std::make_unique<SparseLu>(pattern());
+    if (!lu_->refactor(values))
+      throw SolverFailure("the bordered tangent matrix is singular (a branch point rather than a fold?)", -1);
+    lu_->solve(t);
+  }
   // The last row made ⟨reference, t⟩ = 1 > 0: normalizing keeps the orientation.
   const double length = metric().norm(t);
   if (!std::isfinite(length) || length == 0.0) throw SolverFailure("the branch tangent is not finite", -1);

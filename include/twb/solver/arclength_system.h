@@ -35,8 +35,13 @@ class ArclengthSystem final : public BorderedSystem {
 
   // Unit tangent (in the metric) to the branch at x, a solution of F = 0, oriented so
   // that ⟨t, reference⟩ > 0. The reference is the previous tangent, or ±e_μ at the start
-  // of a branch. Throws SolverFailure when the bordered matrix is singular.
-  std::vector<double> tangent(std::span<const double> x, std::span<const double> reference);
+  // of a branch. Throws SolverFailure when the bordered matrix is singular. Given the
+  // factors of that matrix at a point within a Newton step of x (the corrector's last,
+  // whose last row is the reference when the reference is the step's tangent), solves
+  // with them: t to O(step), as natural continuation's slope, without an assembly and a
+  // factorization of its own.
+  std::vector<double> tangent(std::span<const double> x, std::span<const double> reference,
+                              const SparseLu* corrector_factors = nullptr);
 
   void evaluate(std::span<const double> x, std::span<double> residual, std::span<double> jacobian) const override;
 
