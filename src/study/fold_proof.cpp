@@ -14,26 +14,23 @@ FoldProof prove_fold(BearingModel& model, const BranchStates& cool, const Branch
   const double half = 0.5 * runaway.relative_width;
   b.low = fold * (1.0 - half);
   b.high = fold * (1.0 + half);
-  auto start = std::find_if(cool.rbegin(), cool.rend(), [&](const auto& c) { return c.first < b.low; });
+  // The step starts from the cool state nearest below the bracket: natural
+  // continuation's last, or one arclength continuation passed on its way to the fold.
+  // The nearer the start, the shorter the transient, and the branch test (the branch
+  // continued from the start must reach the settled state) has less way to creep near
+  // the fold.
+  auto below_bracket = [&](const BranchStates& states) {
+    return std::find_if(states.rbegin(), states.rend(), [&](const auto& c) { return c.first < b.low; });
+  };
+  const auto start = below_bracket(cool), nearest = below_bracket(approach);
   if (start == cool.rend()) {
     b.message = fmt::format("no cool state below the fold's bracket at {:.6g} N to step from", b.low);
     return proof;
   }
-  say(fmt::format("  proving the fold at {:.2f} N: a load step {:.2f} -> {:.2f} N", fold, start->first, b.low));
-  // Where the step settles must be the cool branch's state: the branch test continues
-  // the branch there, from the nearest state arclength continuation passed on its way to
-  // the fold when that is nearer than the step's start (near the fold, natural
-  // continuation over the whole step creeps).
-  RunawaySettings below_settings = runaway;
-  const auto nearest = std::find_if(approach.rbegin(), approach.rend(), [&](const auto& c) { return c.first < b.low; });
-  if (runaway.on_branch && nearest != approach.rend() && nearest->first > start->first)
-    below_settings.on_branch = [test = runaway.on_branch, &nearest](SteadySystem& system, std::span<const double>,
-                                                                     double, std::span<const double> settled,
-                                                                     double load) {
-      return test(system, nearest->second, nearest->first, settled, load);
-    };
-  model.set_load(start->first);
-  StepOutcome below = classify_step(model, start->second, b.low, below_settings);
+  const auto& from = (nearest != approach.rend() && nearest->first > start->first) ? *nearest : *start;
+  say(fmt::format("  proving the fold at {:.2f} N: a load step {:.2f} -> {:.2f} N", fold, from.first, b.low));
+  model.set_load(from.first);
+  StepOutcome below = classify_step(model, from.second, b.low, runaway);
   counts.add(below);
   b.steps.push_back({b.low, below.verdict, below.evidence, below.time, below.reason});
   if (!below.settled()) {

@@ -42,8 +42,8 @@ struct FoldProof {
 };
 
 // cool: the cool branch's states from natural continuation; approach: those arclength
-// continuation passed on its way to the fold (the branch test of the step below starts
-// from the nearest). say: progress lines. Leaves the load at the bracket's low end.
+// continuation passed on its way to the fold (the step below starts from the nearest
+// of either). say: progress lines. Leaves the load at the bracket's low end.
 FoldProof prove_fold(BearingModel& model, const BranchStates& cool, const BranchStates& approach, double fold,
                      const RunawaySettings& runaway, bool keep_trajectory, SearchCounts& counts,
                      const SearchProgress& say);
