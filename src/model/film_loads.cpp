@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 #include "assembly_totals.h"
 #include "twb/physics/average_gap.h"
@@ -212,31 +213,44 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
         }
         contact_p.resize(contact_h.size());
         contact_->pressure(contact_h, contact_p);
-        for (std::size_t q = 0; q < contact_points.size(); ++q) {
-          const auto [s, tt, r, x, y, w] = contact_points[q];
-          const ValueSlope v = contact_p[q];
-          const double f = w * v.value, k = w * v.slope;
-          force[0] += f;
-          force[1] += f * y;
-          force[2] -= f * x;
-          stiffness[0] += k;
-          stiffness[1] += k * y;
-          stiffness[2] -= k * x;
-          stiffness[3] += k * y * y;
-          stiffness[4] -= k * x * y;
-          stiffness[5] += k * x * x;
-          if (!film.sliding) continue;
-          const double v_slide = omega * r;
-          torque += f * r;
-          const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
-          for (int n = 0; n < 4; ++n) {
-            const double nv = N[n] * v_slide, kn = k * nv;
-            power[n] += f * nv;
-            power_rigid[n][0] += kn;
-            power_rigid[n][1] += kn * y;
-            power_rigid[n][2] -= kn * x;
+        // The same sums with and without the gradients (a residual alone, as IDA's
+        // Newton iterations ask for most of the time, needs none of them).
+        auto integrate = [&]<bool gradients>(std::bool_constant<gradients>) {
+          for (std::size_t q = 0; q < contact_points.size(); ++q) {
+            const auto [s, tt, r, x, y, w] = contact_points[q];
+            const ValueSlope v = contact_p[q];
+            const double f = w * v.value, k = w * v.slope;
+            force[0] += f;
+            force[1] += f * y;
+            force[2] -= f * x;
+            if constexpr (gradients) {
+              stiffness[0] += k;
+              stiffness[1] += k * y;
+              stiffness[2] -= k * x;
+              stiffness[3] += k * y * y;
+              stiffness[4] -= k * x * y;
+              stiffness[5] += k * x * x;
+            }
+            if (!film.sliding) continue;
+            const double v_slide = omega * r;
+            torque += f * r;
+            const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
+            for (int n = 0; n < 4; ++n) {
+              const double nv = N[n] * v_slide;
+              power[n] += f * nv;
+              if constexpr (gradients) {
+                const double kn = k * nv;
+                power_rigid[n][0] += kn;
+                power_rigid[n][1] += kn * y;
+                power_rigid[n][2] -= kn * x;
+              }
+            }
           }
-        }
+        };
+        if (jac || structural)
+          integrate(std::true_type{});
+        else
+          integrate(std::false_type{});
         const std::array<std::array<double, 3>, 3> arms{{{stiffness[0], stiffness[1], stiffness[2]},
                                                          {stiffness[1], stiffness[3], stiffness[4]},
                                                          {stiffness[2], stiffness[4], stiffness[5]}}};
@@ -271,43 +285,52 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
         viscosity(point_t, point_mu);
         average_gap(point_h, film.sigma, point_gap);
       }
-      for (std::size_t gs = 0; (hydro || film.sliding) && gs < smooth_points; ++gs) {
-        for (std::size_t gt = 0; gt < smooth_points; ++gt) {
-          const std::size_t q = gs * smooth_points + gt;
-          const auto [s, tt, r, x, y, w] = point(smooth_rule_, cos_s, sin_s, i, j, gs, gt);
-          const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
-          if (hydro) {
-            double p = 0;
-            for (int k = 0; k < 4; ++k) p += N[k] * p_node[k];
-            const std::array<double, 3> arm{1.0, y, -x};
-            for (int qd = 0; qd < 3; ++qd) {
-              load_val[qd] += w * p * arm[qd];
-              for (int k = 0; k < 4; ++k) load_p[qd][k] += w * N[k] * p_ref_ * arm[qd];
+      auto integrate_smooth = [&]<bool gradients>(std::bool_constant<gradients>) {
+        for (std::size_t gs = 0; (hydro || film.sliding) && gs < smooth_points; ++gs) {
+          for (std::size_t gt = 0; gt < smooth_points; ++gt) {
+            const std::size_t q = gs * smooth_points + gt;
+            const auto [s, tt, r, x, y, w] = point(smooth_rule_, cos_s, sin_s, i, j, gs, gt);
+            const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
+            if (hydro) {
+              double p = 0;
+              for (int k = 0; k < 4; ++k) p += N[k] * p_node[k];
+              const std::array<double, 3> arm{1.0, y, -x};
+              for (int qd = 0; qd < 3; ++qd) {
+                load_val[qd] += w * p * arm[qd];
+                if constexpr (gradients)
+                  for (int k = 0; k < 4; ++k) load_p[qd][k] += w * N[k] * p_ref_ * arm[qd];
+              }
+              tot.fluid_force += w * p;
             }
-            tot.fluid_force += w * p;
-          }
-          if (!film.sliding) continue;
-          const double v_slide = omega * r;
-          const ValueSlope mu = point_mu[q];
-          // Shear acts over the average gap, which stays positive where h closes (MODEL.md 3, 6).
-          const ValueSlope gap = point_gap[q];
-          const double tau = mu.value * v_slide / gap.value;
-          tot.viscous_torque += w * tau * r;
-          const double qv = tau * v_slide;  // μ V² / h̄T
-          tot.viscous_heat += w * qv;
-          const double dqv_dh = -qv / gap.value * gap.slope;
-          const double dqv_dt = mu.slope * v_slide * v_slide / gap.value;
-          for (int k = 0; k < 4; ++k) {
-            const double wn = w * N[k];
-            vheat[k] += wn * qv;
-            const double q = wn * dqv_dh;
-            vheat_rigid[k][0] += q;
-            vheat_rigid[k][1] += q * y;
-            vheat_rigid[k][2] -= q * x;
-            for (int l = 0; l < 4; ++l) vheat_t[k][l] += wn * dqv_dt * N[l];
+            if (!film.sliding) continue;
+            const double v_slide = omega * r;
+            const ValueSlope mu = point_mu[q];
+            // Shear acts over the average gap, which stays positive where h closes (MODEL.md 3, 6).
+            const ValueSlope gap = point_gap[q];
+            const double tau = mu.value * v_slide / gap.value;
+            tot.viscous_torque += w * tau * r;
+            const double qv = tau * v_slide;  // μ V² / h̄T
+            tot.viscous_heat += w * qv;
+            const double dqv_dh = -qv / gap.value * gap.slope;
+            const double dqv_dt = mu.slope * v_slide * v_slide / gap.value;
+            for (int k = 0; k < 4; ++k) {
+              const double wn = w * N[k];
+              vheat[k] += wn * qv;
+              if constexpr (gradients) {
+                const double q = wn * dqv_dh;
+                vheat_rigid[k][0] += q;
+                vheat_rigid[k][1] += q * y;
+                vheat_rigid[k][2] -= q * x;
+                for (int l = 0; l < 4; ++l) vheat_t[k][l] += wn * dqv_dt * N[l];
+              }
+            }
           }
         }
-      }
+      };
+      if (jac || structural)
+        integrate_smooth(std::true_type{});
+      else
+        integrate_smooth(std::false_type{});
 
       // Scatter the cell's loads into the rigid-body rows.
       for (const RowSign& rs : rows) {
