@@ -56,6 +56,16 @@ class PlaneOverCells {
   double down_, up_;
 };
 
+// Calls integrate(std::bool_constant<gradients>): one instantiation per case, so the
+// residual-only sums carry no test for the gradients in their inner loops.
+template <class Integrate>
+void with_gradients(bool gradients, const Integrate& integrate) {
+  if (gradients)
+    integrate(std::true_type{});
+  else
+    integrate(std::false_type{});
+}
+
 }  // namespace
 
 void BearingModel::assemble_film_loads(std::span<const double> u, const Film& film, Assembler& a,
@@ -247,10 +257,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
             }
           }
         };
-        if (jac || structural)
-          integrate(std::true_type{});
-        else
-          integrate(std::false_type{});
+        with_gradients(jac || structural, integrate);
         const std::array<std::array<double, 3>, 3> arms{{{stiffness[0], stiffness[1], stiffness[2]},
                                                          {stiffness[1], stiffness[3], stiffness[4]},
                                                          {stiffness[2], stiffness[4], stiffness[5]}}};
@@ -327,10 +334,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           }
         }
       };
-      if (jac || structural)
-        integrate_smooth(std::true_type{});
-      else
-        integrate_smooth(std::false_type{});
+      with_gradients(jac || structural, integrate_smooth);
 
       // Scatter the cell's loads into the rigid-body rows.
       for (const RowSign& rs : rows) {
