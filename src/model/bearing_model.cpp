@@ -8,6 +8,7 @@
 #include "assembly_totals.h"
 #include "twb/model/reynolds_operator.h"
 #include "twb/physics/asperity_contact.h"
+#include "twb/physics/contact_table_cache.h"
 
 namespace twb {
 
@@ -203,8 +204,8 @@ void BearingModel::build_contact() {
                                                                m2.youngs_modulus, m2.poisson_ratio);
   // The softer material yields first (MODEL.md section 4).
   const Material& soft = (m1.yield_strength <= m2.yield_strength) ? m1 : m2;
-  JacksonGreenAsperity asperity(e_eff, soft.yield_strength, soft.poisson_ratio, scene_.asperities.summit_radius);
-  contact_.emplace(asperity, scene_.asperities.summit_density, scene_.asperities.summit_sigma);
+  contact_ = shared_contact_table({e_eff, soft.yield_strength, soft.poisson_ratio, scene_.asperities.summit_radius,
+                                   scene_.asperities.summit_density, scene_.asperities.summit_sigma});
   contact_cutoff_ = contact_->cutoff_gap(1e-20);
 }
 
@@ -262,20 +263,9 @@ void BearingModel::set_curve_parameter(CurveParameter p, double value) {
       set_roughness(scene_, value);
       films_[0].sigma = combined_sigma(scene_.carrier, scene_.washer);
       films_[1].sigma = combined_sigma(scene_.washer, scene_.gear);
-      // Its tables take ~0.1 s to integrate, and a fold curve's ∂/∂p visits p ± h and p
-      // at every corrector iteration: the last three populations are kept.
-      if (auto kept = std::find_if(roughness_contacts_.begin(), roughness_contacts_.end(),
-                                   [&](const auto& c) { return c.first == value; });
-          kept != roughness_contacts_.end()) {
-        contact_ = kept->second;
-        contact_cutoff_ = contact_->cutoff_gap(1e-20);
-        break;
-      }
+      // A fold curve's ∂/∂p visits p ± h and p at every corrector iteration: the tables
+      // of those populations are kept (contact_table_cache.h).
       build_contact();
-      if (contact_) {
-        if (roughness_contacts_.size() == 3) roughness_contacts_.erase(roughness_contacts_.begin());
-        roughness_contacts_.emplace_back(value, *contact_);
-      }
       break;
   }
 }

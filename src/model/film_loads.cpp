@@ -85,7 +85,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
                                 gap_gradient(film, -1.0, 0.0)[2]};
   const bool hydro = film.pressure_offset >= 0;
   const bool heat = film.sliding && scene_.effects.thermal;
-  const bool contact = contact_.has_value();
+  const bool contact = contact_ != nullptr;
   const double omega = film.sliding ? scene_.operating.speed : 0.0;
   const double cutoff = contact_cutoff_;
   const PlaneOverCells plane(c, pa, pb);

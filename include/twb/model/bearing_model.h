@@ -214,13 +214,12 @@ class BearingModel final : public SteadySystem {
   UnknownLayout layout_;
   Index rigid_offset_ = 0;
   // One summit population for both films (scene.asperities; MODEL.md section 4).
-  std::optional<StatisticalContact> contact_;
+  std::shared_ptr<const StatisticalContact> contact_;  // shared with models of the same surfaces
   double contact_cutoff_ = 0.0;  // gap above which contact is negligible (p < 1e-20 p(0))
   RoelandsViscosity roelands_{};
   double viscosity_scale_ = 1.0;  // CurveParameter::viscosity_scale
   std::optional<double> uniform_roughness_;  // CurveParameter::roughness, once set
   std::tuple<Component, Component, Component, AsperityParameters> roughness_origin_;  // the scene's surfaces
-  std::vector<std::pair<double, StatisticalContact>> roughness_contacts_;  // the last few, by roughness
   double sigma_ref_ = 0, gamma_ref_ = 0, p_ref_ = 0, h_ref_ = 0, mu_ref_ = 0;
   std::vector<double> flow_scale_;  // per interior pressure node: p_ref · reference conductance
   std::vector<std::vector<double>> film_row_scale_;  // per film, per node: 1 / reference conductance
