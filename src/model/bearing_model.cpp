@@ -352,6 +352,19 @@ double BearingModel::viscosity_temperature(std::span<const double> u, const Film
   return t;
 }
 
+SegregatedSystem::Blocks BearingModel::segregated_blocks() const {
+  Blocks b;
+  for (const UnknownBlock& block : layout_.blocks()) {
+    std::vector<Index>* into = block.effect == "mechanics"       ? &b.rigid
+                               : block.effect == "hydrodynamics" ? &b.pressure
+                               : block.effect == "thermal"       ? &b.temperature
+                                                                 : nullptr;
+    if (!into) throw std::logic_error("segregated_blocks: unknown block of effect " + block.effect);
+    for (Index k = 0; k < block.size; ++k) into->push_back(block.offset + k);
+  }
+  return b;
+}
+
 std::vector<double> BearingModel::cold_start() const {
   std::vector<double> u(layout_.size(), 0.0);
   const double h0 = scene_.solver.cold_start_film;

@@ -113,12 +113,18 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
     }
   });
 
-  // Wrap each node's flow balance in the complementarity function.
+  // Wrap each node's flow balance in the complementarity function (for a segregated
+  // scheme, which projects p ≥ 0 itself, scale it alone).
   if (a.mode() != Assembler::Mode::values) return;
   for (int k = 0; k < op.interior_count(); ++k) {
     const Index row = p_col(k);
     const double scale = flow_scale_[k];
     const double w_hat = a.residual_value(row) / scale;
+    if (flow_balance_rows_) {
+      a.set_residual(row, w_hat);
+      if (jac) a.scale_row(row, 1.0 / scale);
+      continue;
+    }
     const Complementarity phi = complementarity(cavitation_row_, u[row], w_hat);
     a.set_residual(row, phi.value);
     if (!jac) continue;

@@ -22,7 +22,7 @@
 #include "twb/physics/roelands_viscosity.h"
 #include "twb/physics/statistical_contact.h"
 #include "twb/scene/scene.h"
-#include "twb/solver/steady_system.h"
+#include "twb/solver/segregated_system.h"
 
 namespace twb {
 
@@ -104,7 +104,7 @@ struct BearingState {
 // As a SteadySystem the continuation parameter is the load (N) and the transient is
 // the paper's thermal one: component temperatures carry their heat capacity ρ c t,
 // everything else (pressures, film nodes, rigid body) is algebraic.
-class BearingModel final : public SteadySystem {
+class BearingModel final : public SegregatedSystem {
  public:
   explicit BearingModel(const Scene& scene);
 
@@ -145,6 +145,11 @@ class BearingModel final : public SteadySystem {
   // Fischer–Burmeister row within tol; the other rows are the same in both forms.
   double newton_form_tolerance_ratio() const override { return 1.0 / (2.0 + std::numbers::sqrt2); }
   CavitationRow cavitation_row() const { return cavitation_row_; }
+
+  // SegregatedSystem: the rigid body, the pressures and the temperatures by effect
+  // (mechanics, hydrodynamics, thermal), and the pressure rows as ŵ alone.
+  Blocks segregated_blocks() const override;
+  void set_flow_balance_rows(bool on) override { flow_balance_rows_ = on; }
 
   // Changes the external load; the pattern and every scale except F_ext-based ones are kept.
   void set_load(double load);
@@ -209,6 +214,7 @@ class BearingModel final : public SteadySystem {
   Scene scene_;
   double load_ = 0;
   CavitationRow cavitation_row_ = CavitationRow::fischer_burmeister;
+  bool flow_balance_rows_ = false;
   std::vector<Film> films_;
   std::vector<ComponentHeat> components_;
   UnknownLayout layout_;
