@@ -21,9 +21,28 @@ void read_mesh(const MapReader& scene, Scene& out) {
 }
 
 void read_solver(const MapReader& scene, Scene& out) {
-  const MapReader solver = scene.map(
-      "solver", {"residual_tolerance", "step_tolerance", "max_iterations", "cold_start_film"});
+  const MapReader solver = scene.map("solver", {"method", "residual_tolerance", "step_tolerance", "max_iterations",
+                                                "cold_start_film", "over_relaxation"});
   SolverSettings& s = out.solver;
+  s.method = read_choice(solver, "method", kSolverMethods, s.method);
+  // The paper's scheme solves one state from the paper's cold start; continuation,
+  // transients and distress searches are twb's own.
+  if (s.method == SolverMethod::paper && out.study.type != StudyType::point) {
+    const Node method = solver.get("method", "");
+    method.fail(fmt::format("{}: 'paper' solves one operating point (study type: point); a {} study needs "
+                            "method: newton",
+                            method.path(), kStudyTypes.names[kStudyTypes.index(out.study.type)]));
+  }
+  if (s.method != SolverMethod::paper && solver.has("over_relaxation")) {
+    const Node node = solver.get("over_relaxation", "");
+    node.fail(fmt::format("{}: the over-relaxation factor belongs to the paper's scheme; it applies with method: "
+                          "paper",
+                          node.path()));
+  }
+  s.over_relaxation = solver.quantity("over_relaxation", si::dimensionless,
+                                      Range{.low = 0.0, .low_open = true, .high = 2.0, .high_open = true,
+                                            .reason = "SOR converges for 0 < ω < 2"},
+                                      s.over_relaxation);
   s.residual_tolerance =
       solver.quantity("residual_tolerance", si::dimensionless, positive, s.residual_tolerance);
   s.step_tolerance = solver.quantity("step_tolerance", si::dimensionless, positive, s.step_tolerance);
@@ -213,8 +232,8 @@ void read_output(const MapReader& scene, Scene& out) {
 
 void read_numerics(const MapReader& scene, Scene& out) {
   read_mesh(scene, out);
-  read_solver(scene, out);
   read_study(scene, out);
+  read_solver(scene, out);  // after the study, which the solver's method must suit
   read_output(scene, out);
 }
 

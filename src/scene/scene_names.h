@@ -38,6 +38,9 @@ inline constexpr EnumNames<CurveParameter, 6> kCurveParameters{
     {CurveParameter::speed, CurveParameter::friction_coefficient, CurveParameter::gear_tilt,
      CurveParameter::ambient_temperature, CurveParameter::viscosity_scale, CurveParameter::roughness}};
 
+inline constexpr EnumNames<SolverMethod, 2> kSolverMethods{{"newton", "paper"},
+                                                           {SolverMethod::newton, SolverMethod::paper}};
+
 inline constexpr EnumNames<ErrorEstimate, 2> kErrorEstimates{
     {"none", "richardson"}, {ErrorEstimate::none, ErrorEstimate::richardson}};
 

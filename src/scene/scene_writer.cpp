@@ -135,6 +135,8 @@ void write_numerics(Writer& w, const Scene& s) {
   w.entry(1, "flat_contact_quadrature", fmt::format("{}", s.mesh.flat_contact_quadrature));
 
   w.line(0, "solver:");
+  w.entry(1, "method", std::string(kSolverMethods.name(s.solver.method)));
+  if (s.solver.method == SolverMethod::paper) w.entry(1, "over_relaxation", quantity(s.solver.over_relaxation, "1"));
   w.entry(1, "residual_tolerance", quantity(s.solver.residual_tolerance, "1"));
   w.entry(1, "step_tolerance", quantity(s.solver.step_tolerance, "1"));
   w.entry(1, "max_iterations", fmt::format("{}", s.solver.max_iterations));

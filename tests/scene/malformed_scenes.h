@@ -30,7 +30,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
   static const std::vector<MalformedCase> cases{
     {"unknown_key", 5, 62, {"unknown key 'thicknes' in 'geometry.washer'", "did you mean 'thickness'?", "Allowed: inner_diameter, outer_diameter, thickness"}},
     {"unknown_top_level_key", 12, 1, {"unknown key 'meshes' at the top level", "did you mean 'mesh'?", "Allowed: effects, geometry"}},
-    {"unknown_key_without_suggestion", 13, 3, {"unknown key 'banana' in 'solver'", "Allowed: residual_tolerance, step_tolerance, max_iterations, cold_start_film"}},
+    {"unknown_key_without_suggestion", 13, 3, {"unknown key 'banana' in 'solver'", "Allowed: method, residual_tolerance, step_tolerance, max_iterations, cold_start_film, over_relaxation"}},
     {"unknown_effect_option", 3, 21, {"unknown key 'cavitaton'", "did you mean 'cavitation'?", "Allowed: cavitation"}},
     {"option_of_effect_without_options", 4, 20, {"unknown key 'order'", "takes no options"}},
     {"key_not_applicable_to_law", 14, 3, {"key 'coefficient' in 'friction' does not apply with law: empirical", "allowed with law: empirical: law"}},
@@ -58,6 +58,9 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"circumferential_nodes_too_few", 13, 26, {"mesh.circumferential_nodes: 7 is out of range; must be >= 8"}},
     {"residual_tolerance_zero", 13, 23, {"solver.residual_tolerance: '0' is out of range; must be > 0"}},
     {"step_tolerance_negative", 12, 26, {"solver.step_tolerance: '-1e-14' is out of range; must be > 0"}},
+    {"paper_method_for_sweep", 13, 11, {"solver.method: 'paper' solves one operating point (study type: point)", "a load_sweep study needs method: newton"}},
+    {"over_relaxation_without_paper", 13, 20, {"solver.over_relaxation", "applies with method: paper"}},
+    {"over_relaxation_too_large", 14, 20, {"solver.over_relaxation: '2.0' is out of range; must be in (0, 2)", "SOR converges for 0 < ω < 2"}},
     {"load_zero", 8, 9, {"operating.load: '0 N' is out of range; must be > 0 N", "a bearing without load has no steady state"}},
     {"speed_negative", 9, 10, {"operating.speed: '-545 rad/s' is out of range; must be >= 0 rad/s"}},
     {"tilt_too_large", 6, 84, {"geometry.gear.tilt: '100 mrad' (= 0.1 rad) is out of range; must be in [0, 0.1) rad"}},

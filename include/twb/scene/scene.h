@@ -119,11 +119,18 @@ struct MeshSettings {
   int flat_contact_quadrature = 6;
 };
 
+// How a steady state is solved: twb's monolithic Newton (KINSOL, KLU), or the paper's
+// segregated scheme (Fig. 5: Newton-Raphson on the rigid body around projected SOR and
+// the heat field's solve; solver/paper_scheme.h), kept as the baseline.
+enum class SolverMethod { newton, paper };
+
 struct SolverSettings {
+  SolverMethod method = SolverMethod::newton;
   double residual_tolerance = 1e-10;  // max-norm of the scaled residual
   double step_tolerance = 1e-14;
   int max_iterations = 200;
   double cold_start_film = 3.0;  // h_min/sigma of the cold start (the paper's)
+  double over_relaxation = 1.7;  // method paper: ω of the pressure's projected SOR
 };
 
 struct Study {

@@ -47,7 +47,7 @@ struct PaperSchemeSettings {
   // A field's sweeps stop once its linearized residual has fallen by this factor (or
   // below a tenth of the tolerance): the loop updates the coefficients anyway.
   double sweep_reduction = 1e-3;
-  int max_sweeps = 20000;
+  int max_sweeps = 2000;
   int max_coupled_iterations = 500;
   int max_newton_iterations = 100;
   // Δx of eq. [38], in the rigid unknowns' scaled units (clearances in σ, tilts in γ_ref).

@@ -32,10 +32,12 @@ class SteadySolver {
 
   // From u (a warm start), falling back to a speed ramp, then a load ramp, from the cold start.
   SteadyReport solve(std::vector<double>& u);
-  // From the paper's cold start.
+  // From the paper's cold start, by the scene's solver.method.
   SteadyReport solve_cold(std::vector<double>& u);
 
  private:
+  // The scene's solver.method: paper (solver/paper_scheme.h), from the cold start in u.
+  SteadyReport solve_by_paper(std::vector<double>& u);
   void account(SteadyReport& rep, const NewtonReport& n) const;
   // KINSOL's Newton from u on the model's Newton form (SteadySystem::set_newton_form),
   // its own form restored afterwards; counted into rep.
