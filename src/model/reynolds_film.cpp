@@ -122,7 +122,9 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
     const double w_hat = a.residual_value(row) / scale;
     if (flow_balance_rows_) {
       a.set_residual(row, w_hat);
-      if (jac) a.scale_row(row, 1.0 / scale);
+      if (!jac) continue;
+      a.scale_row(row, 1.0 / scale);
+      a.add_derivative(row, row, 0.0);  // the same entries in the same order: the slot tape holds
       continue;
     }
     const Complementarity phi = complementarity(cavitation_row_, u[row], w_hat);
