@@ -6,10 +6,17 @@
 //
 //   ./build/benchmarks/work_precision OUT.csv [--meshes 5x24,5x33,9x66,17x132,33x264,65x528]
 //                                             [--tolerances 1e-4,1e-6,1e-8,1e-10,1e-12]
+//   ./build/benchmarks/work_precision OUT.csv --distress [--meshes ...] [--speeds 545,953,1367]
+//
+// With --distress, each row is W_d at one speed on one mesh instead: the fold of the
+// cool branch from 100 N (the distress search's fold-only mode, as the error estimate's
+// refined meshes use it: W_d is the fold, and the transients only prove it) and its CPU
+// time, at the scene's tolerance.
 #include <ctime>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,6 +25,7 @@
 #include "twb/model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 #include "twb/solver/steady_solver.h"
+#include "twb/study/distress_search.h"
 
 namespace {
 
@@ -30,6 +38,40 @@ std::vector<std::string> split(const std::string& list) {
 
 double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
+std::vector<std::string> mesh_keys(const std::string& mesh) {
+  const auto x = mesh.find('x');
+  if (x == std::string::npos) throw std::invalid_argument("a mesh is RxC, e.g. 9x66, not " + mesh);
+  return {"mesh.radial_nodes=" + mesh.substr(0, x), "mesh.circumferential_nodes=" + mesh.substr(x + 1)};
+}
+
+int distress_rows(const char* path, const std::vector<std::string>& meshes, const std::vector<std::string>& speeds) {
+  std::ofstream out(path);
+  out << "radial_nodes,circumferential_nodes,unknowns,speed_rad_s,cpu_s,W_d_N\n";
+  for (const std::string& mesh : meshes) {
+    for (const std::string& speed : speeds) {
+      std::vector<std::string> keys{"study={type: point}", "operating.speed=" + speed + " rad/s"};
+      for (const std::string& k : mesh_keys(mesh)) keys.push_back(k);
+      const twb::Scene scene =
+          twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml", keys);
+      twb::BearingModel model(scene);
+      twb::DistressSearchSettings settings;
+      settings.load_start = 100.0;
+      settings.load_end = 400.0;
+      settings.fold_only = true;
+      const double t0 = cpu_seconds();
+      const twb::DistressSearch found = twb::search_distress(model, settings, {});
+      const double seconds = cpu_seconds() - t0;
+      const std::string w_d = found.row.fold_load ? fmt::format("{:.10g}", *found.row.fold_load) : "";
+      out << fmt::format("{},{},{},{},{:.6g},{}\n", scene.mesh.radial_nodes, scene.mesh.circumferential_nodes,
+                         model.size(), speed, seconds, w_d);
+      out.flush();
+      std::cerr << fmt::format("{} at {} rad/s: W_d {} N, {:.3g} s\n", mesh, speed, w_d.empty() ? "none" : w_d,
+                               seconds);
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -39,31 +81,32 @@ int main(int argc, char** argv) {
   }
   std::vector<std::string> meshes = split("5x24,5x33,9x66,17x132,33x264,65x528");
   std::vector<std::string> tolerances = split("1e-4,1e-6,1e-8,1e-10,1e-12");
-  for (int i = 2; i + 1 < argc; i += 2) {
+  std::vector<std::string> speeds = split("545,953,1367");
+  bool distress = false;
+  for (int i = 2; i < argc; ++i) {
     const std::string key = argv[i];
-    if (key == "--meshes")
-      meshes = split(argv[i + 1]);
-    else if (key == "--tolerances")
-      tolerances = split(argv[i + 1]);
-    else {
-      std::cerr << "work_precision: unknown option " << key << " (allowed: --meshes, --tolerances)\n";
+    if (key == "--distress") {
+      distress = true;
+      continue;
+    }
+    if (i + 1 == argc || (key != "--meshes" && key != "--tolerances" && key != "--speeds")) {
+      std::cerr << "work_precision: unknown option or missing value: " << key
+                << " (allowed: --meshes LIST, --tolerances LIST, --speeds LIST, --distress)\n";
       return 2;
     }
+    (key == "--meshes" ? meshes : key == "--tolerances" ? tolerances : speeds) = split(argv[++i]);
   }
+  if (distress) return distress_rows(argv[1], meshes, speeds);
   std::ofstream out(argv[1]);
   out << "radial_nodes,circumferential_nodes,unknowns,residual_tolerance,cpu_s,newton_iterations,converged,"
          "f_eff,hmin_over_sigma,T_mean_C,fluid_share\n";
   for (const std::string& mesh : meshes) {
-    const auto x = mesh.find('x');
-    if (x == std::string::npos) {
-      std::cerr << "work_precision: a mesh is RxC, e.g. 9x66, not " << mesh << "\n";
-      return 2;
-    }
     for (const std::string& tolerance : tolerances) {
-      const twb::Scene scene = twb::load_scene(
-          std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
-          {"study={type: point}", "operating.load=150 N", "mesh.radial_nodes=" + mesh.substr(0, x),
-           "mesh.circumferential_nodes=" + mesh.substr(x + 1), "solver.residual_tolerance=" + tolerance});
+      std::vector<std::string> keys{"study={type: point}", "operating.load=150 N",
+                                    "solver.residual_tolerance=" + tolerance};
+      for (const std::string& k : mesh_keys(mesh)) keys.push_back(k);
+      const twb::Scene scene =
+          twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml", keys);
       twb::BearingModel model(scene);
       twb::NewtonSettings newton;
       newton.residual_tolerance = scene.solver.residual_tolerance;

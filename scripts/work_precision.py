@@ -11,7 +11,11 @@ from the three finest meshes is printed beside it), and writes
   - markdown tables on standard output: per mesh at the tightest tolerance, and per
     tolerance on the paper's 9x66 mesh.
 
-usage: work_precision.py STATE.csv FIGURE.png
+With a second pair of arguments, the same for W_d (benchmarks/work_precision
+--distress): the error of W_d on each mesh, and of the Richardson extrapolation of each
+pair of neighbouring meshes (its cost the pair's), against CPU time, per speed.
+
+usage: work_precision.py STATE.csv FIGURE.png [DISTRESS.csv DISTRESS_FIGURE.png]
 """
 import csv
 import math
@@ -65,8 +69,54 @@ def relative_error(value, ref):
     return abs(value - ref) / abs(ref) if ref != 0 else abs(value)
 
 
+def distress(path, figure):
+    with open(path, newline="") as f:
+        rows = [r for r in csv.DictReader(f) if r["W_d_N"]]
+    for r in rows:
+        r["nr"], r["nt"] = int(r["radial_nodes"]), int(r["circumferential_nodes"])
+        r["cpu"], r["wd"] = float(r["cpu_s"]), float(r["W_d_N"])
+    speeds = sorted({r["speed_rad_s"] for r in rows}, key=float)
+    fig, ax = plt.subplots(figsize=(7, 5))
+    print("W_d against its mesh-converged value (Richardson from the two finest meshes of each speed):")
+    print()
+    print("| speed | mesh | W_d (N) | error | CPU s | extrapolated with the next coarser | its error | the pair's CPU s |")
+    print("|---|---|---|---|---|---|---|---|")
+    for speed in speeds:
+        ladder = sorted((r for r in rows if r["speed_rad_s"] == speed), key=lambda r: r["nr"])
+        if len(ladder) < 2:
+            continue
+        ref = ladder[-1]["wd"] + (ladder[-1]["wd"] - ladder[-2]["wd"]) / 3.0
+        order = float("nan")
+        if len(ladder) >= 3:
+            a, b, c = (r["wd"] for r in ladder[-3:])
+            if (b - a) * (c - b) > 0:
+                order = math.log2((b - a) / (c - b))
+        line = ax.loglog([r["cpu"] for r in ladder], [max(relative_error(r["wd"], ref), 1e-16) for r in ladder],
+                         marker="o", label=f"{speed} rad/s, one mesh (order {order:.2f})")
+        pairs = []
+        for coarse, fine in zip(ladder, ladder[1:]):
+            extrapolated = fine["wd"] + (fine["wd"] - coarse["wd"]) / 3.0
+            pairs.append((coarse["cpu"] + fine["cpu"], relative_error(extrapolated, ref), extrapolated))
+        ax.loglog([p[0] for p in pairs[:-1]], [max(p[1], 1e-16) for p in pairs[:-1]], marker="x", linestyle="--",
+                  color=line[0].get_color(), label=f"{speed} rad/s, Richardson of a pair")
+        for i, r in enumerate(ladder):
+            pair = (f"{pairs[i - 1][2]:.2f} N | {100 * pairs[i - 1][1]:.2g} % | {pairs[i - 1][0]:.3g}"
+                    if i > 0 and i < len(ladder) - 1 else " | | ")
+            print(f"| {speed} | {r['nr']}×{r['nt']} | {r['wd']:.2f} | {100 * relative_error(r['wd'], ref):.2g} % | "
+                  f"{r['cpu']:.3g} | {pair} |")
+        print(f"| {speed} | reference | {ref:.2f} | (observed order {order:.2f}) | | | | |")
+    ax.axhline(0.01, color="grey", linewidth=0.8, linestyle=":")
+    ax.set_xlabel("CPU time of the fold search(es) (s)")
+    ax.set_ylabel("relative error of W_d")
+    ax.set_title("W_d: error against cost, one mesh or a pair extrapolated")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(figure, dpi=120)
+
+
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 5):
         raise SystemExit(__doc__)
     rows = read(sys.argv[1])
     ref, order, tight = reference(rows)
@@ -109,6 +159,9 @@ def main():
         for r in sorted(paper, key=lambda r: -r["tol"]):
             changes = " | ".join(f"{relative_error(r[key], base[key]):.1e}" for key, _ in QUANTITIES)
             print(f"| {r['tol']:g} | {r['cpu']:.3g} | {r['newton_iterations']} | {changes} |")
+    if len(sys.argv) == 5:
+        print()
+        distress(sys.argv[3], sys.argv[4])
 
 
 if __name__ == "__main__":
