@@ -2,7 +2,8 @@
 // docs/model.md "The paper's scheme"), on the same equations and mesh, in one run: one
 // steady state of the paper's case from the paper's cold start, both converged to the
 // same max-norm of the scaled residual, so the reported quantities agree to every
-// printed digit; a warm 2 % load step; W_d at 545 rad/s to 0.2 %, twb's search against
+// printed digit; a warm 2 % load step; the cool branch of the paper's Fig. 6 at 545 rad/s
+// (100 to 150 N in 10 N steps); W_d at 545 rad/s to 0.2 %, twb's search against
 // the paper's load stepping. Each run 3 times (the paper's W_d once: 27 s); quote the
 // medians and their ratio (CPU).
 //
@@ -187,6 +188,41 @@ void BM_DistressByTwb(benchmark::State& state) {
   state.counters["W_d_high_N"] = found.row.bracket_high.value_or(0.0);
 }
 
+// The paper's Fig. 6 at 545 rad/s, its cool branch: states at 100, 110, ..., 150 N (below
+// W_d on every mesh from 5×24, where it is 161 N), each from the last, the first from the
+// cold start; by twb's Newton and by the paper's scheme, each state to the same residual.
+void sweep(benchmark::State& state, const std::string& method) {
+  const twb::Scene scene = race_scene(method);
+  twb::BearingModel model(scene);
+  long states = 0;
+  for (auto _ : state) {
+    std::vector<double> u;
+    states = 0;
+    for (double load = 100.0; load <= 150.0 + 1e-9; load += 10.0) {
+      model.set_load(load);
+      twb::SteadySolver solver(model, twb::NewtonSettings{});
+      bool converged = false;
+      if (u.empty()) {
+        converged = solver.solve_cold(u).converged;
+      } else if (method == "paper") {
+        converged = twb::solve_by_paper_scheme(model, u).converged;
+      } else {
+        converged = solver.solve(u).converged;
+      }
+      if (!converged) {
+        any_failed = true;
+        state.SkipWithError("a state of the sweep did not converge");
+        return;
+      }
+      ++states;
+    }
+  }
+  state.counters["states"] = double(states);
+}
+
+void BM_SweepByNewton(benchmark::State& state) { sweep(state, "newton"); }
+void BM_SweepByPaperScheme(benchmark::State& state) { sweep(state, "paper"); }
+
 void BM_StateByNewton(benchmark::State& state) { solve_state(state, "newton"); }
 void BM_WarmStepByNewton(benchmark::State& state) { warm_step(state, "newton"); }
 void BM_WarmStepByPaperScheme(benchmark::State& state) { warm_step(state, "paper"); }
@@ -195,6 +231,12 @@ void BM_StateByPaperScheme(benchmark::State& state) { solve_state(state, "paper"
 BENCHMARK(BM_StateByNewton)->Unit(benchmark::kMillisecond)->Repetitions(3)->MeasureProcessCPUTime();
 BENCHMARK(BM_WarmStepByNewton)->Unit(benchmark::kMillisecond)->Repetitions(3)->MeasureProcessCPUTime();
 BENCHMARK(BM_WarmStepByPaperScheme)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->MeasureProcessCPUTime();
+BENCHMARK(BM_SweepByNewton)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3)->MeasureProcessCPUTime();
+BENCHMARK(BM_SweepByPaperScheme)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->Repetitions(3)
