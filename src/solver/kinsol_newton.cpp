@@ -204,9 +204,6 @@ KinsolNewton::KinsolNewton(const SteadySystem& model)
   check_flag(KINSetErrHandlerFn(kin_, error_handler, callbacks_.get()), "KINSetErrHandlerFn");
   check_flag(KINSetLinearSolver(kin_, klu_.get(), jac_.get()), "KINSetLinearSolver");
   check_flag(KINSetJacFn(kin_, jacobian_fn), "KINSetJacFn");
-  // A fresh exact Jacobian every iteration: quadratic convergence is worth one KLU
-  // refactorization per step on this small system.
-  check_flag(KINSetMaxSetupCalls(kin_, 1), "KINSetMaxSetupCalls");
   // TWB_KINSOL_PRINT=1..3 shows KINSOL's own iteration log on stdout (diagnostics).
   if (const char* level = std::getenv("TWB_KINSOL_PRINT")) KINSetPrintLevel(kin_, std::atoi(level));
 }
@@ -224,6 +221,7 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   const double tolerance =
       s.residual_tolerance * (model_.newton_form() ? model_.newton_form_tolerance_ratio() : 1.0);
   check_flag(KINSetFuncNormTol(kin_, tolerance), "KINSetFuncNormTol");
+  check_flag(KINSetMaxSetupCalls(kin_, std::max(1, s.jacobian_reuse)), "KINSetMaxSetupCalls");
   check_flag(KINSetScaledStepTol(kin_, s.step_tolerance), "KINSetScaledStepTol");
   if (s.max_step > 0) check_flag(KINSetMaxNewtonStep(kin_, s.max_step), "KINSetMaxNewtonStep");
   callbacks_->last_error.clear();

@@ -27,6 +27,11 @@ struct NewtonSettings {
   // the line search would stretch to max_iterations more, only tells the caller to
   // shorten the step or to wait.
   bool line_search = true;
+  // Newton iterations one Jacobian serves (KINSetMaxSetupCalls): 1 is Newton's method,
+  // more a chord method between refactorizations. 1 by default: quadratic convergence is
+  // worth one assembly and KLU refactorization per iteration on this system
+  // (benchmarks/jacobian_reuse).
+  int jacobian_reuse = 1;
 };
 
 struct NewtonReport {
