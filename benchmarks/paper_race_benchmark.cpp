@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh_option.h"
 #include "twb/model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 #include "twb/solver/paper_scheme.h"
@@ -33,12 +34,12 @@
 
 namespace {
 
-std::vector<std::string> mesh_overrides{"mesh.radial_nodes=9", "mesh.circumferential_nodes=66"};
+std::vector<std::string> race_mesh = twb::bench::mesh_overrides("9x66");  // --mesh=RxC replaces it
 bool any_failed = false;  // a solver that did not converge fails the command (its CI check)
 
 twb::Scene race_scene(const std::string& method) {
   std::vector<std::string> overrides{"study={type: point}", "operating.load=150 N", "solver.method=" + method};
-  overrides.insert(overrides.end(), mesh_overrides.begin(), mesh_overrides.end());
+  overrides.insert(overrides.end(), race_mesh.begin(), race_mesh.end());
   return twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml", overrides);
 }
 
@@ -260,9 +261,7 @@ int main(int argc, char** argv) {
   std::vector<char*> rest;
   for (int i = 0; i < argc; ++i) {
     if (std::strncmp(argv[i], "--mesh=", 7) == 0) {
-      const std::string mesh(argv[i] + 7);
-      const auto x = mesh.find('x');
-      mesh_overrides = {"mesh.radial_nodes=" + mesh.substr(0, x), "mesh.circumferential_nodes=" + mesh.substr(x + 1)};
+      race_mesh = twb::bench::mesh_overrides(argv[i] + 7);
       continue;
     }
     rest.push_back(argv[i]);

@@ -16,12 +16,12 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "mesh_option.h"
 #include "twb/model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 #include "twb/solver/steady_solver.h"
@@ -38,19 +38,13 @@ std::vector<std::string> split(const std::string& list) {
 
 double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
-std::vector<std::string> mesh_keys(const std::string& mesh) {
-  const auto x = mesh.find('x');
-  if (x == std::string::npos) throw std::invalid_argument("a mesh is RxC, e.g. 9x66, not " + mesh);
-  return {"mesh.radial_nodes=" + mesh.substr(0, x), "mesh.circumferential_nodes=" + mesh.substr(x + 1)};
-}
-
 int distress_rows(const char* path, const std::vector<std::string>& meshes, const std::vector<std::string>& speeds) {
   std::ofstream out(path);
   out << "radial_nodes,circumferential_nodes,unknowns,speed_rad_s,cpu_s,W_d_N\n";
   for (const std::string& mesh : meshes) {
     for (const std::string& speed : speeds) {
       std::vector<std::string> keys{"study={type: point}", "operating.speed=" + speed + " rad/s"};
-      for (const std::string& k : mesh_keys(mesh)) keys.push_back(k);
+      for (const std::string& k : twb::bench::mesh_overrides(mesh)) keys.push_back(k);
       const twb::Scene scene =
           twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml", keys);
       twb::BearingModel model(scene);
@@ -104,7 +98,7 @@ int main(int argc, char** argv) {
     for (const std::string& tolerance : tolerances) {
       std::vector<std::string> keys{"study={type: point}", "operating.load=150 N",
                                     "solver.residual_tolerance=" + tolerance};
-      for (const std::string& k : mesh_keys(mesh)) keys.push_back(k);
+      for (const std::string& k : twb::bench::mesh_overrides(mesh)) keys.push_back(k);
       const twb::Scene scene =
           twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml", keys);
       twb::BearingModel model(scene);

@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
+#include "twb/solver/kinsol_newton.h"
 #include "twb/solver/sparse_lu.h"
 
 namespace twb {
@@ -41,7 +42,7 @@ class PaperScheme {
     if (!converge_fields(u)) return fail(u, "the coupled loop of pressures and temperatures did not converge at the start");
     std::vector<double> balance = rigid_rows();
     for (;;) {
-      rep_.residual_norm = std::max({max_abs(balance), pressure_norm(u), heat_norm()});
+      rep_.residual_norm = residual_norm(u, balance);
       if (rep_.residual_norm <= s_.residual_tolerance) {
         rep_.converged = true;
         return;
@@ -49,7 +50,7 @@ class PaperScheme {
       if (rep_.newton_iterations == s_.max_newton_iterations)
         return fail(u, fmt::format("the force and moment balances are still {:.3g} off after {} Newton–Raphson "
                                    "iterations",
-                                   max_abs(balance), rep_.newton_iterations));
+                                   max_norm(balance), rep_.newton_iterations));
       ++rep_.newton_iterations;
       Eigen::MatrixXd jac;
       if (!differentiate(u, jac)) return fail(u, "the coupled loop did not converge at a differencing point of eq. [38]");
@@ -90,12 +91,12 @@ class PaperScheme {
       if (!improved) {
         // Rows stay as last evaluated at a trial: evaluate at u again for the report.
         converge_fields(u);
-        rep_.residual_norm = std::max({max_abs(balance), pressure_norm(u), heat_norm()});
+        rep_.residual_norm = residual_norm(u, balance);
         if (rep_.residual_norm <= s_.residual_tolerance) {
           rep_.converged = true;
           return;
         }
-        return fail(u, fmt::format("no Newton–Raphson step lowers the balances below {:.3g}", max_abs(balance)));
+        return fail(u, fmt::format("no Newton–Raphson step lowers the balances below {:.3g}", max_norm(balance)));
       }
     }
   }
@@ -104,7 +105,7 @@ class PaperScheme {
   void fail(const std::vector<double>& u, std::string why) {
     rep_.converged = false;
     rep_.message = std::move(why);
-    rep_.residual_norm = std::max({max_abs(rigid_rows()), pressure_norm(u), heat_norm()});
+    rep_.residual_norm = residual_norm(u, rigid_rows());
   }
 
   void evaluate(const std::vector<double>& u) {
@@ -112,10 +113,9 @@ class PaperScheme {
     ++rep_.evaluations;
   }
 
-  static double max_abs(const std::vector<double>& v) {
-    double m = 0.0;
-    for (double x : v) m = std::max(m, std::abs(x));
-    return m;
+  // Every row's residual: the balances, the Reynolds condition, the heat balance.
+  double residual_norm(const std::vector<double>& u, const std::vector<double>& balance) const {
+    return std::max({max_norm(balance), pressure_norm(u), heat_norm()});
   }
   // The merit a Newton direction always lowers (for a small enough step).
   static double sum_of_squares(const std::vector<double>& v) {

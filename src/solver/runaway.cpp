@@ -113,12 +113,7 @@ class StepJudge {
   double sample() {
     const std::span<const double> rate_of_change = ida_.rate();
     const std::vector<double>& c = ida_.capacities();
-    double rate = 0.0;
-    for (std::size_t k = 0; k < c.size(); ++k) {
-      const double motion = c[k] * rate_of_change[k];
-      if (!std::isfinite(motion)) rate = INFINITY;
-      if (c[k] > 0.0) rate = std::max(rate, std::abs(motion));
-    }
+    const double rate = largest_motion([&](std::size_t k) { return c[k] * rate_of_change[k]; });
     out_.samples.push_back({ida_.time(), rate});
     return rate;
   }
@@ -127,11 +122,18 @@ class StepJudge {
   // verdict is read from the equations themselves, not from IDA's interpolant.
   double residual_rate(std::span<const double> u) {
     system_.evaluate(u, residual_, {});
-    double rate = 0.0;
+    return largest_motion([&](std::size_t k) { return residual_[k]; });
+  }
+
+  // max |row(k)| over the differential rows; inf where any row is not finite.
+  template <class Row>
+  double largest_motion(const Row& row) const {
     const std::vector<double>& c = ida_.capacities();
-    for (std::size_t k = 0; k < residual_.size(); ++k) {
-      if (!std::isfinite(residual_[k])) return INFINITY;
-      if (c[k] > 0.0) rate = std::max(rate, std::abs(residual_[k]));
+    double rate = 0.0;
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      const double value = row(k);
+      if (!std::isfinite(value)) return INFINITY;
+      if (c[k] > 0.0) rate = std::max(rate, std::abs(value));
     }
     return rate;
   }

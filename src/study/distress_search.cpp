@@ -32,6 +32,15 @@ SolvedState record(const BearingModel& model, std::span<const double> u, long it
   return row;
 }
 
+// The corrector of a natural continuation along the cool branch, whose predictions lie
+// in Newton's quadratic basin: a few full steps converge, and a failure (a step that
+// outran the branch) is cut short, without a line search, and the step halved.
+NewtonSettings in_basin(NewtonSettings newton) {
+  newton.max_iterations = 12;
+  newton.line_search = false;
+  return newton;
+}
+
 // The light load a start is checked against: a tenth of it. On the paper's bearing the
 // cool branch is the only one a tenth of the distress load (the hot branch turns back
 // well above that), and the branch down there costs a handful of continuation steps.
@@ -149,9 +158,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
     }
   }
   NaturalSettings natural;
-  natural.newton = newton;
-  natural.newton.max_iterations = 12;
-  natural.newton.line_search = false;
+  natural.newton = in_basin(newton);
   // Natural continuation only has to bring the branch near its end: the fold is located
   // by arclength. Creeping closer than a bracket width costs slow corrections (the
   // Jacobian turns singular).
@@ -549,9 +556,7 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
   if (progress) progress(fmt::format("  is the start on the cool branch? following it down to {:.3g} N", light));
   std::vector<double> down = u;
   NaturalSettings natural;
-  natural.newton = newton;
-  natural.newton.max_iterations = 12;
-  natural.newton.line_search = false;
+  natural.newton = in_basin(newton);
   natural.initial_step = natural.max_step = 0.15 * settings.load_start;
   natural.min_step = settings.bracket_width * light;
   model.set_load(settings.load_start);
