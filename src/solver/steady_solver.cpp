@@ -201,6 +201,11 @@ SteadyReport SteadySolver::solve(std::vector<double>& u) { return settle(u, true
 SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
   u = model_.cold_start();
   if (model_.scene().solver.method == SolverMethod::paper) return solve_by_paper(u);
+  if (mesh_sequence_ && model_.films().front().mesh.node_count() > kSequenceAbove) {
+    SteadyReport rep = solve_by_mesh_sequence(u);
+    if (rep.converged) return rep;
+    u = model_.cold_start();
+  }
   // From the paper's cold start Newton never converges: over the 36 cold starts of the
   // paper's speeds and loads (benchmarks/cold_start_survey) its 8 full steps diverged
   // and its 8 damped ones lowered the residual by a few per cent, 16 assemblies and
@@ -209,6 +214,31 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
   // 2e-16), 1468 iterations instead of 1870 (with the pseudo-time settings of then; now
   // 643, docs/model.md).
   return settle(u, false);
+}
+
+SteadyReport SteadySolver::solve_by_mesh_sequence(std::vector<double>& u) {
+  // The mesh with every other node line, solved cold in turn (so the sequence goes down
+  // to the paper's mesh or coarser), then carried here by interpolation: within
+  // Newton's basin up to the coarse mesh's discretization error, where the cold start's
+  // pseudo-time needs more steps on every finer mesh (benchmarks/README.md, "Growth").
+  const auto t0 = std::chrono::steady_clock::now();
+  const FilmMesh& mesh = model_.films().front().mesh;
+  const std::unique_ptr<BearingModel> coarse =
+      model_.on_mesh((mesh.radial_nodes() + 1) / 2, (mesh.circumferential_nodes() + 1) / 2);
+  SteadySolver coarse_solver(*coarse, settings_);
+  std::vector<double> uc;
+  SteadyReport rep = coarse_solver.solve_cold(uc);
+  if (rep.converged) {
+    std::vector<double> trial = model_.interpolated_from(*coarse, uc);
+    rep.converged = reach(trial, rep, true);
+    if (rep.converged) {
+      u = std::move(trial);
+      rep.message.clear();
+    }
+  }
+  rep.strategy = "mesh sequence";
+  rep.wall_ms = elapsed_ms(t0);
+  return rep;
 }
 
 SteadyReport SteadySolver::solve_by_paper(std::vector<double>& u) {

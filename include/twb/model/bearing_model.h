@@ -131,6 +131,12 @@ class BearingModel final : public SegregatedSystem {
   // The paper's cold start: both films at h_min/σ = cold_start_film, washer tilted half
   // way, ambient temperature, no pressure.
   std::vector<double> cold_start() const;
+  // State u of `source`, a model of the same scene on another mesh, carried to this
+  // mesh by bilinear interpolation of every field in (r, θ) (mesh_transfer.cpp): the
+  // start of a mesh sequence. std::invalid_argument when the unknowns differ.
+  std::vector<double> interpolated_from(const BearingModel& source, std::span<const double> u) const;
+  // The same bearing as now (load, speed and every curve parameter) on another mesh.
+  std::unique_ptr<BearingModel> on_mesh(int radial_nodes, int circumferential_nodes) const;
 
   BearingState describe(std::span<const double> u) const;
   // The fields of state u on every film's grid, film 1 first (film_fields.cpp).

@@ -32,12 +32,22 @@ class SteadySolver {
 
   // From u (a warm start), falling back to a speed ramp, then a load ramp, from the cold start.
   SteadyReport solve(std::vector<double>& u);
-  // From the paper's cold start, by the scene's solver.method.
+  // From the paper's cold start, by the scene's solver.method. On meshes finer than
+  // kSequenceAbove nodes per film, by a mesh sequence first (solve_by_mesh_sequence),
+  // the cold start itself when that fails.
   SteadyReport solve_cold(std::vector<double>& u);
+  // Off: every cold start by pseudo-time on the mesh itself (the growth benchmark's
+  // comparison).
+  void set_mesh_sequence(bool on) { mesh_sequence_ = on; }
+  // Above the paper's 9×66 (594 nodes) and its 17×66 or 9×132 refinements.
+  static constexpr int kSequenceAbove = 1500;
 
  private:
   // The scene's solver.method: paper (solver/paper_scheme.h), from the cold start in u.
   SteadyReport solve_by_paper(std::vector<double>& u);
+  // The state on the mesh with every other node line, interpolated here, then Newton
+  // (pseudo-time if Newton fails).
+  SteadyReport solve_by_mesh_sequence(std::vector<double>& u);
   void account(SteadyReport& rep, const NewtonReport& n) const;
   // KINSOL's Newton from u on the model's Newton form (SteadySystem::set_newton_form),
   // its own form restored afterwards; counted into rep.
@@ -59,6 +69,7 @@ class SteadySolver {
   BearingModel& model_;
   NewtonSettings settings_;
   KinsolNewton newton_;
+  bool mesh_sequence_ = true;
 };
 
 }  // namespace twb

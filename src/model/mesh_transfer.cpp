@@ -1,0 +1,108 @@
+// A state carried from one mesh to another of the same scene (the start of a mesh
+// sequence, steady_solver.cpp). Every field lives on an Nr × Nθ index grid spread
+// uniformly over its annulus (MODEL.md section 10), so a node of the target lies at the
+// same fractions of radius span and turn on the source grid, and bilinear interpolation
+// there is second-order accurate: the interpolated state differs from the target mesh's
+// solution by about the source mesh's own discretization error, well inside Newton's
+// basin. Pressures are interpolated with their edge zeros, so the target's edge-adjacent
+// nodes see the boundary condition; a cavitated node (p = 0) next to a pressurized one
+// takes a value in between, which the complementarity rows then settle.
+#include <cmath>
+#include <stdexcept>
+
+#include "twb/model/bearing_model.h"
+
+namespace twb {
+namespace {
+
+// Bilinear interpolation of a field given on the source index grid (value(i, j)) at the
+// point that is node (i, j) of the target grid; θ is periodic.
+struct GridMap {
+  int src_nr, src_nt, dst_nr, dst_nt;
+
+  template <class Value>
+  double at(int i, int j, const Value& value) const {
+    const double s = dst_nr > 1 ? double(i) * (src_nr - 1) / (dst_nr - 1) : 0.0;
+    const int i0 = std::min(int(std::floor(s)), std::max(src_nr - 2, 0));
+    const double ti = src_nr > 1 ? s - i0 : 0.0;
+    const int i1 = std::min(i0 + 1, src_nr - 1);
+    const double a = double(j) * src_nt / dst_nt;
+    const int j0 = int(std::floor(a)) % src_nt;
+    const double tj = a - std::floor(a);
+    const int j1 = (j0 + 1) % src_nt;
+    return (1 - ti) * ((1 - tj) * value(i0, j0) + tj * value(i0, j1)) +
+           ti * ((1 - tj) * value(i1, j0) + tj * value(i1, j1));
+  }
+};
+
+}  // namespace
+
+std::vector<double> BearingModel::interpolated_from(const BearingModel& source, std::span<const double> u) const {
+  const auto& mine = layout_.blocks();
+  const auto& theirs = source.layout().blocks();
+  bool same_blocks = mine.size() == theirs.size() && films_.size() == source.films_.size() &&
+                     components_.size() == source.components_.size();
+  for (std::size_t b = 0; same_blocks && b < mine.size(); ++b) same_blocks = mine[b].name == theirs[b].name;
+  if (!same_blocks || Index(u.size()) != source.size())
+    throw std::invalid_argument("interpolated_from: the source model has other unknowns (not the same scene)");
+
+  // The unknowns are scaled (bearing_model.h); a model built for another load, tilt or
+  // roughness has other scales, so values go through physical units.
+  std::vector<double> out(size(), 0.0);
+  const double clearance = source.sigma_ref_ / sigma_ref_, tilt = source.gamma_ref_ / gamma_ref_;
+  const double pressure = source.p_ref_ / p_ref_;
+  const double ambient_shift = source.scene_.operating.ambient - scene_.operating.ambient;
+  const double* q = u.data() + source.rigid_offset_;
+  out[rigid_offset_ + 0] = q[0] * clearance;
+  out[rigid_offset_ + 1] = q[1] * tilt;
+  out[rigid_offset_ + 2] = q[2] * tilt;
+  out[rigid_offset_ + 3] = q[3] * clearance;
+
+  for (std::size_t f = 0; f < films_.size(); ++f) {
+    const Film& dst = films_[f];
+    const Film& src = source.films_[f];
+    const GridMap map{src.mesh.radial_nodes(), src.mesh.circumferential_nodes(), dst.mesh.radial_nodes(),
+                      dst.mesh.circumferential_nodes()};
+    if (dst.pressure_offset >= 0) {
+      const int snr = map.src_nr, snt = map.src_nt;
+      auto p = [&](int i, int j) {
+        return (i <= 0 || i >= snr - 1) ? 0.0 : pressure * u[src.pressure_offset + Index(i - 1) * snt + j];
+      };
+      for (int i = 1; i < map.dst_nr - 1; ++i)
+        for (int j = 0; j < map.dst_nt; ++j)
+          out[dst.pressure_offset + Index(i - 1) * map.dst_nt + j] = map.at(i, j, p);
+    }
+    if (dst.temperature_offset >= 0) {
+      auto t = [&](int i, int j) { return u[src.temperature_offset + Index(i) * map.src_nt + j] + ambient_shift; };
+      for (int i = 0; i < map.dst_nr; ++i)
+        for (int j = 0; j < map.dst_nt; ++j) out[dst.temperature_offset + Index(i) * map.dst_nt + j] = map.at(i, j, t);
+    }
+  }
+
+  for (std::size_t c = 0; c < components_.size(); ++c) {
+    const ComponentHeat& dst = components_[c];
+    const ComponentHeat& src = source.components_[c];
+    const int snt = src.axisymmetric ? 1 : src.grid.circumferential_nodes();
+    const int dnt = dst.axisymmetric ? 1 : dst.grid.circumferential_nodes();
+    const GridMap map{src.grid.radial_nodes(), snt, dst.grid.radial_nodes(), dnt};
+    auto t = [&](int i, int j) { return u[src.offset + Index(i) * snt + j] + ambient_shift; };
+    for (int i = 0; i < map.dst_nr; ++i)
+      for (int j = 0; j < dnt; ++j) out[dst.offset + Index(i) * dnt + j] = map.at(i, j, t);
+  }
+  return out;
+}
+
+std::unique_ptr<BearingModel> BearingModel::on_mesh(int radial_nodes, int circumferential_nodes) const {
+  // The scene holds every parameter changed since construction except the load and the
+  // viscosity scale (set_curve_parameter).
+  Scene scene = scene_;
+  scene.mesh.radial_nodes = radial_nodes;
+  scene.mesh.circumferential_nodes = circumferential_nodes;
+  auto model = std::make_unique<BearingModel>(scene);
+  model->set_load(load_);
+  if (viscosity_scale_ != 1.0) model->set_curve_parameter(CurveParameter::viscosity_scale, viscosity_scale_);
+  model->set_newton_form(newton_form());
+  return model;
+}
+
+}  // namespace twb
