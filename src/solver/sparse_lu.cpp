@@ -2,6 +2,8 @@
 
 #include <klu.h>
 
+#include "twb/solver/nested_dissection.h"
+
 #include <stdexcept>
 #include <string>
 
@@ -48,7 +50,12 @@ struct SparseLu::Klu {
 SparseLu::SparseLu(const SparsePattern& p) : klu_(std::make_unique<Klu>()) {
   if (p.rows != p.cols) throw std::invalid_argument("SparseLu: the matrix must be square");
   klu_l_defaults(&klu_->common);
-  klu_->common.ordering = 0;  // AMD
+  if (p.rows > kNestedDissectionAbove) {
+    klu_->common.ordering = 3;
+    klu_->common.user_order = nested_dissection_order;
+  } else {
+    klu_->common.ordering = 0;  // AMD
+  }
   klu_->n = p.rows;
   klu_->row_start.assign(p.row_start.begin(), p.row_start.end());
   klu_->column.assign(p.column.begin(), p.column.end());

@@ -1,7 +1,9 @@
 // Direct solves with a sparse matrix of fixed pattern, by KLU with AMD ordering (on
 // A + Aᵀ: dense rigid-body or bordering rows and columns are ordered last; COLAMD,
-// SUNDIALS' default, fills the bearing's arrow-shaped Jacobian about six-fold). The
-// symbolic analysis is done once per pattern. Two ways to factor:
+// SUNDIALS' default, fills the bearing's arrow-shaped Jacobian about six-fold), and
+// above kNestedDissectionAbove unknowns with nested dissection (nested_dissection.h),
+// whose factors grow more slowly with the mesh. The symbolic analysis is done once per
+// pattern. Two ways to factor:
 //  - factor() pivots afresh every time: for the first tangent of a branch and the
 //    parameter sensitivity J·u_λ = −F_λ, where the matrix is nearly singular and an old
 //    pivot order may no longer be safe;
@@ -23,6 +25,10 @@ namespace twb {
 
 class SparseLu {
  public:
+  // Nested dissection's refactorization beats AMD's from the 17×132 mesh on (8750
+  // unknowns: 6.2 against 8.6 ms; 615 against 1254 ms on 65×528) and ties below
+  // (benchmarks/README.md, "Linear solvers"); the paper's mesh keeps AMD.
+  static constexpr Index kNestedDissectionAbove = 5000;
   explicit SparseLu(const SparsePattern& pattern);
   ~SparseLu();
   SparseLu(const SparseLu&) = delete;

@@ -1,0 +1,71 @@
+#include "twb/solver/nested_dissection.h"
+
+#include <cholmod.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace twb {
+
+SuiteSparse_long nested_dissection_order(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSparse_long* Ai,
+                                         SuiteSparse_long* perm, klu_l_common* /*common*/) {
+  using Long = SuiteSparse_long;
+  // The graph of A + Aᵀ without self-loops.
+  std::vector<std::vector<Long>> adjacent(static_cast<std::size_t>(n));
+  for (Long j = 0; j < n; ++j)
+    for (Long e = Ap[j]; e < Ap[j + 1]; ++e) {
+      const Long i = Ai[e];
+      if (i == j) continue;
+      adjacent[std::size_t(i)].push_back(j);
+      adjacent[std::size_t(j)].push_back(i);
+    }
+  // AMD's rule for a dense node: more than 10·√n neighbours (at least 16).
+  const Long dense_degree = std::max<Long>(16, Long(10.0 * std::sqrt(double(n))));
+  std::vector<Long> kept_index(std::size_t(n), -1), kept, dense;
+  for (Long i = 0; i < n; ++i) {
+    auto& a = adjacent[std::size_t(i)];
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+    if (Long(a.size()) > dense_degree) {
+      dense.push_back(i);
+    } else {
+      kept_index[std::size_t(i)] = Long(kept.size());
+      kept.push_back(i);
+    }
+  }
+
+  const Long m = Long(kept.size());
+  cholmod_common cc;
+  cholmod_l_start(&cc);
+  Long nnz = 0;
+  for (Long i : kept)
+    for (Long j : adjacent[std::size_t(i)]) nnz += kept_index[std::size_t(j)] >= 0;
+  cholmod_sparse* graph = cholmod_l_allocate_sparse(std::size_t(m), std::size_t(m), std::size_t(nnz), true, true,
+                                                    /*stype: symmetric, both triangles given*/ 1, CHOLMOD_PATTERN,
+                                                    &cc);
+  Long lnz = 0;
+  if (graph) {
+    auto* gp = static_cast<Long*>(graph->p);
+    auto* gi = static_cast<Long*>(graph->i);
+    Long e = 0;
+    for (Long c = 0; c < m; ++c) {
+      gp[c] = e;
+      for (Long j : adjacent[std::size_t(kept[std::size_t(c)])])
+        if (kept_index[std::size_t(j)] >= 0) gi[e++] = kept_index[std::size_t(j)];
+    }
+    gp[m] = e;
+    std::vector<Long> order(std::size_t(std::max<Long>(m, 1)));
+    if (m == 0 || cholmod_l_metis(graph, nullptr, 0, /*postorder*/ true, order.data(), &cc)) {
+      for (Long k = 0; k < m; ++k) perm[k] = kept[std::size_t(order[std::size_t(k)])];
+      for (std::size_t k = 0; k < dense.size(); ++k) perm[m + Long(k)] = dense[k];
+      // KLU sizes its first allocation of L by this; it grows the factors when short.
+      lnz = std::max<Long>(n, 4 * (Ap[n] + n));
+    }
+    cholmod_l_free_sparse(&graph, &cc);
+  }
+  cholmod_l_finish(&cc);
+  return lnz;
+}
+
+}  // namespace twb
