@@ -1,11 +1,20 @@
-// A mesh given on a benchmark's command line as RxC (e.g. 9x66), as scene overrides.
+// A benchmark's command-line lists, and a mesh given as RxC (e.g. 9x66) as scene overrides.
 #pragma once
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace twb::bench {
+
+// A comma-separated list on the command line (meshes, tolerances, speeds).
+inline std::vector<std::string> split_list(const std::string& list) {
+  std::vector<std::string> parts;
+  std::stringstream in(list);
+  for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
+  return parts;
+}
 
 inline std::vector<std::string> mesh_overrides(const std::string& mesh) {
   const auto x = mesh.find('x');

@@ -33,6 +33,7 @@
 
 #include <stdexcept>
 
+#include "paper_case.h"
 #include "twb/model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 #include "twb/solver/natural_continuation.h"
@@ -78,12 +79,8 @@ SuiteSparse_long klu_l_refactor(SuiteSparse_long* ap, SuiteSparse_long* ai, doub
 
 namespace {
 
-twb::Scene paper_scene(double load, double speed) {
-  twb::Scene s = twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml");
-  s.operating.load = load;
-  s.operating.speed = speed;
-  return s;
-}
+using twb::bench::converged_state;
+using twb::bench::paper_scene;
 
 // Per-state averages of a solver's work over the timed loop.
 class Work {
@@ -125,13 +122,6 @@ twb::Index time_cold_starts(benchmark::State& state, const twb::Scene& scene) {
   return model.size();
 }
 
-// The converged state of the model at its load and speed, from the cold start.
-std::vector<double> converged_state(twb::BearingModel& model) {
-  twb::SteadySolver solver(model, {});
-  std::vector<double> u;
-  if (!solver.solve_cold(u).converged) throw std::runtime_error("no converged state from the cold start");
-  return u;
-}
 
 // From the paper's cold start; Args: load (N), speed (rad/s).
 void BM_ColdStart(benchmark::State& state) {

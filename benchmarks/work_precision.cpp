@@ -29,12 +29,7 @@
 
 namespace {
 
-std::vector<std::string> split(const std::string& list) {
-  std::vector<std::string> parts;
-  std::stringstream in(list);
-  for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
-  return parts;
-}
+using twb::bench::split_list;
 
 double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
@@ -73,9 +68,9 @@ int main(int argc, char** argv) {
     std::cerr << "usage: work_precision OUT.csv [--meshes RxC,...] [--tolerances t,...]\n";
     return 2;
   }
-  std::vector<std::string> meshes = split("5x24,5x33,9x66,17x132,33x264,65x528");
-  std::vector<std::string> tolerances = split("1e-4,1e-6,1e-8,1e-10,1e-12");
-  std::vector<std::string> speeds = split("545,953,1367");
+  std::vector<std::string> meshes = split_list("5x24,5x33,9x66,17x132,33x264,65x528");
+  std::vector<std::string> tolerances = split_list("1e-4,1e-6,1e-8,1e-10,1e-12");
+  std::vector<std::string> speeds = split_list("545,953,1367");
   bool distress = false;
   for (int i = 2; i < argc; ++i) {
     const std::string key = argv[i];
@@ -88,7 +83,7 @@ int main(int argc, char** argv) {
                 << " (allowed: --meshes LIST, --tolerances LIST, --speeds LIST, --distress)\n";
       return 2;
     }
-    (key == "--meshes" ? meshes : key == "--tolerances" ? tolerances : speeds) = split(argv[++i]);
+    (key == "--meshes" ? meshes : key == "--tolerances" ? tolerances : speeds) = split_list(argv[++i]);
   }
   if (distress) return distress_rows(argv[1], meshes, speeds);
   std::ofstream out(argv[1]);
