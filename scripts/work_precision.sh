@@ -9,7 +9,7 @@
 #   --build DIR  a Release build tree with benchmarks/work_precision (default: build)
 #   --out DIR    where the CSVs and the figures go (default: results/work_precision)
 #   --quick      meshes up to 17x132 only, W_d at 545 rad/s only (seconds, for a check);
-#                without it about 25 minutes and 1.5 GB on a 2-core machine
+#                without it about 6 minutes and 2 GB on a 2-core machine
 #
 # Writes OUT/state.csv, OUT/distress.csv, OUT/work_precision_state.png and
 # OUT/work_precision_distress.png, and prints the tables. Exit status: 0 done; 1 a
