@@ -6,14 +6,13 @@
 #include <fmt/format.h>
 
 #include "scene_names.h"
+#include "physical_bounds.h"
 #include "scene_sections.h"
 
 namespace twb::scene_io {
 namespace {
 
 // The gear's imposed tilt must stay a small angle for the model's linearised kinematics.
-constexpr Range kTiltRange{.low = 0.0, .high = 0.1, .high_open = true,
-                           .reason = "a small imposed tilt of the gear"};
 
 struct Annulus {
   double inner_radius;
@@ -21,8 +20,8 @@ struct Annulus {
 };
 
 Annulus read_annulus(const MapReader& body) {
-  const double inner = body.quantity("inner_diameter", si::length, positive);
-  const double outer = body.quantity("outer_diameter", si::length, positive);
+  const double inner = body.quantity("inner_diameter", si::length, bounds::diameter);
+  const double outer = body.quantity("outer_diameter", si::length, bounds::diameter);
   if (inner >= outer) {
     const Node node = body.get("inner_diameter", "");
     node.fail(fmt::format("{}: '{}' must be less than outer_diameter '{}'", node.path(),
@@ -43,18 +42,18 @@ void read_geometry(const MapReader& scene, Scene& out) {
   const Annulus washer_annulus = read_annulus(washer);
   out.washer.inner_radius = washer_annulus.inner_radius;
   out.washer.outer_radius = washer_annulus.outer_radius;
-  out.washer.thickness = washer.quantity("thickness", si::length, positive);
+  out.washer.thickness = washer.quantity("thickness", si::length, bounds::thickness);
 
   // The carrier's face is modelled as covering exactly the washer annulus (MODEL.md 7).
   out.carrier.inner_radius = out.washer.inner_radius;
   out.carrier.outer_radius = out.washer.outer_radius;
-  out.carrier.thickness = carrier.quantity("thickness", si::length, positive);
+  out.carrier.thickness = carrier.quantity("thickness", si::length, bounds::thickness);
 
   const Annulus gear_annulus = read_annulus(gear);
   out.gear.inner_radius = gear_annulus.inner_radius;
   out.gear.outer_radius = gear_annulus.outer_radius;
-  out.gear.thickness = gear.quantity("thickness", si::length, positive);
-  out.gear.tilt = gear.quantity("tilt", si::angle, kTiltRange, out.gear.tilt);
+  out.gear.thickness = gear.quantity("thickness", si::length, bounds::thickness);
+  out.gear.tilt = gear.quantity("tilt", si::angle, bounds::tilt, out.gear.tilt);
 
   // Film 2 lives on the overlap of the washer and gear annuli; without one the washer
   // could not carry the gear's load.
@@ -76,22 +75,22 @@ Material read_material(const MapReader& materials, std::string_view component) {
   const MapReader steel = materials.map(component, {"youngs_modulus", "poisson_ratio", "yield_strength",
                                                     "conductivity", "density", "specific_heat"});
   Material m;
-  m.youngs_modulus = steel.quantity("youngs_modulus", si::stress, positive, m.youngs_modulus);
+  m.youngs_modulus = steel.quantity("youngs_modulus", si::stress, bounds::youngs_modulus, m.youngs_modulus);
   m.poisson_ratio = steel.quantity("poisson_ratio", si::dimensionless,
                                    {.low = 0.0, .low_open = true, .high = 0.5, .high_open = true},
                                    m.poisson_ratio);
-  m.yield_strength = steel.quantity("yield_strength", si::stress, positive, m.yield_strength);
-  m.conductivity = steel.quantity("conductivity", si::conductivity, positive, m.conductivity);
-  m.density = steel.quantity("density", si::density, positive, m.density);
-  m.specific_heat = steel.quantity("specific_heat", si::specific_heat, positive, m.specific_heat);
+  m.yield_strength = steel.quantity("yield_strength", si::stress, bounds::yield_strength, m.yield_strength);
+  m.conductivity = steel.quantity("conductivity", si::conductivity, bounds::solid_conductivity, m.conductivity);
+  m.density = steel.quantity("density", si::density, bounds::density, m.density);
+  m.specific_heat = steel.quantity("specific_heat", si::specific_heat, bounds::specific_heat, m.specific_heat);
   return m;
 }
 
 Roughness read_roughness(const MapReader& surfaces, std::string_view component) {
   const MapReader face = surfaces.map(component, {"Ra", "Rq"});
   Roughness r;
-  r.ra = face.quantity("Ra", si::length, positive, r.ra);
-  r.rq = face.quantity("Rq", si::length, positive, r.rq);
+  r.ra = face.quantity("Ra", si::length, bounds::roughness, r.ra);
+  r.rq = face.quantity("Rq", si::length, bounds::roughness, r.rq);
   return r;
 }
 
@@ -101,9 +100,9 @@ AsperityParameters read_asperities(const MapReader& surfaces, const Scene& scene
   const MapReader summits = surfaces.map(
       "asperities", {"summit_radius", "summit_sigma", "summit_density", "eta_R_sigma"});
   AsperityParameters a;
-  a.summit_radius = summits.quantity("summit_radius", si::length, positive, a.summit_radius);
+  a.summit_radius = summits.quantity("summit_radius", si::length, bounds::summit_radius, a.summit_radius);
   const double combined_sigma = std::hypot(scene.carrier.roughness.rq, scene.washer.roughness.rq);
-  a.summit_sigma = summits.quantity("summit_sigma", si::length, positive, combined_sigma);
+  a.summit_sigma = summits.quantity("summit_sigma", si::length, bounds::roughness, combined_sigma);
   if (summits.has("summit_density") && summits.has("eta_R_sigma")) {
     const Node node = summits.get("eta_R_sigma", "");
     node.fail(fmt::format("{}: give either summit_density or eta_R_sigma, not both "
@@ -111,10 +110,10 @@ AsperityParameters read_asperities(const MapReader& surfaces, const Scene& scene
                           node.path()));
   }
   if (summits.has("summit_density")) {
-    a.summit_density = summits.quantity("summit_density", si::areal_density, positive);
+    a.summit_density = summits.quantity("summit_density", si::areal_density, bounds::summit_density);
     a.eta_r_sigma = a.summit_density * a.summit_radius * a.summit_sigma;
   } else {
-    a.eta_r_sigma = summits.quantity("eta_R_sigma", si::dimensionless, positive, a.eta_r_sigma);
+    a.eta_r_sigma = summits.quantity("eta_R_sigma", si::dimensionless, bounds::eta_r_sigma, a.eta_r_sigma);
     a.summit_density = a.eta_r_sigma / (a.summit_radius * a.summit_sigma);
   }
   return a;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "scene_names.h"
+#include "physical_bounds.h"
 #include "scene_sections.h"
 
 namespace twb::scene_io {
@@ -12,12 +13,15 @@ void read_mesh(const MapReader& scene, Scene& out) {
   const MapReader mesh =
       scene.map("mesh", {"radial_nodes", "circumferential_nodes", "contact_quadrature", "flat_contact_quadrature"});
   MeshSettings& m = out.mesh;
-  m.radial_nodes = mesh.integer("radial_nodes", 3, m.radial_nodes,
-                                "both edges plus at least one interior node");
-  m.circumferential_nodes = mesh.integer("circumferential_nodes", 8, m.circumferential_nodes,
-                                         "enough to resolve the converging wedge around the circle");
-  m.contact_quadrature = mesh.integer("contact_quadrature", 1, m.contact_quadrature);
-  m.flat_contact_quadrature = mesh.integer("flat_contact_quadrature", 1, m.flat_contact_quadrature);
+  m.radial_nodes = mesh.integer("radial_nodes", 3, bounds::kMostRadialNodes, m.radial_nodes,
+                                "both edges plus at least one interior node; finer exceeds any machine's memory");
+  m.circumferential_nodes =
+      mesh.integer("circumferential_nodes", 8, bounds::kMostCircumferentialNodes, m.circumferential_nodes,
+                   "enough to resolve the converging wedge around the circle; finer exceeds any machine's memory");
+  m.contact_quadrature = mesh.integer("contact_quadrature", 1, bounds::kMostQuadraturePoints,
+                                      m.contact_quadrature, "Gauss points per direction");
+  m.flat_contact_quadrature = mesh.integer("flat_contact_quadrature", 1, bounds::kMostQuadraturePoints,
+                                           m.flat_contact_quadrature, "Gauss points per direction");
 }
 
 void read_solver(const MapReader& scene, Scene& out) {
@@ -44,15 +48,16 @@ void read_solver(const MapReader& scene, Scene& out) {
                                             .reason = "SOR converges for 0 < ω < 2"},
                                       s.over_relaxation);
   s.residual_tolerance =
-      solver.quantity("residual_tolerance", si::dimensionless, positive, s.residual_tolerance);
-  s.step_tolerance = solver.quantity("step_tolerance", si::dimensionless, positive, s.step_tolerance);
-  s.max_iterations = solver.integer("max_iterations", 1, s.max_iterations);
-  s.cold_start_film = solver.quantity("cold_start_film", si::dimensionless, positive, s.cold_start_film);
+      solver.quantity("residual_tolerance", si::dimensionless, bounds::tolerance, s.residual_tolerance);
+  s.step_tolerance = solver.quantity("step_tolerance", si::dimensionless, bounds::tolerance, s.step_tolerance);
+  s.max_iterations = solver.integer("max_iterations", 1, bounds::kMostIterations, s.max_iterations,
+                                    "Newton iterations per solve");
+  s.cold_start_film = solver.quantity("cold_start_film", si::dimensionless, bounds::cold_start_film, s.cold_start_film);
 }
 
 void read_load_range(const MapReader& study, Study& s, std::string_view end_relation) {
-  s.load_start = study.quantity("load_start", si::force, positive);
-  s.load_end = study.quantity("load_end", si::force, positive);
+  s.load_start = study.quantity("load_start", si::force, bounds::load);
+  s.load_end = study.quantity("load_end", si::force, bounds::load);
   if (s.load_end <= s.load_start) {
     const Node node = study.get("load_end", "");
     node.fail(fmt::format("{}: '{}' must be greater than load_start '{}'{}", node.path(), node.yaml().Scalar(),
@@ -80,11 +85,11 @@ void read_map_parameter(const MapReader& study, Study& s, const Scene& scene, co
     values.fail(fmt::format("{}: the list is empty; give at least one value", values.path()));
   for (const Node& item : items) {
     if (s.parameter == MapParameter::friction_coefficient)
-      s.parameter_values.push_back(item.quantity(si::dimensionless, non_negative));
+      s.parameter_values.push_back(item.quantity(si::dimensionless, bounds::friction_coefficient));
     else if (s.parameter == MapParameter::gear_tilt)
-      s.parameter_values.push_back(item.quantity(si::angle, non_negative));
+      s.parameter_values.push_back(item.quantity(si::angle, bounds::tilt));
     else
-      s.parameter_values.push_back(item.quantity(si::length, positive));
+      s.parameter_values.push_back(item.quantity(si::length, bounds::roughness));
   }
   if (s.parameter == MapParameter::friction_coefficient && scene.friction.law != FrictionLaw::constant) {
     const Node name = p.get("name", "");
@@ -102,7 +107,7 @@ void read_speeds(const MapReader& study, Study& s) {
     speeds.fail(fmt::format("{}: the list is empty; give at least one speed, e.g. "
                             "[136 rad/s, 545 rad/s]",
                             speeds.path()));
-  for (const Node& speed : items) s.speeds.push_back(speed.quantity(si::angular_speed, non_negative));
+  for (const Node& speed : items) s.speeds.push_back(speed.quantity(si::angular_speed, bounds::speed));
 }
 
 // A load grid (load_sweep, sliding_choice): the range, its number of loads, and the
@@ -132,21 +137,17 @@ void read_fold_curve(const MapReader& study, Scene& out) {
   auto value = [&](const char* key) {
     switch (s.curve_parameter) {
       case CurveParameter::speed:
-        return study.quantity(key, si::angular_speed, non_negative);
+        return study.quantity(key, si::angular_speed, bounds::speed);
       case CurveParameter::friction_coefficient:
-        return study.quantity(key, si::dimensionless, non_negative);
+        return study.quantity(key, si::dimensionless, bounds::friction_coefficient);
       case CurveParameter::gear_tilt:
-        return study.quantity(key, si::angle, non_negative);
+        return study.quantity(key, si::angle, bounds::tilt);
       case CurveParameter::ambient_temperature:
-        return study.quantity(key, si::temperature,
-                              Range{.low = kRoelandsLowestTemperature, .low_open = true,
-                                    .reason = "Roelands' viscosity law needs T > -135 degC"});
+        return study.quantity(key, si::temperature, bounds::roelands_temperature);
       case CurveParameter::viscosity_scale:
-        return study.quantity(key, si::dimensionless,
-                              Range{.low = 0.0, .low_open = true,
-                                    .reason = "a factor on the oil's viscosity, e.g. 0.5 for half as viscous"});
+        return study.quantity(key, si::dimensionless, bounds::viscosity_scale);
       case CurveParameter::roughness:
-        return study.quantity(key, si::length, positive);
+        return study.quantity(key, si::length, bounds::roughness);
     }
     return 0.0;
   };
@@ -158,8 +159,8 @@ void read_fold_curve(const MapReader& study, Scene& out) {
   }
   // The first fold is searched between these loads (defaults: a fifth and four times
   // operating.load).
-  s.load_start = study.quantity("load_start", si::force, positive, 0.2 * out.operating.load);
-  s.load_end = study.quantity("load_end", si::force, positive, 4.0 * out.operating.load);
+  s.load_start = study.quantity("load_start", si::force, bounds::load, 0.2 * out.operating.load);
+  s.load_end = study.quantity("load_end", si::force, bounds::load, 4.0 * out.operating.load);
   if (s.load_end <= s.load_start) {
     const Node node = study.has("load_end") ? study.get("load_end", "") : study.get("load_start", "");
     node.fail(fmt::format("{}: load_end must be greater than load_start (here {:.6g} N and {:.6g} N)", node.path(),
@@ -186,9 +187,9 @@ void read_study(const MapReader& scene, Scene& out) {
                               "section 8), so it needs the thermal effect; add 'thermal' to effects",
                               type.path()));
       }
-      s.load_start = study.quantity("load_start", si::force, positive);
-      s.load_end = study.quantity("load_end", si::force, positive);
-      s.duration = study.quantity("duration", si::time, non_negative, 0.0);
+      s.load_start = study.quantity("load_start", si::force, bounds::load);
+      s.load_end = study.quantity("load_end", si::force, bounds::load);
+      s.duration = study.quantity("duration", si::time, bounds::duration, 0.0);
       break;
     case StudyType::load_sweep:
       study.restrict_to({"type", "load_start", "load_end", "load_steps", "speeds", "parameter", "bracket_width",

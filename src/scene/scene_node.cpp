@@ -88,18 +88,20 @@ double Node::quantity(const SiUnit& unit, const Range& range) const {
   return value;
 }
 
-int Node::integer(int minimum, std::string_view reason) const {
-  const std::string text = scalar(fmt::format("a whole number >= {}", minimum));
+int Node::integer(int minimum, std::string_view reason) const { return integer(minimum, INT_MAX, reason); }
+
+int Node::integer(int minimum, int maximum, std::string_view reason) const {
+  const std::string allowed = maximum == INT_MAX ? fmt::format(">= {}", minimum)
+                                                 : fmt::format("in [{}, {}]", minimum, maximum);
+  const std::string text = scalar(fmt::format("a whole number {}", allowed));
   std::string_view digits = text;
   if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
   long long value = 0;
   const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (digits.empty() || error == std::errc::invalid_argument || end != digits.data() + digits.size())
-    fail(fmt::format("{}: '{}' is not a whole number; expected a whole number >= {}", path_, text,
-                     minimum));
-  if (error == std::errc::result_out_of_range || value < minimum || value > INT_MAX)
-    fail(fmt::format("{}: {} is out of range; must be >= {}{}", path_, text, minimum,
-                     with_reason(reason)));
+    fail(fmt::format("{}: '{}' is not a whole number; expected a whole number {}", path_, text, allowed));
+  if (error == std::errc::result_out_of_range || value < minimum || value > maximum)
+    fail(fmt::format("{}: {} is out of range; must be {}{}", path_, text, allowed, with_reason(reason)));
   return static_cast<int>(value);
 }
 
@@ -218,8 +220,12 @@ double MapReader::quantity(std::string_view key, const SiUnit& unit, const Range
 }
 
 int MapReader::integer(std::string_view key, int minimum, int fallback, std::string_view reason) const {
+  return integer(key, minimum, INT_MAX, fallback, reason);
+}
+
+int MapReader::integer(std::string_view key, int minimum, int maximum, int fallback, std::string_view reason) const {
   const auto found = find(key);
-  return found ? found->integer(minimum, reason) : fallback;
+  return found ? found->integer(minimum, maximum, reason) : fallback;
 }
 
 bool MapReader::boolean(std::string_view key, bool fallback) const {

@@ -61,6 +61,7 @@ class Node {
 
   double quantity(const SiUnit& unit, const Range& range) const;
   int integer(int minimum, std::string_view reason = {}) const;
+  int integer(int minimum, int maximum, std::string_view reason) const;
   bool boolean() const;
   // Index of the scalar in `names`; fails naming the allowed names and the closest one.
   std::size_t choice(std::span<const std::string_view> names) const;
@@ -96,6 +97,7 @@ class MapReader {
   double quantity(std::string_view key, const SiUnit& unit, const Range& range,
                   double fallback) const;
   int integer(std::string_view key, int minimum, int fallback, std::string_view reason = {}) const;
+  int integer(std::string_view key, int minimum, int maximum, int fallback, std::string_view reason) const;
   bool boolean(std::string_view key, bool fallback) const;
   std::string text(std::string_view key, std::string fallback) const;
   std::size_t choice(std::string_view key, std::span<const std::string_view> names,

@@ -1,0 +1,69 @@
+// The values a bearing can have: every number a scene gives is checked against these,
+// so that a value no thrust washer, oil or operating point can have is an input error
+// with its location instead of a solve that ends in overflow (docs/scenes.md, "Bounds").
+// Each range is wide: it excludes the impossible, not the unusual; the extremes the
+// stability suite solves (tests/stability) lie inside.
+#pragma once
+
+#include "scene_node.h"
+#include "scene_sections.h"
+
+namespace twb::scene_io::bounds {
+
+// Operating point.
+inline constexpr Range load{.low = 0.0, .low_open = true, .high = 1e6,
+                            .reason = "a bearing without load has no steady state; at most 1 MN"};
+inline constexpr Range speed{.low = 0.0, .high = 1e5,
+                             .reason = "at most 1e5 rad/s: kilometres per second of sliding at the washer's rim"};
+inline constexpr double kHighestTemperature = 573.15;  // K, 300 degC: above, every mineral or ester oil decomposes
+inline constexpr Range roelands_temperature{.low = kRoelandsLowestTemperature, .low_open = true,
+                                            .high = kHighestTemperature,
+                                            .reason = "Roelands' law needs T > -135 degC; no oil works above 300 degC"};
+inline constexpr Range absolute_temperature{.low = 0.0, .low_open = true, .high = kHighestTemperature,
+                                            .reason = "an absolute temperature up to 300 degC, where oils decompose"};
+inline constexpr Range friction_coefficient{.low = 0.0, .high = 5.0,
+                                            .reason = "a dry friction coefficient, 0 to 5"};
+
+// Geometry.
+inline constexpr Range tilt{.low = 0.0, .high = 0.1, .high_open = true, .reason = "a small imposed tilt of the gear"};
+inline constexpr Range diameter{.low = 1e-3, .high = 2.0, .reason = "a thrust washer's diameter, 1 mm to 2 m"};
+inline constexpr Range thickness{.low = 1e-5, .high = 0.2, .reason = "a thickness from 10 um to 200 mm"};
+
+// Solids.
+inline constexpr Range youngs_modulus{.low = 1e8, .high = 1.2e12,
+                                      .reason = "from soft polymers (0.1 GPa) to diamond (1200 GPa)"};
+inline constexpr Range yield_strength{.low = 1e6, .high = 1e10, .reason = "1 MPa to 10 GPa"};
+inline constexpr Range solid_conductivity{.low = 0.01, .high = 2500.0,
+                                          .reason = "from foams (0.01 W/m/K) to diamond (2500 W/m/K)"};
+inline constexpr Range density{.low = 100.0, .high = 25000.0,
+                               .reason = "from foams (100 kg/m^3) to osmium (22600 kg/m^3)"};
+inline constexpr Range specific_heat{.low = 50.0, .high = 5000.0, .reason = "50 to 5000 J/kg/K"};
+
+// Surfaces.
+inline constexpr Range roughness{.low = 1e-9, .high = 1e-4,
+                                 .reason = "from polished (1 nm) to rough-turned (100 um) surfaces"};
+inline constexpr Range summit_radius{.low = 1e-8, .high = 1e-2, .reason = "10 nm to 10 mm"};
+inline constexpr Range summit_density{.low = 1e6, .high = 1e16, .reason = "1e6 to 1e16 summits per m^2"};
+inline constexpr Range eta_r_sigma{.low = 1e-4, .high = 10.0,
+                                   .reason = "eta R sigma of real surfaces is 0.01 to 0.1; 1e-4 to 10 allowed"};
+
+// Oil.
+inline constexpr Range oil_conductivity{.low = 0.01, .high = 1.0, .reason = "oils conduct about 0.13 W/m/K"};
+inline constexpr Range mu_infinity{.low = 1e-7, .high = 1e-2, .reason = "Roelands' mu_inf, about 6.3e-5 Pa s"};
+inline constexpr Range roelands_g0{.low = 0.0, .low_open = true, .high = 50.0, .reason = "Roelands' G0, about 1 to 10"};
+inline constexpr Range roelands_s0{.low = 0.0, .low_open = true, .high = 5.0, .reason = "Roelands' S0, about 1"};
+inline constexpr Range constant_viscosity{.low = 1e-6, .high = 1e3,
+                                          .reason = "from gases (1e-5 Pa s) to bitumen-like fluids (1e3 Pa s)"};
+inline constexpr Range viscosity_scale{.low = 0.0, .low_open = true, .high = 1e4,
+                                       .reason = "a factor on the oil's viscosity, e.g. 0.5 for half as viscous"};
+
+// Numerics.
+inline constexpr Range tolerance{.low = 0.0, .low_open = true, .high = 1e-2,
+                                 .reason = "a scaled residual or step, 1e-2 at the loosest"};
+inline constexpr Range cold_start_film{.low = 0.0, .low_open = true, .high = 1e3,
+                                       .reason = "h_min/sigma of the cold start, e.g. 3"};
+inline constexpr Range duration{.low = 0.0, .high = 1e7, .reason = "at most 1e7 s of pseudo-time"};
+inline constexpr int kMostRadialNodes = 1025, kMostCircumferentialNodes = 8192, kMostQuadraturePoints = 32;
+inline constexpr int kMostIterations = 100000;
+
+}  // namespace twb::scene_io::bounds
