@@ -14,6 +14,7 @@
 #include "twb/results/atomic_file.h"
 #include "twb/results/fields_table.h"
 #include "twb/results/run_record.h"
+#include "twb/results/limit_notes.h"
 #include "twb/results/states_table.h"
 #include "twb/scene/input_error.h"
 #include "twb/scene/scene_loader.h"
@@ -89,6 +90,7 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
                           *d.extrapolated_load, *d.discretization_error, *d.fine_fold_load)
             : "",
         d.method);
+  for (const std::string& line : twb::limit_notes(outcome.states, outcome.distress)) std::cout << line << "\n";
   for (const std::string& line : outcome.summary) std::cout << line << "\n";
   std::cout << fmt::format("results: {}  ({} states, {:.1f} ms)\n", dir.string(), outcome.states.size(),
                            outcome.timings.total_ms);

@@ -86,6 +86,20 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   if (film.pressure_offset >= 0)
     for (Index k = film.pressure_offset; k < film.pressure_offset + Index(flow_scale_.size()); ++k)
       s.complementarity_error = std::max(s.complementarity_error, std::abs(residual[k]));
+
+  // The contact pressure falls with the gap, so each film's largest is at its plane's
+  // exact minimum gap.
+  if (contact_)
+    for (const Film& f : films_) {
+      const double cf = f.clearance_unknown == 0 ? s.position.c1 : s.position.c2;
+      const double slope = std::hypot(-f.sign * s.position.gamma_y - f.imposed_tilt, f.sign * s.position.gamma_x);
+      const double least_gap = cf - slope * f.mesh.outer_radius();
+      if (least_gap <= contact_cutoff_)
+        s.max_contact_pressure = std::max(s.max_contact_pressure, contact_->pressure(least_gap).value);
+    }
+  s.limits = exceeded_limits({s.washer_mean_temperature, s.max_film_temperature, s.max_contact_pressure,
+                              s.hmin_over_sigma, scene_.effects.thermal},
+                             OperatingLimits::of(scene_));
   return s;
 }
 

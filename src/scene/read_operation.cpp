@@ -10,9 +10,12 @@ namespace twb::scene_io {
 namespace {
 
 void read_lubricant(const MapReader& scene, Scene& out) {
-  const MapReader oil = scene.map("lubricant", {"conductivity", "viscosity"});
+  const MapReader oil = scene.map("lubricant", {"conductivity", "viscosity", "max_temperature", "flash_temperature"});
   Lubricant& l = out.lubricant;
   l.conductivity = oil.quantity("conductivity", si::conductivity, bounds::oil_conductivity, l.conductivity);
+  l.max_temperature = oil.quantity("max_temperature", si::temperature, bounds::absolute_temperature, l.max_temperature);
+  l.flash_temperature =
+      oil.quantity("flash_temperature", si::temperature, bounds::absolute_temperature, l.flash_temperature);
 
   const MapReader viscosity = oil.map("viscosity", {"model", "mu_infinity", "G0", "S0", "value"});
   l.viscosity_model = read_choice(viscosity, "model", kViscosityModels, l.viscosity_model);

@@ -104,6 +104,8 @@ void write_operation(Writer& w, const Scene& s) {
   const Lubricant& l = s.lubricant;
   w.line(0, "lubricant:");
   w.entry(1, "conductivity", quantity(l.conductivity, "W/(m K)"));
+  w.entry(1, "max_temperature", quantity(l.max_temperature, "K"));
+  w.entry(1, "flash_temperature", quantity(l.flash_temperature, "K"));
   w.line(1, "viscosity:");
   w.entry(2, "model", std::string(kViscosityModels.name(l.viscosity_model)));
   if (l.viscosity_model == ViscosityModel::roelands) {

@@ -75,13 +75,15 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   EXPECT_EQ(states.rfind("load_N,speed_rad_s,friction_coefficient,sliding,T_mean_C,", 0), 0u) << states;
   EXPECT_NE(states.find("\n150,545,0.2,washer_gear,24,24,"), std::string::npos) << states;
   EXPECT_EQ(states_csv({a}).rfind("load_N,speed_rad_s,T_mean_C,", 0), 0u);
-  // The branch closes the row: empty for a state no branch was followed to.
-  EXPECT_NE(states.find(",wall_ms,branch\n"), std::string::npos) << states;
+  // The branch and the limits close the row: empty for a state no branch was followed
+  // to and for one within every limit.
+  EXPECT_NE(states.find(",wall_ms,branch,limits\n"), std::string::npos) << states;
   EXPECT_EQ(states.back(), '\n');
-  EXPECT_EQ(states[states.size() - 2], ',') << "an empty branch cell";
+  EXPECT_EQ(states.substr(states.size() - 3), ",,\n") << "empty branch and limits cells";
   a.branch = "hot";
+  a.state.limits = {{LimitKind::oil_temperature, 500.0, 423.15}, {LimitKind::flash_temperature, 900.0, 453.15}};
   const std::string hot = states_csv({a});
-  EXPECT_EQ(hot.substr(hot.size() - 5), ",hot\n") << hot;
+  EXPECT_TRUE(hot.ends_with(",hot,oil_temperature;flash_temperature\n")) << hot;
   // A run without its parameter's value is a bug upstream: an empty cell, never NaN.
   a.parameter.reset();
   EXPECT_NE(states_csv({a}, "friction_coefficient").find("\n150,545,,24,"), std::string::npos);

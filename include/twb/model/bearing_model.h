@@ -17,6 +17,7 @@
 
 #include "twb/model/film_fields.h"
 #include "twb/model/film_mesh.h"
+#include "twb/model/operating_limits.h"
 #include "twb/model/sparse_assembly.h"
 #include "twb/model/unknown_layout.h"
 #include "twb/physics/roelands_viscosity.h"
@@ -98,7 +99,10 @@ struct BearingState {
   double heat_generated = 0, heat_to_ambient = 0, energy_error = 0;
   double force_balance_error = 0, moment_balance_error = 0;  // relative to the load
   double complementarity_error = 0;  // max |min(p̂, ŵ)|
+  double max_contact_pressure = 0;   // Pa, nominal asperity pressure where either film is tightest
   RigidPosition position;
+  // The limits of the model and the oil this state exceeds (operating_limits.h).
+  std::vector<LimitExcess> limits;
 };
 
 // As a SteadySystem the continuation parameter is the load (N) and the transient is

@@ -96,6 +96,11 @@ struct Lubricant {
   double g0 = 3.545;             // Roelands
   double s0 = 1.053;             // Roelands
   double constant_viscosity = 0.06081;  // Pa s, when viscosity_model == constant
+  // Where the oil stops being trusted (model/operating_limits.h): an automatic
+  // transmission fluid's maximum working temperature, which its oxidation life halves
+  // about every 10 K beyond, and its flash point (ASTM D92, about 180 degC).
+  double max_temperature = 423.15;    // K, 150 degC
+  double flash_temperature = 453.15;  // K, 180 degC
 };
 
 struct Operating {

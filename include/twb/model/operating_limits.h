@@ -1,0 +1,56 @@
+// Where the model stops describing a real bearing, besides thermo-viscous distress: the
+// limits a solved state can exceed, each with its value and its threshold, so that a
+// converged state says what a user should not trust it for (docs/model.md, "Limits").
+//  - oil_temperature: the washer's mean temperature, what the oil between the faces
+//    settles to, above the oil's maximum working temperature (lubricant.max_temperature);
+//  - flash_temperature: the hottest film node, the film (flash) temperature of MODEL.md
+//    section 7, above the oil's flash point (lubricant.flash_temperature);
+//  - contact_pressure: the nominal asperity contact pressure where a film is tightest
+//    above the softer face's hardness, 2.84·S_y (MODEL.md section 4, eq [10] at full
+//    plasticity): the real contact area would exceed the nominal one, which the
+//    statistical summit model cannot represent;
+//  - film_below_statistics: h_min/σ below 0.5, the smallest gap Patir and Cheng fitted
+//    their flow factors for and where most summits touch, against the statistical
+//    model's assumption of sparse, independent contacts.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "twb/scene/scene.h"
+
+namespace twb {
+
+enum class LimitKind { oil_temperature, flash_temperature, contact_pressure, film_below_statistics };
+
+struct LimitExcess {
+  LimitKind kind;
+  double value = 0.0;  // SI: K, Pa, or h_min/σ
+  double limit = 0.0;
+};
+
+struct OperatingLimits {
+  double max_oil_temperature = 0.0;  // K
+  double flash_temperature = 0.0;    // K
+  double hardness = 0.0;             // Pa, the softer face's; 0: no contact model
+  double least_film = 0.5;           // h_min/σ
+  static OperatingLimits of(const Scene& scene);
+};
+
+// The state's values against the limits (SI), in LimitKind order; empty when none.
+struct LimitValues {
+  double washer_mean_temperature = 0.0, max_film_temperature = 0.0, max_contact_pressure = 0.0;
+  double hmin_over_sigma = 0.0;
+  bool thermal = false;
+};
+std::vector<LimitExcess> exceeded_limits(const LimitValues& values, const OperatingLimits& limits);
+
+// "oil_temperature" and so on: the names in states.csv's limits column.
+std::string_view limit_name(LimitKind kind);
+// "the washer's mean temperature 721 degC is above the oil's maximum 150 degC".
+std::string describe_limit(const LimitExcess& excess);
+// The names of a state's limits joined by ';' (empty for none): states.csv's column.
+std::string limit_names(const std::vector<LimitExcess>& limits);
+
+}  // namespace twb

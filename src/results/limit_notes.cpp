@@ -1,0 +1,57 @@
+#include "twb/results/limit_notes.h"
+
+#include <map>
+#include <optional>
+#include <tuple>
+
+#include <fmt/format.h>
+
+namespace twb {
+
+namespace {
+
+// A run of a study: what tells its states apart besides the load.
+using Run = std::tuple<double, std::optional<double>, std::string>;
+
+struct FirstExcess {
+  double load;
+  LimitExcess excess;
+  bool cool_branch;
+};
+
+}  // namespace
+
+std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, const std::vector<DistressRow>& distress) {
+  std::map<Run, std::map<LimitKind, FirstExcess>> first;
+  for (const SolvedState& r : states) {
+    if (!r.converged) continue;
+    auto& kinds = first[Run{r.state.speed, r.parameter, r.sliding}];
+    for (const LimitExcess& e : r.state.limits) {
+      auto [it, fresh] = kinds.try_emplace(e.kind, FirstExcess{r.state.load, e, r.branch == "cool"});
+      if (!fresh && r.state.load < it->second.load) it->second = FirstExcess{r.state.load, e, r.branch == "cool"};
+    }
+  }
+  std::vector<std::string> lines;
+  for (const auto& [run, kinds] : first) {
+    const auto& [speed, parameter, sliding] = run;
+    std::optional<double> w_d;
+    for (const DistressRow& d : distress)
+      if (d.speed == speed && d.parameter == parameter && d.sliding == sliding) w_d = d.distress_load;
+    const std::string where = fmt::format("{:.6g} rad/s{}{}", speed,
+                                          parameter ? fmt::format(", parameter {:.6g}", *parameter) : "",
+                                          sliding.empty() ? "" : ", sliding " + sliding);
+    for (const auto& [kind, f] : kinds) {
+      const bool before_distress = w_d && f.cool_branch && f.load < *w_d;
+      lines.push_back(fmt::format("limit at {}: {} from {:.6g} N: {}{}", where, limit_name(kind), f.load,
+                                  describe_limit(f.excess),
+                                  before_distress
+                                      ? fmt::format("; on the cool branch, below W_d = {:.2f} N: the bearing leaves "
+                                                    "the model's range before distress",
+                                                    *w_d)
+                                      : ""));
+    }
+  }
+  return lines;
+}
+
+}  // namespace twb

@@ -1,0 +1,103 @@
+// The limits a state reports besides distress (model/operating_limits.h): each one set
+// off exactly above its threshold, from the scene's own values, and on solved states of
+// the paper's bearing where the physics says it must be.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "../support/table1_scene.h"
+#include "twb/model/bearing_model.h"
+#include "twb/results/limit_notes.h"
+#include "twb/solver/steady_solver.h"
+
+namespace twb {
+namespace {
+
+bool has(const std::vector<LimitExcess>& limits, LimitKind kind) {
+  return std::any_of(limits.begin(), limits.end(), [&](const LimitExcess& e) { return e.kind == kind; });
+}
+
+TEST(OperatingLimits, EachIsExceededOnlyAboveItsThreshold) {
+  OperatingLimits l;
+  l.max_oil_temperature = 423.15;
+  l.flash_temperature = 453.15;
+  l.hardness = 1e9;
+  LimitValues at{423.15, 453.15, 1e9, 0.5, true};
+  EXPECT_TRUE(exceeded_limits(at, l).empty()) << "a value at its limit is within it";
+  LimitValues past{423.16, 453.16, 1.0001e9, 0.4999, true};
+  const std::vector<LimitExcess> all = exceeded_limits(past, l);
+  ASSERT_EQ(all.size(), 4u);
+  EXPECT_EQ(limit_names(all), "oil_temperature;flash_temperature;contact_pressure;film_below_statistics");
+  EXPECT_DOUBLE_EQ(all[2].value, 1.0001e9);
+  EXPECT_DOUBLE_EQ(all[2].limit, 1e9);
+  // Without the thermal effect every temperature is the ambient by construction, and
+  // without contact there is no hardness to exceed.
+  past.thermal = false;
+  l.hardness = 0.0;
+  EXPECT_EQ(limit_names(exceeded_limits(past, l)), "film_below_statistics");
+}
+
+TEST(OperatingLimits, HardnessIsThatOfTheSoftestFace) {
+  Scene s = testing::table1_scene(true, true, true, true);
+  s.washer.material.yield_strength = 400e6;
+  const OperatingLimits l = OperatingLimits::of(s);
+  EXPECT_DOUBLE_EQ(l.hardness, 2.84 * 400e6);
+  EXPECT_DOUBLE_EQ(l.max_oil_temperature, s.lubricant.max_temperature);
+  s.effects.asperity_contact = false;
+  EXPECT_EQ(OperatingLimits::of(s).hardness, 0.0);
+}
+
+BearingState solved(Scene scene) {
+  scene.mesh.radial_nodes = 5;
+  scene.mesh.circumferential_nodes = 24;
+  BearingModel m(scene);
+  std::vector<double> u;
+  const SteadyReport rep = SteadySolver(m, {}).solve_cold(u);
+  EXPECT_TRUE(rep.converged) << rep.message;
+  return m.describe(u);
+}
+
+// The paper's bearing at 545 rad/s: a full film at 100 N, within every limit; at 500 N
+// on its hot branch (the README's one-point example), the washer above 150 degC and the
+// film above the flash point.
+TEST(OperatingLimits, ThePapersBearingExceedsTheOilsLimitsOnlyOnItsHotBranch) {
+  const BearingState cool = solved(testing::table1_scene(true, true, true, true, 545.0, 100.0));
+  EXPECT_TRUE(cool.limits.empty()) << limit_names(cool.limits);
+  const BearingState hot = solved(testing::table1_scene(true, true, true, true, 545.0, 500.0));
+  EXPECT_TRUE(has(hot.limits, LimitKind::oil_temperature)) << limit_names(hot.limits);
+  EXPECT_TRUE(has(hot.limits, LimitKind::flash_temperature)) << limit_names(hot.limits);
+}
+
+// At rest under a heavy load the washer sits on its summits: the film closes below the
+// statistical model's range and the rim's contact pressure passes the hardness.
+TEST(OperatingLimits, AHeavyLoadAtRestCrushesTheSummits) {
+  const BearingState s = solved(testing::table1_scene(false, false, true, false, 0.0, 50000.0));
+  EXPECT_TRUE(has(s.limits, LimitKind::film_below_statistics)) << limit_names(s.limits);
+  EXPECT_TRUE(has(s.limits, LimitKind::contact_pressure)) << limit_names(s.limits);
+  EXPECT_GT(s.max_contact_pressure, OperatingLimits::of(testing::table1_scene(false, false, true, false)).hardness);
+}
+
+// The summary names, per run, the lightest load past each limit, and says so when that
+// state is on the cool branch below W_d.
+TEST(LimitNotes, SayWhenTheCoolBranchLeavesTheModelBeforeDistress) {
+  SolvedState a, b;
+  a.converged = b.converged = true;
+  a.state.speed = b.state.speed = 545.0;
+  a.branch = b.branch = "cool";
+  a.state.load = 150.0;
+  b.state.load = 120.0;
+  a.state.limits = b.state.limits = {{LimitKind::oil_temperature, 430.0, 423.15}};
+  DistressRow d;
+  d.speed = 545.0;
+  d.distress_load = 188.4;
+  const std::vector<std::string> lines = limit_notes({a, b}, {d});
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("oil_temperature from 120 N"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("below W_d = 188.40 N"), std::string::npos) << lines[0];
+  a.branch = b.branch = "hot";
+  EXPECT_EQ(limit_notes({a, b}, {d})[0].find("below W_d"), std::string::npos);
+  EXPECT_TRUE(limit_notes({}, {d}).empty());
+}
+
+}  // namespace
+}  // namespace twb
