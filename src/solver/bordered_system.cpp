@@ -37,4 +37,8 @@ std::string BorderedSystem::block_name(Index k) const {
   return k < base_.size() ? base_.block_name(k) : last_equation_;
 }
 
+std::string BorderedSystem::describe_row(Index k) const {
+  return k < base_.size() ? base_.describe_row(k) : last_equation_;
+}
+
 }  // namespace twb

@@ -131,6 +131,7 @@ class BearingModel final : public SegregatedSystem {
   std::vector<double> capacities() const override;
   std::vector<double> step_weights() const override;
   std::string block_name(Index k) const override { return layout_.block_of(k).name; }
+  std::string describe_row(Index k) const override;  // row_meaning.cpp
 
   // The paper's cold start: both films at h_min/σ = cold_start_film, washer tilted half
   // way, ambient temperature, no pressure.

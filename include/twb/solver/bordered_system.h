@@ -35,6 +35,7 @@ class BorderedSystem : public SteadySystem {
   std::vector<double> capacities() const override;
   std::vector<double> step_weights() const override;
   std::string block_name(Index k) const override;
+  std::string describe_row(Index k) const override;
 
  protected:
   BorderedSystem(SteadySystem& base, ContinuationMetric metric, std::string last_equation);

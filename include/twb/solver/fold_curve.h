@@ -56,6 +56,7 @@ class FoldCurveSystem final : public SteadySystem {
   std::vector<double> capacities() const override { return std::vector<double>(std::size_t(size()), 0.0); }
   std::vector<double> step_weights() const override { return fold_->step_weights(); }
   std::string block_name(Index k) const override { return fold_->block_name(k); }
+  std::string describe_row(Index k) const override { return fold_->describe_row(k); }
 
  private:
   SecondParameter& parameter_;

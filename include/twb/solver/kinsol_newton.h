@@ -81,6 +81,10 @@ class KinsolNewton {
   struct Callbacks;
 
  private:
+  // True when every row of residual r at y is within the tolerance plus its own
+  // rounding floor (solve(): a stall at machine precision is convergence).
+  bool within_rounding(std::span<const double> y, std::span<const double> r, double tolerance) const;
+
   const SteadySystem& model_;
   SundialsContext ctx_;
   Vector y_, scale_, residual_scale_;

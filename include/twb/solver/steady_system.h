@@ -48,6 +48,9 @@ class SteadySystem {
   virtual std::vector<double> step_weights() const { return std::vector<double>(std::size_t(size()), 1.0); }
   // Name of the group of unknowns holding unknown k, for failure reports.
   virtual std::string block_name(Index) const { return "unknowns"; }
+  // What residual row k balances, and where, in the physics' words (for failure
+  // reports: which balance, which film, which node); the block's name by default.
+  virtual std::string describe_row(Index k) const { return block_name(k); }
 
   // Newton's form: rows with the same roots that Newton converges on faster from a
   // close start, but whose slopes jump where a march (pseudo-time, a transient) or a

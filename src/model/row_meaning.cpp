@@ -1,0 +1,63 @@
+// What a residual row of the bearing means, in the physics' words and at its place on
+// the film, for the solver's diagnoses: "which balance, which film, which node"
+// instead of a row number.
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "twb/model/bearing_model.h"
+
+namespace twb {
+
+namespace {
+
+std::string place(const FilmMesh& mesh, int i, int j) {
+  return fmt::format("node ({}, {}) at r = {:.3g} mm, theta = {:.3g} deg", i, j, mesh.radius(i) * 1e3,
+                     mesh.angle(j) * 180.0 / std::numbers::pi);
+}
+
+const char* component_name(ComponentId id) {
+  switch (id) {
+    case ComponentId::carrier: return "carrier";
+    case ComponentId::washer: return "washer";
+    case ComponentId::gear: return "gear";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::string BearingModel::describe_row(Index k) const {
+  if (k >= rigid_offset_ && k < rigid_offset_ + 4) {
+    static constexpr const char* rigid[] = {
+        "the washer's axial force balance (film 1 against film 2)", "the washer's moment balance about x",
+        "the washer's moment balance about y", "the gear's axial force balance (film 2 against the load)"};
+    return rigid[k - rigid_offset_];
+  }
+  for (const Film& f : films_) {
+    const int nt = f.mesh.circumferential_nodes();
+    if (f.pressure_offset >= 0 && k >= f.pressure_offset && k < f.pressure_offset + Index(f.mesh.radial_nodes() - 2) * nt) {
+      const Index n = k - f.pressure_offset;
+      return fmt::format("the flow balance (Reynolds, with cavitation) of film {} at {}", f.number,
+                         place(f.mesh, int(n / nt) + 1, int(n % nt)));
+    }
+    if (f.temperature_offset >= 0 && k >= f.temperature_offset && k < f.temperature_offset + f.mesh.node_count()) {
+      const Index n = k - f.temperature_offset;
+      return fmt::format("the heat balance of film {}'s film node at {}", f.number,
+                         place(f.mesh, int(n / nt), int(n % nt)));
+    }
+  }
+  for (const ComponentHeat& c : components_) {
+    if (k < c.offset || k >= c.offset + c.node_count()) continue;
+    const Index n = k - c.offset;
+    if (c.axisymmetric)
+      return fmt::format("the heat balance of the {} (axisymmetric) at r = {:.3g} mm", component_name(c.id),
+                         c.grid.radius(int(n)) * 1e3);
+    const int nt = c.grid.circumferential_nodes();
+    return fmt::format("the heat balance of the {} at {}", component_name(c.id),
+                       place(c.grid, int(n / nt), int(n % nt)));
+  }
+  return block_name(k);
+}
+
+}  // namespace twb
