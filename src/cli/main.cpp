@@ -10,6 +10,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "interruption.h"
+#include "results_directory.h"
 #include "twb/model/bearing_model.h"
 #include "twb/results/atomic_file.h"
 #include "twb/results/fields_table.h"
@@ -48,6 +50,10 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
   const auto t0 = std::chrono::steady_clock::now();
   const twb::Scene scene = twb::load_scene(path, overrides);
   if (out_dir.empty()) out_dir = scene.output.directory;
+  // Before any work: a directory this run cannot write into, or one another run is
+  // writing into, is the user's to fix now, not after the study.
+  const twb::cli::ResultsDirectory results(out_dir);
+  twb::cli::end_cleanly_on_interruption(out_dir.c_str());
   twb::BearingModel model(scene);
   const double setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (!quiet) std::cerr << fmt::format("twb: {} unknowns, {} Jacobian nonzeros\n", model.size(), model.pattern().nnz());
@@ -142,6 +148,9 @@ int main(int argc, char** argv) {
     return run(scene_path, overrides, out_dir, quiet, verbose, threads);
   } catch (const twb::InputError& e) {
     std::cerr << e.what() << "\n";
+    return exit_invalid_input;
+  } catch (const twb::cli::ResultsDirectoryError& e) {
+    std::cerr << "twb: error: " << e.what() << "\n";
     return exit_invalid_input;
   } catch (const std::invalid_argument& e) {
     std::cerr << "twb: error: " << e.what() << "\n";

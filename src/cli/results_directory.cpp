@@ -1,0 +1,74 @@
+#include "results_directory.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <regex>
+#include <string>
+#include <system_error>
+
+#include <fmt/format.h>
+
+namespace twb::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every file a run or the plotting script writes, by name: anything else a user keeps
+// in the directory stays.
+void remove_earlier_run(const fs::path& dir) {
+  for (const char* name : {"run.json", "states.csv", "distress.csv", "sliding.csv", "fold_curve.csv", "trajectory.csv"})
+    fs::remove(dir / name);
+  static const std::regex field_file(R"(state_[0-9]{4,}\.csv)");
+  static const std::regex figure_file(R"(.+\.(png|svg|pdf))");
+  const std::pair<const char*, const std::regex*> owned[] = {{"fields", &field_file}, {"figures", &figure_file}};
+  for (const auto& [sub, pattern] : owned) {
+    if (!fs::is_directory(dir / sub)) continue;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir / sub))
+      if (e.is_regular_file() && std::regex_match(e.path().filename().string(), *pattern)) fs::remove(e.path());
+  }
+}
+
+}  // namespace
+
+ResultsDirectory::ResultsDirectory(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw ResultsDirectoryError(fmt::format("cannot use '{}' as the results directory: {}", dir.string(),
+                                            ec ? ec.message() : "it is not a directory"));
+  const fs::path lock = dir / ".twb.lock";
+  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock_fd_ < 0)
+    throw ResultsDirectoryError(fmt::format("cannot write into the results directory '{}': {}", dir.string(),
+                                            std::strerror(errno)));
+  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    char pid[32] = {};
+    const ssize_t n = ::pread(lock_fd_, pid, sizeof pid - 1, 0);
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    throw ResultsDirectoryError(fmt::format(
+        "another twb run{} is writing into '{}'; wait for it to finish or give this run another --out",
+        n > 0 ? fmt::format(" (process {})", std::string(pid, std::size_t(n))) : "", dir.string()));
+  }
+  const std::string me = std::to_string(::getpid());
+  if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, me.data(), me.size(), 0) != ssize_t(me.size()))
+    throw ResultsDirectoryError(fmt::format("cannot write into the results directory '{}': {}", dir.string(),
+                                            std::strerror(errno)));
+  try {
+    remove_earlier_run(dir);
+  } catch (const fs::filesystem_error& e) {
+    throw ResultsDirectoryError(fmt::format("cannot clear an earlier run's files from '{}': {}", dir.string(),
+                                            e.code().message()));
+  }
+}
+
+ResultsDirectory::~ResultsDirectory() {
+  if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the flock
+}
+
+}  // namespace twb::cli

@@ -1,0 +1,29 @@
+// The results directory of a run, made safe before any work is done: created and
+// proven writable, locked against a second run writing into it at the same time (an
+// flock, which the kernel releases when the run dies, so a killed run leaves no stale
+// lock), and emptied of an earlier run's files, so that no table or figure mixes two
+// runs. run.json is written last: a directory without it holds no complete run.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace twb::cli {
+
+// A directory that cannot be used; the message says which and why.
+struct ResultsDirectoryError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class ResultsDirectory {
+ public:
+  explicit ResultsDirectory(const std::filesystem::path& dir);
+  ~ResultsDirectory();
+  ResultsDirectory(const ResultsDirectory&) = delete;
+  ResultsDirectory& operator=(const ResultsDirectory&) = delete;
+
+ private:
+  int lock_fd_ = -1;
+};
+
+}  // namespace twb::cli
