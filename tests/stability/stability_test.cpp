@@ -31,6 +31,9 @@ struct Case {
   std::string name;
   std::vector<std::string> overrides;  // on the paper's scene, on a 5×24 mesh unless they set one
   double load = 500.0;                 // N, the scene's
+  // What the case reaches today (docs/reliability.md): a case solved must stay solved;
+  // one that ends in a diagnosis may become solved (then update this and the docs).
+  bool point_solved = true, sweep_solved = true;
 };
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
@@ -54,8 +57,11 @@ bool finite_state(const BearingState& s) {
 // The solver's tolerance on the scaled residual (NewtonSettings' default, the scene's).
 constexpr double kTolerance = 1e-10;
 
-void expect_solved_or_diagnosed(const StudyOutcome& o, const std::string& what) {
+void expect_solved_or_diagnosed(const StudyOutcome& o, const std::string& what, bool solved_today = false) {
   SCOPED_TRACE(what);
+  if (solved_today) {
+    EXPECT_FALSE(o.solver_failed) << "solved before, now: " << o.message;
+  }
   if (o.solver_failed) {
     // A diagnosis names what failed and, for a solver's failure, the balance and place.
     EXPECT_FALSE(o.message.empty());
@@ -104,7 +110,7 @@ TEST_P(Stability, AsAPoint) {
   const auto t0 = std::chrono::steady_clock::now();
   StudyOutcome o;
   ASSERT_NO_THROW(o = run(GetParam(), "{type: point}"));
-  expect_solved_or_diagnosed(o, "point");
+  expect_solved_or_diagnosed(o, "point", GetParam().point_solved);
   std::cout << fmt::format("  {:.2f} s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
@@ -115,18 +121,18 @@ TEST_P(Stability, AsAShortSweep) {
                   0.5 * c.load, c.load);
   StudyOutcome o;
   ASSERT_NO_THROW(o = run(c, study));
-  expect_solved_or_diagnosed(o, "sweep");
+  expect_solved_or_diagnosed(o, "sweep", c.sweep_solved);
 }
 
 const Case kCases[] = {
     {"at_rest", {"operating.speed=0 rad/s"}},
     {"creeping", {"operating.speed=1e-3 rad/s"}},
     {"fast", {"operating.speed=10000 rad/s"}},
-    {"featherweight", {"operating.load=0.01 N"}, 0.01},
-    {"heavy", {"operating.load=50 kN"}, 50000.0},
+    {"featherweight", {"operating.load=0.01 N"}, 0.01, false, false},
+    {"heavy", {"operating.load=50 kN"}, 50000.0, false, true},
     {"untilted", {"geometry.gear.tilt=0 rad"}},
     {"steeply_tilted", {"geometry.gear.tilt=50 mrad"}},
-    {"polished", surfaces("0.01 um")},
+    {"polished", surfaces("0.01 um"), 500.0, false, false},
     {"rough", surfaces("10 um")},
     {"frictionless", {"friction={law: constant, coefficient: 0}"}},
     {"grippy", {"friction={law: constant, coefficient: 1.5}"}},
@@ -148,7 +154,7 @@ TEST(StabilityFineMesh, PointOn65x528) {
   StudyOutcome o;
   ASSERT_NO_THROW(o = run({"fine_mesh", {"mesh.radial_nodes=65", "mesh.circumferential_nodes=528"}},
                           "{type: point}"));
-  expect_solved_or_diagnosed(o, "point on 65x528");
+  expect_solved_or_diagnosed(o, "point on 65x528", true);
 }
 
 // Loads 0.1 % either side of W_d on the suite's mesh: the cold start must land on a
@@ -164,7 +170,7 @@ TEST(StabilityAtDistress, PointsJustEitherSideOfTheFold) {
     const Case c{fmt::format("W_d x {}", factor), {fmt::format("operating.load={:.10g} N", load)}, load};
     StudyOutcome o;
     ASSERT_NO_THROW(o = run(c, "{type: point}"));
-    expect_solved_or_diagnosed(o, c.name);
+    expect_solved_or_diagnosed(o, c.name, true);
   }
 }
 
