@@ -20,7 +20,7 @@ extern "C" void on_interruption(int signal) {
   write_text(signal == SIGINT ? "\ntwb: interrupted (SIGINT)" : "\ntwb: terminated (SIGTERM)");
   write_text("; no complete run was written to ");
   write_text(results_directory ? results_directory : "the results directory");
-  write_text(" (a complete run ends with run.json); run it again\n");
+  write_text(" (a complete run ends with run.json); run it again with --resume to keep the searches it finished\n");
   ::_exit(128 + signal);
 }
 

@@ -18,6 +18,7 @@
 #include "twb/results/run_record.h"
 #include "twb/results/limit_notes.h"
 #include "twb/results/states_table.h"
+#include "twb/study/search_journal.h"
 #include "twb/scene/input_error.h"
 #include "twb/scene/scene_loader.h"
 #include "twb/solver/sundials_context.h"
@@ -46,7 +47,7 @@ int check(const std::string& path, const std::vector<std::string>& overrides) {
 }
 
 int run(const std::string& path, const std::vector<std::string>& overrides, std::string out_dir, bool quiet,
-        bool verbose, int threads) {
+        bool verbose, int threads, bool resume) {
   const auto t0 = std::chrono::steady_clock::now();
   const twb::Scene scene = twb::load_scene(path, overrides);
   if (out_dir.empty()) out_dir = scene.output.directory;
@@ -54,13 +55,15 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
   // writing into, is the user's to fix now, not after the study.
   const twb::cli::ResultsDirectory results(out_dir);
   twb::cli::end_cleanly_on_interruption(out_dir.c_str());
+  // Each finished search of the study is kept at once: a killed run resumes from them.
+  const twb::SearchJournal journal(out_dir, twb::describe_scene(scene), resume);
   twb::BearingModel model(scene);
   const double setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (!quiet) std::cerr << fmt::format("twb: {} unknowns, {} Jacobian nonzeros\n", model.size(), model.pattern().nnz());
 
   twb::StudyOutcome outcome =
       twb::run_study(model, quiet ? twb::ProgressReport{} : [](const std::string& s) { std::cerr << s << "\n"; },
-                     twb::RunOptions{.threads = threads});
+                     twb::RunOptions{.threads = threads, .journal = &journal});
   outcome.timings.setup_ms = setup_ms;
   outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
@@ -83,6 +86,7 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
                                                     : (outcome.message.empty() ? "ok" : outcome.message);
   twb::write_file_atomically(dir / "run.json", twb::run_json(path, twb::describe_scene(scene), model.layout(),
                                                              outcome.timings, verdict));
+  journal.finish();
   std::cout << twb::states_summary(outcome.states);
   for (const twb::DistressRow& d : outcome.distress)
     std::cout << fmt::format(
@@ -132,6 +136,10 @@ int main(int argc, char** argv) {
                       "threads for a study's independent searches (speeds, parameter values); default: one per core. "
                       "The results are the same for any number")
       ->check(CLI::NonNegativeNumber);
+  bool resume = false;
+  run_cmd->add_flag("--resume", resume,
+                    "finish a run that was killed: the searches it finished are read from the results directory's "
+                    "journal, the others run (the same scene and --set values)");
   run_cmd->add_flag("-v,--verbose", verbose,
                     "also the solvers' own words where a search went on regardless (e.g. why natural "
                     "continuation stopped at a fold)");
@@ -145,7 +153,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*check_cmd) return check(scene_path, overrides);
-    return run(scene_path, overrides, out_dir, quiet, verbose, threads);
+    return run(scene_path, overrides, out_dir, quiet, verbose, threads, resume);
   } catch (const twb::InputError& e) {
     std::cerr << e.what() << "\n";
     return exit_invalid_input;

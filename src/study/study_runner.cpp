@@ -15,6 +15,7 @@
 #include "distress_curve.h"
 #include "load_step_march.h"
 #include "parallel.h"
+#include "twb/study/search_journal.h"
 #include "richardson.h"
 #include "study_support.h"
 #include "twb/scene/scene_loader.h"
@@ -239,7 +240,7 @@ SearchDone search_one(const BearingModel& base, const SearchTask& task, const Di
 // kept.
 void run_searches(BearingModel& base, const std::vector<Variant>& variants, const DistressSearchSettings& settings,
                   const ProgressReport& progress, int threads, RunTimings& timings,
-                  std::vector<std::string>& diagnostics, const SearchResult& take) {
+                  std::vector<std::string>& diagnostics, const SearchResult& take, const SearchJournal* journal) {
   const std::vector<double> speeds = study_speeds(base);
   std::vector<SearchTask> tasks;
   for (const Variant& variant : variants)
@@ -252,8 +253,20 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
   const auto t0 = Clock::now();
   run_in_parallel(total, threads, [&](std::size_t i) {
     const SearchTask& task = tasks[i];
-    if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
-    SearchDone result = search_one(base, task, settings, say);
+    SearchDone result;
+    if (std::optional<JournaledSearch> kept = journal ? journal->read(i) : std::nullopt) {
+      // Found before the run was stopped: its model is rebuilt (the takers read its
+      // films), its search is not.
+      if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}: from the journal", i + 1, total, task.speed, task.variant->label));
+      result.model = std::make_unique<BearingModel>(task.variant->scene ? *task.variant->scene : base.scene());
+      result.model->set_speed(task.speed);
+      result.found = std::move(kept->found);
+      result.klu_factorizations = kept->klu_factorizations;
+    } else {
+      if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
+      result = search_one(base, task, settings, say);
+      if (journal) journal->write(i, result.found, result.klu_factorizations);
+    }
     const std::lock_guard<std::mutex> hold(lock);
     ready.emplace(i, std::move(result));
     ++done;
@@ -313,7 +326,8 @@ void keep_failure(StudyOutcome& out, const DistressSearch& found) {
   out.message += (out.message.empty() ? "" : "; ") + found.message;
 }
 
-void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads) {
+void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads,
+                    const SearchJournal* journal) {
   const std::vector<Variant> variants = parameter_variants(model.scene(), out.parameter_column);
   run_searches(model, variants, grid_settings(model.scene().study), progress, threads, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
@@ -321,10 +335,11 @@ void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport
                  out.trajectory.insert(out.trajectory.end(), found.runaway.begin(), found.runaway.end());
                  out.distress.push_back(found.row);
                  keep_failure(out, found);
-               });
+               }, journal);
 }
 
-void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, int threads) {
+void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, int threads,
+                      const SearchJournal* journal) {
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
   DistressSearchSettings settings = range_settings(base.scene().study);
   settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
@@ -336,14 +351,15 @@ void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressRepor
                       found.states.begin() + std::ptrdiff_t(found.cool_states));
     // One point that fails must not lose the map's other rows.
     if (found.failed) out.message += (out.message.empty() ? "" : "; ") + found.message;
-  });
+  }, journal);
 }
 
 // Which film slides (MODEL.md section 2): both configurations swept over the load grid
 // at every speed, each continued past its own distress; at every grid load the one of
 // lower friction torque is chosen, the paper's assumption that the washer settles where
 // the friction loss is least.
-void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, int threads) {
+void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, int threads,
+                        const SearchJournal* journal) {
   const Study& st = base.scene().study;
   out.sliding_column = true;
   std::vector<Variant> variants;
@@ -367,7 +383,7 @@ void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressRep
     out.trajectory.insert(out.trajectory.end(), found.runaway.begin(), found.runaway.end());
     out.distress.push_back(found.row);
     keep_failure(out, found);
-  });
+  }, journal);
   for (auto& speed : at)
     for (std::vector<SlidingRow>& rows : speed) {
       if (rows.empty()) continue;
@@ -419,16 +435,16 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
       run_point(model, out);
       break;
     case StudyType::load_sweep:
-      run_load_sweep(model, out, progress, threads);
+      run_load_sweep(model, out, progress, threads, options.journal);
       break;
     case StudyType::distress_map:
-      run_distress_map(model, out, progress, threads);
+      run_distress_map(model, out, progress, threads, options.journal);
       break;
     case StudyType::transient:
       run_transient(model, out, progress);
       break;
     case StudyType::sliding_choice:
-      run_sliding_choice(model, out, progress, threads);
+      run_sliding_choice(model, out, progress, threads, options.journal);
       break;
     case StudyType::distress_curve:
       run_distress_curve(model, out, progress, threads);

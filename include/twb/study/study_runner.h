@@ -37,10 +37,15 @@ struct StudyOutcome {
 
 using ProgressReport = std::function<void(const std::string&)>;
 
+class SearchJournal;
+
 struct RunOptions {
   // Threads for the study's independent searches (speeds, parameter values, sliding
   // films); 0: one per core. The results do not depend on it.
   int threads = 1;
+  // Where each finished search is written at once and, on resume, read instead of run
+  // (search_journal.h); none: nothing journaled.
+  const SearchJournal* journal = nullptr;
 };
 
 // Throws std::invalid_argument for a study this version cannot run.

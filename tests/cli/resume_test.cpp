@@ -1,0 +1,139 @@
+// After kill -9, `twb run --resume` finishes the study and ends with the files an
+// uninterrupted run writes: byte for byte but for the measured times (the states'
+// wall_ms column and run.json's *_ms), which differ between any two runs. A real run
+// of a four-speed distress map is killed at seeded random moments (before, between and
+// inside its searches) and resumed.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace twb {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The map on the paper's mesh, no error bars, one thread: four searches of about half a
+// second each.
+std::vector<std::string> map_arguments(const fs::path& out) {
+  return {TWB_BINARY, "run", std::string(TWB_SOURCE_DIR) + "/configs/studies/distress_map.yaml", "--out", out.string(),
+          "--threads", "1", "-q", "--set", "study.error_estimate=none"};
+}
+
+pid_t start(std::vector<std::string> args) {
+  const pid_t child = fork();
+  if (child == 0) {
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return child;
+}
+
+int finish(pid_t child) {
+  int status = 0;
+  waitpid(child, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+}
+
+// The CSV with its wall_ms column blanked.
+std::string without_wall_times(const std::string& csv) {
+  std::stringstream in(csv);
+  std::string line, out;
+  int column = -1;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    if (column < 0)
+      for (std::size_t k = 0; k < cells.size(); ++k)
+        if (cells[k] == "wall_ms") column = int(k);
+    if (column >= 0 && std::size_t(column) < cells.size()) cells[std::size_t(column)] = "-";
+    for (std::size_t k = 0; k < cells.size(); ++k) out += (k ? "," : "") + cells[k];
+    out += "\n";
+  }
+  return out;
+}
+
+std::string without_times(const std::string& json) {
+  static const std::regex times(R"re("([a-z_]+_ms)": [0-9.e+-]+)re");
+  return std::regex_replace(json, times, "\"$1\": -");
+}
+
+TEST(Resume, AKilledMapFinishesAsAnUninterruptedOne) {
+  const fs::path base = fs::temp_directory_path() / ("twb_resume_test_" + std::to_string(getpid()));
+  fs::remove_all(base);
+  const fs::path whole = base / "whole";
+  ASSERT_EQ(finish(start(map_arguments(whole))), 0);
+  const std::string states = without_wall_times(read(whole / "states.csv"));
+  const std::string distress = read(whole / "distress.csv");
+  const std::string record = without_times(read(whole / "run.json"));
+  ASSERT_FALSE(states.empty());
+
+  int journaled = 0;  // searches a resume read instead of running them, over the kills
+  std::mt19937 seed(20261124);
+  std::uniform_int_distribution<int> moment_ms(100, 1500);
+  for (int kill = 0; kill < 3; ++kill) {
+    const fs::path out = base / ("killed_" + std::to_string(kill));
+    const int after = moment_ms(seed);
+    SCOPED_TRACE("killed after " + std::to_string(after) + " ms");
+    const pid_t child = start(map_arguments(out));
+    std::this_thread::sleep_for(std::chrono::milliseconds(after));
+    ::kill(child, SIGKILL);
+    finish(child);
+    EXPECT_FALSE(fs::exists(out / "run.json")) << "the run was not stopped before it finished";
+    if (fs::is_directory(out / ".twb-journal"))
+      for (const fs::directory_entry& e : fs::directory_iterator(out / ".twb-journal"))
+        journaled += e.path().filename().string().rfind("search-", 0) == 0;
+    std::vector<std::string> resume = map_arguments(out);
+    resume.push_back("--resume");
+    ASSERT_EQ(finish(start(resume)), 0);
+    EXPECT_EQ(without_wall_times(read(out / "states.csv")), states);
+    EXPECT_EQ(read(out / "distress.csv"), distress);
+    EXPECT_EQ(without_times(read(out / "run.json")), record);
+    EXPECT_FALSE(fs::exists(out / ".twb-journal")) << "the journal outlived the finished run";
+  }
+  // The seeded moments stop the map between searches too: resumes must have had
+  // finished searches to read, or this test would only show a rerun.
+  EXPECT_GT(journaled, 0);
+  fs::remove_all(base);
+}
+
+// A journal belongs to its scene: resuming with other values is refused, not mixed.
+TEST(Resume, AnotherScenesJournalIsRefused) {
+  const fs::path out = fs::temp_directory_path() / ("twb_resume_other_" + std::to_string(getpid()));
+  fs::remove_all(out);
+  const pid_t child = start(map_arguments(out));
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  ::kill(child, SIGKILL);
+  finish(child);
+  std::vector<std::string> other = map_arguments(out);
+  other.insert(other.end(), {"--set", "study.load_end=900 N", "--resume"});
+  EXPECT_EQ(finish(start(other)), 2);
+  fs::remove_all(out);
+}
+
+}  // namespace
+}  // namespace twb
