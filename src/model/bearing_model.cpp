@@ -192,7 +192,9 @@ void BearingModel::set_load(double load) {
 }
 
 void BearingModel::set_speed(double speed) {
-  if (!(speed >= 0) || !std::isfinite(speed)) throw std::invalid_argument("speed must be finite and non-negative");
+  // The sign is the sense of rotation (scenes give a non-negative speed; the model's
+  // symmetry under reversal is a property test).
+  if (!std::isfinite(speed)) throw std::invalid_argument("speed must be finite");
   scene_.operating.speed = speed;
 }
 

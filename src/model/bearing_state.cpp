@@ -78,7 +78,7 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   // Stribeck number Z·N/P: viscosity at the mean film temperature, N in rev/s, P the
   // load over the washer area (MODEL.md section 9).
   const double washer_area = std::numbers::pi * (ro * ro - ri * ri);
-  s.stribeck = viscosity(mean_visc_t).value * (s.speed / (2 * std::numbers::pi)) / (load_ / washer_area);
+  s.stribeck = viscosity(mean_visc_t).value * (std::abs(s.speed) / (2 * std::numbers::pi)) / (load_ / washer_area);
 
   // Balances, from the residual rows (forces already scaled by the load).
   s.force_balance_error = std::max(std::abs(residual[rigid_offset_ + 0]), std::abs(residual[rigid_offset_ + 3]));

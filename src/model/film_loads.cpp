@@ -242,7 +242,9 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
               stiffness[5] += k * x * x;
             }
             if (!film.sliding) continue;
-            const double v_slide = omega * r;
+            // Friction opposes the sliding whichever way it goes: its power and torque
+            // take the speed's magnitude (the sign of ω only turns the Couette flow).
+            const double v_slide = std::abs(omega) * r;
             torque += f * r;
             const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
             for (int n = 0; n < 4; ++n) {
@@ -310,7 +312,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
               tot.fluid_force += w * p;
             }
             if (!film.sliding) continue;
-            const double v_slide = omega * r;
+            const double v_slide = std::abs(omega) * r;
             const ValueSlope mu = point_mu[q];
             // Shear acts over the average gap, which stays positive where h closes (MODEL.md 3, 6).
             const ValueSlope gap = point_gap[q];

@@ -9,6 +9,7 @@
 //  - where the state is unique (isothermal: no thermal runaway, hence no second branch)
 //    it does not depend on the start: the cold start from h_min/σ = 3 and from 10 reach
 //    the same state;
+//  - reversing the speed mirrors γx and leaves everything else;
 //  - thermal off is thermal on with an oil whose viscosity does not depend on
 //    temperature: the heat balance then cannot feed back, and the mechanics agree.
 #include <gtest/gtest.h>
@@ -122,6 +123,31 @@ TEST(Properties, AUniqueStateDoesNotDependOnTheStart) {
     // the start, not the scaling of the unknowns); as in ColdStart, states within 1e-9
     // of each other are the same state.
     EXPECT_LT(testing::relative_difference(a.u, b.u), 1e-9);
+  }
+}
+
+// Reversing the speed mirrors the bearing about the load frame's x axis (y → −y): the
+// Couette flow turns, friction and heat do not depend on the sense, the gear's imposed
+// tilt (about y) is unchanged. So γx changes sign and everything else stays, from the
+// cold start (γx = 0, itself mirror-symmetric) to the same tolerance as the states.
+TEST(Properties, ReversingTheSpeedMirrorsGammaX) {
+  std::mt19937 g(545);
+  for (int n = 0; n < 60; ++n) {
+    const Scene scene = random_scene(g, n % 2 == 0, false);
+    SCOPED_TRACE(fmt::format("scene {}: {}", n, describe(scene)));
+    BearingModel forward(scene), backward(scene);
+    backward.set_speed(-scene.operating.speed);
+    const Solved a = solve_cold(forward), b = solve_cold(backward);
+    ASSERT_TRUE(a.converged && b.converged) << a.message << " / " << b.message;
+    const BearingState sa = forward.describe(a.u), sb = backward.describe(b.u);
+    const double tilt = forward.tilt_scale(), gap = forward.clearance_scale();
+    EXPECT_NEAR(sb.position.gamma_x, -sa.position.gamma_x, 1e-9 * tilt);
+    EXPECT_NEAR(sb.position.gamma_y, sa.position.gamma_y, 1e-9 * tilt);
+    EXPECT_NEAR(sb.position.c1, sa.position.c1, 1e-9 * gap);
+    EXPECT_NEAR(sb.position.c2, sa.position.c2, 1e-9 * gap);
+    EXPECT_NEAR(sb.f_eff, sa.f_eff, 1e-9 * std::abs(sa.f_eff));
+    EXPECT_NEAR(sb.washer_mean_temperature, sa.washer_mean_temperature, 1e-9 * sa.washer_mean_temperature);
+    EXPECT_NEAR(sb.fluid_share, sa.fluid_share, 1e-9);
   }
 }
 
