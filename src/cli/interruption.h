@@ -10,5 +10,7 @@ namespace twb::cli {
 
 // Installs the handlers; `directory` must outlive the run (it is named in the message).
 void end_cleanly_on_interruption(const char* directory);
+// Once run.json is written the run is complete: a signal then ends it as usual.
+void run_is_complete();
 
 }  // namespace twb::cli

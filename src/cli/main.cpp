@@ -87,6 +87,7 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
   twb::write_file_atomically(dir / "run.json", twb::run_json(path, twb::describe_scene(scene), model.layout(),
                                                              outcome.timings, verdict));
   journal.finish();
+  twb::cli::run_is_complete();
   std::cout << twb::states_summary(outcome.states);
   for (const twb::DistressRow& d : outcome.distress)
     std::cout << fmt::format(

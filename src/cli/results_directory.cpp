@@ -55,15 +55,19 @@ ResultsDirectory::ResultsDirectory(const fs::path& dir) {
         "another twb run{} is writing into '{}'; wait for it to finish or give this run another --out",
         n > 0 ? fmt::format(" (process {})", std::string(pid, std::size_t(n))) : "", dir.string()));
   }
+  // A constructor that throws runs no destructor: the lock is released here.
+  auto give_up = [&](const std::string& message) {
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    throw ResultsDirectoryError(message);
+  };
   const std::string me = std::to_string(::getpid());
   if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, me.data(), me.size(), 0) != ssize_t(me.size()))
-    throw ResultsDirectoryError(fmt::format("cannot write into the results directory '{}': {}", dir.string(),
-                                            std::strerror(errno)));
+    give_up(fmt::format("cannot write into the results directory '{}': {}", dir.string(), std::strerror(errno)));
   try {
     remove_earlier_run(dir);
   } catch (const fs::filesystem_error& e) {
-    throw ResultsDirectoryError(fmt::format("cannot clear an earlier run's files from '{}': {}", dir.string(),
-                                            e.code().message()));
+    give_up(fmt::format("cannot clear an earlier run's files from '{}': {}", dir.string(), e.code().message()));
   }
 }
 

@@ -227,6 +227,9 @@ void BearingModel::set_curve_parameter(CurveParameter p, double value) {
   if (!std::isfinite(value)) throw std::invalid_argument("a curve parameter must be finite");
   switch (p) {
     case CurveParameter::speed:
+      // A curve in speed ends at rest: past it the sense of rotation, not the speed,
+      // would change (a scene's speeds are non-negative).
+      if (value < 0) throw std::invalid_argument("a speed curve ends at rest (0 rad/s)");
       set_speed(value);
       break;
     case CurveParameter::friction_coefficient:

@@ -8,7 +8,9 @@ namespace twb {
 
 namespace {
 constexpr double kCelsius = 273.15;
-// HG/S_y of eq [10] as a/R grows: the hardness of a fully plastic contact.
+// Tabor's hardness, about 2.8 S_y, and the largest H_G/S_y of eq [10] (small contacts;
+// H_G falls as a contact grows): a nominal pressure above it cannot be carried by
+// summits however many touch.
 constexpr double kHardnessOverYield = 2.84;
 }  // namespace
 
@@ -22,6 +24,7 @@ OperatingLimits OperatingLimits::of(const Scene& scene) {
                                      scene.gear.material.yield_strength});
     l.hardness = kHardnessOverYield * softest;
   }
+  l.statistical = scene.effects.asperity_contact || scene.effects.flow_factors;
   return l;
 }
 
@@ -33,7 +36,7 @@ std::vector<LimitExcess> exceeded_limits(const LimitValues& v, const OperatingLi
     out.push_back({LimitKind::flash_temperature, v.max_film_temperature, l.flash_temperature});
   if (l.hardness > 0 && v.max_contact_pressure > l.hardness)
     out.push_back({LimitKind::contact_pressure, v.max_contact_pressure, l.hardness});
-  if (v.hmin_over_sigma < l.least_film)
+  if (l.statistical && v.hmin_over_sigma < l.least_film)
     out.push_back({LimitKind::film_below_statistics, v.hmin_over_sigma, l.least_film});
   return out;
 }

@@ -115,7 +115,8 @@ void read_speeds(const MapReader& study, Study& s) {
 void read_load_grid(const MapReader& study, Scene& out) {
   Study& s = out.study;
   read_load_range(study, s, "");
-  s.load_steps = study.get("load_steps", "a whole number >= 2").integer(2, "the number of loads, both ends included");
+  s.load_steps = study.get("load_steps", "a whole number in [2, 10000]")
+                     .integer(2, 10000, "the number of loads, both ends included");
   if (study.has("speeds"))
     read_speeds(study, s);
   else

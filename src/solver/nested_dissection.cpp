@@ -8,8 +8,9 @@
 
 namespace twb {
 
-SuiteSparse_long nested_dissection_order(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSparse_long* Ai,
-                                         SuiteSparse_long* perm, klu_l_common* /*common*/) {
+namespace {
+
+SuiteSparse_long order(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSparse_long* Ai, SuiteSparse_long* perm) {
   using Long = SuiteSparse_long;
   // The graph of A + Aᵀ without self-loops.
   std::vector<std::vector<Long>> adjacent(static_cast<std::size_t>(n));
@@ -66,6 +67,19 @@ SuiteSparse_long nested_dissection_order(SuiteSparse_long n, SuiteSparse_long* A
   }
   cholmod_l_finish(&cc);
   return lnz;
+}
+
+}  // namespace
+
+SuiteSparse_long nested_dissection_order(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSparse_long* Ai,
+                                         SuiteSparse_long* perm, klu_l_common* /*common*/) {
+  // Called from KLU's C code: nothing may be thrown through it (0 makes KLU report a
+  // failed analysis, and SparseLu falls back to AMD).
+  try {
+    return order(n, Ap, Ai, perm);
+  } catch (...) {
+    return 0;
+  }
 }
 
 }  // namespace twb

@@ -60,6 +60,11 @@ SparseLu::SparseLu(const SparsePattern& p) : klu_(std::make_unique<Klu>()) {
   klu_->row_start.assign(p.row_start.begin(), p.row_start.end());
   klu_->column.assign(p.column.begin(), p.column.end());
   klu_->symbolic = klu_l_analyze(klu_->n, klu_->row_start.data(), klu_->column.data(), &klu_->common);
+  if (!klu_->symbolic && klu_->common.ordering == 3) {
+    // Nested dissection failed (METIS out of memory, say): AMD orders it instead.
+    klu_->common.ordering = 0;
+    klu_->symbolic = klu_l_analyze(klu_->n, klu_->row_start.data(), klu_->column.data(), &klu_->common);
+  }
   ++klu_->counts.analyses;
   ++tally.analyses;
   if (!klu_->symbolic)

@@ -201,9 +201,17 @@ SteadyReport SteadySolver::solve(std::vector<double>& u) { return settle(u, true
 SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
   u = model_.cold_start();
   if (model_.scene().solver.method == SolverMethod::paper) return solve_by_paper(u);
-  if (mesh_sequence_ && model_.films().front().mesh.node_count() > kSequenceAbove) {
-    SteadyReport rep = solve_by_mesh_sequence(u);
-    if (rep.converged) return rep;
+  const FilmMesh& mesh = model_.films().front().mesh;
+  // The coarser mesh must still be a legal one (docs/scenes.md, "Bounds"): at least
+  // 5 × 24, so that it keeps interior pressure nodes and its wedge.
+  if (mesh_sequence_ && mesh.node_count() > kSequenceAbove && (mesh.radial_nodes() + 1) / 2 >= 5 &&
+      (mesh.circumferential_nodes() + 1) / 2 >= 24) {
+    try {
+      SteadyReport rep = solve_by_mesh_sequence(u);
+      if (rep.converged) return rep;
+    } catch (const std::exception&) {
+      // The cold start on the mesh itself below says what is wrong, if anything.
+    }
     u = model_.cold_start();
   }
   // From the paper's cold start Newton never converges: over the 36 cold starts of the

@@ -16,12 +16,27 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A field added to these structs must be journaled too, or a resumed run would write
-// it as zero: the sizes fail to compile until write/read below are extended.
+// A field added to a state must be journaled too, or a resumed run would write it as
+// zero: the size fails to compile until fields_of_state is extended (the other structs'
+// sizes are in kMagic, so an entry of another layout is never read).
 static_assert(sizeof(BearingState) == 8 * 27 + sizeof(std::vector<LimitExcess>),
               "journal every BearingState field (search_journal.cpp)");
 
-constexpr char kMagic[] = "twb-search-journal 1\n";
+// The format, the program's version and the journaled structs' layout: an entry written
+// by another build is not read (its search runs again) rather than misread.
+const std::string kMagic = fmt::format("twb-search-journal 2 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
+                                       sizeof(SolvedState), sizeof(DistressRow), sizeof(TrajectorySample),
+                                       sizeof(SearchCounts));
+
+// The resolved scene without its comments: they name the file as typed, which may
+// differ between a run and its resume (a relative path, another directory).
+std::string without_comments(const std::string& scene) {
+  std::stringstream in(scene);
+  std::string out;
+  for (std::string line; std::getline(in, line);)
+    if (line.find_first_not_of(' ') == std::string::npos || line[line.find_first_not_of(' ')] != '#') out += line + "\n";
+  return out;
+}
 
 // One list of the fields of each journaled struct, for writing and reading alike: a
 // field is written and read in the same place or not at all. S is const when writing.
@@ -178,7 +193,7 @@ SearchJournal::SearchJournal(const fs::path& results, const std::string& scene, 
     : dir_(results / ".twb-journal") {
   const fs::path name = dir_ / "scene.yaml";
   if (resume && fs::exists(name)) {
-    if (read_file(name) != scene)
+    if (without_comments(read_file(name)) != without_comments(scene))
       throw std::invalid_argument(fmt::format("cannot resume: the journal in '{}' belongs to another scene (or other "
                                               "--set values); run without --resume to start afresh",
                                               results.string()));
@@ -189,9 +204,9 @@ SearchJournal::SearchJournal(const fs::path& results, const std::string& scene, 
 }
 
 std::optional<JournaledSearch> SearchJournal::read(std::size_t search) const {
-  const fs::path p = entry_path(dir_, search);
-  if (!fs::exists(p)) return std::nullopt;
   try {
+    const fs::path p = entry_path(dir_, search);
+    if (!fs::exists(p)) return std::nullopt;
     In in(read_file(p));
     std::string magic;
     in(magic);
@@ -200,8 +215,8 @@ std::optional<JournaledSearch> SearchJournal::read(std::size_t search) const {
     fields_of_search(in, j);
     if (!in.done()) return std::nullopt;
     return j;
-  } catch (const std::runtime_error&) {
-    return std::nullopt;  // damaged: run the search again
+  } catch (const std::exception&) {
+    return std::nullopt;  // unreadable or damaged: run the search again
   }
 }
 
@@ -213,7 +228,12 @@ void SearchJournal::write(std::size_t search, const DistressSearch& found, long 
     long klu_factorizations;
   } entry{found, klu_factorizations};
   fields_of_search(out, entry);
-  write_file_atomically(entry_path(dir_, search), out.bytes());
+  try {
+    write_file_atomically(entry_path(dir_, search), out.bytes());
+  } catch (const std::exception&) {
+    // The journal only spares a resume work: a full disk must not end the study (its
+    // results are written at the end, and fail there with the reason if it is still full).
+  }
 }
 
 void SearchJournal::finish() const { fs::remove_all(dir_); }

@@ -254,18 +254,27 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
   run_in_parallel(total, threads, [&](std::size_t i) {
     const SearchTask& task = tasks[i];
     SearchDone result;
-    if (std::optional<JournaledSearch> kept = journal ? journal->read(i) : std::nullopt) {
+    std::optional<JournaledSearch> kept = journal ? journal->read(i) : std::nullopt;
+    if (kept) {
       // Found before the run was stopped: its model is rebuilt (the takers read its
-      // films), its search is not.
-      if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}: from the journal", i + 1, total, task.speed, task.variant->label));
-      result.model = std::make_unique<BearingModel>(task.variant->scene ? *task.variant->scene : base.scene());
-      result.model->set_speed(task.speed);
-      result.found = std::move(kept->found);
-      result.klu_factorizations = kept->klu_factorizations;
-    } else {
+      // films), its search is not. A model that cannot be built runs the search again,
+      // which reports why.
+      try {
+        result.model = std::make_unique<BearingModel>(task.variant->scene ? *task.variant->scene : base.scene());
+        result.model->set_speed(task.speed);
+        result.found = std::move(kept->found);
+        result.klu_factorizations = kept->klu_factorizations;
+        if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}: from the journal", i + 1, total, task.speed, task.variant->label));
+      } catch (const std::exception&) {
+        kept.reset();
+      }
+    }
+    if (!kept) {
       if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
       result = search_one(base, task, settings, say);
-      if (journal) journal->write(i, result.found, result.klu_factorizations);
+      // A search that failed is not kept: a resume tries it again (perhaps with fewer
+      // threads, or after the user freed memory).
+      if (journal && !result.found.failed) journal->write(i, result.found, result.klu_factorizations);
     }
     const std::lock_guard<std::mutex> hold(lock);
     ready.emplace(i, std::move(result));

@@ -90,5 +90,16 @@ TEST(MeshSequence, ReachesTheStateOfTheMeshsOwnColdStart) {
   EXPECT_LT(testing::relative_difference(a, b), 1e-9);
 }
 
+// A fine mesh whose half would not be a legal one (fewer than 5 radial nodes: no
+// interior pressure worth the name) is not sequenced: its own cold start solves it.
+TEST(MeshSequence, StopsAboveTheCoarsestLegalMesh) {
+  BearingModel m(on_mesh(testing::table1_scene(true, true, true, true, 545.0, 150.0), 5, 400));
+  ASSERT_GT(m.films()[0].mesh.node_count(), SteadySolver::kSequenceAbove);
+  std::vector<double> u;
+  const SteadyReport rep = SteadySolver(m, {}).solve_cold(u);
+  ASSERT_TRUE(rep.converged) << rep.message;
+  EXPECT_EQ(rep.strategy, "pseudo-transient");
+}
+
 }  // namespace
 }  // namespace twb

@@ -35,6 +35,9 @@ TEST(OperatingLimits, EachIsExceededOnlyAboveItsThreshold) {
   past.thermal = false;
   l.hardness = 0.0;
   EXPECT_EQ(limit_names(exceeded_limits(past, l)), "film_below_statistics");
+  // Classic Reynolds (no contact, no flow factors) has no statistical range to leave.
+  l.statistical = false;
+  EXPECT_TRUE(exceeded_limits(past, l).empty());
 }
 
 TEST(OperatingLimits, HardnessIsThatOfTheSoftestFace) {

@@ -6,12 +6,13 @@
 //  - flash_temperature: the hottest film node, the film (flash) temperature of MODEL.md
 //    section 7, above the oil's flash point (lubricant.flash_temperature);
 //  - contact_pressure: the nominal asperity contact pressure where a film is tightest
-//    above the softer face's hardness, 2.84·S_y (MODEL.md section 4, eq [10] at full
-//    plasticity): the real contact area would exceed the nominal one, which the
+//    above the softest face's hardness, 2.84·S_y (Tabor's, the largest H_G of MODEL.md
+//    section 4, eq [10]): the real contact area would exceed the nominal one, which the
 //    statistical summit model cannot represent;
 //  - film_below_statistics: h_min/σ below 0.5, the smallest gap Patir and Cheng fitted
 //    their flow factors for and where most summits touch, against the statistical
-//    model's assumption of sparse, independent contacts.
+//    model's assumption of sparse, independent contacts (only with contact or flow
+//    factors on: classic Reynolds has no such limit).
 #pragma once
 
 #include <string>
@@ -35,6 +36,7 @@ struct OperatingLimits {
   double flash_temperature = 0.0;    // K
   double hardness = 0.0;             // Pa, the softer face's; 0: no contact model
   double least_film = 0.5;           // h_min/σ
+  bool statistical = true;           // a statistical model (contact, flow factors) is on
   static OperatingLimits of(const Scene& scene);
 };
 

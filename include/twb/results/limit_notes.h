@@ -13,8 +13,8 @@
 
 namespace twb {
 
-// One line per run and limit exceeded, lightest load first; empty when no state exceeds
-// a limit.
+// One line per run and limit exceeded (runs in order, limits in LimitKind order), each
+// at the lightest load past it; empty when no state exceeds a limit.
 std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, const std::vector<DistressRow>& distress);
 
 }  // namespace twb

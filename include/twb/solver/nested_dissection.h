@@ -13,7 +13,7 @@ namespace twb {
 
 // KLU's user_order callback: the permutation of the n × n block (column pointers Ap,
 // row indices Ai) into perm, by nested dissection of the graph of A + Aᵀ. Returns an
-// estimate of the nonzeros in L (KLU's first allocation), 0 on failure.
+// estimate of the nonzeros in L (KLU's first allocation), 0 on failure (never throws).
 SuiteSparse_long nested_dissection_order(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSparse_long* Ai,
                                          SuiteSparse_long* perm, klu_l_common* common);
 
