@@ -62,8 +62,12 @@ YAML::Node parse_yaml(const scene_io::Origin& file, const std::string& text) {
 }  // namespace
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  const std::string text = read_file(path);
-  scene_io::Origin file{.name = path, .is_file = true, .lines = scene_io::split_lines(text)};
+  return load_scene_text(read_file(path), path, overrides);
+}
+
+Scene load_scene_text(const std::string& text, const std::string& name,
+                      const std::vector<std::string>& overrides) {
+  scene_io::Origin file{.name = name, .is_file = true, .lines = scene_io::split_lines(text)};
   YAML::Node root = parse_yaml(file, text);
 
   scene_io::Provenance provenance(&file);
@@ -73,7 +77,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   // An empty document has no mark; errors about it still point at the file's first line.
   const YAML::Mark root_mark = root.Mark().line >= 0 ? root.Mark() : YAML::Mark();
   Scene scene = scene_io::read_scene(scene_io::Node(root, "", &file, root_mark, &provenance));
-  scene.source = path;
+  scene.source = name;
   return scene;
 }
 

@@ -236,6 +236,21 @@ TEST(SceneFile, ASecondYamlDocumentIsRejected) {
   EXPECT_NE(std::string(error.what()).find("2 YAML documents"), std::string::npos) << error.what();
 }
 
+TEST(SceneText, LoadsLikeTheFileAndNamesTheGivenSource) {
+  const TempScene file(kMinimalScene);
+  const Scene from_text = load_scene_text(kMinimalScene, "inline scene", {"operating.load=800 N"});
+  expect_same_scene(load_scene(file.path(), {"operating.load=800 N"}), from_text);
+  EXPECT_EQ(from_text.source, "inline scene");
+  EXPECT_EQ(from_text.operating.load, 800.0);
+  try {
+    load_scene_text("effects: [hydrodynamics]\ngeometry: [1, 2\n", "inline scene");
+    ADD_FAILURE() << "a YAML syntax error was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.file(), "inline scene");
+    EXPECT_GT(error.line(), 0);
+  }
+}
+
 TEST(InputErrorFormat, QuotesTheLineWithACaretUnderTheColumn) {
   const InputError error("configs/bad.yaml", 12, 11, "unknown key 'thicknes'", "  washer: {thicknes: 0.635 mm}");
   EXPECT_STREQ(error.what(),
