@@ -14,6 +14,7 @@
 #include "scene_overrides.h"
 #include "scene_sections.h"
 #include "scene_source.h"
+#include "yaml_documents.h"
 #include "twb/scene/input_error.h"
 
 namespace twb {
@@ -38,25 +39,24 @@ std::string line_at(const scene_io::Origin& file, int line) {
 }
 
 YAML::Node parse_yaml(const scene_io::Origin& file, const std::string& text) {
-  std::vector<YAML::Node> documents;
+  scene_io::YamlDocuments documents;
   try {
-    documents = YAML::LoadAll(text);
+    documents = scene_io::read_documents(text);
   } catch (const YAML::Exception& error) {
     const int line = std::max(error.mark.line, 0);
     throw InputError(file.name, line + 1, std::max(error.mark.column, 0) + 1,
                      fmt::format("YAML syntax error: {}", error.msg), line_at(file, line));
   }
-  if (documents.size() > 1) {
+  if (documents.count > 1) {
     // A second document would be ignored silently: most likely a stray '---'.
-    const YAML::Mark mark = documents[1].Mark();
-    const int line = std::max(mark.line, 0);
-    throw InputError(file.name, line + 1, std::max(mark.column, 0) + 1,
+    const int line = std::max(documents.second.line, 0);
+    throw InputError(file.name, line + 1, std::max(documents.second.column, 0) + 1,
                      fmt::format("the file holds {} YAML documents; a scene is one document "
                                  "(remove the '---' separators)",
-                                 documents.size()),
+                                 documents.count),
                      line_at(file, line));
   }
-  return documents.empty() ? YAML::Node() : documents.front();
+  return documents.first;
 }
 
 }  // namespace

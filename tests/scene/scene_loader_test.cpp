@@ -236,6 +236,15 @@ TEST(SceneFile, ASecondYamlDocumentIsRejected) {
   EXPECT_NE(std::string(error.what()).find("2 YAML documents"), std::string::npos) << error.what();
 }
 
+// yaml-cpp 0.7's LoadAll never returns on this (its issue 1040): the test would hang.
+TEST(SceneFile, StrayCommaAfterTheSceneIsASyntaxError) {
+  const TempScene file(std::string(kMinimalScene) + "---\n,\n");
+  const InputError error = load_error(file.path());
+  EXPECT_EQ(error.line(), 8);
+  EXPECT_EQ(error.column(), 1);
+  EXPECT_NE(std::string(error.what()).find("YAML syntax error: unexpected ','"), std::string::npos) << error.what();
+}
+
 TEST(SceneText, LoadsLikeTheFileAndNamesTheGivenSource) {
   const TempScene file(kMinimalScene);
   const Scene from_text = load_scene_text(kMinimalScene, "inline scene", {"operating.load=800 N"});
