@@ -185,6 +185,8 @@ INSTANTIATE_TEST_SUITE_P(
         // eta_R_sigma is written as a summit density: its product must read back to the bit.
         RoundTripCase{"rougher_washer_default_summits",
                       std::string(kMinimalScene) + "surfaces: {washer: {Rq: 0.257 um}}\n"},
+        RoundTripCase{"output_directory_with_control_characters",
+                      std::string(kMinimalScene) + "output: {directory: \"line\\nbreak\\ttab\\x01\\x7f end\"}\n"},
         RoundTripCase{"thermal_options",
                       with_thermal(kMinimalScene, "{thermal: {viscosity_temperature: film_node, "
                                                   "carrier_temperature: axisymmetric}}")},
