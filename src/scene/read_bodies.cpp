@@ -111,11 +111,13 @@ AsperityParameters read_asperities(const MapReader& surfaces, const Scene& scene
   }
   if (summits.has("summit_density")) {
     a.summit_density = summits.quantity("summit_density", si::areal_density, bounds::summit_density);
-    a.eta_r_sigma = a.summit_density * a.summit_radius * a.summit_sigma;
   } else {
-    a.eta_r_sigma = summits.quantity("eta_R_sigma", si::dimensionless, bounds::eta_r_sigma, a.eta_r_sigma);
-    a.summit_density = a.eta_r_sigma / (a.summit_radius * a.summit_sigma);
+    const double eta_r_sigma = summits.quantity("eta_R_sigma", si::dimensionless, bounds::eta_r_sigma, a.eta_r_sigma);
+    a.summit_density = eta_r_sigma / (a.summit_radius * a.summit_sigma);
   }
+  // From the density either way: a described scene gives the density, and must read back
+  // the same product to the last bit, not one an ulp from the eta_R_sigma first written.
+  a.eta_r_sigma = a.summit_density * a.summit_radius * a.summit_sigma;
   return a;
 }
 

@@ -14,6 +14,7 @@
 #include "scene_overrides.h"
 #include "scene_sections.h"
 #include "scene_source.h"
+#include "yaml_documents.h"
 #include "twb/scene/input_error.h"
 
 namespace twb {
@@ -38,32 +39,35 @@ std::string line_at(const scene_io::Origin& file, int line) {
 }
 
 YAML::Node parse_yaml(const scene_io::Origin& file, const std::string& text) {
-  std::vector<YAML::Node> documents;
+  scene_io::YamlDocuments documents;
   try {
-    documents = YAML::LoadAll(text);
+    documents = scene_io::read_documents(text);
   } catch (const YAML::Exception& error) {
     const int line = std::max(error.mark.line, 0);
     throw InputError(file.name, line + 1, std::max(error.mark.column, 0) + 1,
                      fmt::format("YAML syntax error: {}", error.msg), line_at(file, line));
   }
-  if (documents.size() > 1) {
+  if (documents.count > 1) {
     // A second document would be ignored silently: most likely a stray '---'.
-    const YAML::Mark mark = documents[1].Mark();
-    const int line = std::max(mark.line, 0);
-    throw InputError(file.name, line + 1, std::max(mark.column, 0) + 1,
+    const int line = std::max(documents.second.line, 0);
+    throw InputError(file.name, line + 1, std::max(documents.second.column, 0) + 1,
                      fmt::format("the file holds {} YAML documents; a scene is one document "
                                  "(remove the '---' separators)",
-                                 documents.size()),
+                                 documents.count),
                      line_at(file, line));
   }
-  return documents.empty() ? YAML::Node() : documents.front();
+  return documents.first;
 }
 
 }  // namespace
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  const std::string text = read_file(path);
-  scene_io::Origin file{.name = path, .is_file = true, .lines = scene_io::split_lines(text)};
+  return load_scene_text(read_file(path), path, overrides);
+}
+
+Scene load_scene_text(const std::string& text, const std::string& name,
+                      const std::vector<std::string>& overrides) {
+  scene_io::Origin file{.name = name, .is_file = true, .lines = scene_io::split_lines(text)};
   YAML::Node root = parse_yaml(file, text);
 
   scene_io::Provenance provenance(&file);
@@ -73,7 +77,7 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   // An empty document has no mark; errors about it still point at the file's first line.
   const YAML::Mark root_mark = root.Mark().line >= 0 ? root.Mark() : YAML::Mark();
   Scene scene = scene_io::read_scene(scene_io::Node(root, "", &file, root_mark, &provenance));
-  scene.source = path;
+  scene.source = name;
   return scene;
 }
 

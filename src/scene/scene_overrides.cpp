@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "yaml_documents.h"
 #include "twb/scene/input_error.h"
 
 namespace twb::scene_io {
@@ -102,13 +103,16 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
     origin.key_column = segments.back().column;
     origin.value_column = static_cast<int>(value_start) + 1;
 
-    YAML::Node value;
+    YamlDocuments value;
     try {
-      value = YAML::Load(text.substr(value_start));
+      value = read_documents(text.substr(value_start));
     } catch (const YAML::Exception& error) {
       throw InputError(origin.name, 0, origin.value_column + std::max(error.mark.column, 0),
                        fmt::format("YAML syntax error in the value: {}", error.msg), text);
     }
+    if (value.count > 1)
+      throw InputError(origin.name, 0, origin.value_column + std::max(value.second.column, 0),
+                       fmt::format("the value holds {} YAML documents; a value is one", value.count), text);
 
     // An empty file, or an empty section, becomes a map to hold the override.
     if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
@@ -137,7 +141,7 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
       parent.reset(next);
       parent_path = child_path;
     }
-    replace(parent, segments.back().key, value);
+    replace(parent, segments.back().key, value.first);
     provenance.assign(path, &origin);
   }
 }

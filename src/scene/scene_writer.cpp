@@ -15,11 +15,20 @@ std::string quantity(double value, std::string_view unit) {
   return unit == "1" ? fmt::format("{}", value) : fmt::format("{} {}", value, unit);
 }
 
+// A YAML double-quoted string. Control characters are escaped: a raw line break would be
+// folded into a space when the text is read back, and most others may not appear in YAML.
 std::string quoted(const std::string& text) {
   std::string out = "\"";
   for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
+    const auto code = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (code < 0x20 || code == 0x7f) {
+      out += fmt::format("\\x{:02x}", code);
+    } else {
+      out += c;
+    }
   }
   return out + "\"";
 }

@@ -122,6 +122,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"yaml_unclosed_flow_sequence", 3, 0, {"YAML syntax error"}},
     {"yaml_bad_indentation", 9, 0, {"YAML syntax error"}},
     {"yaml_tab_indentation", 9, 0, {"YAML syntax error", "tab"}},
+    {"yaml_stray_comma", 2, 1, {"YAML syntax error: unexpected ','"}},
     {"scene_not_a_map", 2, 1, {"the scene must be a map (allowed keys: effects, geometry", "got a list"}},
   };
   return cases;

@@ -132,6 +132,23 @@ TEST(SceneOverride, YamlSyntaxErrorInTheValue) {
       << error.what();
 }
 
+// yaml-cpp 0.7 reads a lone ',' as an empty value, which would then be reported as a
+// missing value.
+TEST(SceneOverride, StrayCommaIsASyntaxErrorInTheValue) {
+  const InputError error = load_error(kPaper, {"operating.load=,"});
+  EXPECT_EQ(error.file(), "--set operating.load");
+  EXPECT_EQ(error.column(), 16);
+  EXPECT_NE(std::string(error.what()).find("YAML syntax error in the value: unexpected ','"), std::string::npos)
+      << error.what();
+}
+
+TEST(SceneOverride, SecondYamlDocumentInTheValueIsRejected) {
+  const InputError error = load_error(kPaper, {"operating.load=800 N\n---\n900 N"});
+  EXPECT_EQ(error.file(), "--set operating.load");
+  EXPECT_NE(std::string(error.what()).find("the value holds 2 YAML documents"), std::string::npos)
+      << error.what();
+}
+
 TEST(SceneOverride, CannotDescendIntoAScalar) {
   const InputError error = load_error(kPaper, {"operating.load.value=800 N"});
   EXPECT_EQ(error.file(), "--set operating.load.value");

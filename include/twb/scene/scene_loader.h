@@ -16,6 +16,10 @@ namespace twb {
 // the override.
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// The same for the text of a scene file; `name` stands for the file in messages.
+Scene load_scene_text(const std::string& text, const std::string& name,
+                      const std::vector<std::string>& overrides = {});
+
 // The resolved scene as a scene file: every default filled in, values in SI written as
 // "value unit" strings, so that loading the text back gives the same Scene.
 std::string describe_scene(const Scene& scene);
