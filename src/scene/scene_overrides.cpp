@@ -1,7 +1,9 @@
 #include "scene_overrides.h"
 
+#include <algorithm>
 #include <cctype>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -55,16 +57,32 @@ std::string describe(const YAML::Node& node) {
 // yaml-cpp shares one node between an anchor and its aliases ("washer: *steel"). An
 // override names one path, so it must not edit the shared node in place: maps on the
 // path that are shared are replaced by private copies, and the value is inserted anew.
-int occurrences(const YAML::Node& tree, const YAML::Node& target, int depth) {
-  if (tree.is(target)) return 1;
-  // Anchors may nest but cannot recurse into themselves in a well-formed tree; the depth
-  // bound only protects against a pathological one.
-  if (depth > 64 || !(tree.IsMap() || tree.IsSequence())) return 0;
+// Their parents on the path are private already, so a map is shared when anything else
+// in the tree holds it too.
+//
+// How many times the maps and lists of `tree` hold `target`. Each is looked into once:
+// aliases can make the tree a graph with exponentially many paths through it, or a cycle
+// (an alias inside its own anchor's node).
+int references(const YAML::Node& tree, const YAML::Node& target) {
+  std::vector<YAML::Node> seen;
+  std::vector<YAML::Node> pending{tree};
   int count = 0;
-  if (tree.IsMap()) {
-    for (const auto& entry : tree) count += occurrences(entry.second, target, depth + 1);
-  } else {
-    for (const auto& item : tree) count += occurrences(item, target, depth + 1);
+  const auto hold = [&](const YAML::Node& child) {
+    if (child.is(target)) ++count;
+    pending.push_back(child);
+  };
+  while (!pending.empty()) {
+    const YAML::Node node = pending.back();
+    pending.pop_back();
+    if (!(node.IsMap() || node.IsSequence())) continue;
+    if (std::any_of(seen.begin(), seen.end(), [&](const YAML::Node& other) { return other.is(node); }))
+      continue;
+    seen.push_back(node);
+    if (node.IsMap()) {
+      for (const auto& entry : node) hold(entry.second);
+    } else {
+      for (const auto& item : node) hold(item);
+    }
   }
   return count;
 }
@@ -134,7 +152,7 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
                          fmt::format("'{}' is {} in the scene, not a map: it has no key '{}'",
                                      child_path, describe(child), segments[i + 1].key),
                          text);
-      } else if (occurrences(root, child, 0) > 1) {
+      } else if (references(root, child) > 1) {
         replace(parent, key, private_copy(child));
       }
       const YAML::Node next = std::as_const(parent)[key];

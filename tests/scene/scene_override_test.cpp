@@ -65,6 +65,15 @@ TEST(SceneOverride, ReplacesAnAliasedMapWithoutTouchingItsAnchor) {
   EXPECT_EQ(scene.gear.material.youngs_modulus, 201e9);
 }
 
+// An alias inside its own anchor's node makes the tree a cycle with 2^n paths of length
+// n; looking for other holders of `operating` along every path never ended.
+TEST(SceneOverride, AliasInsideItsOwnAnchorEnds) {
+  const TempScene file(std::string(kMinimalScene) + "materials:\n  carrier: &loop {washer: *loop, gear: *loop}\n");
+  const InputError error = load_error(file.path(), {"operating.load=800 N"});
+  EXPECT_NE(std::string(error.what()).find("unknown key 'washer' in 'materials.carrier'"), std::string::npos)
+      << error.what();
+}
+
 TEST(SceneOverride, WrongDimensionNamesTheOverride) {
   const InputError error = load_error(kPaper, {"operating.load=800 kg"});
   EXPECT_EQ(error.file(), "--set operating.load");
