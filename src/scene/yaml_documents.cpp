@@ -3,7 +3,6 @@
 #include <sstream>
 #include <vector>
 
-#include <fmt/format.h>
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/parser.h>
 
@@ -39,6 +38,19 @@ class DocumentStarts : public YAML::EventHandler {
   }
 };
 
+// The byte at a mark, found by its line and column; those count characters, so after a
+// byte order mark or a multibyte character on the same line this may be another byte.
+char byte_at(const std::string& text, const YAML::Mark& mark) {
+  std::size_t start = 0;
+  for (int line = 0; line < mark.line && start != std::string::npos; ++line) {
+    start = text.find('\n', start);
+    if (start != std::string::npos) ++start;
+  }
+  if (start == std::string::npos || mark.column < 0) return '\0';
+  const std::size_t at = start + static_cast<std::size_t>(mark.column);
+  return at < text.size() ? text[at] : '\0';
+}
+
 }  // namespace
 
 YamlDocuments read_documents(const std::string& text) {
@@ -50,9 +62,11 @@ YamlDocuments read_documents(const std::string& text) {
     // the same token for ever.
     const auto& marks = starts.documents;
     if (marks.size() > 1 && marks.back().pos == marks[marks.size() - 2].pos) {
-      const auto pos = static_cast<std::size_t>(marks.back().pos);
-      throw YAML::ParserException(
-          marks.back(), pos < text.size() ? fmt::format("unexpected '{}'", text[pos]) : "unexpected token");
+      // A ',' is the token known to do this; anything else is not named, rather than
+      // named wrongly.
+      throw YAML::ParserException(marks.back(), byte_at(text, marks.back()) == ','
+                                                    ? "unexpected ','"
+                                                    : "unexpected token where a value should start");
     }
   }
   YamlDocuments documents;

@@ -249,6 +249,18 @@ TEST(SceneFile, StrayCommaAfterTheSceneIsASyntaxError) {
   EXPECT_NE(std::string(error.what()).find("YAML syntax error: unexpected ','"), std::string::npos) << error.what();
 }
 
+// yaml-cpp's character positions do not count a byte order mark: the comma is found by
+// its line and column.
+TEST(SceneText, StrayCommaAfterAByteOrderMarkIsNamed) {
+  try {
+    load_scene_text("\xef\xbb\xbf# scene\n,\n", "bom.yaml");
+    ADD_FAILURE() << "a stray comma was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.line(), 2);
+    EXPECT_EQ(error.message(), "YAML syntax error: unexpected ','");
+  }
+}
+
 TEST(SceneText, LoadsLikeTheFileAndNamesTheGivenSource) {
   const TempScene file(kMinimalScene);
   const Scene from_text = load_scene_text(kMinimalScene, "inline scene", {"operating.load=800 N"});
