@@ -82,25 +82,45 @@ std::string without_times(const std::string& json) {
   return std::regex_replace(json, times, "\"$1\": -");
 }
 
+bool has_journaled_search(const fs::path& journal) {
+  std::error_code error;
+  for (fs::directory_iterator it(journal, error), end; !error && it != end; it.increment(error))
+    if (it->path().filename().string().rfind("search-", 0) == 0) return true;
+  return false;
+}
+
 TEST(Resume, AKilledMapFinishesAsAnUninterruptedOne) {
   const fs::path base = fs::temp_directory_path() / ("twb_resume_test_" + std::to_string(getpid()));
   fs::remove_all(base);
   const fs::path whole = base / "whole";
+  const auto started = std::chrono::steady_clock::now();
   ASSERT_EQ(finish(start(map_arguments(whole))), 0);
+  const auto whole_time = std::chrono::steady_clock::now() - started;
   const std::string states = without_wall_times(read(whole / "states.csv"));
   const std::string distress = read(whole / "distress.csv");
   const std::string record = without_times(read(whole / "run.json"));
   ASSERT_FALSE(states.empty());
 
   int journaled = 0;  // searches a resume read instead of running them, over the kills
+  // Moments as fractions of the uninterrupted run, so that a slower build (the
+  // sanitizers' is ten times slower) is killed at the same stages.
   std::mt19937 seed(20261124);
-  std::uniform_int_distribution<int> moment_ms(100, 1500);
+  std::uniform_real_distribution<double> moment(0.05, 0.95);
   for (int kill = 0; kill < 3; ++kill) {
     const fs::path out = base / ("killed_" + std::to_string(kill));
-    const int after = moment_ms(seed);
-    SCOPED_TRACE("killed after " + std::to_string(after) + " ms");
     const pid_t child = start(map_arguments(out));
-    std::this_thread::sleep_for(std::chrono::milliseconds(after));
+    if (kill == 0) {
+      // The first kill waits for the first journaled search, so that at least one
+      // resume reads a finished search rather than only running everything again.
+      SCOPED_TRACE("killed once a search was journaled");
+      const auto give_up = std::chrono::steady_clock::now() + 20 * whole_time;
+      while (std::chrono::steady_clock::now() < give_up && !has_journaled_search(out / ".twb-journal"))
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    } else {
+      const auto after = std::chrono::duration_cast<std::chrono::milliseconds>(moment(seed) * whole_time);
+      SCOPED_TRACE("killed after " + std::to_string(after.count()) + " ms");
+      std::this_thread::sleep_for(after);
+    }
     ::kill(child, SIGKILL);
     finish(child);
     EXPECT_FALSE(fs::exists(out / "run.json")) << "the run was not stopped before it finished";
