@@ -2,6 +2,7 @@
 // Exit status: 0 success (a distress found is a result), 2 invalid input,
 // 3 solver failure, 4 internal error.
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -38,11 +39,33 @@ std::string unknowns_table(const twb::UnknownLayout& layout) {
   return out;
 }
 
+// MODEL.md section 13: the moments depend on the sampling interval and the filter, so
+// they are shown with the estimate.
+std::string profile_table(const twb::AsperityParameters& a) {
+  if (!a.profile) return "";
+  const twb::ProfileEstimate& p = *a.profile;
+  std::string out = "summit statistics from measured profiles (McCool 1986, MODEL.md section 13):\n";
+  for (std::size_t k = 0; k < p.files.size(); ++k)
+    out += fmt::format("  {}: {} heights at {:.6g} m, {:.6g} m long, used as given (mean removed, no filter)\n",
+                       p.files[k], p.samples[k], p.spacings[k], p.spacings[k] * double(p.samples[k] - 1));
+  out += fmt::format("  m0 = {:.6g} m^2 (Rq {:.4g} m), m2 = {:.6g}, m4 = {:.6g} 1/m^2, bandwidth alpha = {:.4g}\n",
+                     p.m0, std::sqrt(p.m0), p.m2, p.m4, p.bandwidth);
+  out += fmt::format("  summit density {:.6g} 1/m^2, summit radius {:.6g} m, summit sigma {:.6g} m, "
+                     "eta R sigma_s = {:.4g}\n",
+                     a.summit_density, a.summit_radius, a.summit_sigma, a.eta_r_sigma);
+  return out;
+}
+
+void print_warnings(const twb::Scene& scene, std::ostream& out) {
+  for (const std::string& w : scene.warnings) out << "twb: warning: " << w << "\n";
+}
+
 int check(const std::string& path, const std::vector<std::string>& overrides) {
   const twb::Scene scene = twb::load_scene(path, overrides);
   const twb::BearingModel model(scene);
-  std::cout << twb::describe_scene(scene) << "\n" << unknowns_table(model.layout())
+  std::cout << twb::describe_scene(scene) << "\n" << profile_table(scene.asperities) << unknowns_table(model.layout())
             << fmt::format("jacobian nonzeros: {}\n", model.pattern().nnz());
+  print_warnings(scene, std::cout);
   return 0;
 }
 
@@ -50,6 +73,7 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
         bool verbose, int threads, bool resume) {
   const auto t0 = std::chrono::steady_clock::now();
   const twb::Scene scene = twb::load_scene(path, overrides);
+  print_warnings(scene, std::cerr);
   if (out_dir.empty()) out_dir = scene.output.directory;
   // Before any work: a directory this run cannot write into, or one another run is
   // writing into, is the user's to fix now, not after the study.

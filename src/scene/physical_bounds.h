@@ -38,6 +38,8 @@ inline constexpr Range solid_conductivity{.low = 0.01, .high = 2500.0,
 inline constexpr Range density{.low = 100.0, .high = 25000.0,
                                .reason = "from foams (100 kg/m^3) to osmium (22600 kg/m^3)"};
 inline constexpr Range specific_heat{.low = 50.0, .high = 5000.0, .reason = "50 to 5000 J/kg/K"};
+inline constexpr Range thermal_expansion{.low = 0.0, .high = 3e-4,
+                                         .reason = "0 (none) to 3e-4 1/K (steels 1.2e-5, polymers to 2e-4)"};
 
 // Surfaces.
 inline constexpr Range roughness{.low = 1e-9, .high = 1e-4,

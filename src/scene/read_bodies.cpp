@@ -2,12 +2,15 @@
 // (materials) and their faces' roughness (surfaces). MODEL.md sections 1, 4 and 10.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
 
-#include "scene_names.h"
 #include "physical_bounds.h"
+#include "roughness_profile.h"
+#include "scene_names.h"
 #include "scene_sections.h"
+#include "twb/physics/summit_statistics.h"
 
 namespace twb::scene_io {
 namespace {
@@ -73,7 +76,7 @@ void read_geometry(const MapReader& scene, Scene& out) {
 
 Material read_material(const MapReader& materials, std::string_view component) {
   const MapReader steel = materials.map(component, {"youngs_modulus", "poisson_ratio", "yield_strength",
-                                                    "conductivity", "density", "specific_heat"});
+                                                    "conductivity", "density", "specific_heat", "thermal_expansion"});
   Material m;
   m.youngs_modulus = steel.quantity("youngs_modulus", si::stress, bounds::youngs_modulus, m.youngs_modulus);
   m.poisson_ratio = steel.quantity("poisson_ratio", si::dimensionless,
@@ -83,6 +86,8 @@ Material read_material(const MapReader& materials, std::string_view component) {
   m.conductivity = steel.quantity("conductivity", si::conductivity, bounds::solid_conductivity, m.conductivity);
   m.density = steel.quantity("density", si::density, bounds::density, m.density);
   m.specific_heat = steel.quantity("specific_heat", si::specific_heat, bounds::specific_heat, m.specific_heat);
+  m.thermal_expansion =
+      steel.quantity("thermal_expansion", si::expansion, bounds::thermal_expansion, m.thermal_expansion);
   return m;
 }
 
@@ -94,11 +99,89 @@ Roughness read_roughness(const MapReader& surfaces, std::string_view component) 
   return r;
 }
 
+// A profile file named in the scene: relative to the scene file's directory (to the
+// working directory when an override named it).
+std::string profile_path(const Node& node) {
+  const std::filesystem::path named(node.scalar("the path of a roughness profile file (CSV)"));
+  if (named.is_absolute() || !node.origin()->is_file) return named.string();
+  return (std::filesystem::path(node.origin()->name).parent_path() / named).string();
+}
+
+// MODEL.md section 13: one profile of the combined surface, or one per face of the film
+// (the faces are independent, so their spectral moments add).
+AsperityParameters summits_from_profiles(const Node& profile, const Scene& scene, std::vector<std::string>& warnings) {
+  std::vector<Node> files;
+  if (profile.yaml().IsSequence()) {
+    files = profile.list("one profile file of the combined surface, or a list of two, one per face");
+    if (files.empty() || files.size() > 2)
+      profile.fail(fmt::format("{}: a list of {} files; give one profile of the combined surface or two, "
+                               "one per face of the film", profile.path(), files.size()));
+  } else {
+    files.push_back(profile);
+  }
+  ProfileEstimate estimate;
+  SpectralMoments moments;
+  for (const Node& file : files) {
+    const std::string path = profile_path(file);
+    const RoughnessProfile heights = read_roughness_profile(path);
+    try {
+      moments = combined(moments, spectral_moments(heights.heights, heights.spacing));
+    } catch (const std::invalid_argument& e) {
+      file.fail(fmt::format("{}: the profile '{}': {}", file.path(), path, e.what()));
+    }
+    estimate.files.push_back(path);
+    estimate.spacings.push_back(heights.spacing);
+    estimate.samples.push_back(heights.heights.size());
+  }
+  estimate.m0 = moments.m0;
+  estimate.m2 = moments.m2;
+  estimate.m4 = moments.m4;
+  estimate.bandwidth = moments.bandwidth();
+  SummitStatistics summits;
+  try {
+    summits = mccool_summits(moments);
+  } catch (const std::invalid_argument& e) {
+    profile.fail(fmt::format("{}: {} (McCool's relations need a random rough surface)", profile.path(), e.what()));
+  }
+  const auto check = [&](double value, const Range& range, std::string_view what) {
+    if (!range.contains(value))
+      profile.fail(fmt::format("{}: the profile gives {} {:.4g}, outside what the contact model represents "
+                               "({}{}); is the unit in the file's header right?",
+                               profile.path(), what, value, range.describe(),
+                               range.reason.empty() ? "" : fmt::format(": {}", range.reason)));
+  };
+  check(summits.radius, bounds::summit_radius, "a summit radius (m)");
+  check(summits.sigma, bounds::roughness, "a summit-height standard deviation (m)");
+  check(summits.density, bounds::summit_density, "a summit density (1/m^2)");
+  if (estimate.bandwidth < mccool_min_bandwidth)
+    warnings.push_back(fmt::format(
+        "{}: the profile's bandwidth parameter is {:.3g}, below the {} McCool's relations were validated "
+        "for: its summit statistics are rough estimates (a longer trace, or a finer sampling, widens the band)",
+        profile.path(), estimate.bandwidth, mccool_min_bandwidth));
+  const double profile_rq = std::sqrt(moments.m0);
+  const double scene_rq = std::hypot(scene.carrier.roughness.rq, scene.washer.roughness.rq);
+  if (std::abs(profile_rq - scene_rq) > 0.1 * scene_rq)
+    warnings.push_back(fmt::format(
+        "{}: the profile's combined Rq is {:.4g} m, the surfaces' Rq combine to {:.4g} m: the flow factors "
+        "use the surfaces', the contact the profile's", profile.path(), profile_rq, scene_rq));
+  AsperityParameters a;
+  a.summit_radius = summits.radius;
+  a.summit_sigma = summits.sigma;
+  a.summit_density = summits.density;
+  a.eta_r_sigma = a.summit_density * a.summit_radius * a.summit_sigma;
+  a.profile = std::move(estimate);
+  return a;
+}
+
 // Summit statistics of the carrier-washer pair (film 1, the paper's sliding film). The
 // defaults follow MODEL.md section 4: sigma_s = the combined sigma, eta = eta_R_sigma/(R sigma_s).
-AsperityParameters read_asperities(const MapReader& surfaces, const Scene& scene) {
+AsperityParameters read_asperities(const MapReader& surfaces, Scene& scene) {
   const MapReader summits = surfaces.map(
-      "asperities", {"summit_radius", "summit_sigma", "summit_density", "eta_R_sigma"});
+      "asperities", {"summit_radius", "summit_sigma", "summit_density", "eta_R_sigma", "profile"});
+  if (const std::optional<Node> profile = summits.find("profile")) {
+    summits.restrict_to({"profile"}, "with a profile, which gives the summit statistics;");
+    return summits_from_profiles(*profile, scene, scene.warnings);
+  }
   AsperityParameters a;
   a.summit_radius = summits.quantity("summit_radius", si::length, bounds::summit_radius, a.summit_radius);
   const double combined_sigma = std::hypot(scene.carrier.roughness.rq, scene.washer.roughness.rq);

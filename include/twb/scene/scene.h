@@ -2,6 +2,8 @@
 // Produced only by the scene loader (scene_loader.h); every layer after it reads this.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,10 @@ enum class ViscosityTemperature { surface_mean, film_node };
 enum class CarrierTemperature { load_frame, axisymmetric };
 
 enum class ViscosityModel { roelands, constant };
+
+// How a thick plate's face expands under a hot spot (MODEL.md section 11): laterally
+// free columns (c_ν = 1) or held by the cool plate around it (c_ν = (1+ν)/(1−ν)).
+enum class FaceExpansion { free, constrained };
 
 enum class FrictionLaw { constant, empirical };
 
@@ -55,6 +61,9 @@ struct Effects {
   bool thermal = false;
   ViscosityTemperature viscosity_temperature = ViscosityTemperature::surface_mean;
   CarrierTemperature carrier_temperature = CarrierTemperature::load_frame;
+  // MODEL.md section 11 (needs thermal): the films' shapes follow the bodies' temperatures.
+  bool thermal_deformation = false;
+  FaceExpansion face_expansion = FaceExpansion::free;
 };
 
 struct Material {
@@ -64,6 +73,7 @@ struct Material {
   double conductivity = 60.5;       // W/(m K)
   double density = 7850.0;          // kg/m^3
   double specific_heat = 470.0;     // J/(kg K)
+  double thermal_expansion = 1.2e-5;  // 1/K (Table 1), used by thermal_deformation
 };
 
 // Roughness of one component's face(s) touching a film.
@@ -81,12 +91,23 @@ struct Component {
   Roughness roughness;
 };
 
+// Summit statistics estimated from measured profiles (MODEL.md section 13): what they
+// came from, for the record (the estimate itself is in AsperityParameters).
+struct ProfileEstimate {
+  std::vector<std::string> files;    // one profile of the combined surface, or one per face
+  std::vector<double> spacings;      // m, each file's sampling interval
+  std::vector<std::size_t> samples;  // heights in each file
+  double m0 = 0, m2 = 0, m4 = 0;     // spectral moments of the combined surface (m², 1, 1/m²)
+  double bandwidth = 0;              // α_b = m0·m4/m2²
+};
+
 // Statistical summit parameters of the combined surface (MODEL.md section 4).
 struct AsperityParameters {
   double summit_radius = 20e-6;        // m
   double summit_sigma = 0.0;           // m, summit-height standard deviation
   double summit_density = 0.0;         // 1/m^2
   double eta_r_sigma = 0.05;           // the dimensionless product eta*R*sigma_s used for defaults
+  std::optional<ProfileEstimate> profile;  // when measured profiles gave the three above
 };
 
 struct Lubricant {
@@ -179,6 +200,9 @@ struct Scene {
   SolverSettings solver;
   Study study;
   Output output;
+  // What is legal but doubtful in the scene (e.g. a profile's band too narrow for
+  // McCool's relations): said by `twb check` and `twb run`, never an error.
+  std::vector<std::string> warnings;
 };
 
 // Every surface's roughness set to Rq = rq (Ra in the same ratio), the summits following
