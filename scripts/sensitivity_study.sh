@@ -21,21 +21,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 twb=""
 out="results/sensitivity"
 
-usage() {
-  sed -n '9,12p' "$0" | sed 's/^# \{0,1\}//' >&2
-  exit 2
-}
-
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --twb) [ $# -ge 2 ] || usage; twb=$2; shift 2 ;;
-    --out) [ $# -ge 2 ] || usage; out=$2; shift 2 ;;
-    -h|--help) usage ;;
-    *) echo "sensitivity_study.sh: unknown argument '$1'" >&2; usage ;;
-  esac
-done
 . "$root/scripts/find_twb.sh"
-find_twb sensitivity_study.sh
+study_options sensitivity_study.sh 9,12 "$@"
 
 scene="$root/configs/studies/distress_map.yaml"
 hydro='{hydrodynamics: {cavitation: reynolds}}, flow_factors, asperity_contact'

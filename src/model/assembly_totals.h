@@ -9,6 +9,12 @@
 
 namespace twb {
 
+// A film node's friction power's slope in the shape δ of a corner node of its cells.
+struct ShapeTerm {
+  int node = 0, corner = 0;
+  double coefficient = 0;
+};
+
 struct FilmTotals {
   double fluid_force = 0, contact_force = 0;
   std::array<double, 3> contact_force_rigid{};  // d(contact force)/d(ĉ, γ̂x, γ̂y)
@@ -18,6 +24,7 @@ struct FilmTotals {
   // ∫ p_c V N_a dA per node and its gradient in (ĉ, γ̂x, γ̂y): friction heat is f times it.
   std::vector<double> contact_power;
   std::vector<std::array<double, 3>> contact_power_rigid;
+  std::vector<ShapeTerm> contact_power_shape;  // with thermal deformation only
   double friction_coefficient = 0, friction_slope = 0;
   bool friction_clamped = false;
   double friction_heat = 0;

@@ -9,6 +9,7 @@
 #include "twb/model/reynolds_operator.h"
 #include "twb/physics/asperity_contact.h"
 #include "twb/physics/contact_table_cache.h"
+#include "twb/physics/thermal_deformation.h"
 
 namespace twb {
 
@@ -83,6 +84,13 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
     add_component(ComponentId::gear, scene_.gear,
                   FilmMesh(scene_.gear.inner_radius, scene_.gear.outer_radius, nr, nt), true, true, "gear");
   }
+  if (fx.thermal_deformation) {
+    if (!fx.thermal) throw std::invalid_argument("thermal_deformation needs the thermal effect");
+    dishing_offset_ = layout_.add("washer dishing curvature", "thermal_deformation", 1);
+    // Every δ moves the sliding film's contact force, which sets f in every heat row.
+    if (fx.asperity_contact && scene_.friction.law == FrictionLaw::empirical)
+      contact_force_offset_ = layout_.add("sliding film contact force", "thermal_deformation", 1);
+  }
 
   build_contact();
   roelands_ = RoelandsViscosity{scene_.lubricant.mu_infinity, scene_.lubricant.g0, scene_.lubricant.s0};
@@ -94,6 +102,11 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   p_ref_ = scene_.operating.load / sf.mesh.area();
   h_ref_ = scene_.solver.cold_start_film * sf.sigma;
   mu_ref_ = viscosity(scene_.operating.ambient).value;
+  // κ̂ = 1 lifts the washer's rim by σ_ref; F̂c = 1 is the scene's load (fixed, unlike
+  // the rigid rows' F_ext, so that the load enters no other row).
+  curvature_ref_ = sigma_ref_ / dishing_shape(scene_.washer.outer_radius, scene_.washer.inner_radius,
+                                              scene_.washer.outer_radius);
+  contact_force_ref_ = scene_.operating.load;
   smooth_rule_ = GaussRule::legendre(4);
   contact_rule_ = GaussRule::legendre(scene_.mesh.contact_quadrature);
   flat_contact_rule_ =
@@ -166,6 +179,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   }
 
   if (fx.thermal) build_heat_nodes();
+  build_shape_forms();
 
   Assembler structure(layout_.size());
   std::vector<double> u = cold_start();
@@ -362,7 +376,8 @@ SegregatedSystem::Blocks BearingModel::segregated_blocks() const {
   for (const UnknownBlock& block : layout_.blocks()) {
     std::vector<Index>* into = block.effect == "mechanics"       ? &b.rigid
                                : block.effect == "hydrodynamics" ? &b.pressure
-                               : block.effect == "thermal"       ? &b.temperature
+                               : block.effect == "thermal" || block.effect == "thermal_deformation"
+                                   ? &b.temperature
                                                                  : nullptr;
     if (!into) throw std::logic_error("segregated_blocks: unknown block of effect " + block.effect);
     for (Index k = 0; k < block.size; ++k) into->push_back(block.offset + k);
@@ -400,6 +415,7 @@ void BearingModel::assemble(std::span<const double> u, Assembler& a, Totals* tot
   }
   assemble_rigid_balance(a);
   if (scene_.effects.thermal) assemble_heat(u, a, t);
+  assemble_shape_rows(u, a);
   orient_rows(a);
 }
 

@@ -26,6 +26,8 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   const double ga = -film.sign * s.position.gamma_y - film.imposed_tilt;
   const double gb = film.sign * s.position.gamma_x;
   s.hmin_over_sigma = (c - std::hypot(ga, gb) * film.mesh.outer_radius()) / film.sigma;
+  // A deformed film is no plane (film_shape.cpp).
+  if (deforms()) s.hmin_over_sigma = least_gap(u, film) / film.sigma;
   const double tilt = scene_.gear.tilt > 0 ? scene_.gear.tilt : 1.0;
   s.gamma_x_ratio = s.position.gamma_x / tilt;
   s.gamma_y_ratio = s.position.gamma_y / tilt;
@@ -93,9 +95,9 @@ BearingState BearingModel::describe(std::span<const double> u) const {
     for (const Film& f : films_) {
       const double cf = f.clearance_unknown == 0 ? s.position.c1 : s.position.c2;
       const double slope = std::hypot(-f.sign * s.position.gamma_y - f.imposed_tilt, f.sign * s.position.gamma_x);
-      const double least_gap = cf - slope * f.mesh.outer_radius();
-      if (least_gap <= contact_cutoff_)
-        s.max_contact_pressure = std::max(s.max_contact_pressure, contact_->pressure(least_gap).value);
+      const double least = deforms() ? least_gap(u, f) : cf - slope * f.mesh.outer_radius();
+      if (least <= contact_cutoff_)
+        s.max_contact_pressure = std::max(s.max_contact_pressure, contact_->pressure(least).value);
     }
   s.limits = exceeded_limits({s.washer_mean_temperature, s.max_film_temperature, s.max_contact_pressure,
                               s.hmin_over_sigma, scene_.effects.thermal},

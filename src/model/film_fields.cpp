@@ -23,7 +23,7 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
       const double r = m.radius(i);
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const std::size_t k = std::size_t(m.node(i, j));
-        const double h = film_gap(film, q, r, m.angle(j));
+        const double h = film_gap(film, q, r, m.angle(j)) + (deforms() ? shape_at(u, film, int(k)) : 0.0);
         f.gap[k] = h;
         f.pressure[k] = pressure_at(u, film, i, j);
         // The contact law's value at the node's gap, for a map. The reported contact

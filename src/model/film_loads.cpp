@@ -143,6 +143,13 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
   // Node viscosity temperatures and their gradients, computed once per node.
   std::vector<double> node_t(m.node_count());
   for (int n = 0; n < m.node_count(); ++n) node_t[n] = apply(viscosity_temperature_form(film, n), u);
+  // Thermal deformation (film_shape.cpp): the gap is the plane plus the bilinear
+  // interpolation of the node shapes δ; the sliding film's contact force has its own row
+  // when f depends on it (empirical law), because every δ moves it.
+  const bool deformed = deforms();
+  std::vector<double> node_delta(deformed ? std::size_t(m.node_count()) : 0);
+  for (std::size_t n = 0; n < node_delta.size(); ++n) node_delta[n] = shape_at(u, film, int(n));
+  const Index force_row = film.sliding ? contact_force_offset_ : -1;
 
   if (film.sliding) {
     tot.contact_power.assign(m.node_count(), 0.0);
@@ -154,11 +161,12 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       const std::array<int, 4> ci{i, i + 1, i, i + 1};
       const std::array<int, 4> cj{j, j, j + 1, j + 1};
       std::array<int, 4> node;
-      std::array<double, 4> p_node{}, t_node{};
+      std::array<double, 4> p_node{}, t_node{}, d_node{};
       std::array<Index, 4> p_col{-1, -1, -1, -1};
       for (int k = 0; k < 4; ++k) {
         node[k] = m.node(ci[k], cj[k]);
         t_node[k] = node_t[node[k]];
+        if (deformed) d_node[k] = node_delta[std::size_t(node[k])];
         if (hydro && ci[k] > 0 && ci[k] < nr - 1) {
           p_col[k] = film.pressure_offset + Index(ci[k] - 1) * nt + m.wrap(cj[k]);
           p_node[k] = p_ref_ * u[p_col[k]];
@@ -166,9 +174,14 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       }
       const double r0 = m.radius(i), r1 = m.radius(i + 1);
       const double t0 = m.angle(j), t1 = t0 + m.dtheta();
-      const GapRange gap_range = contact ? plane.range(r0, r1, t0, t1, cos_node[j], sin_node[j], cos_node[j + 1],
-                                                       sin_node[j + 1])
-                                         : GapRange{};
+      GapRange gap_range = contact ? plane.range(r0, r1, t0, t1, cos_node[j], sin_node[j], cos_node[j + 1],
+                                                 sin_node[j + 1])
+                                   : GapRange{};
+      // A bilinear shape stays within its corners' values.
+      if (deformed) {
+        gap_range.least += *std::min_element(d_node.begin(), d_node.end());
+        gap_range.greatest += *std::max_element(d_node.begin(), d_node.end());
+      }
       const bool near_contact = contact && (structural || gap_range.least < cutoff);
 
       // Local accumulators: value, d/d(rigid 3), d/d(corner pressure 4), d/d(corner T 4).
@@ -181,6 +194,12 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       std::array<double, 4> vheat{};
       std::array<std::array<double, 3>, 4> vheat_rigid{};  // against the arms until scaled by g
       std::array<std::array<double, 4>, 4> vheat_t{};
+      // The same against the corner shapes δ_k (thermal deformation).
+      std::array<std::array<double, 4>, 3> load_shape{};
+      std::array<std::array<double, 4>, 4> vheat_shape{};
+      std::array<std::array<double, 4>, 4> power_shape{};  // friction power per corner, against δ
+      double load_val_contact = 0;            // the cell's contact force
+      std::array<double, 3> contact_rigid{};  // its gradient against the arms
 
       // Contact: the high-order rule where contact can exist (elsewhere p_c < 1e-20 p(0),
       // whose force is below 1e-12 of any load: skipping is invisible to Newton).
@@ -215,7 +234,10 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
         for (std::size_t gs = 0; gs < rule.points.size(); ++gs) {
           for (std::size_t gt = 0; gt < rule.points.size(); ++gt) {
             const Point pt = point(rule, cos_r, sin_r, i, j, gs, gt);
-            const double h = c + pa * pt.x + pb * pt.y;
+            double h = c + pa * pt.x + pb * pt.y;
+            if (deformed)
+              h += (1 - pt.s) * (1 - pt.t) * d_node[0] + pt.s * (1 - pt.t) * d_node[1] +
+                   (1 - pt.s) * pt.t * d_node[2] + pt.s * pt.t * d_node[3];
             if (h > cutoff) continue;
             contact_points.push_back(pt);
             contact_h.push_back(h);
@@ -240,6 +262,14 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
               stiffness[3] += k * y * y;
               stiffness[4] -= k * x * y;
               stiffness[5] += k * x * x;
+              if (deformed) {
+                const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
+                for (int l = 0; l < 4; ++l) {
+                  load_shape[0][l] += k * N[l];
+                  load_shape[1][l] += k * N[l] * y;
+                  load_shape[2][l] -= k * N[l] * x;
+                }
+              }
             }
             if (!film.sliding) continue;
             // Friction opposes the sliding whichever way it goes: its power and torque
@@ -255,6 +285,8 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
                 power_rigid[n][0] += kn;
                 power_rigid[n][1] += kn * y;
                 power_rigid[n][2] -= kn * x;
+                if (deformed)
+                  for (int l = 0; l < 4; ++l) power_shape[n][l] += kn * N[l];
               }
             }
           }
@@ -267,8 +299,11 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           load_val[qd] += force[qd];
           for (int d = 0; d < 3; ++d) load_rigid[qd][d] += arms[qd][d];
         }
+        load_val_contact = force[0];
+        contact_rigid = arms[0];
         tot.contact_force += force[0];
         for (int d = 0; d < 3; ++d) tot.contact_force_rigid[d] += g[d] * arms[0][d];
+
         if (film.sliding) {
           tot.contact_torque_per_f += torque;
           for (int n = 0; n < 4; ++n) {
@@ -277,6 +312,12 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           }
         }
       }
+
+      // Every cell's terms, zero or not, so that every pass adds the same entries in the
+      // same order (the slot tape, sparse_assembly.h).
+      if (deformed && film.sliding && contact)
+        for (int n = 0; n < 4; ++n)
+          for (int l = 0; l < 4; ++l) tot.contact_power_shape.push_back({node[n], node[l], power_shape[n][l]});
 
       // Fluid pressure (bilinear between nodes) and viscous shear: one fixed rule on
       // every cell, so the residual stays smooth as contact comes and goes. Viscosity
@@ -289,6 +330,8 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
             point_t[q] = 0;
             for (int k = 0; k < 4; ++k) point_t[q] += N[k] * t_node[k];
             point_h[q] = c + pa * x + pb * y;
+            if (deformed)
+              for (int k = 0; k < 4; ++k) point_h[q] += N[k] * d_node[k];
           }
         }
         viscosity(point_t, point_mu);
@@ -331,6 +374,8 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
                 vheat_rigid[k][1] += q * y;
                 vheat_rigid[k][2] -= q * x;
                 for (int l = 0; l < 4; ++l) vheat_t[k][l] += wn * dqv_dt * N[l];
+                if (deformed)
+                  for (int l = 0; l < 4; ++l) vheat_shape[k][l] += q * N[l];
               }
             }
           }
@@ -347,6 +392,19 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           if (!jac) continue;
           for (int d = 0; d < 3; ++d) a.add_derivative(rs.row, rigid_cols[d], coef[qd] * g[d] * load_rigid[qd][d]);
           for (int k = 0; k < 4; ++k) a.add_derivative(rs.row, p_col[k], coef[qd] * load_p[qd][k]);
+          if (deformed)
+            for (int k = 0; k < 4; ++k)
+              a.add_form(rs.row, coef[qd] * load_shape[qd][k], shape_form(film, node[k]));
+        }
+      }
+      // The sliding film's contact force into its own row (F_c/F_ref, film_shape.cpp).
+      if (force_row >= 0) {
+        a.add_residual(force_row, load_val_contact / contact_force_ref_);
+        if (jac) {
+          for (int d = 0; d < 3; ++d)
+            a.add_derivative(force_row, rigid_cols[d], g[d] * contact_rigid[d] / contact_force_ref_);
+          for (int k = 0; k < 4; ++k)
+            a.add_form(force_row, load_shape[0][k] / contact_force_ref_, shape_form(film, node[k]));
         }
       }
       // Viscous heat into the film-node rows (friction heat is added once f is known).
@@ -358,6 +416,8 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
           if (!jac) continue;
           for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], sc * g[d] * vheat_rigid[k][d]);
           for (int l = 0; l < 4; ++l) a.add_form(row, sc * vheat_t[k][l], viscosity_temperature_form(film, node[l]));
+          if (deformed)
+            for (int l = 0; l < 4; ++l) a.add_form(row, sc * vheat_shape[k][l], shape_form(film, node[l]));
         }
       }
     }
@@ -370,7 +430,10 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
     tot.friction_coefficient = scene_.friction.coefficient;
     tot.friction_slope = 0.0;
   } else {
-    const FrictionLawResult fr = empirical_friction(tot.contact_force);
+    // With thermal deformation the law reads the contact-force unknown (equal to the
+    // integral at a solution), so that its slope is one column of every heat row.
+    const double contact_force = force_row >= 0 ? u[std::size_t(force_row)] * contact_force_ref_ : tot.contact_force;
+    const FrictionLawResult fr = empirical_friction(contact_force);
     tot.friction_coefficient = fr.coefficient;
     tot.friction_slope = fr.slope;
     tot.friction_clamped = fr.clamped;
@@ -382,11 +445,19 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
     const double sc = film_row_scale_[film.number - 1][n];
     a.add_residual(row, sc * tot.friction_coefficient * tot.contact_power[n]);
     if (!jac) continue;
+    const double slope_rigid = force_row >= 0 ? 0.0 : tot.friction_slope;
     for (int d = 0; d < 3; ++d)
       a.add_derivative(row, rigid_cols[d],
                        sc * (tot.friction_coefficient * tot.contact_power_rigid[n][d] +
-                             tot.friction_slope * tot.contact_power[n] * tot.contact_force_rigid[d]));
+                             slope_rigid * tot.contact_power[n] * tot.contact_force_rigid[d]));
+    if (force_row >= 0)
+      a.add_derivative(row, force_row, sc * tot.friction_slope * contact_force_ref_ * tot.contact_power[n]);
   }
+  if (!jac) return;
+  for (const ShapeTerm& term : tot.contact_power_shape)
+    a.add_form(film.temperature_offset + term.node,
+               film_row_scale_[film.number - 1][term.node] * tot.friction_coefficient * term.coefficient,
+               shape_form(film, term.corner));
 }
 
 }  // namespace twb

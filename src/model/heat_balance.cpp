@@ -70,8 +70,9 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
         const Index row = film.temperature_offset + n;
         const double scale = film_row_scale_[film.number - 1][n];
         const double x = node.x, y = node.y;
-        const double h = gap_at(film, q, x, y);
+        const double h = gap_at(film, q, x, y) + (deforms() ? shape_at(u, film, n) : 0.0);
         const std::array<double, 3> dh = gap_gradient(film, x, y);
+        const LinearForm& shape = shape_form(film, n);
         const ValueSlope gap = average_gap(h, film.sigma);
         const double tf = temperature_of(u, row);
 
@@ -89,6 +90,20 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
             for (int t = 0; t < face.terms; ++t)
               a.add_derivative(row, face.column[std::size_t(t)], scale * conductance * face.weight[std::size_t(t)]);
             for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], -scale * dflow_dh * dh[d]);
+            a.add_form(row, -scale * dflow_dh, shape);
+          }
+          // The heat crossing the washer dishes it (MODEL.md section 11, film_shape.cpp).
+          if (deforms() && sides[side] == ComponentId::washer) {
+            const double cw = dishing_row_weight(film);
+            a.add_residual(dishing_offset_, cw * flow);
+            if (jac) {
+              a.add_derivative(dishing_offset_, row, cw * conductance);
+              for (int t = 0; t < face.terms; ++t)
+                a.add_derivative(dishing_offset_, face.column[std::size_t(t)],
+                                 -cw * conductance * face.weight[std::size_t(t)]);
+              for (int d = 0; d < 3; ++d) a.add_derivative(dishing_offset_, rigid_cols[d], cw * dflow_dh * dh[d]);
+              a.add_form(dishing_offset_, cw * dflow_dh, shape);
+            }
           }
           for (int t = 0; t < face.terms; ++t) {
             const Index k = face.column[std::size_t(t)];
@@ -99,6 +114,7 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
             for (int t2 = 0; t2 < face.terms; ++t2)
               a.add_derivative(k, face.column[std::size_t(t2)], -cw * conductance * face.weight[std::size_t(t2)]);
             for (int d = 0; d < 3; ++d) a.add_derivative(k, rigid_cols[d], cw * dflow_dh * dh[d]);
+            a.add_form(k, cw * dflow_dh, shape);
           }
         }
       }

@@ -89,6 +89,12 @@ std::vector<double> BearingModel::interpolated_from(const BearingModel& source, 
     for (int i = 0; i < map.dst_nr; ++i)
       for (int j = 0; j < dnt; ++j) out[dst.offset + Index(i) * dnt + j] = map.at(i, j, t);
   }
+  // Thermal deformation's scalars, in physical units.
+  if (deforms()) {
+    out[dishing_offset_] = source.dishing_curvature(u) / curvature_ref_;
+    if (contact_force_offset_ >= 0)
+      out[contact_force_offset_] = u[source.contact_force_offset_] * source.contact_force_ref_ / contact_force_ref_;
+  }
   return out;
 }
 

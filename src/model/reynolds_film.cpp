@@ -58,6 +58,9 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
 
   std::vector<double> node_t(m.node_count());
   for (int n = 0; n < m.node_count(); ++n) node_t[n] = apply(viscosity_temperature_form(film, n), u);
+  const bool deformed = deforms();
+  std::vector<double> delta(deformed ? std::size_t(m.node_count()) : 0);
+  for (std::size_t n = 0; n < delta.size(); ++n) delta[n] = shape_at(u, film, int(n));
 
   // Poiseuille conductance φ·max(h, 0)³/(12 μ) at a face, and its slopes in h and T.
   struct Conductance { double g, dg_dh, dg_dt; };
@@ -91,9 +94,10 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
   op.for_each_face([&](const ReynoldsFace& f) {
     const bool circumferential = f.kind == ReynoldsFace::Kind::circumferential;
     const double x = f.r * std::cos(f.theta), y = f.r * std::sin(f.theta);
-    const double h = c + pa * x + pb * y;
-    const std::array<double, 3> dh = gap_gradient(film, x, y);
     const Index na = m.node(f.ia, f.ja), nb = m.node(f.ib, f.jb);
+    // A face lies midway between its two nodes: the shape is their mean there.
+    const double h = c + pa * x + pb * y + (deformed ? 0.5 * (delta[na] + delta[nb]) : 0.0);
+    const std::array<double, 3> dh = gap_gradient(film, x, y);
     const Conductance g = conductance(h, 0.5 * (node_t[na] + node_t[nb]));
     const ValueSlope carried = circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
     const ReynoldsFaceFlux flow = ReynoldsOperator::flux(f, omega, g.g, carried.value, p_val(f.a), p_val(f.b));
@@ -110,6 +114,8 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
       a.add_derivative(row, rb, sign * flow.dq_dpb * p_ref_);
       a.add_form(row, sign * dq_dt, viscosity_temperature_form(film, na));
       a.add_form(row, sign * dq_dt, viscosity_temperature_form(film, nb));
+      a.add_form(row, sign * dq_dh * 0.5, shape_form(film, na));
+      a.add_form(row, sign * dq_dh * 0.5, shape_form(film, nb));
     }
   });
 

@@ -70,6 +70,10 @@ Effects read_effects(const MapReader& scene) {
                                                   kViscosityTemperatures, effects.viscosity_temperature);
       effects.carrier_temperature = read_choice(options, "carrier_temperature", kCarrierTemperatures,
                                                 effects.carrier_temperature);
+    } else if (effect.name == kThermalDeformation) {
+      const MapReader options(options_node, {"face_expansion"});
+      effects.thermal_deformation = true;
+      effects.face_expansion = read_choice(options, "face_expansion", kFaceExpansions, effects.face_expansion);
     } else {
       const MapReader no_options(options_node, {});
       if (effect.name == kFlowFactors) effects.flow_factors = true;
@@ -89,6 +93,11 @@ Effects read_effects(const MapReader& scene) {
       effect.item.fail(fmt::format(
           "{}: effect 'thermal' needs 'hydrodynamics' or 'asperity_contact': without viscous "
           "shear or contact friction nothing generates heat; add one of them to 'effects'",
+          effect.item.path()));
+    if (effect.name == kThermalDeformation && !effects.thermal)
+      effect.item.fail(fmt::format(
+          "{}: effect 'thermal_deformation' needs 'thermal' (the bodies deform with their "
+          "temperatures); add thermal to 'effects'",
           effect.item.path()));
   }
   return effects;

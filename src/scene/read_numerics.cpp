@@ -37,6 +37,14 @@ void read_solver(const MapReader& scene, Scene& out) {
                             "method: newton",
                             method.path(), kStudyTypes.names[kStudyTypes.index(out.study.type)]));
   }
+  // The baseline is the paper's scheme on the paper's rigid model; its segregated heat
+  // loop is not built for the films' shapes moving with the temperatures.
+  if (s.method == SolverMethod::paper && out.effects.thermal_deformation) {
+    const Node method = solver.get("method", "");
+    method.fail(fmt::format("{}: 'paper' solves the paper's rigid bearing; with the effect thermal_deformation "
+                            "use method: newton",
+                            method.path()));
+  }
   if (s.method != SolverMethod::paper && solver.has("over_relaxation")) {
     const Node node = solver.get("over_relaxation", "");
     node.fail(fmt::format("{}: the over-relaxation factor belongs to the paper's scheme; it applies with method: "

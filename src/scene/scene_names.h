@@ -22,6 +22,9 @@ inline constexpr EnumNames<ViscosityTemperature, 2> kViscosityTemperatures{
 inline constexpr EnumNames<CarrierTemperature, 2> kCarrierTemperatures{
     {"load_frame", "axisymmetric"}, {CarrierTemperature::load_frame, CarrierTemperature::axisymmetric}};
 
+inline constexpr EnumNames<FaceExpansion, 2> kFaceExpansions{
+    {"free", "constrained"}, {FaceExpansion::free, FaceExpansion::constrained}};
+
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
     {"roelands", "constant"}, {ViscosityModel::roelands, ViscosityModel::constant}};
 
@@ -53,8 +56,9 @@ inline constexpr std::string_view kHydrodynamics = "hydrodynamics";
 inline constexpr std::string_view kFlowFactors = "flow_factors";
 inline constexpr std::string_view kAsperityContact = "asperity_contact";
 inline constexpr std::string_view kThermal = "thermal";
-inline constexpr std::array<std::string_view, 4> kEffectNames{kHydrodynamics, kFlowFactors,
-                                                              kAsperityContact, kThermal};
+inline constexpr std::string_view kThermalDeformation = "thermal_deformation";
+inline constexpr std::array<std::string_view, 5> kEffectNames{kHydrodynamics, kFlowFactors, kAsperityContact,
+                                                              kThermal, kThermalDeformation};
 
 // The three bodies, in stacking order along z.
 inline constexpr std::array<std::string_view, 3> kComponentNames{"carrier", "washer", "gear"};

@@ -60,6 +60,8 @@ void write_effects(Writer& w, const Effects& e) {
     w.line(1, fmt::format("- thermal: {{viscosity_temperature: {}, carrier_temperature: {}}}",
                           kViscosityTemperatures.name(e.viscosity_temperature),
                           kCarrierTemperatures.name(e.carrier_temperature)));
+  if (e.thermal_deformation)
+    w.line(1, fmt::format("- thermal_deformation: {{face_expansion: {}}}", kFaceExpansions.name(e.face_expansion)));
 }
 
 void write_geometry(Writer& w, const Scene& s) {
@@ -89,6 +91,7 @@ void write_materials(Writer& w, const Scene& s) {
     w.entry(2, "conductivity", quantity(m.conductivity, "W/(m K)"));
     w.entry(2, "density", quantity(m.density, "kg/m^3"));
     w.entry(2, "specific_heat", quantity(m.specific_heat, "J/(kg K)"));
+    w.entry(2, "thermal_expansion", quantity(m.thermal_expansion, "1/K"));
   }
 }
 

@@ -30,6 +30,8 @@ struct EffectSet {
   double speed;
   CarrierTemperature carrier = CarrierTemperature::load_frame;
   CavitationRow cavitation = CavitationRow::fischer_burmeister;
+  bool deformation = false;
+  FrictionLaw friction = FrictionLaw::empirical;
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -46,6 +48,8 @@ std::vector<double> random_state(const BearingModel& m, std::mt19937& rng) {
       // differenced states: the spread of the step sizes then marks that entry
       // unresolved rather than wrong.)
       else if (b.effect == "hydrodynamics") u[k] = 0.05 + 3.0 * unit(rng);
+      // Dishing κ̂ (rim lift in σ) and the contact force over the scene's load.
+      else if (b.effect == "thermal_deformation") u[k] = b.name == "washer dishing curvature" ? 2.0 * unit(rng) - 1.0 : 0.2 + unit(rng);
     }
   }
   return u;
@@ -55,6 +59,8 @@ TEST_P(JacobianTest, MatchesCentralDifferences) {
   const EffectSet e = GetParam();
   Scene s = testing::table1_scene(e.hydro, e.factors, e.contact, e.thermal, e.speed, 700.0);
   s.effects.carrier_temperature = e.carrier;
+  s.effects.thermal_deformation = e.deformation;
+  s.friction.law = e.friction;
   s.mesh.radial_nodes = 5;
   s.mesh.circumferential_nodes = 12;
   BearingModel m(s);
@@ -138,7 +144,16 @@ INSTANTIATE_TEST_SUITE_P(
                       EffectSet{"hydro_contact_minimum_row", true, false, true, false, 545.0,
                                 CarrierTemperature::load_frame, CavitationRow::minimum},
                       EffectSet{"all_effects_minimum_row", true, true, true, true, 545.0,
-                                CarrierTemperature::load_frame, CavitationRow::minimum}),
+                                CarrierTemperature::load_frame, CavitationRow::minimum},
+                      EffectSet{"thermal_deformation", true, true, true, true, 545.0, CarrierTemperature::load_frame,
+                                CavitationRow::fischer_burmeister, true},
+                      EffectSet{"thermal_deformation_constant_friction", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
+                                FrictionLaw::constant},
+                      EffectSet{"thermal_deformation_contact_only", false, false, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true},
+                      EffectSet{"thermal_deformation_carrier_averaged", true, true, true, true, 545.0,
+                                CarrierTemperature::axisymmetric, CavitationRow::fischer_burmeister, true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -22,6 +22,7 @@ void expect_same_material(const Material& a, const Material& b) {
   EXPECT_EQ(a.conductivity, b.conductivity);
   EXPECT_EQ(a.density, b.density);
   EXPECT_EQ(a.specific_heat, b.specific_heat);
+  EXPECT_EQ(a.thermal_expansion, b.thermal_expansion);
 }
 
 void expect_same_component(const Component& a, const Component& b) {
@@ -43,6 +44,8 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.effects.thermal, b.effects.thermal);
   EXPECT_EQ(a.effects.viscosity_temperature, b.effects.viscosity_temperature);
   EXPECT_EQ(a.effects.carrier_temperature, b.effects.carrier_temperature);
+  EXPECT_EQ(a.effects.thermal_deformation, b.effects.thermal_deformation);
+  EXPECT_EQ(a.effects.face_expansion, b.effects.face_expansion);
   expect_same_component(a.carrier, b.carrier);
   expect_same_component(a.washer, b.washer);
   expect_same_component(a.gear, b.gear);
@@ -190,6 +193,9 @@ INSTANTIATE_TEST_SUITE_P(
         RoundTripCase{"thermal_options",
                       with_thermal(kMinimalScene, "{thermal: {viscosity_temperature: film_node, "
                                                   "carrier_temperature: axisymmetric}}")},
+        RoundTripCase{"thermal_deformation_constrained",
+                      with_thermal(kMinimalScene, "thermal, {thermal_deformation: {face_expansion: constrained}}") +
+                          "materials: {carrier: {thermal_expansion: 11.5e-6 1/K}}\n"},
         RoundTripCase{"distress_map_custom_surfaces_film_2",
                       std::string(testing::kSceneBodies) +
                           "study: {type: distress_map, speeds: [136 rad/s, 5200 rpm], load_start: 50 N, load_end: 3 kN,\n"

@@ -189,6 +189,19 @@ class BearingModel final : public SegregatedSystem {
     return {sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
   }
 
+  // Thermal deformation (MODEL.md section 11; film_shape.cpp): the change δ of a film's
+  // gap at a node from its plane, δ = form · u (m), from the carrier's and gear's face
+  // expansion and the washer's dishing. Empty forms without the effect.
+  bool deforms() const { return dishing_offset_ >= 0; }
+  const LinearForm& shape_form(const Film& film, int node) const {
+    return shape_forms_[std::size_t(film.number - 1)][std::size_t(node)];
+  }
+  double shape_at(std::span<const double> u, const Film& film, int node) const;
+  // The least gap (m) of a deformed film (film_shape.cpp).
+  double least_gap(std::span<const double> u, const Film& film) const;
+  // The washer's area-mean dishing curvature κ̄ (1/m) of state u; 0 without the effect.
+  double dishing_curvature(std::span<const double> u) const;
+
   // Pressure (Pa) at node (i, j) of the sliding film; 0 on edges and without hydrodynamics.
   double pressure_at(std::span<const double> u, const Film& film, int i, int j) const;
   double temperature_of(std::span<const double> u, Index k) const;
@@ -261,6 +274,21 @@ class BearingModel final : public SegregatedSystem {
   };
   std::vector<std::vector<HeatNode>> heat_nodes_;  // per film, per node
   void build_heat_nodes();
+
+  // Thermal deformation (film_shape.cpp). κ̂ = κ̄/curvature_ref_ is one unknown with
+  // its own row (the washer's mean through-thickness flux), so the curvature couples
+  // the films through one column, not a dense block. With the empirical friction law the
+  // sliding film's total contact force, which every δ now moves, is one unknown too
+  // (F̂c = F_c/contact_force_ref_), for the same reason.
+  Index dishing_offset_ = -1, contact_force_offset_ = -1;
+  double curvature_ref_ = 0, contact_force_ref_ = 0;
+  std::vector<std::vector<LinearForm>> shape_forms_;  // per film, per node
+  void build_shape_forms();
+  // The dishing row's weight of a heat flow (W) from a film node into the washer: the
+  // washer's mean through-thickness flux (film 1 in, film 2 out) in curvature units.
+  double dishing_row_weight(const Film& film) const;
+  // The unknowns' own terms of the dishing and contact-force rows.
+  void assemble_shape_rows(std::span<const double> u, Assembler& a) const;
   // film_gap() at a point (x, y) of the load frame.
   double gap_at(const Film& film, const RigidPosition& q, double x, double y) const;
 

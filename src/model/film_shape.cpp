@@ -1,0 +1,109 @@
+// Thermal deformation of the films (MODEL.md section 11): carrier and gear faces
+// displaced by their through-thickness expansion, the washer dished by the heat
+// crossing it. Only the gaps change: every place that evaluates a film's gap adds the
+// node values δ of shape_form (interpolated bilinearly inside a cell, linearly along a
+// face) to the gap plane, and their forms to its gradient.
+//
+// A uniform part of the displacement is absorbed by the clearances z_w, z_g (the
+// unknowns); the shape is what changes the physics.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "twb/physics/thermal_deformation.h"
+#include "twb/model/bearing_model.h"
+
+namespace twb {
+
+void BearingModel::build_shape_forms() {
+  shape_forms_.assign(films_.size(), {});
+  for (const Film& film : films_) shape_forms_[std::size_t(film.number - 1)].resize(std::size_t(film.mesh.node_count()));
+  if (!deforms()) return;
+  const bool constrained = scene_.effects.face_expansion == FaceExpansion::constrained;
+  const std::vector<double> zero(std::size_t(layout_.size()), 0.0);
+  const double ri = scene_.washer.inner_radius, ro = scene_.washer.outer_radius;
+  for (const Film& film : films_) {
+    const FilmMesh& m = film.mesh;
+    for (int i = 0; i < m.radial_nodes(); ++i) {
+      const double r = m.radius(i);
+      for (int j = 0; j < m.circumferential_nodes(); ++j) {
+        LinearForm& form = shape_forms_[std::size_t(film.number - 1)][std::size_t(m.node(i, j))];
+        // A thick body's face moves towards the film by u = c_ν α t (T − T0)/2: the gap closes.
+        for (const ComponentId side : {film.lower, film.upper}) {
+          if (side == ComponentId::washer) continue;
+          const Component& body = side == ComponentId::carrier ? scene_.carrier : scene_.gear;
+          const double per_kelvin = face_expansion_per_kelvin(body.material.thermal_expansion, body.thickness,
+                                                              body.material.poisson_ratio, constrained);
+          LinearForm face;
+          face_temperature(zero, side, r, j, &face);
+          for (const auto& [k, w] : face.terms)
+            if (w != 0.0) form.add(k, -per_kelvin * w);
+        }
+        // The dished washer's mid-surface rises by w(r) towards film 2: film 1 (washer
+        // above) opens by w, film 2 (washer below) closes by w.
+        const double towards = film.upper == ComponentId::washer ? 1.0 : -1.0;
+        form.add(dishing_offset_, towards * curvature_ref_ * dishing_shape(r, ri, ro));
+      }
+    }
+  }
+}
+
+double BearingModel::shape_at(std::span<const double> u, const Film& film, int node) const {
+  double delta = 0.0;
+  for (const auto& [k, c] : shape_form(film, node).terms) delta += c * u[std::size_t(k)];
+  return delta;
+}
+
+// The least of the nodes' gaps and of the gap where the plane is least (on the outer
+// rim, the shape interpolated along it): without expansion that is the plane's exact
+// minimum, as for a rigid film.
+double BearingModel::least_gap(std::span<const double> u, const Film& film) const {
+  const RigidPosition q = position(u);
+  const FilmMesh& m = film.mesh;
+  double least = INFINITY;
+  for (int i = 0; i < m.radial_nodes(); ++i)
+    for (int j = 0; j < m.circumferential_nodes(); ++j)
+      least = std::min(least, film_gap(film, q, m.radius(i), m.angle(j)) + shape_at(u, film, m.node(i, j)));
+  // h = c + a·x + b·y is least along −(a, b).
+  const double a = -film.sign * q.gamma_y - film.imposed_tilt, b = film.sign * q.gamma_x;
+  if (a == 0.0 && b == 0.0) return least;
+  const double two_pi = 2 * std::numbers::pi;
+  double theta = std::atan2(-b, -a);
+  if (theta < 0) theta += two_pi;
+  const double cell = theta / m.dtheta();
+  const int j = std::min(int(cell), m.circumferential_nodes() - 1);
+  const double t = cell - j;
+  const int rim = m.radial_nodes() - 1;
+  const double delta = (1 - t) * shape_at(u, film, m.node(rim, j)) + t * shape_at(u, film, m.node(rim, m.wrap(j + 1)));
+  return std::min(least, film_gap(film, q, m.outer_radius(), theta) + delta);
+}
+
+double BearingModel::dishing_curvature(std::span<const double> u) const {
+  return deforms() ? curvature_ref_ * u[std::size_t(dishing_offset_)] : 0.0;
+}
+
+// κ̄ = α/K_w · q̄_w with q̄_w the washer's area-mean flux from its film-1 face to its
+// film-2 face: half of what enters through film 1 minus half of what enters through
+// film 2 (the antisymmetric part of the two faces' fluxes is what crosses the
+// mid-plane), over the washer's area.
+double BearingModel::dishing_row_weight(const Film& film) const {
+  const double ri = scene_.washer.inner_radius, ro = scene_.washer.outer_radius;
+  const double area = std::numbers::pi * (ro * ro - ri * ri);
+  const Material& steel = scene_.washer.material;
+  const double from_film_1 = film.upper == ComponentId::washer ? 1.0 : -1.0;
+  return from_film_1 * dishing_curvature_per_flux(steel.thermal_expansion, steel.conductivity) /
+         (2.0 * area * curvature_ref_);
+}
+
+// Rows are assembled as (what the state implies − the unknown) and negated with the
+// others by orient_rows: κ̂ − κ(u)/κ_ref, F̂c − F_c(u)/F_ref, with +1 on the diagonal.
+void BearingModel::assemble_shape_rows(std::span<const double> u, Assembler& a) const {
+  if (!deforms()) return;
+  a.add_residual(dishing_offset_, -u[std::size_t(dishing_offset_)]);
+  a.add_derivative(dishing_offset_, dishing_offset_, -1.0);
+  if (contact_force_offset_ < 0) return;
+  a.add_residual(contact_force_offset_, -u[std::size_t(contact_force_offset_)]);
+  a.add_derivative(contact_force_offset_, contact_force_offset_, -1.0);
+}
+
+}  // namespace twb
