@@ -105,7 +105,9 @@ TEST(Resume, AKilledMapFinishesAsAnUninterruptedOne) {
   // Moments as fractions of the uninterrupted run, so that a slower build (the
   // sanitizers' is ten times slower) is killed at the same stages.
   std::mt19937 seed(20261124);
-  std::uniform_real_distribution<double> moment(0.05, 0.95);
+  // (Up to 0.6: a machine whose load changes between the runs may run the killed one
+  // faster than the measured one.)
+  std::uniform_real_distribution<double> moment(0.05, 0.6);
   for (int kill = 0; kill < 3; ++kill) {
     const fs::path out = base / ("killed_" + std::to_string(kill));
     const pid_t child = start(map_arguments(out));
@@ -123,7 +125,12 @@ TEST(Resume, AKilledMapFinishesAsAnUninterruptedOne) {
     }
     ::kill(child, SIGKILL);
     finish(child);
-    EXPECT_FALSE(fs::exists(out / "run.json")) << "the run was not stopped before it finished";
+    // A run that finished before its kill has nothing to resume; only the first kill,
+    // which waits for the first of four searches, must find it unfinished.
+    if (fs::exists(out / "run.json")) {
+      EXPECT_NE(kill, 0) << "the run finished before its first search was journaled";
+      continue;
+    }
     if (fs::is_directory(out / ".twb-journal"))
       for (const fs::directory_entry& e : fs::directory_iterator(out / ".twb-journal"))
         journaled += e.path().filename().string().rfind("search-", 0) == 0;
