@@ -62,6 +62,10 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
     if (fx.hydrodynamics && f.sliding)
       f.pressure_offset = layout_.add(fmt_film_block(f.number, "pressure"), "hydrodynamics",
                                       Index(nr - 2) * nt);
+    // The mass-conserving model's second field (MODEL.md section 12).
+    if (f.pressure_offset >= 0 && fx.cavitation == CavitationModel::jfo)
+      f.content_offset = layout_.add(fmt_film_block(f.number, "film content"), "hydrodynamics",
+                                     Index(nr - 2) * nt);
   }
   if (fx.thermal) {
     for (auto& f : films_)
@@ -327,6 +331,12 @@ double BearingModel::pressure_at(std::span<const double> u, const Film& film, in
   return p_ref_ * u[film.pressure_offset + Index(i - 1) * nt + film.mesh.wrap(j)];
 }
 
+double BearingModel::content_at(std::span<const double> u, const Film& film, int i, int j) const {
+  if (film.content_offset < 0 || i <= 0 || i >= film.mesh.radial_nodes() - 1) return 1.0;
+  const int nt = film.mesh.circumferential_nodes();
+  return u[film.content_offset + Index(i - 1) * nt + film.mesh.wrap(j)];
+}
+
 double BearingModel::temperature_of(std::span<const double> u, Index k) const {
   return scene_.operating.ambient + u[k];
 }
@@ -396,6 +406,11 @@ std::vector<double> BearingModel::cold_start() const {
   u[rigid_offset_ + 1] = 0.0;
   u[rigid_offset_ + 2] = gamma_y / gamma_ref_;
   u[rigid_offset_ + 3] = c2 / sigma_ref_;
+  // A full film everywhere (the cold start has no pressure, so no cavitation yet).
+  for (const Film& f : films_)
+    if (f.content_offset >= 0)
+      std::fill(u.begin() + f.content_offset,
+                u.begin() + f.content_offset + Index(f.mesh.radial_nodes() - 2) * f.mesh.circumferential_nodes(), 1.0);
   return u;
 }
 

@@ -72,6 +72,15 @@ std::vector<double> BearingModel::interpolated_from(const BearingModel& source, 
         for (int j = 0; j < map.dst_nt; ++j)
           out[dst.pressure_offset + Index(i - 1) * map.dst_nt + j] = map.at(i, j, p);
     }
+    if (dst.content_offset >= 0) {
+      const int snr = map.src_nr, snt = map.src_nt;
+      auto theta = [&](int i, int j) {
+        return (i <= 0 || i >= snr - 1) ? 1.0 : u[src.content_offset + Index(i - 1) * snt + j];
+      };
+      for (int i = 1; i < map.dst_nr - 1; ++i)
+        for (int j = 0; j < map.dst_nt; ++j)
+          out[dst.content_offset + Index(i - 1) * map.dst_nt + j] = map.at(i, j, theta);
+    }
     if (dst.temperature_offset >= 0) {
       auto t = [&](int i, int j) { return u[src.temperature_offset + Index(i) * map.src_nt + j] + ambient_shift; };
       for (int i = 0; i < map.dst_nr; ++i)

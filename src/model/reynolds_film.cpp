@@ -55,6 +55,13 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
   const ReynoldsOperator op(m);
   auto p_col = [&](int k) -> Index { return k >= 0 ? film.pressure_offset + k : -1; };
   auto p_val = [&](int k) { return k >= 0 ? p_ref_ * u[p_col(k)] : 0.0; };
+  // Mass-conserving cavitation (MODEL.md section 12): the Couette flux carries the film
+  // content θ of its upwind node (θ = 1 on the flooded edges), and the flow balances
+  // are rows of their own, the content's; the pressure rows state p̂ ≥ 0, 1 − θ ≥ 0.
+  const bool jfo = film.content_offset >= 0;
+  auto content_col = [&](int k) -> Index { return jfo && k >= 0 ? film.content_offset + k : -1; };
+  auto content = [&](int k) { return jfo && k >= 0 ? u[content_col(k)] : 1.0; };
+  auto balance_row = [&](int k) -> Index { return jfo ? content_col(k) : p_col(k); };
 
   std::vector<double> node_t(m.node_count());
   for (int n = 0; n < m.node_count(); ++n) node_t[n] = apply(viscosity_temperature_form(film, n), u);
@@ -100,12 +107,16 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
     const std::array<double, 3> dh = gap_gradient(film, x, y);
     const Conductance g = conductance(h, 0.5 * (node_t[na] + node_t[nb]));
     const ValueSlope carried = circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
-    const ReynoldsFaceFlux flow = ReynoldsOperator::flux(f, omega, g.g, carried.value, p_val(f.a), p_val(f.b));
-    const double dq_dh = flow.dq_dg * g.dg_dh + flow.dq_dcarried * carried.slope;
+    const int upwind = ReynoldsOperator::upwind_node(f, omega);
+    const double theta = circumferential ? content(upwind) : 1.0;
+    const ReynoldsFaceFlux flow =
+        ReynoldsOperator::flux(f, omega, g.g, theta * carried.value, p_val(f.a), p_val(f.b));
+    const double dq_dh = flow.dq_dg * g.dg_dh + flow.dq_dcarried * theta * carried.slope;
     const double dq_dt = flow.dq_dg * g.dg_dt * 0.5;
+    const double dq_dtheta = flow.dq_dcarried * carried.value;
     const Index ra = p_col(f.a), rb = p_col(f.b);
     for (const auto [node, sign] : f.ends()) {
-      const Index row = p_col(node);
+      const Index row = balance_row(node);
       if (row < 0) continue;
       a.add_residual(row, sign * flow.q);
       if (!jac) continue;
@@ -116,8 +127,29 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
       a.add_form(row, sign * dq_dt, viscosity_temperature_form(film, nb));
       a.add_form(row, sign * dq_dh * 0.5, shape_form(film, na));
       a.add_form(row, sign * dq_dh * 0.5, shape_form(film, nb));
+      if (jfo && circumferential) a.add_derivative(row, content_col(upwind), sign * dq_dtheta);
     }
   });
+
+  if (jfo) {
+    // Content rows: the flow balance ŵ = w / its scale, which rises with the node's own
+    // content (its Couette outflow) and pressure. Pressure rows: φ(p̂, 1 − θ).
+    for (int k = 0; k < op.interior_count(); ++k) {
+      const Index row = p_col(k), theta_col = content_col(k);
+      if (a.mode() == Assembler::Mode::values) {
+        const double scale = flow_scale_[k];
+        a.set_residual(theta_col, a.residual_value(theta_col) / scale);
+        if (jac) a.scale_row(theta_col, 1.0 / scale);
+      }
+      const Complementarity phi =
+          complementarity(cavitation_row_, u[row] - scene_.effects.cavity_pressure / p_ref_, 1.0 - u[theta_col]);
+      a.add_residual(row, phi.value);
+      if (!jac) continue;
+      a.add_derivative(row, row, phi.da);
+      a.add_derivative(row, theta_col, -phi.db);
+    }
+    return;
+  }
 
   // Wrap each node's flow balance in the complementarity function (for a segregated
   // scheme, which projects p ≥ 0 itself, scale it alone).

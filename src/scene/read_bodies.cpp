@@ -179,7 +179,7 @@ AsperityParameters read_asperities(const MapReader& surfaces, Scene& scene) {
   const MapReader summits = surfaces.map(
       "asperities", {"summit_radius", "summit_sigma", "summit_density", "eta_R_sigma", "profile"});
   if (const std::optional<Node> profile = summits.find("profile")) {
-    summits.restrict_to({"profile"}, "with a profile, which gives the summit statistics;");
+    summits.restrict_to({"profile"}, "with a profile");
     return summits_from_profiles(*profile, scene, scene.warnings);
   }
   AsperityParameters a;

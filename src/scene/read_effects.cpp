@@ -60,9 +60,16 @@ Effects read_effects(const MapReader& scene) {
         Node(YAML::Node(), fmt::format("{}.{}", item.path(), effect.name), item.origin(),
              item.mark(), item.provenance()));
     if (effect.name == kHydrodynamics) {
-      const MapReader options(options_node, {"cavitation"});
+      const MapReader options(options_node, {"cavitation", "cavity_pressure"});
       effects.hydrodynamics = true;
       effects.cavitation = read_choice(options, "cavitation", kCavitationModels, effects.cavitation);
+      if (effects.cavitation != CavitationModel::jfo)
+        options.restrict_to({"cavitation"}, "with cavitation: reynolds");
+      // From ambient down to a vacuum (absolute zero pressure below an atmosphere).
+      effects.cavity_pressure = options.quantity(
+          "cavity_pressure", si::stress,
+          Range{.low = -101325.0, .high = 0.0, .reason = "a gauge pressure from -1 atm (vacuum) to 0 (ambient)"},
+          effects.cavity_pressure);
     } else if (effect.name == kThermal) {
       const MapReader options(options_node, {"viscosity_temperature", "carrier_temperature"});
       effects.thermal = true;

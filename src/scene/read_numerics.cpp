@@ -45,6 +45,13 @@ void read_solver(const MapReader& scene, Scene& out) {
                             "use method: newton",
                             method.path()));
   }
+  // ... and its projected SOR is the Reynolds condition's.
+  if (s.method == SolverMethod::paper && out.effects.cavitation == CavitationModel::jfo) {
+    const Node method = solver.get("method", "");
+    method.fail(fmt::format("{}: 'paper' solves the Reynolds cavitation condition (projected SOR); with "
+                            "cavitation: jfo use method: newton",
+                            method.path()));
+  }
   if (s.method != SolverMethod::paper && solver.has("over_relaxation")) {
     const Node node = solver.get("over_relaxation", "");
     node.fail(fmt::format("{}: the over-relaxation factor belongs to the paper's scheme; it applies with method: "

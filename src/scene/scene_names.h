@@ -12,8 +12,8 @@ namespace twb::scene_io {
 inline constexpr EnumNames<SlidingFilm, 2> kSlidingFilms{
     {"carrier_washer", "washer_gear"}, {SlidingFilm::carrier_washer, SlidingFilm::washer_gear}};
 
-inline constexpr EnumNames<CavitationModel, 1> kCavitationModels{{"reynolds"},
-                                                                 {CavitationModel::reynolds}};
+inline constexpr EnumNames<CavitationModel, 2> kCavitationModels{{"reynolds", "jfo"},
+                                                                 {CavitationModel::reynolds, CavitationModel::jfo}};
 
 inline constexpr EnumNames<ViscosityTemperature, 2> kViscosityTemperatures{
     {"surface_mean", "film_node"},

@@ -52,7 +52,9 @@ class Writer {
 
 void write_effects(Writer& w, const Effects& e) {
   w.line(0, "effects:");
-  if (e.hydrodynamics)
+  if (e.hydrodynamics && e.cavitation == CavitationModel::jfo)
+    w.line(1, fmt::format("- hydrodynamics: {{cavitation: jfo, cavity_pressure: {}}}", quantity(e.cavity_pressure, "Pa")));
+  else if (e.hydrodynamics)
     w.line(1, fmt::format("- hydrodynamics: {{cavitation: {}}}", kCavitationModels.name(e.cavitation)));
   if (e.flow_factors) w.line(1, "- flow_factors");
   if (e.asperity_contact) w.line(1, "- asperity_contact");

@@ -32,6 +32,7 @@ struct EffectSet {
   CavitationRow cavitation = CavitationRow::fischer_burmeister;
   bool deformation = false;
   FrictionLaw friction = FrictionLaw::empirical;
+  CavitationModel cavitation_model = CavitationModel::reynolds;
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -47,6 +48,7 @@ std::vector<double> random_state(const BearingModel& m, std::mt19937& rng) {
       // is not differentiable. (The minimum row's kink p̂ = ŵ may fall between two
       // differenced states: the spread of the step sizes then marks that entry
       // unresolved rather than wrong.)
+      else if (b.effect == "hydrodynamics" && b.name.find("content") != std::string::npos) u[k] = 0.05 + 0.9 * unit(rng);
       else if (b.effect == "hydrodynamics") u[k] = 0.05 + 3.0 * unit(rng);
       // Dishing κ̂ (rim lift in σ) and the contact force over the scene's load.
       else if (b.effect == "thermal_deformation") u[k] = b.name == "washer dishing curvature" ? 2.0 * unit(rng) - 1.0 : 0.2 + unit(rng);
@@ -61,6 +63,7 @@ TEST_P(JacobianTest, MatchesCentralDifferences) {
   s.effects.carrier_temperature = e.carrier;
   s.effects.thermal_deformation = e.deformation;
   s.friction.law = e.friction;
+  s.effects.cavitation = e.cavitation_model;
   s.mesh.radial_nodes = 5;
   s.mesh.circumferential_nodes = 12;
   BearingModel m(s);
@@ -153,7 +156,16 @@ INSTANTIATE_TEST_SUITE_P(
                       EffectSet{"thermal_deformation_contact_only", false, false, true, true, 545.0,
                                 CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true},
                       EffectSet{"thermal_deformation_carrier_averaged", true, true, true, true, 545.0,
-                                CarrierTemperature::axisymmetric, CavitationRow::fischer_burmeister, true}),
+                                CarrierTemperature::axisymmetric, CavitationRow::fischer_burmeister, true},
+                      EffectSet{"jfo_all_effects", true, true, true, true, 545.0, CarrierTemperature::load_frame,
+                                CavitationRow::fischer_burmeister, false, FrictionLaw::empirical,
+                                CavitationModel::jfo},
+                      EffectSet{"jfo_isothermal_minimum_row", true, false, true, false, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::minimum, false, FrictionLaw::empirical,
+                                CavitationModel::jfo},
+                      EffectSet{"jfo_with_deformation", true, true, true, true, 545.0, CarrierTemperature::load_frame,
+                                CavitationRow::fischer_burmeister, true, FrictionLaw::empirical,
+                                CavitationModel::jfo}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -39,6 +39,7 @@ void expect_same_component(const Component& a, const Component& b) {
 void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.effects.hydrodynamics, b.effects.hydrodynamics);
   EXPECT_EQ(a.effects.cavitation, b.effects.cavitation);
+  EXPECT_EQ(a.effects.cavity_pressure, b.effects.cavity_pressure);
   EXPECT_EQ(a.effects.flow_factors, b.effects.flow_factors);
   EXPECT_EQ(a.effects.asperity_contact, b.effects.asperity_contact);
   EXPECT_EQ(a.effects.thermal, b.effects.thermal);
@@ -196,6 +197,9 @@ INSTANTIATE_TEST_SUITE_P(
         RoundTripCase{"thermal_deformation_constrained",
                       with_thermal(kMinimalScene, "thermal, {thermal_deformation: {face_expansion: constrained}}") +
                           "materials: {carrier: {thermal_expansion: 11.5e-6 1/K}}\n"},
+        RoundTripCase{"mass_conserving_cavitation",
+                      std::string(kMinimalScene).replace(std::string(kMinimalScene).find("[hydrodynamics"), 14,
+                                                         "[{hydrodynamics: {cavitation: jfo, cavity_pressure: -0.3 bar}}")},
         RoundTripCase{"distress_map_custom_surfaces_film_2",
                       std::string(testing::kSceneBodies) +
                           "study: {type: distress_map, speeds: [136 rad/s, 5200 rpm], load_start: 50 N, load_end: 3 kN,\n"

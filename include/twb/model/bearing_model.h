@@ -59,6 +59,7 @@ struct Film {
   double sigma = 0.0;             // combined RMS roughness
   double shear_weight = 0.0;      // [(σ_moving/σ)² − (σ_fixed/σ)²], eq [3]
   Index pressure_offset = -1;     // interior nodes (radial 1..Nr-2), -1 without hydrodynamics
+  Index content_offset = -1;      // film content θ at the same nodes, cavitation: jfo only (MODEL.md 12)
   Index temperature_offset = -1;  // film-node temperatures, -1 without thermal
 };
 
@@ -201,6 +202,10 @@ class BearingModel final : public SegregatedSystem {
   double least_gap(std::span<const double> u, const Film& film) const;
   // The washer's area-mean dishing curvature κ̄ (1/m) of state u; 0 without the effect.
   double dishing_curvature(std::span<const double> u) const;
+
+  // Film content θ at node (i, j): 1 on the (flooded) edges, where the film is full,
+  // and without the mass-conserving cavitation model.
+  double content_at(std::span<const double> u, const Film& film, int i, int j) const;
 
   // Pressure (Pa) at node (i, j) of the sliding film; 0 on edges and without hydrodynamics.
   double pressure_at(std::span<const double> u, const Film& film, int i, int j) const;

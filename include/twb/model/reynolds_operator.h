@@ -76,6 +76,15 @@ class ReynoldsOperator {
   template <class Visit>
   void for_each_face(Visit&& visit) const;
 
+  // Mass-conserving cavitation (MODEL.md section 12): the node whose film content θ the
+  // Couette flow carries through a face, the one the sliding comes from (first-order
+  // upwind: a full film, θ = 1, is discretized as above); −1 for a radial face, which
+  // the Couette flow does not cross. The flux is then flux(…, θ_upwind · carried, …).
+  static int upwind_node(const ReynoldsFace& face, double omega) {
+    if (face.kind == ReynoldsFace::Kind::radial) return -1;
+    return omega >= 0 ? face.a : face.b;
+  }
+
   // The discrete face flux (formula above) with its partial derivatives.
   static ReynoldsFaceFlux flux(const ReynoldsFace& face, double omega, double g, double carried, double pa,
                                double pb);

@@ -14,7 +14,10 @@ namespace twb {
 // (washer stuck to the carrier).
 enum class SlidingFilm { carrier_washer, washer_gear };
 
-enum class CavitationModel { reynolds };
+// reynolds: the Reynolds (Swift–Stieber) condition p ≥ 0, w ≥ 0, p·w = 0 (MODEL.md
+// section 3, the paper's); jfo: mass-conserving, p ≥ 0, θ ≤ 1, p·(1 − θ) = 0 with the
+// film content θ carried by the Couette flow (section 12).
+enum class CavitationModel { reynolds, jfo };
 
 // Which temperature sets the oil viscosity at a film node (MODEL.md section 7).
 enum class ViscosityTemperature { surface_mean, film_node };
@@ -56,6 +59,10 @@ enum class ErrorEstimate {
 struct Effects {
   bool hydrodynamics = false;
   CavitationModel cavitation = CavitationModel::reynolds;
+  // jfo only: the gauge pressure of the cavity (Pa, ≤ 0). Below ambient, the cavity draws
+  // oil from the flooded edges; at ambient (0, MODEL.md section 12) nothing supplies a
+  // full washer annulus, and its film drains (docs/validation.md).
+  double cavity_pressure = 0.0;
   bool flow_factors = false;
   bool asperity_contact = false;
   bool thermal = false;
