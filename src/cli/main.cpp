@@ -1,6 +1,7 @@
 // The twb command: `twb check SCENE` and `twb run SCENE`.
 // Exit status: 0 success (a distress found is a result), 2 invalid input,
 // 3 solver failure, 4 internal error.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -65,6 +66,13 @@ int check(const std::string& path, const std::vector<std::string>& overrides) {
   const twb::BearingModel model(scene);
   std::cout << twb::describe_scene(scene) << "\n" << profile_table(scene.asperities) << unknowns_table(model.layout())
             << fmt::format("jacobian nonzeros: {}\n", model.pattern().nnz());
+  // A scene that extends others: where each value was written.
+  const std::vector<twb::ValueSource> sources = twb::scene_value_sources(path, overrides);
+  if (std::any_of(sources.begin(), sources.end(), [&](const twb::ValueSource& v) { return v.file != path; })) {
+    std::cout << "where each value was written:\n";
+    for (const twb::ValueSource& v : sources)
+      std::cout << fmt::format("  {:<44} {}{}\n", v.path, v.file, v.line > 0 ? fmt::format(":{}", v.line) : "");
+  }
   print_warnings(scene, std::cout);
   return 0;
 }

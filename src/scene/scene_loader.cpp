@@ -11,6 +11,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "scene_node.h"
+#include "scene_extends.h"
 #include "scene_overrides.h"
 #include "scene_sections.h"
 #include "scene_source.h"
@@ -65,12 +66,52 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
   return load_scene_text(read_file(path), path, overrides);
 }
 
+namespace {
+
+// Every value of the tree (a scalar, a list, an empty value) with the file and line that
+// wrote it, or the override.
+void collect_sources(const YAML::Node& node, const std::string& path, const scene_io::Origin* origin,
+                     const scene_io::Provenance& provenance, std::vector<ValueSource>& out) {
+  if (node.IsMap()) {
+    for (const auto& entry : node) {
+      if (!entry.first.IsScalar()) continue;
+      const std::string child = path.empty() ? entry.first.Scalar() : path + "." + entry.first.Scalar();
+      collect_sources(entry.second, child, provenance.origin_of(child, origin), provenance, out);
+    }
+    return;
+  }
+  const int line = origin->is_file && node.Mark().line >= 0 ? node.Mark().line + 1 : 0;
+  out.push_back({path, origin->name, line});
+}
+
+}  // namespace
+
+std::vector<ValueSource> scene_value_sources(const std::string& path, const std::vector<std::string>& overrides) {
+  const std::string text = read_file(path);
+  scene_io::Origin file{.name = path, .is_file = true, .lines = scene_io::split_lines(text)};
+  std::deque<scene_io::Origin> bases;
+  const scene_io::SceneTree tree = scene_io::resolve_extends(parse_yaml(file, text), file, bases, parse_yaml);
+  YAML::Node root = tree.root;
+  scene_io::Provenance provenance(&file);
+  for (const auto& [p, origin] : tree.origins) provenance.assign(p, origin);
+  std::deque<scene_io::Origin> override_origins;
+  scene_io::apply_overrides(root, overrides, override_origins, provenance);
+  std::vector<ValueSource> out;
+  collect_sources(root, "", &file, provenance, out);
+  return out;
+}
+
 Scene load_scene_text(const std::string& text, const std::string& name,
                       const std::vector<std::string>& overrides) {
   scene_io::Origin file{.name = name, .is_file = true, .lines = scene_io::split_lines(text)};
   YAML::Node root = parse_yaml(file, text);
+  // The bases' texts live as long as the provenance pointing at them.
+  std::deque<scene_io::Origin> bases;
+  const scene_io::SceneTree tree = scene_io::resolve_extends(root, file, bases, parse_yaml);
+  root = tree.root;
 
   scene_io::Provenance provenance(&file);
+  for (const auto& [path, origin] : tree.origins) provenance.assign(path, origin);
   std::deque<scene_io::Origin> override_origins;
   scene_io::apply_overrides(root, overrides, override_origins, provenance);
 

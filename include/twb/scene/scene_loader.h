@@ -20,6 +20,15 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 Scene load_scene_text(const std::string& text, const std::string& name,
                       const std::vector<std::string>& overrides = {});
 
+// Where each value of a scene was written (docs/scenes.md, "Scenes that extend scenes"):
+// its path, the file (or "--set path" for an override) and the line (0 for an override).
+// Call after load_scene succeeded on the same arguments.
+struct ValueSource {
+  std::string path, file;
+  int line = 0;
+};
+std::vector<ValueSource> scene_value_sources(const std::string& path, const std::vector<std::string>& overrides = {});
+
 // The resolved scene as a scene file: every default filled in, values in SI written as
 // "value unit" strings, so that loading the text back gives the same Scene.
 std::string describe_scene(const Scene& scene);
