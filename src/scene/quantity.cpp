@@ -128,14 +128,34 @@ std::string dimension_of(UnitSystem& system, const ut_unit* unit) {
   return {};
 }
 
+// Spellings people type that udunits2 does not know, accepted as what they mean: the
+// centipoise of oil data sheets, and "deg" for degrees of angle.
+std::string_view accepted_spelling(std::string_view unit) {
+  if (unit == "cP" || unit == "cp") return "mPa s";
+  if (unit == "deg" || unit == "degrees") return "degree";
+  return unit;
+}
+
+// What a unit that fails probably meant, for the message ("" when nothing comes to mind).
+std::string spelling_hint(std::string_view unit, const SiUnit& expected) {
+  if (expected.symbol == "K" && (unit == "C" || unit == "F"))
+    return fmt::format(" (did you mean 'deg{0}'? '{0}' is the {1})", unit, unit == "C" ? "coulomb" : "farad");
+  if (unit == "cSt" || unit == "St")
+    return " (a kinematic viscosity; give the dynamic one, its value times the density: 1 cSt of a "
+           "850 kg/m^3 oil is 0.85 mPa s)";
+  if (unit == "rev/min" || unit == "RPM") return " (write 'rpm')";
+  return {};
+}
+
 }  // namespace
 
 double to_si(std::string_view text, const SiUnit& expected) {
   const std::string_view whole = trim(text);
   const auto split = whole.find_first_of(" \t");
   std::string_view number = whole.substr(0, split);
-  const std::string_view unit_text =
+  const std::string_view written_unit =
       split == std::string_view::npos ? std::string_view{} : trim(whole.substr(split));
+  const std::string_view unit_text = accepted_spelling(written_unit);
 
   if (is_yaml_non_finite(number))
     throw QuantityError(fmt::format("'{}' is not a finite number", whole));
@@ -153,20 +173,20 @@ double to_si(std::string_view text, const SiUnit& expected) {
   const auto guard = system.lock();
   const UnitPtr given = system.parse(unit_text);
   if (!given)
-    throw QuantityError(fmt::format("'{}' has an unknown unit '{}'; expected {} convertible to {}, e.g. '{}'",
-                                    whole, unit_text, expected.kind, expected.symbol,
-                                    expected.example));
+    throw QuantityError(fmt::format("'{}' has an unknown unit '{}'{}; expected {} convertible to {}, e.g. '{}'",
+                                    whole, written_unit, spelling_hint(written_unit, expected), expected.kind,
+                                    expected.symbol, expected.example));
   const UnitPtr target = system.parse(expected.symbol);
   if (!target)
     throw std::logic_error(fmt::format("udunits2 does not know the SI unit '{}'", expected.symbol));
   if (!same_dimension(system, given.get(), target.get())) {
     const std::string dimension = dimension_of(system, given.get());
-    const std::string what = dimension.empty() ? fmt::format("has units '{}'", unit_text)
+    const std::string what = dimension.empty() ? fmt::format("has units '{}'", written_unit)
                              : dimension == "dimensionless"
                                  ? std::string("is dimensionless")
                                  : fmt::format("has the dimension of {}", dimension);
-    throw QuantityError(fmt::format("'{}' {}, expected {} convertible to {}", whole, what,
-                                    expected.kind, expected.symbol));
+    throw QuantityError(fmt::format("'{}' {}{}, expected {} convertible to {}", whole, what,
+                                    spelling_hint(written_unit, expected), expected.kind, expected.symbol));
   }
   const ConverterPtr converter(ut_get_converter(given.get(), target.get()));
   if (!converter)

@@ -89,6 +89,21 @@ TEST(Quantity, UnknownUnitIsNamed) {
   EXPECT_NE(error_of("1000 Nx", si::force).find("unknown unit 'Nx'"), std::string::npos);
 }
 
+// Spellings people type: centipoise and "deg" are accepted as what they mean; a bare
+// C or F for a temperature, a kinematic viscosity and "RPM" get a hint.
+TEST(Quantity, CommonSpellingsAreAcceptedOrGetAHint) {
+  EXPECT_DOUBLE_EQ(to_si("30 cP", si::viscosity), 0.03);
+  EXPECT_DOUBLE_EQ(to_si("30 mPa s", si::viscosity), to_si("30 cP", si::viscosity));
+  EXPECT_DOUBLE_EQ(to_si("0.1 deg", si::angle), 0.1 * std::numbers::pi / 180);
+  EXPECT_EQ(error_of("80 C", si::temperature),
+            "'80 C' has units 'C' (did you mean 'degC'? 'C' is the coulomb), expected a temperature convertible to K");
+  EXPECT_NE(error_of("80 F", si::temperature).find("did you mean 'degF'?"), std::string::npos);
+  EXPECT_NE(error_of("30 cSt", si::viscosity).find("a kinematic viscosity"), std::string::npos);
+  EXPECT_NE(error_of("5000 RPM", si::angular_speed).find("unknown unit 'RPM' (write 'rpm')"), std::string::npos);
+  // A coulomb where a charge could be meant is not second-guessed.
+  EXPECT_EQ(error_of("80 C", si::force).find("did you mean"), std::string::npos);
+}
+
 TEST(Quantity, UnparseableAndNonFiniteNumbersAreRejected) {
   EXPECT_NE(error_of("1O00 N", si::force).find("'1O00 N' is not a number"), std::string::npos);
   EXPECT_NE(error_of("22.7mm", si::length).find("is not a number"), std::string::npos);
