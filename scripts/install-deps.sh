@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config
   libsundials-dev libsuitesparse-dev libeigen3-dev libfmt-dev
   libyaml-cpp-dev libudunits2-dev libcli11-dev libboost-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   python3-matplotlib python3-numpy
   # The scene fuzzer: clang with libFuzzer and its sanitizers, llvm-symbolizer for
   # readable reports (GCC's sanitizers come with build-essential).
