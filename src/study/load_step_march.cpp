@@ -52,7 +52,14 @@ StepMarch march_load_step(BearingModel& model, std::span<const double> start_sta
     sample.time = t;
     sample.state = model.describe(u);
   };
+  // IDA's counters restart with it: banked before each restart and at the end.
+  auto bank = [&] {
+    const TransientStatistics s = ida.statistics();
+    out.ida_steps += s.steps;
+    out.ida_factorizations += s.linear_setups;
+  };
   auto finish = [&](std::string message) {
+    bank();
     const std::span<const double> u = ida.state();
     out.state.assign(u.begin(), u.end());
     out.time = ida.time();
@@ -100,6 +107,7 @@ StepMarch march_load_step(BearingModel& model, std::span<const double> start_sta
       // collapse: fresh consistent values there usually carry the march on.
       ++restarts;
       const std::vector<double> here(ida.state().begin(), ida.state().end());
+      bank();
       if (ida.start(ida.time(), here).ok) continue;
     }
     if (!status.ok)

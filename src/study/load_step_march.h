@@ -22,6 +22,7 @@ struct StepMarch {
   std::vector<TrajectorySample> trajectory;
   double time = 0.0;          // pseudo-time reached, s
   long newton_iterations = 0;
+  long ida_steps = 0, ida_factorizations = 0;  // over IDA's restarts
   double wall_ms = 0.0;
   std::string message;        // how the march ended
 };

@@ -420,6 +420,11 @@ void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport&
   out.states.push_back(record(model, u, rep));
   if (progress) progress(fmt::format("steady at {:.6g} N; stepping to {:.6g} N", st.load_start, st.load_end));
   StepMarch march = march_load_step(model, u, st.load_end, TransientSettings{}, newton, st.duration);
+  out.timings.newton_iterations += rep.iterations + march.newton_iterations;
+  out.timings.jacobian_evaluations += rep.jacobian_evaluations;
+  out.timings.transients += 1;
+  out.timings.ida_steps += march.ida_steps;
+  out.timings.ida_factorizations += march.ida_factorizations;
   out.trajectory = std::move(march.trajectory);
   SolvedState last = solved_state(model, march.state);
   last.converged = march.settled;
@@ -467,6 +472,10 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
         SparseLu::thread_counts().factored_since(klu_before) + out.timings.ida_factorizations;
   }
   out.timings.states = int(out.states.size());
+  // Continuation and distress searches count their work in states, transients and
+  // factorizations; their Newton iterations are those that solved the reported states.
+  if (type != StudyType::point && type != StudyType::transient)
+    for (const SolvedState& s : out.states) out.timings.newton_iterations += s.iterations;
   out.timings.solve_ms = elapsed_ms(t0);
   return out;
 }
