@@ -6,13 +6,6 @@
 
 namespace twb {
 
-Index SparsePattern::find(Index r, Index c) const {
-  const auto first = column.begin() + row_start[r];
-  const auto last = column.begin() + row_start[r + 1];
-  const auto it = std::lower_bound(first, last, c);
-  return (it != last && *it == c) ? Index(it - column.begin()) : -1;
-}
-
 Assembler::Assembler(Index n) : mode_(Mode::structure), n_(n) {}
 
 Assembler::Assembler(const SparsePattern* pattern, std::span<double> residual, std::span<double> jacobian,

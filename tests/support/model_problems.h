@@ -21,7 +21,7 @@
 #include <span>
 #include <vector>
 
-#include "twb/solver/steady_system.h"
+#include "twb/system/steady_system.h"
 
 namespace twb::testing {
 

@@ -23,7 +23,7 @@
 #include "twb/physics/roelands_viscosity.h"
 #include "twb/physics/statistical_contact.h"
 #include "twb/scene/scene.h"
-#include "twb/solver/segregated_system.h"
+#include "twb/system/segregated_system.h"
 
 namespace twb {
 

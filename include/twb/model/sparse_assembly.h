@@ -20,19 +20,9 @@
 #include <utility>
 #include <vector>
 
+#include "twb/system/sparse_pattern.h"
+
 namespace twb {
-
-using Index = std::int64_t;  // sunindextype on Debian 12's SUNDIALS
-
-// Row-compressed (CSR) matrix with sorted columns in every row.
-struct SparsePattern {
-  Index rows = 0, cols = 0;
-  std::vector<Index> row_start;  // rows + 1
-  std::vector<Index> column;     // nnz
-  Index nnz() const { return Index(column.size()); }
-  // Position of (r, c) in column/value arrays, or -1.
-  Index find(Index r, Index c) const;
-};
 
 // One sparse linear combination: the gradient of a local quantity with respect to
 // the global unknowns, e.g. dh/du at a quadrature point.

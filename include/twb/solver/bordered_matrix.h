@@ -11,7 +11,7 @@
 
 #include <span>
 
-#include "twb/model/sparse_assembly.h"
+#include "twb/system/sparse_pattern.h"
 
 namespace twb {
 

@@ -13,7 +13,7 @@
 
 #include "twb/solver/bordered_matrix.h"
 #include "twb/solver/continuation_metric.h"
-#include "twb/solver/steady_system.h"
+#include "twb/system/steady_system.h"
 
 namespace twb {
 

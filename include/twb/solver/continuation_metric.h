@@ -18,7 +18,7 @@
 #include <span>
 #include <vector>
 
-#include "twb/solver/steady_system.h"
+#include "twb/system/steady_system.h"
 
 namespace twb {
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "twb/solver/steady_system.h"
+#include "twb/system/steady_system.h"
 #include "twb/solver/sundials_context.h"
 
 namespace twb {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "twb/solver/sparse_lu.h"
-#include "twb/solver/steady_system.h"
+#include "twb/system/steady_system.h"
 #include "twb/solver/sundials_context.h"
 
 namespace twb {

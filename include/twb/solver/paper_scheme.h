@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "twb/solver/segregated_system.h"
+#include "twb/system/segregated_system.h"
 
 namespace twb {
 

@@ -11,7 +11,7 @@
 
 #include <span>
 
-#include "twb/solver/steady_system.h"
+#include "twb/system/steady_system.h"
 
 namespace twb {
 

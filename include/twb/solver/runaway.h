@@ -23,7 +23,7 @@
 
 #include "twb/solver/ida_transient.h"
 #include "twb/solver/kinsol_newton.h"
-#include "twb/solver/steady_system.h"
+#include "twb/system/steady_system.h"
 
 namespace twb {
 

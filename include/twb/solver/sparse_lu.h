@@ -19,7 +19,7 @@
 #include <span>
 #include <vector>
 
-#include "twb/model/sparse_assembly.h"
+#include "twb/system/sparse_pattern.h"
 
 namespace twb {
 

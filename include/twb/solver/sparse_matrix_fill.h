@@ -5,7 +5,7 @@
 
 #include <sundials/sundials_matrix.h>
 
-#include "twb/model/sparse_assembly.h"
+#include "twb/system/sparse_pattern.h"
 
 namespace twb {
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "twb/model/sparse_assembly.h"
+#include "twb/system/sparse_pattern.h"
 
 namespace twb {
 

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "twb/solver/steady_system.h"
+#include "twb/system/steady_system.h"
 
 namespace twb {
 
