@@ -21,13 +21,8 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   const Film& film = films_[fs];
   const FilmTotals& ft = t.film[fs];
 
-  // Exact minimum of the sliding film's plane over its annulus: c − |∇h|·r_o.
-  const double c = film.clearance_unknown == 0 ? s.position.c1 : s.position.c2;
-  const double ga = -film.sign * s.position.gamma_y - film.imposed_tilt;
-  const double gb = film.sign * s.position.gamma_x;
-  s.hmin_over_sigma = (c - std::hypot(ga, gb) * film.mesh.outer_radius()) / film.sigma;
-  // A deformed film is no plane (film_shape.cpp).
-  if (deforms()) s.hmin_over_sigma = least_gap(u, film) / film.sigma;
+  const double sliding_least_gap = least_gap(u, film);
+  s.hmin_over_sigma = sliding_least_gap / film.sigma;
   const double tilt = scene_.gear.tilt > 0 ? scene_.gear.tilt : 1.0;
   s.gamma_x_ratio = s.position.gamma_x / tilt;
   s.gamma_y_ratio = s.position.gamma_y / tilt;
@@ -89,13 +84,10 @@ BearingState BearingModel::describe(std::span<const double> u) const {
     for (Index k = film.pressure_offset; k < film.pressure_offset + Index(flow_scale_.size()); ++k)
       s.complementarity_error = std::max(s.complementarity_error, std::abs(residual[k]));
 
-  // The contact pressure falls with the gap, so each film's largest is at its plane's
-  // exact minimum gap.
+  // The contact pressure falls with the gap, so each film's largest is at its least gap.
   if (contact_)
     for (const Film& f : films_) {
-      const double cf = f.clearance_unknown == 0 ? s.position.c1 : s.position.c2;
-      const double slope = std::hypot(-f.sign * s.position.gamma_y - f.imposed_tilt, f.sign * s.position.gamma_x);
-      const double least = deforms() ? least_gap(u, f) : cf - slope * f.mesh.outer_radius();
+      const double least = f.number == film.number ? sliding_least_gap : least_gap(u, f);
       if (least <= contact_cutoff_)
         s.max_contact_pressure = std::max(s.max_contact_pressure, contact_->pressure(least).value);
     }

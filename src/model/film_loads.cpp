@@ -146,9 +146,8 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
   // Thermal deformation (film_shape.cpp): the gap is the plane plus the bilinear
   // interpolation of the node shapes δ; the sliding film's contact force has its own row
   // when f depends on it (empirical law), because every δ moves it.
-  const bool deformed = deforms();
-  std::vector<double> node_delta(deformed ? std::size_t(m.node_count()) : 0);
-  for (std::size_t n = 0; n < node_delta.size(); ++n) node_delta[n] = shape_at(u, film, int(n));
+  const std::vector<double> node_delta = node_shapes(u, film);
+  const bool deformed = !node_delta.empty();
   const Index force_row = film.sliding ? contact_force_offset_ : -1;
 
   if (film.sliding) {

@@ -54,18 +54,26 @@ double BearingModel::shape_at(std::span<const double> u, const Film& film, int n
   return delta;
 }
 
-// The least of the nodes' gaps and of the gap where the plane is least (on the outer
-// rim, the shape interpolated along it): without expansion that is the plane's exact
-// minimum, as for a rigid film.
+std::vector<double> BearingModel::node_shapes(std::span<const double> u, const Film& film) const {
+  std::vector<double> delta(deforms() ? std::size_t(film.mesh.node_count()) : 0);
+  for (std::size_t n = 0; n < delta.size(); ++n) delta[n] = shape_at(u, film, int(n));
+  return delta;
+}
+
+// A plane h = c + a·x + b·y is least along −(a, b), on the outer rim. A deformed film:
+// the least of the nodes' gaps and of the gap at that point (the shape interpolated
+// along the rim); without expansion that is the plane's exact minimum again.
 double BearingModel::least_gap(std::span<const double> u, const Film& film) const {
   const RigidPosition q = position(u);
   const FilmMesh& m = film.mesh;
+  const double c = film.clearance_unknown == 0 ? q.c1 : q.c2;
+  const double a = -film.sign * q.gamma_y - film.imposed_tilt, b = film.sign * q.gamma_x;
+  if (!deforms()) return c - std::hypot(a, b) * m.outer_radius();
+  const std::vector<double> delta = node_shapes(u, film);
   double least = INFINITY;
   for (int i = 0; i < m.radial_nodes(); ++i)
     for (int j = 0; j < m.circumferential_nodes(); ++j)
-      least = std::min(least, film_gap(film, q, m.radius(i), m.angle(j)) + shape_at(u, film, m.node(i, j)));
-  // h = c + a·x + b·y is least along −(a, b).
-  const double a = -film.sign * q.gamma_y - film.imposed_tilt, b = film.sign * q.gamma_x;
+      least = std::min(least, film_gap(film, q, m.radius(i), m.angle(j)) + delta[std::size_t(m.node(i, j))]);
   if (a == 0.0 && b == 0.0) return least;
   const double two_pi = 2 * std::numbers::pi;
   double theta = std::atan2(-b, -a);
@@ -74,8 +82,9 @@ double BearingModel::least_gap(std::span<const double> u, const Film& film) cons
   const int j = std::min(int(cell), m.circumferential_nodes() - 1);
   const double t = cell - j;
   const int rim = m.radial_nodes() - 1;
-  const double delta = (1 - t) * shape_at(u, film, m.node(rim, j)) + t * shape_at(u, film, m.node(rim, m.wrap(j + 1)));
-  return std::min(least, film_gap(film, q, m.outer_radius(), theta) + delta);
+  const double rim_delta =
+      (1 - t) * delta[std::size_t(m.node(rim, j))] + t * delta[std::size_t(m.node(rim, m.wrap(j + 1)))];
+  return std::min(least, film_gap(film, q, m.outer_radius(), theta) + rim_delta);
 }
 
 double BearingModel::dishing_curvature(std::span<const double> u) const {

@@ -65,9 +65,8 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
 
   std::vector<double> node_t(m.node_count());
   for (int n = 0; n < m.node_count(); ++n) node_t[n] = apply(viscosity_temperature_form(film, n), u);
-  const bool deformed = deforms();
-  std::vector<double> delta(deformed ? std::size_t(m.node_count()) : 0);
-  for (std::size_t n = 0; n < delta.size(); ++n) delta[n] = shape_at(u, film, int(n));
+  const std::vector<double> delta = node_shapes(u, film);
+  const bool deformed = !delta.empty();
 
   // Poiseuille conductance φ·max(h, 0)³/(12 μ) at a face, and its slopes in h and T.
   struct Conductance { double g, dg_dh, dg_dt; };

@@ -198,7 +198,11 @@ class BearingModel final : public SegregatedSystem {
     return shape_forms_[std::size_t(film.number - 1)][std::size_t(node)];
   }
   double shape_at(std::span<const double> u, const Film& film, int node) const;
-  // The least gap (m) of a deformed film (film_shape.cpp).
+  // δ at every node of a film, once per evaluation; empty without the effect.
+  std::vector<double> node_shapes(std::span<const double> u, const Film& film) const;
+  // The least gap (m) of a film: its plane's exact minimum over the annulus, c − |∇h|·r_o,
+  // or for a deformed film the least of its nodes' gaps and of the gap at that point
+  // (film_shape.cpp).
   double least_gap(std::span<const double> u, const Film& film) const;
   // The washer's area-mean dishing curvature κ̄ (1/m) of state u; 0 without the effect.
   double dishing_curvature(std::span<const double> u) const;
