@@ -60,13 +60,24 @@ YAML::Node parse_yaml(const scene_io::Origin& file, const std::string& text) {
   return documents.first;
 }
 
-}  // namespace
+// A scene's text as its readers see it: its bases laid under it, the overrides over it,
+// every value's origin kept (the Origins live as long as the provenance pointing at them).
+struct SceneText {
+  scene_io::Origin file;
+  std::deque<scene_io::Origin> bases, override_origins;
+  scene_io::Provenance provenance{&file};
+  YAML::Node root;
 
-Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  return load_scene_text(read_file(path), path, overrides);
-}
-
-namespace {
+  SceneText(const std::string& text, const std::string& name, const std::vector<std::string>& overrides)
+      : file{.name = name, .is_file = true, .lines = scene_io::split_lines(text)} {
+    const scene_io::SceneTree tree = scene_io::resolve_extends(parse_yaml(file, text), file, bases, parse_yaml);
+    root = tree.root;
+    for (const auto& [path, origin] : tree.origins) provenance.assign(path, origin);
+    scene_io::apply_overrides(root, overrides, override_origins, provenance);
+  }
+  SceneText(const SceneText&) = delete;
+  SceneText& operator=(const SceneText&) = delete;
+};
 
 // Every value of the tree (a scalar, a list, an empty value) with the file and line that
 // wrote it, or the override.
@@ -86,38 +97,23 @@ void collect_sources(const YAML::Node& node, const std::string& path, const scen
 
 }  // namespace
 
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  return load_scene_text(read_file(path), path, overrides);
+}
+
 std::vector<ValueSource> scene_value_sources(const std::string& path, const std::vector<std::string>& overrides) {
-  const std::string text = read_file(path);
-  scene_io::Origin file{.name = path, .is_file = true, .lines = scene_io::split_lines(text)};
-  std::deque<scene_io::Origin> bases;
-  const scene_io::SceneTree tree = scene_io::resolve_extends(parse_yaml(file, text), file, bases, parse_yaml);
-  YAML::Node root = tree.root;
-  scene_io::Provenance provenance(&file);
-  for (const auto& [p, origin] : tree.origins) provenance.assign(p, origin);
-  std::deque<scene_io::Origin> override_origins;
-  scene_io::apply_overrides(root, overrides, override_origins, provenance);
+  const SceneText scene(read_file(path), path, overrides);
   std::vector<ValueSource> out;
-  collect_sources(root, "", &file, provenance, out);
+  collect_sources(scene.root, "", &scene.file, scene.provenance, out);
   return out;
 }
 
 Scene load_scene_text(const std::string& text, const std::string& name,
                       const std::vector<std::string>& overrides) {
-  scene_io::Origin file{.name = name, .is_file = true, .lines = scene_io::split_lines(text)};
-  YAML::Node root = parse_yaml(file, text);
-  // The bases' texts live as long as the provenance pointing at them.
-  std::deque<scene_io::Origin> bases;
-  const scene_io::SceneTree tree = scene_io::resolve_extends(root, file, bases, parse_yaml);
-  root = tree.root;
-
-  scene_io::Provenance provenance(&file);
-  for (const auto& [path, origin] : tree.origins) provenance.assign(path, origin);
-  std::deque<scene_io::Origin> override_origins;
-  scene_io::apply_overrides(root, overrides, override_origins, provenance);
-
+  const SceneText source(text, name, overrides);
   // An empty document has no mark; errors about it still point at the file's first line.
-  const YAML::Mark root_mark = root.Mark().line >= 0 ? root.Mark() : YAML::Mark();
-  Scene scene = scene_io::read_scene(scene_io::Node(root, "", &file, root_mark, &provenance));
+  const YAML::Mark root_mark = source.root.Mark().line >= 0 ? source.root.Mark() : YAML::Mark();
+  Scene scene = scene_io::read_scene(scene_io::Node(source.root, "", &source.file, root_mark, &source.provenance));
   scene.source = name;
   return scene;
 }
