@@ -16,9 +16,9 @@
 
 #include <fmt/format.h>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/solver/steady_solver.h"
+#include "solver/steady_solver.h"
 
 int main(int argc, char** argv) {
   const twb::Scene paper = twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml");

@@ -24,9 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/study/study_runner.h"
+#include "study/study_runner.h"
 
 namespace {
 

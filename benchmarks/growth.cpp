@@ -27,11 +27,11 @@
 #include <fmt/format.h>
 
 #include "mesh_option.h"
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/solver/sparse_lu.h"
-#include "twb/solver/steady_solver.h"
-#include "twb/study/distress_search.h"
+#include "solver/sparse_lu.h"
+#include "solver/steady_solver.h"
+#include "study/distress_search.h"
 
 namespace {
 

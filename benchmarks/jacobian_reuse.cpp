@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/solver/steady_solver.h"
+#include "solver/steady_solver.h"
 
 namespace {
 

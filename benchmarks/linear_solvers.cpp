@@ -24,11 +24,11 @@
 #include <string>
 #include <vector>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/solver/nested_dissection.h"
-#include "twb/solver/steady_solver.h"
-#include "twb/solver/sundials_context.h"
+#include "solver/nested_dissection.h"
+#include "solver/steady_solver.h"
+#include "solver/sundials_context.h"
 
 namespace {
 

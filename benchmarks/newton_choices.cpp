@@ -20,12 +20,12 @@
 #include <vector>
 
 #include "paper_case.h"
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/solver/kinsol_newton.h"
-#include "twb/solver/natural_continuation.h"
-#include "twb/solver/sparse_lu.h"
-#include "twb/solver/steady_solver.h"
+#include "solver/kinsol_newton.h"
+#include "solver/natural_continuation.h"
+#include "solver/sparse_lu.h"
+#include "solver/steady_solver.h"
 
 namespace {
 

@@ -26,11 +26,11 @@
 #include <vector>
 
 #include "mesh_option.h"
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/solver/paper_scheme.h"
-#include "twb/solver/steady_solver.h"
-#include "twb/study/distress_search.h"
+#include "solver/paper_scheme.h"
+#include "solver/steady_solver.h"
+#include "study/distress_search.h"
 
 namespace {
 

@@ -34,10 +34,10 @@
 #include <stdexcept>
 
 #include "paper_case.h"
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/solver/natural_continuation.h"
-#include "twb/solver/steady_solver.h"
+#include "solver/natural_continuation.h"
+#include "solver/steady_solver.h"
 
 namespace {
 

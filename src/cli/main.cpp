@@ -14,17 +14,18 @@
 
 #include "interruption.h"
 #include "results_directory.h"
-#include "twb/model/bearing_model.h"
-#include "twb/results/atomic_file.h"
+#include "model/bearing_model.h"
+#include "results/atomic_file.h"
 #include "twb/results/fields_table.h"
-#include "twb/results/run_record.h"
+#include "results/run_record.h"
 #include "twb/results/limit_notes.h"
 #include "twb/results/states_table.h"
-#include "twb/study/search_journal.h"
+#include "study/search_journal.h"
 #include "twb/scene/input_error.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/solver/sundials_context.h"
-#include "twb/study/study_runner.h"
+#include "solver/sundials_context.h"
+#include "study/study_runner.h"
+#include "twb/version.h"
 
 namespace {
 
@@ -148,7 +149,7 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
 int main(int argc, char** argv) {
   CLI::App app{"twb: thrust washer bearings in mixed lubrication (Jackson & Green 2006)"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string(TWB_VERSION));
+  app.set_version_flag("--version", std::string(twb::version()));
 
   std::string scene_path, out_dir;
   std::vector<std::string> overrides;

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 
 namespace twb {
 

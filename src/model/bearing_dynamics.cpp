@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 
 namespace twb {
 

@@ -1,4 +1,4 @@
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <stdexcept>
 
 #include "assembly_totals.h"
-#include "twb/model/reynolds_operator.h"
-#include "twb/physics/asperity_contact.h"
-#include "twb/physics/contact_table_cache.h"
-#include "twb/physics/thermal_deformation.h"
+#include "model/reynolds_operator.h"
+#include "physics/asperity_contact.h"
+#include "physics/contact_table_cache.h"
+#include "physics/thermal_deformation.h"
 
 namespace twb {
 

@@ -3,7 +3,7 @@
 // torque, heat) do not come from here: film_loads.cpp integrates over each cell.
 #include <cmath>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 
 namespace twb {
 

@@ -13,8 +13,8 @@
 #include <type_traits>
 
 #include "assembly_totals.h"
-#include "twb/physics/average_gap.h"
-#include "twb/physics/friction_law.h"
+#include "physics/average_gap.h"
+#include "physics/friction_law.h"
 
 namespace twb {
 

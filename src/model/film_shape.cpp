@@ -10,8 +10,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "twb/physics/thermal_deformation.h"
-#include "twb/model/bearing_model.h"
+#include "physics/thermal_deformation.h"
+#include "model/bearing_model.h"
 
 namespace twb {
 

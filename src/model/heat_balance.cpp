@@ -12,7 +12,7 @@
 #include <numbers>
 
 #include "assembly_totals.h"
-#include "twb/physics/average_gap.h"
+#include "physics/average_gap.h"
 
 namespace twb {
 

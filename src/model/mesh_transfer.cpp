@@ -10,7 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 
 namespace twb {
 namespace {

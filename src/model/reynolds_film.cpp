@@ -15,10 +15,10 @@
 #include <array>
 #include <cmath>
 
-#include "twb/model/bearing_model.h"
-#include "twb/model/reynolds_operator.h"
-#include "twb/physics/average_gap.h"
-#include "twb/physics/flow_factors.h"
+#include "model/bearing_model.h"
+#include "model/reynolds_operator.h"
+#include "physics/average_gap.h"
+#include "physics/flow_factors.h"
 
 namespace twb {
 

@@ -1,4 +1,4 @@
-#include "twb/model/reynolds_operator.h"
+#include "model/reynolds_operator.h"
 
 #include <stdexcept>
 

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 
 namespace twb {
 

@@ -1,4 +1,4 @@
-#include "twb/model/sparse_assembly.h"
+#include "model/sparse_assembly.h"
 
 #include <algorithm>
 #include <stdexcept>

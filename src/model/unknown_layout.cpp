@@ -1,4 +1,4 @@
-#include "twb/model/unknown_layout.h"
+#include "model/unknown_layout.h"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "twb/physics/asperity_contact.h"
+#include "physics/asperity_contact.h"
 
 #include <cmath>
 #include <numbers>

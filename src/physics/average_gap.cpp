@@ -1,11 +1,11 @@
-#include "twb/physics/average_gap.h"
+#include "physics/average_gap.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
 
-#include "twb/physics/batch_math.h"
+#include "physics/batch_math.h"
 
 namespace twb {
 

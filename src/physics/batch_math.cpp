@@ -1,4 +1,4 @@
-#include "twb/physics/batch_math.h"
+#include "physics/batch_math.h"
 
 #include <cmath>
 #include <cstddef>

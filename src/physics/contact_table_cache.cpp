@@ -1,4 +1,4 @@
-#include "twb/physics/contact_table_cache.h"
+#include "physics/contact_table_cache.h"
 
 #include <algorithm>
 #include <mutex>

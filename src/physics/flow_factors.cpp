@@ -1,4 +1,4 @@
-#include "twb/physics/flow_factors.h"
+#include "physics/flow_factors.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "twb/physics/friction_law.h"
+#include "physics/friction_law.h"
 
 #include <cmath>
 

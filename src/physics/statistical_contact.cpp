@@ -1,4 +1,4 @@
-#include "twb/physics/statistical_contact.h"
+#include "physics/statistical_contact.h"
 
 #include <algorithm>
 #include <array>
@@ -9,7 +9,7 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
-#include "twb/physics/batch_math.h"
+#include "physics/batch_math.h"
 
 namespace twb {
 

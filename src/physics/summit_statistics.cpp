@@ -1,4 +1,4 @@
-#include "twb/physics/summit_statistics.h"
+#include "physics/summit_statistics.h"
 
 #include <cmath>
 #include <numbers>

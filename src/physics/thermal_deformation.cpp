@@ -1,4 +1,4 @@
-#include "twb/physics/thermal_deformation.h"
+#include "physics/thermal_deformation.h"
 
 namespace twb {
 

@@ -1,4 +1,4 @@
-#include "twb/physics/uniform_hermite_table.h"
+#include "physics/uniform_hermite_table.h"
 
 #include <algorithm>
 #include <cmath>

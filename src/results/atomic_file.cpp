@@ -1,4 +1,4 @@
-#include "twb/results/atomic_file.h"
+#include "results/atomic_file.h"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -4,7 +4,7 @@
 #include <set>
 
 #include "result_cells.h"
-#include "twb/results/atomic_file.h"
+#include "results/atomic_file.h"
 
 namespace twb {
 

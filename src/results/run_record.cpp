@@ -1,4 +1,4 @@
-#include "twb/results/run_record.h"
+#include "results/run_record.h"
 
 #include <Eigen/Core>
 #include <boost/version.hpp>

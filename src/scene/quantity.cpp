@@ -1,4 +1,4 @@
-#include "twb/scene/quantity.h"
+#include "scene/quantity.h"
 
 #include <udunits2.h>
 

@@ -10,7 +10,7 @@
 #include "roughness_profile.h"
 #include "scene_names.h"
 #include "scene_sections.h"
-#include "twb/physics/summit_statistics.h"
+#include "physics/summit_statistics.h"
 
 namespace twb::scene_io {
 namespace {

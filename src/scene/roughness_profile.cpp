@@ -10,7 +10,7 @@
 
 #include "scene_source.h"
 #include "twb/scene/input_error.h"
-#include "twb/scene/quantity.h"
+#include "scene/quantity.h"
 
 namespace twb::scene_io {
 namespace {

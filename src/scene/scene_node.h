@@ -13,7 +13,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "scene_source.h"
-#include "twb/scene/quantity.h"
+#include "scene/quantity.h"
 
 namespace twb::scene_io {
 

@@ -1,12 +1,12 @@
-#include "twb/solver/arclength_continuation.h"
+#include "solver/arclength_continuation.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "twb/solver/arclength_system.h"
-#include "twb/solver/step_control.h"
+#include "solver/arclength_system.h"
+#include "solver/step_control.h"
 
 namespace twb {
 

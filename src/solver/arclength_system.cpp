@@ -1,8 +1,8 @@
-#include "twb/solver/arclength_system.h"
+#include "solver/arclength_system.h"
 
 #include <cmath>
 
-#include "twb/solver/sundials_context.h"
+#include "solver/sundials_context.h"
 
 namespace twb {
 

@@ -1,4 +1,4 @@
-#include "twb/solver/bordered_matrix.h"
+#include "solver/bordered_matrix.h"
 
 #include <algorithm>
 #include <stdexcept>

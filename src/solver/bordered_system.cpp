@@ -1,4 +1,4 @@
-#include "twb/solver/bordered_system.h"
+#include "solver/bordered_system.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "twb/solver/continuation_metric.h"
+#include "solver/continuation_metric.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "twb/solver/fold_curve.h"
+#include "solver/fold_curve.h"
 
 #include <cmath>
 #include <limits>
@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "twb/solver/kinsol_newton.h"
-#include "twb/solver/natural_continuation.h"
+#include "solver/kinsol_newton.h"
+#include "solver/natural_continuation.h"
 
 namespace twb {
 

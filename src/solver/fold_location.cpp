@@ -1,11 +1,11 @@
-#include "twb/solver/fold_location.h"
+#include "solver/fold_location.h"
 
 #include <cmath>
 
 #include <boost/math/tools/toms748_solve.hpp>
 
-#include "twb/solver/arclength_system.h"
-#include "twb/solver/fold_system.h"
+#include "solver/arclength_system.h"
+#include "solver/fold_system.h"
 
 namespace twb {
 

@@ -1,11 +1,11 @@
-#include "twb/solver/fold_system.h"
+#include "solver/fold_system.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "twb/solver/kinsol_newton.h"
+#include "solver/kinsol_newton.h"
 
 namespace twb {
 

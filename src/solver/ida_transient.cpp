@@ -1,4 +1,4 @@
-#include "twb/solver/ida_transient.h"
+#include "solver/ida_transient.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
-#include "twb/solver/kinsol_newton.h"
-#include "twb/solver/sparse_matrix_fill.h"
+#include "solver/kinsol_newton.h"
+#include "solver/sparse_matrix_fill.h"
 
 namespace twb {
 

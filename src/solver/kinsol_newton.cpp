@@ -1,4 +1,4 @@
-#include "twb/solver/kinsol_newton.h"
+#include "solver/kinsol_newton.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +11,8 @@
 #include <kinsol/kinsol.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
-#include "twb/solver/sparse_lu.h"
-#include "twb/solver/sparse_matrix_fill.h"
+#include "solver/sparse_lu.h"
+#include "solver/sparse_matrix_fill.h"
 
 namespace twb {
 

@@ -1,4 +1,4 @@
-#include "twb/solver/linear_stability.h"
+#include "solver/linear_stability.h"
 
 #include <algorithm>
 #include <cmath>

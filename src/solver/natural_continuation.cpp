@@ -1,4 +1,4 @@
-#include "twb/solver/natural_continuation.h"
+#include "solver/natural_continuation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
-#include "twb/solver/continuation_metric.h"
-#include "twb/solver/sparse_lu.h"
-#include "twb/solver/step_control.h"
+#include "solver/continuation_metric.h"
+#include "solver/sparse_lu.h"
+#include "solver/step_control.h"
 
 namespace twb {
 

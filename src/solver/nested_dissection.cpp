@@ -1,4 +1,4 @@
-#include "twb/solver/nested_dissection.h"
+#include "solver/nested_dissection.h"
 
 #include <cholmod.h>
 

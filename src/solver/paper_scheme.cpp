@@ -1,4 +1,4 @@
-#include "twb/solver/paper_scheme.h"
+#include "solver/paper_scheme.h"
 
 #include <algorithm>
 #include <array>
@@ -9,8 +9,8 @@
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
-#include "twb/solver/kinsol_newton.h"
-#include "twb/solver/sparse_lu.h"
+#include "solver/kinsol_newton.h"
+#include "solver/sparse_lu.h"
 
 namespace twb {
 

@@ -1,4 +1,4 @@
-#include "twb/solver/relaxation_time.h"
+#include "solver/relaxation_time.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <vector>
 
 
-#include "twb/solver/sparse_lu.h"
-#include "twb/solver/sundials_context.h"
+#include "solver/sparse_lu.h"
+#include "solver/sundials_context.h"
 
 namespace twb {
 

@@ -1,11 +1,11 @@
-#include "twb/solver/runaway.h"
+#include "solver/runaway.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "twb/solver/relaxation_time.h"
+#include "solver/relaxation_time.h"
 
 namespace twb {
 

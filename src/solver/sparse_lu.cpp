@@ -1,8 +1,8 @@
-#include "twb/solver/sparse_lu.h"
+#include "solver/sparse_lu.h"
 
 #include <klu.h>
 
-#include "twb/solver/nested_dissection.h"
+#include "solver/nested_dissection.h"
 
 #include <stdexcept>
 #include <string>

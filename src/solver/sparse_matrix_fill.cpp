@@ -1,4 +1,4 @@
-#include "twb/solver/sparse_matrix_fill.h"
+#include "solver/sparse_matrix_fill.h"
 
 #include <algorithm>
 #include <cmath>

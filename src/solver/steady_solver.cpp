@@ -1,4 +1,4 @@
-#include "twb/solver/steady_solver.h"
+#include "solver/steady_solver.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "twb/solver/paper_scheme.h"
-#include "twb/solver/sparse_lu.h"
+#include "solver/paper_scheme.h"
+#include "solver/sparse_lu.h"
 
 namespace twb {
 

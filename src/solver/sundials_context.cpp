@@ -1,4 +1,4 @@
-#include "twb/solver/sundials_context.h"
+#include "solver/sundials_context.h"
 
 namespace twb {
 

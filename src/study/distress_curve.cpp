@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include "study_support.h"
-#include "twb/solver/fold_curve.h"
-#include "twb/study/distress_search.h"
+#include "solver/fold_curve.h"
+#include "study/distress_search.h"
 
 namespace twb {
 

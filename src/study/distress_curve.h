@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
-#include "twb/model/bearing_model.h"
-#include "twb/study/study_runner.h"
+#include "model/bearing_model.h"
+#include "study/study_runner.h"
 
 namespace twb {
 

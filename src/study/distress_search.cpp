@@ -1,4 +1,4 @@
-#include "twb/study/distress_search.h"
+#include "study/distress_search.h"
 
 #include <algorithm>
 #include <chrono>
@@ -11,11 +11,11 @@
 #include "fold_proof.h"
 #include "load_step_march.h"
 #include "study_support.h"
-#include "twb/solver/arclength_continuation.h"
-#include "twb/solver/linear_stability.h"
-#include "twb/solver/natural_continuation.h"
-#include "twb/solver/runaway.h"
-#include "twb/solver/steady_solver.h"
+#include "solver/arclength_continuation.h"
+#include "solver/linear_stability.h"
+#include "solver/natural_continuation.h"
+#include "solver/runaway.h"
+#include "solver/steady_solver.h"
 
 namespace twb {
 

@@ -8,10 +8,10 @@
 #include <utility>
 #include <vector>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/results/trajectory_table.h"
-#include "twb/solver/runaway.h"
-#include "twb/study/distress_search.h"
+#include "solver/runaway.h"
+#include "study/distress_search.h"
 
 namespace twb {
 

@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
-#include "twb/solver/kinsol_newton.h"
-#include "twb/solver/relaxation_time.h"
-#include "twb/solver/steady_solver.h"
+#include "solver/kinsol_newton.h"
+#include "solver/relaxation_time.h"
+#include "solver/steady_solver.h"
 
 namespace twb {
 

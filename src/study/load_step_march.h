@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/results/trajectory_table.h"
-#include "twb/solver/ida_transient.h"
-#include "twb/solver/kinsol_newton.h"
+#include "solver/ida_transient.h"
+#include "solver/kinsol_newton.h"
 
 namespace twb {
 

@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "twb/study/study_runner.h"
+#include "study/study_runner.h"
 
 namespace twb {
 

@@ -23,7 +23,7 @@
 #include <string>
 
 #include "twb/scene/scene.h"
-#include "twb/study/distress_search.h"
+#include "study/distress_search.h"
 
 namespace twb {
 

@@ -1,4 +1,4 @@
-#include "twb/study/search_journal.h"
+#include "study/search_journal.h"
 
 #include <cstring>
 #include <fstream>
@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "twb/results/atomic_file.h"
+#include "results/atomic_file.h"
 
 namespace twb {
 

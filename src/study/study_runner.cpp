@@ -1,4 +1,4 @@
-#include "twb/study/study_runner.h"
+#include "study/study_runner.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,13 +15,13 @@
 #include "distress_curve.h"
 #include "load_step_march.h"
 #include "parallel.h"
-#include "twb/study/search_journal.h"
+#include "study/search_journal.h"
 #include "richardson.h"
 #include "study_support.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/solver/sparse_lu.h"
-#include "twb/solver/steady_solver.h"
-#include "twb/study/distress_search.h"
+#include "solver/sparse_lu.h"
+#include "solver/steady_solver.h"
+#include "study/distress_search.h"
 
 namespace twb {
 

@@ -5,12 +5,12 @@
 #include <chrono>
 #include <span>
 
-#include "twb/model/bearing_model.h"
-#include "twb/results/run_record.h"
+#include "model/bearing_model.h"
+#include "results/run_record.h"
 #include "twb/results/states_table.h"
 #include "twb/scene/scene.h"
-#include "twb/solver/kinsol_newton.h"
-#include "twb/study/distress_search.h"
+#include "solver/kinsol_newton.h"
+#include "study/distress_search.h"
 
 namespace twb {
 

@@ -1,4 +1,4 @@
-#include "twb/system/sparse_pattern.h"
+#include "system/sparse_pattern.h"
 
 #include <algorithm>
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "../support/table1_scene.h"
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 
 namespace twb {
 namespace {

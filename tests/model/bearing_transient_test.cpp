@@ -8,10 +8,10 @@
 
 #include "../support/state_difference.h"
 #include "../support/table1_scene.h"
-#include "twb/model/bearing_model.h"
-#include "twb/solver/ida_transient.h"
-#include "twb/solver/relaxation_time.h"
-#include "twb/solver/steady_solver.h"
+#include "model/bearing_model.h"
+#include "solver/ida_transient.h"
+#include "solver/relaxation_time.h"
+#include "solver/steady_solver.h"
 
 namespace twb {
 namespace {

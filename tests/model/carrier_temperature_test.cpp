@@ -8,8 +8,8 @@
 
 #include "../support/converged_balances.h"
 #include "../support/table1_scene.h"
-#include "twb/model/bearing_model.h"
-#include "twb/solver/steady_solver.h"
+#include "model/bearing_model.h"
+#include "solver/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "../support/table1_scene.h"
-#include "twb/model/bearing_model.h"
-#include "twb/physics/roelands_viscosity.h"
-#include "twb/solver/steady_solver.h"
+#include "model/bearing_model.h"
+#include "physics/roelands_viscosity.h"
+#include "solver/steady_solver.h"
 
 namespace twb {
 namespace {

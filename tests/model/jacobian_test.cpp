@@ -19,7 +19,7 @@
 #include <random>
 
 #include "../support/table1_scene.h"
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 
 namespace twb {
 namespace {

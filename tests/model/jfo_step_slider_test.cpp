@@ -32,7 +32,7 @@
 #include <numbers>
 #include <vector>
 
-#include "twb/model/reynolds_operator.h"
+#include "model/reynolds_operator.h"
 
 namespace twb {
 namespace {

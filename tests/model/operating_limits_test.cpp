@@ -6,9 +6,9 @@
 #include <algorithm>
 
 #include "../support/table1_scene.h"
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/results/limit_notes.h"
-#include "twb/solver/steady_solver.h"
+#include "solver/steady_solver.h"
 
 namespace twb {
 namespace {

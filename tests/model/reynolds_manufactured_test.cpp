@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "twb/model/film_mesh.h"
-#include "twb/model/reynolds_operator.h"
+#include "model/reynolds_operator.h"
 
 namespace twb {
 namespace {

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "twb/model/sparse_assembly.h"
+#include "model/sparse_assembly.h"
 
 namespace twb {
 namespace {

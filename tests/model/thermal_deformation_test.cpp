@@ -9,9 +9,9 @@
 
 #include "../support/converged_balances.h"
 #include "../support/table1_scene.h"
-#include "twb/model/bearing_model.h"
-#include "twb/physics/thermal_deformation.h"
-#include "twb/solver/steady_solver.h"
+#include "model/bearing_model.h"
+#include "physics/thermal_deformation.h"
+#include "solver/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -1,5 +1,5 @@
 // Jackson-Green single asperity, MODEL.md section 4 / paper eqs [8]-[12].
-#include "twb/physics/asperity_contact.h"
+#include "physics/asperity_contact.h"
 
 #include <cmath>
 #include <numbers>

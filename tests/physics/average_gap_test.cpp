@@ -1,5 +1,5 @@
 // Average gap, MODEL.md section 3 / paper eq [6].
-#include "twb/physics/average_gap.h"
+#include "physics/average_gap.h"
 
 #include <cmath>
 #include <limits>

@@ -1,5 +1,5 @@
 // The batched exp, log and erfc, and the kernels built on them, against the scalar libm.
-#include "twb/physics/batch_math.h"
+#include "physics/batch_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "twb/physics/average_gap.h"
-#include "twb/physics/roelands_viscosity.h"
+#include "physics/average_gap.h"
+#include "physics/roelands_viscosity.h"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // Patir & Cheng flow factors, MODEL.md section 3 / paper eqs [2]-[5].
-#include "twb/physics/flow_factors.h"
+#include "physics/flow_factors.h"
 
 #include <cmath>
 

@@ -1,5 +1,5 @@
 // Empirical dry friction, MODEL.md section 6 / paper eq [18].
-#include "twb/physics/friction_law.h"
+#include "physics/friction_law.h"
 
 #include <cmath>
 

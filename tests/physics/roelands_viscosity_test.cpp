@@ -1,5 +1,5 @@
 // Roelands viscosity, MODEL.md section 5 / paper eq [17].
-#include "twb/physics/roelands_viscosity.h"
+#include "physics/roelands_viscosity.h"
 
 #include <cmath>
 

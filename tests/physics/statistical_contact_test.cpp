@@ -1,5 +1,5 @@
 // Statistical elasto-plastic contact pressure, MODEL.md section 4 / paper eqs [13]-[15].
-#include "twb/physics/statistical_contact.h"
+#include "physics/statistical_contact.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,6 +1,6 @@
 // McCool's summit statistics from a profile (MODEL.md section 13), on synthetic
 // Gaussian profiles whose discrete spectral moments are known in closed form.
-#include "twb/physics/summit_statistics.h"
+#include "physics/summit_statistics.h"
 
 #include <cmath>
 #include <numbers>

@@ -1,5 +1,5 @@
 // Uniform cubic Hermite interpolation (the contact table's evaluator).
-#include "twb/physics/uniform_hermite_table.h"
+#include "physics/uniform_hermite_table.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "twb/results/atomic_file.h"
+#include "results/atomic_file.h"
 
 namespace twb {
 namespace {

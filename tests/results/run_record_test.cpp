@@ -1,12 +1,12 @@
 // run.json: valid JSON, the resolved scene's numbers in SI with the unit in the key (as
 // in the CSVs' columns), the solver's counts.
-#include "twb/results/run_record.h"
+#include "results/run_record.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "../scene/scene_test_support.h"
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 
 namespace twb {
 namespace {

@@ -1,6 +1,6 @@
 // Unit conversions at load time must be exact scalings (or offsets, for temperatures):
 // the model never sees anything but SI.
-#include "twb/scene/quantity.h"
+#include "scene/quantity.h"
 
 #include <cmath>
 #include <numbers>

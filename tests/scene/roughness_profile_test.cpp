@@ -10,7 +10,7 @@
 
 #include "../../src/scene/roughness_profile.h"
 #include "scene_test_support.h"
-#include "twb/physics/summit_statistics.h"
+#include "physics/summit_statistics.h"
 
 namespace twb {
 namespace {

@@ -8,10 +8,10 @@
 #include <cmath>
 
 #include "../support/table1_scene.h"
-#include "twb/model/bearing_model.h"
-#include "twb/solver/kinsol_newton.h"
-#include "twb/solver/natural_continuation.h"
-#include "twb/solver/steady_solver.h"
+#include "model/bearing_model.h"
+#include "solver/kinsol_newton.h"
+#include "solver/natural_continuation.h"
+#include "solver/steady_solver.h"
 
 namespace twb {
 namespace {

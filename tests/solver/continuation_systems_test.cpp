@@ -9,10 +9,10 @@
 #include "../support/branch_start.h"
 #include "../support/derivative_check.h"
 #include "../support/model_problems.h"
-#include "twb/solver/arclength_system.h"
-#include "twb/solver/bordered_matrix.h"
-#include "twb/solver/fold_system.h"
-#include "twb/solver/sparse_lu.h"
+#include "solver/arclength_system.h"
+#include "solver/bordered_matrix.h"
+#include "solver/fold_system.h"
+#include "solver/sparse_lu.h"
 
 namespace twb {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "../support/branch_start.h"
 #include "../support/model_problems.h"
-#include "twb/solver/arclength_continuation.h"
+#include "solver/arclength_continuation.h"
 
 namespace twb {
 namespace {

@@ -7,8 +7,8 @@
 #include "../support/bratu_fold.h"
 #include "../support/lower_branch.h"
 #include "../support/model_problems.h"
-#include "twb/solver/arclength_continuation.h"
-#include "twb/solver/fold_curve.h"
+#include "solver/arclength_continuation.h"
+#include "solver/fold_curve.h"
 
 namespace twb {
 namespace {

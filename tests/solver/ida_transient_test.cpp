@@ -7,7 +7,7 @@
 
 #include "../support/lower_branch.h"
 #include "../support/model_problems.h"
-#include "twb/solver/ida_transient.h"
+#include "solver/ida_transient.h"
 
 namespace twb {
 namespace {

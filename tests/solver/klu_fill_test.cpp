@@ -7,8 +7,8 @@
 #include <klu.h>
 
 #include "../support/table1_scene.h"
-#include "twb/model/bearing_model.h"
-#include "twb/solver/nested_dissection.h"
+#include "model/bearing_model.h"
+#include "solver/nested_dissection.h"
 
 namespace twb {
 namespace {

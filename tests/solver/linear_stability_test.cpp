@@ -9,8 +9,8 @@
 
 #include "../support/lower_branch.h"
 #include "../support/model_problems.h"
-#include "twb/solver/arclength_continuation.h"
-#include "twb/solver/linear_stability.h"
+#include "solver/arclength_continuation.h"
+#include "solver/linear_stability.h"
 
 namespace twb {
 namespace {

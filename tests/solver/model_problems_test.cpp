@@ -6,7 +6,7 @@
 
 #include "../support/derivative_check.h"
 #include "../support/model_problems.h"
-#include "twb/solver/kinsol_newton.h"
+#include "solver/kinsol_newton.h"
 
 namespace twb {
 namespace {

@@ -7,9 +7,9 @@
 
 #include "../support/branch_start.h"
 #include "../support/model_problems.h"
-#include "twb/solver/arclength_continuation.h"
-#include "twb/solver/natural_continuation.h"
-#include "twb/solver/sparse_lu.h"
+#include "solver/arclength_continuation.h"
+#include "solver/natural_continuation.h"
+#include "solver/sparse_lu.h"
 
 namespace twb {
 namespace {

@@ -11,8 +11,8 @@
 #include <numeric>
 #include <vector>
 
-#include "twb/solver/nested_dissection.h"
-#include "twb/solver/sparse_lu.h"
+#include "solver/nested_dissection.h"
+#include "solver/sparse_lu.h"
 
 namespace twb {
 namespace {

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/model_problems.h"
-#include "twb/solver/kinsol_newton.h"
+#include "solver/kinsol_newton.h"
 
 namespace twb {
 namespace {

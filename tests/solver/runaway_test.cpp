@@ -15,7 +15,7 @@
 #include "../support/lower_branch.h"
 #include "../support/model_problems.h"
 #include "../support/state_difference.h"
-#include "twb/solver/runaway.h"
+#include "solver/runaway.h"
 
 namespace twb {
 namespace {

@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "../support/model_problems.h"
-#include "twb/solver/kinsol_newton.h"
-#include "twb/solver/sparse_lu.h"
+#include "solver/kinsol_newton.h"
+#include "solver/sparse_lu.h"
 
 namespace twb {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <Eigen/Dense>
 
-#include "twb/solver/sparse_lu.h"
+#include "solver/sparse_lu.h"
 
 namespace twb {
 namespace {

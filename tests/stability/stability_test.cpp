@@ -20,9 +20,9 @@
 #include <fmt/format.h>
 
 #include "../support/converged_balances.h"
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/study/study_runner.h"
+#include "study/study_runner.h"
 
 namespace twb {
 namespace {

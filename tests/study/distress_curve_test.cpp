@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "../support/table1_scene.h"
-#include "twb/solver/fold_curve.h"
-#include "twb/study/distress_search.h"
-#include "twb/study/study_runner.h"
+#include "solver/fold_curve.h"
+#include "study/distress_search.h"
+#include "study/study_runner.h"
 
 namespace twb {
 namespace {

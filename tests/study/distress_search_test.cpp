@@ -7,9 +7,9 @@
 #include <ostream>
 
 #include "../support/table1_scene.h"
-#include "twb/solver/kinsol_newton.h"
-#include "twb/solver/runaway.h"
-#include "twb/study/distress_search.h"
+#include "solver/kinsol_newton.h"
+#include "solver/runaway.h"
+#include "study/distress_search.h"
 
 namespace twb {
 namespace {

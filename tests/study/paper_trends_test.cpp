@@ -23,13 +23,13 @@
 #include <vector>
 
 #include "../support/table1_scene.h"
-#include "twb/physics/friction_law.h"
-#include "twb/physics/roelands_viscosity.h"
+#include "physics/friction_law.h"
+#include "physics/roelands_viscosity.h"
 #include "twb/scene/scene_loader.h"
-#include "twb/solver/arclength_continuation.h"
-#include "twb/solver/natural_continuation.h"
-#include "twb/solver/steady_solver.h"
-#include "twb/study/distress_search.h"
+#include "solver/arclength_continuation.h"
+#include "solver/natural_continuation.h"
+#include "solver/steady_solver.h"
+#include "study/distress_search.h"
 
 namespace twb {
 namespace {

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "../support/table1_scene.h"
-#include "twb/study/study_runner.h"
+#include "study/study_runner.h"
 
 namespace twb {
 namespace {

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "../support/table1_scene.h"
-#include "twb/study/study_runner.h"
+#include "study/study_runner.h"
 
 namespace twb {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "twb/solver/kinsol_newton.h"
+#include "solver/kinsol_newton.h"
 
 namespace twb::testing {
 

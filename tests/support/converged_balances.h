@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "twb/model/bearing_model.h"
+#include "model/bearing_model.h"
 
 namespace twb::testing {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "twb/system/steady_system.h"
+#include "system/steady_system.h"
 
 namespace twb::testing {
 

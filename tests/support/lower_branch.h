@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "twb/solver/kinsol_newton.h"
+#include "solver/kinsol_newton.h"
 
 namespace twb::testing {
 

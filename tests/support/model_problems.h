@@ -21,7 +21,7 @@
 #include <span>
 #include <vector>
 
-#include "twb/system/steady_system.h"
+#include "system/steady_system.h"
 
 namespace twb::testing {
 

@@ -5,7 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "twb/model/bearing_model.h"
+#include "twb/model/bearing_state.h"
+#include "twb/model/film_fields.h"
 
 namespace twb {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "twb/model/bearing_model.h"
+#include "twb/model/bearing_state.h"
 
 namespace twb {
 

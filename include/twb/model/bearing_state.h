@@ -1,0 +1,37 @@
+// What twb reports of one solved state of the bearing (MODEL.md section 9), in SI units.
+#pragma once
+
+#include <vector>
+
+#include "twb/model/operating_limits.h"
+
+namespace twb {
+
+// Rigid-body position in physical units.
+struct RigidPosition {
+  double c1 = 0, gamma_x = 0, gamma_y = 0, c2 = 0;
+};
+
+// Everything reported per solved state (MODEL.md section 9).
+struct BearingState {
+  double load = 0, speed = 0;
+  double washer_mean_temperature = 0;  // K, area-weighted
+  double max_film_temperature = 0;     // K, hottest film node
+  double hmin_over_sigma = 0;          // sliding film, exact minimum of its plane
+  double gamma_x_ratio = 0, gamma_y_ratio = 0;
+  double fluid_force = 0, contact_force = 0;  // sliding film, N
+  double fluid_share = 0, contact_share = 0;
+  double torque = 0, f_eff = 0;
+  double stribeck = 0;  // Z N / P: Pa·s · rev/s / Pa
+  double friction_coefficient = 0;
+  bool friction_clamped = false;
+  double heat_generated = 0, heat_to_ambient = 0, energy_error = 0;
+  double force_balance_error = 0, moment_balance_error = 0;  // relative to the load
+  double complementarity_error = 0;  // max |min(p̂, ŵ)|
+  double max_contact_pressure = 0;   // Pa, nominal asperity pressure where either film is tightest
+  RigidPosition position;
+  // The limits of the model and the oil this state exceeds (operating_limits.h).
+  std::vector<LimitExcess> limits;
+};
+
+}  // namespace twb

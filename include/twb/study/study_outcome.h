@@ -1,0 +1,51 @@
+// What a study gives back: solved states, distress rows, the transient's trajectory,
+// fold curves, with what the run cost; how to run it (threads, resume journal); the
+// progress callback.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "twb/results/distress_table.h"
+#include "twb/results/fold_curve_table.h"
+#include "twb/results/run_timings.h"
+#include "twb/results/sliding_table.h"
+#include "twb/results/states_table.h"
+#include "twb/results/trajectory_table.h"
+
+namespace twb {
+
+struct StudyOutcome {
+  std::vector<SolvedState> states;
+  std::vector<DistressRow> distress;  // load_sweep, distress_map, sliding_choice: one row per search
+  std::string parameter_column;       // the study's second axis, e.g. "friction_coefficient"
+  bool sliding_column = false;        // sliding_choice: rows name their sliding film
+  // transient; load_sweep, sliding_choice: the first step past distress of each search
+  std::vector<TrajectorySample> trajectory;
+  std::vector<SlidingRow> sliding;    // sliding_choice: both configurations at every grid load
+  // distress_curve: the fold along the curve parameter (fold_curve.csv) and its column
+  std::vector<FoldCurveRow> fold_curve;
+  std::string fold_curve_column;
+  std::vector<std::string> summary;  // lines for the end of the run's output (e.g. the cusp)
+  // The solvers' own words where a search went on regardless (twb run --verbose).
+  std::vector<std::string> diagnostics;
+  bool solver_failed = false;  // a state the study needed could not be solved
+  std::string message;
+  RunTimings timings;
+};
+
+using ProgressReport = std::function<void(const std::string&)>;
+
+class SearchJournal;
+
+struct RunOptions {
+  // Threads for the study's independent searches (speeds, parameter values, sliding
+  // films); 0: one per core. The results do not depend on it.
+  int threads = 1;
+  // Where each finished search is written at once and, on resume, read instead of run
+  // (search_journal.h); none: nothing journaled.
+  const SearchJournal* journal = nullptr;
+};
+
+}  // namespace twb

@@ -1,0 +1,7 @@
+#include "twb/version.h"
+
+namespace twb {
+
+const char* version() { return TWB_VERSION; }
+
+}  // namespace twb

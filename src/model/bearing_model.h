@@ -1,0 +1,280 @@
+// The coupled quasi-steady bearing model (MODEL.md sections 1-7 and 9): one residual
+// F(u) = 0 over the unknowns of the effects a scene enables, with its exact sparse
+// Jacobian. Unknowns and residual rows are scaled so that tolerances read physically:
+//   rigid body   ĉ = c/σ_ref (clearances), γ̂ = γ/γ_ref;  rows: forces / F_ext, moments / (F_ext r_o)
+//   pressure     p̂ = p/p_ref;   rows: complementarity of (p̂, ŵ), ŵ = flow balance / its scale
+//   temperature  T̂ = T − T_ambient in kelvin;  rows: heat balance / a node conductance (kelvin)
+#pragma once
+
+#include <array>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <tuple>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "twb/model/bearing_state.h"
+#include "twb/model/film_fields.h"
+#include "twb/model/film_mesh.h"
+#include "twb/model/operating_limits.h"
+#include "model/sparse_assembly.h"
+#include "model/unknown_layout.h"
+#include "physics/roelands_viscosity.h"
+#include "physics/statistical_contact.h"
+#include "twb/scene/scene.h"
+#include "system/segregated_system.h"
+
+namespace twb {
+
+struct FilmTotals;
+
+enum class ComponentId { carrier = 0, washer = 1, gear = 2 };
+
+// How a pressure node's row states the cavitation condition p̂ ≥ 0, ŵ ≥ 0, p̂·ŵ = 0
+// (MODEL.md section 3). Both rows vanish at the same states.
+//  - fischer_burmeister: p̂ + ŵ − √(p̂² + ŵ²), whose slopes turn continuously except at
+//    (0, 0): what pseudo-time and the transient march, and what the fold and
+//    arclength systems differentiate. The model's own form.
+//  - minimum: min(p̂, ŵ), a row equal to p̂ or to ŵ. Once Newton has found which nodes
+//    are cavitated it converges as on a smooth system, where with Fischer–Burmeister
+//    the slopes at nodes on the cavitation boundary turn within |(p̂, ŵ)| of the
+//    solution and Newton's last steps converge only superlinearly (a 2 % warm start on
+//    the hot branch: 3 iterations instead of 4). Newton's form (SteadySystem::
+//    set_newton_form): the steady solver's Newton and natural continuation's corrector.
+enum class CavitationRow { fischer_burmeister, minimum };
+
+// A film between two components. Its gap is a plane in the unknowns (MODEL.md section 1):
+//   h = c + s·(γx·y − γy·x) − tilt·x
+// film 1 (carrier–washer): c = c1 = z_w,              s = +1, tilt = 0
+// film 2 (washer–gear):    c = c2 = z_g − z_w − t_w,  s = −1, tilt = γ_tilt
+struct Film {
+  int number = 1;
+  FilmMesh mesh;
+  ComponentId lower, upper;
+  int clearance_unknown = 0;  // 0 for c1, 3 for c2 within the rigid block
+  double sign = 1.0;
+  double imposed_tilt = 0.0;
+  bool sliding = false;
+  double sigma = 0.0;             // combined RMS roughness
+  double shear_weight = 0.0;      // [(σ_moving/σ)² − (σ_fixed/σ)²], eq [3]
+  Index pressure_offset = -1;     // interior nodes (radial 1..Nr-2), -1 without hydrodynamics
+  Index content_offset = -1;      // film content θ at the same nodes, cavitation: jfo only (MODEL.md 12)
+  Index temperature_offset = -1;  // film-node temperatures, -1 without thermal
+};
+
+// A component's temperature field: T(r, θ) on a polar grid, or T(r) when it rotates
+// relative to the load frame (MODEL.md section 7).
+struct ComponentHeat {
+  ComponentId id;
+  FilmMesh grid;
+  bool axisymmetric = false;
+  double thickness = 0.0, conductivity = 0.0, capacity_per_area = 0.0;  // ρ c t
+  bool loses_to_ambient = false;
+  Index offset = -1;
+  int node_count() const { return axisymmetric ? grid.radial_nodes() : grid.node_count(); }
+  // Area a temperature node stands for.
+  double node_area(int i) const {
+    return grid.node_area(i) * (axisymmetric ? grid.circumferential_nodes() : 1);
+  }
+};
+
+// As a SteadySystem the continuation parameter is the load (N) and the transient is
+// the paper's thermal one: component temperatures carry their heat capacity ρ c t,
+// everything else (pressures, film nodes, rigid body) is algebraic.
+class BearingModel final : public SegregatedSystem {
+ public:
+  explicit BearingModel(const Scene& scene);
+
+  const Scene& scene() const { return scene_; }
+  const UnknownLayout& layout() const { return layout_; }
+  Index size() const override { return layout_.size(); }
+  const SparsePattern& pattern() const override { return pattern_; }
+  const std::vector<Film>& films() const { return films_; }
+  const std::vector<ComponentHeat>& components() const { return components_; }
+
+  // Residual and (if jacobian is non-empty) Jacobian values in pattern().
+  void evaluate(std::span<const double> u, std::span<double> residual, std::span<double> jacobian) const override;
+
+  // SteadySystem: λ = load; C from MODEL.md section 7 (bearing_dynamics.cpp).
+  double parameter() const override { return load_; }
+  void set_parameter(double value) override { set_load(value); }
+  void parameter_derivative(std::span<const double> u, std::span<double> derivative) const override;
+  void parameter_derivative_given(std::span<const double> u, std::span<const double> residual,
+                                  std::span<double> derivative) const override;
+  std::vector<double> capacities() const override;
+  std::vector<double> step_weights() const override;
+  std::string block_name(Index k) const override { return layout_.block_of(k).name; }
+  std::string describe_row(Index k) const override;  // row_meaning.cpp
+
+  // The paper's cold start: both films at h_min/σ = cold_start_film, washer tilted half
+  // way, ambient temperature, no pressure.
+  std::vector<double> cold_start() const;
+  // State u of `source`, a model of the same scene on another mesh, carried to this
+  // mesh by bilinear interpolation of every field in (r, θ) (mesh_transfer.cpp): the
+  // start of a mesh sequence. std::invalid_argument when the unknowns differ.
+  std::vector<double> interpolated_from(const BearingModel& source, std::span<const double> u) const;
+  // The same bearing as now (load, speed and every curve parameter) on another mesh.
+  std::unique_ptr<BearingModel> on_mesh(int radial_nodes, int circumferential_nodes) const;
+
+  BearingState describe(std::span<const double> u) const;
+  // The fields of state u on every film's grid, film 1 first (film_fields.cpp).
+  std::vector<FilmFields> fields(std::span<const double> u) const;
+
+  // The form of the pressure rows; the pattern and the roots do not change with it.
+  void set_newton_form(bool on) override {
+    cavitation_row_ = on ? CavitationRow::minimum : CavitationRow::fischer_burmeister;
+  }
+  bool newton_form() const override { return cavitation_row_ == CavitationRow::minimum; }
+  // |φ_FB(a, b)| ≤ (2 + √2)|min(a, b)| (Tseng): a minimum row within tol/(2 + √2) is a
+  // Fischer–Burmeister row within tol; the other rows are the same in both forms.
+  double newton_form_tolerance_ratio() const override { return 1.0 / (2.0 + std::numbers::sqrt2); }
+  CavitationRow cavitation_row() const { return cavitation_row_; }
+
+  // SegregatedSystem: the rigid body, the pressures and the temperatures by effect
+  // (mechanics, hydrodynamics, thermal), and the pressure rows as ŵ alone.
+  Blocks segregated_blocks() const override;
+  void set_flow_balance_rows(bool on) override { flow_balance_rows_ = on; }
+
+  // Changes the external load; the pattern and every scale except F_ext-based ones are kept.
+  void set_load(double load);
+  double load() const { return load_; }
+  // Changes the sliding speed (rad/s); the pattern and all scales are kept.
+  void set_speed(double speed);
+  double speed() const { return scene_.operating.speed; }
+
+  // A parameter a fold curve is continued in (SI: rad/s, 1, rad, K). The pattern and
+  // every scale are kept, so states stay comparable along the curve; the dry friction
+  // coefficient needs the constant friction law (std::invalid_argument otherwise).
+  double curve_parameter(CurveParameter p) const;
+  void set_curve_parameter(CurveParameter p, double value);
+
+  // Scales (physical value = scale · unknown).
+  double clearance_scale() const { return sigma_ref_; }
+  double tilt_scale() const { return gamma_ref_; }
+  double pressure_scale() const { return p_ref_; }
+
+  RigidPosition position(std::span<const double> u) const;
+
+  // Film-node gap h at node (i, j) of a film, physical.
+  double film_gap(const Film& film, const RigidPosition& q, double r, double theta) const;
+  // ∂h/∂(ĉ, γ̂x, γ̂y) at (x, y): the plane of MODEL §1 in the scaled unknowns.
+  std::array<double, 3> gap_gradient(const Film& film, double x, double y) const {
+    return {sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
+  }
+
+  // Thermal deformation (MODEL.md section 11; film_shape.cpp): the change δ of a film's
+  // gap at a node from its plane, δ = form · u (m), from the carrier's and gear's face
+  // expansion and the washer's dishing. Empty forms without the effect.
+  bool deforms() const { return dishing_offset_ >= 0; }
+  const LinearForm& shape_form(const Film& film, int node) const {
+    return shape_forms_[std::size_t(film.number - 1)][std::size_t(node)];
+  }
+  double shape_at(std::span<const double> u, const Film& film, int node) const;
+  // δ at every node of a film, once per evaluation; empty without the effect.
+  std::vector<double> node_shapes(std::span<const double> u, const Film& film) const;
+  // The least gap (m) of a film: its plane's exact minimum over the annulus, c − |∇h|·r_o,
+  // or for a deformed film the least of its nodes' gaps and of the gap at that point
+  // (film_shape.cpp).
+  double least_gap(std::span<const double> u, const Film& film) const;
+  // The washer's area-mean dishing curvature κ̄ (1/m) of state u; 0 without the effect.
+  double dishing_curvature(std::span<const double> u) const;
+
+  // Film content θ at node (i, j): 1 on the (flooded) edges, where the film is full,
+  // and without the mass-conserving cavitation model.
+  double content_at(std::span<const double> u, const Film& film, int i, int j) const;
+
+  // Pressure (Pa) at node (i, j) of the sliding film; 0 on edges and without hydrodynamics.
+  double pressure_at(std::span<const double> u, const Film& film, int i, int j) const;
+  double temperature_of(std::span<const double> u, Index k) const;
+
+ private:
+  struct Totals;  // per-film integrals gathered during assembly
+  void assemble(std::span<const double> u, Assembler& a, Totals* totals) const;
+  void assemble_film_loads(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const;
+  void assemble_reynolds(std::span<const double> u, const Film& film, Assembler& a) const;
+  void assemble_heat(std::span<const double> u, Assembler& a, const Totals& totals) const;
+  void assemble_rigid_balance(Assembler& a) const;
+  void orient_rows(Assembler& a) const;
+
+  // Viscosity temperature (K) at film node (i, j) and its gradient in the unknowns.
+  double viscosity_temperature(std::span<const double> u, const Film& film, int i, int j, LinearForm* form) const;
+  // The same gradient, which depends only on the grids: built once, shared by every
+  // evaluation (the value is T_ambient + form · u).
+  const LinearForm& viscosity_temperature_form(const Film& film, int node) const {
+    return viscosity_forms_[film.number - 1][node];
+  }
+  double apply(const LinearForm& form, std::span<const double> u) const;
+  // Temperature (K) of a component's face at radius r, circumferential node j, with gradient.
+  double face_temperature(std::span<const double> u, ComponentId id, double r, int j, LinearForm* form) const;
+  ValueSlope viscosity(double temperature) const;
+  // The same at every temperature of a batch (Gauss points), vectorized.
+  void viscosity(std::span<const double> temperature, std::span<ValueSlope> out) const;
+  // Half the washer's thickness lies on the path from a film node to its mid-plane
+  // (eqs [26], [27]); carrier and gear faces are their surfaces.
+  double body_resistance(ComponentId id) const;
+  const ComponentHeat* component(ComponentId id) const;
+  const Film& sliding_film() const;
+  void build_contact();  // the summit population of the scene (MODEL.md section 4), if contact is on
+
+  Scene scene_;
+  double load_ = 0;
+  CavitationRow cavitation_row_ = CavitationRow::fischer_burmeister;
+  bool flow_balance_rows_ = false;
+  std::vector<Film> films_;
+  std::vector<ComponentHeat> components_;
+  UnknownLayout layout_;
+  Index rigid_offset_ = 0;
+  // One summit population for both films (scene.asperities; MODEL.md section 4).
+  std::shared_ptr<const StatisticalContact> contact_;  // shared with models of the same surfaces
+  double contact_cutoff_ = 0.0;  // gap above which contact is negligible (p < 1e-20 p(0))
+  RoelandsViscosity roelands_{};
+  double viscosity_scale_ = 1.0;  // CurveParameter::viscosity_scale
+  std::optional<double> uniform_roughness_;  // CurveParameter::roughness, once set
+  std::tuple<Component, Component, Component, AsperityParameters> roughness_origin_;  // the scene's surfaces
+  double sigma_ref_ = 0, gamma_ref_ = 0, p_ref_ = 0, h_ref_ = 0, mu_ref_ = 0;
+  std::vector<double> flow_scale_;  // per interior pressure node: p_ref · reference conductance
+  std::vector<std::vector<double>> film_row_scale_;  // per film, per node: 1 / reference conductance
+  std::vector<std::vector<double>> component_row_scale_;
+  GaussRule smooth_rule_, contact_rule_;
+  GaussRule flat_contact_rule_;  // contact on cells where p varies little (film_loads.cpp)
+  SparsePattern pattern_;
+  std::vector<Index> slot_tape_;  // where each Jacobian entry of a pass lands (sparse_assembly.h)
+  std::vector<std::vector<LinearForm>> viscosity_forms_;  // per film, per node
+
+  // A film node's heat path to the face of one bounding component (heat_balance.cpp):
+  // the face temperature interpolated from the component's nodes (at most two), those
+  // nodes' row scales, and the node's position. Grids only: built once per model.
+  struct FaceLink {
+    int terms = 0;
+    std::array<Index, 2> column{};
+    std::array<double, 2> weight{}, row_scale{};
+  };
+  struct HeatNode {
+    double x = 0, y = 0;
+    std::array<FaceLink, 2> face;  // lower, upper
+  };
+  std::vector<std::vector<HeatNode>> heat_nodes_;  // per film, per node
+  void build_heat_nodes();
+
+  // Thermal deformation (film_shape.cpp). κ̂ = κ̄/curvature_ref_ is one unknown with
+  // its own row (the washer's mean through-thickness flux), so the curvature couples
+  // the films through one column, not a dense block. With the empirical friction law the
+  // sliding film's total contact force, which every δ now moves, is one unknown too
+  // (F̂c = F_c/contact_force_ref_), for the same reason.
+  Index dishing_offset_ = -1, contact_force_offset_ = -1;
+  double curvature_ref_ = 0, contact_force_ref_ = 0;
+  std::vector<std::vector<LinearForm>> shape_forms_;  // per film, per node
+  void build_shape_forms();
+  // The dishing row's weight of a heat flow (W) from a film node into the washer: the
+  // washer's mean through-thickness flux (film 1 in, film 2 out) in curvature units.
+  double dishing_row_weight(const Film& film) const;
+  // The unknowns' own terms of the dishing and contact-force rows.
+  void assemble_shape_rows(std::span<const double> u, Assembler& a) const;
+  // film_gap() at a point (x, y) of the load frame.
+  double gap_at(const Film& film, const RigidPosition& q, double x, double y) const;
+
+};
+
+}  // namespace twb

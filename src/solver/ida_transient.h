@@ -1,0 +1,113 @@
+// The pseudo-time transient of a SteadySystem, C·u' = −F(u; λ), integrated by SUNDIALS
+// IDA as the DAE residual
+//
+//     G(t, u, u') = C·u' + F(u; λ) = 0,       ∂G/∂u + c_j·∂G/∂u' = ∂F/∂u + c_j·C,
+//
+// with the system's exact sparse Jacobian factored by KLU. Unknowns with C_k = 0 are
+// algebraic (on the bearing: pressures, film-node temperatures, rigid body; MODEL §7):
+// IDA keeps them on the constraint manifold F_alg = 0 at every step.
+//
+// A change of λ (a load step) is a discontinuity of the right-hand side: restart with
+// start(), which re-initializes IDA and recomputes consistent initial conditions.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "system/steady_system.h"
+#include "solver/sundials_context.h"
+
+namespace twb {
+
+struct TransientSettings {
+  // IDA's local error test is ‖e‖_WRMS ≤ 1 with weights 1/(rtol·|u_k| + atol_k).
+  // 1e-6 relative: the runaway detector reads the trajectory's slow drift near a
+  // saddle-node's ghost, where an error δ in u acts like a shift of λ of relative size
+  // O(δ); 1e-6 keeps that three orders below a 2e-3 bracket width, and the state a
+  // step settles to is polished by Newton anyway. (The distress search ties it to its
+  // bracket width: distress_detector.)
+  double relative_tolerance = 1e-6;
+  // twb's unknowns are O(1) (scaled pressures, clearances in σ) to O(100) (temperature
+  // rises in K): 1e-8 lets the relative tolerance govern except where an unknown
+  // passes through zero.
+  double absolute_tolerance = 1e-8;
+  // Per unknown; replaces absolute_tolerance when not empty.
+  std::vector<double> absolute_tolerances;
+};
+
+// A failure of IDA is data, not an exception: a finite-time blow-up ends in
+// IDA_ERR_FAIL, IDA_CONV_FAIL or a step too small, and the caller reads it as such.
+struct TransientStatus {
+  bool ok = true;
+  bool reached_stop = false;  // the step ended exactly at the requested stop time
+  int flag = 0;
+  std::string flag_name;      // IDA's name of flag, e.g. "IDA_ERR_FAIL"
+  std::string message;        // IDA's own error text, and what a callback threw
+};
+
+struct TransientStatistics {
+  long steps = 0;
+  long residual_evaluations = 0;
+  long jacobian_evaluations = 0;
+  long linear_setups = 0;  // each a KLU factorization of ∂F/∂u + c_j·C
+  long nonlinear_iterations = 0;
+  long error_test_failures = 0;
+  long convergence_failures = 0;
+  double last_step = 0.0;
+};
+
+// Called at every internal step of IDA with the time and the state there (the bearing
+// writes its trajectory rows from it).
+using TransientObserver = std::function<void(double t, std::span<const double> u)>;
+
+class IdaTransient {
+ public:
+  IdaTransient(const SteadySystem& system, TransientSettings settings);
+  ~IdaTransient();
+  IdaTransient(const IdaTransient&) = delete;
+  IdaTransient& operator=(const IdaTransient&) = delete;
+
+  // (Re)starts at (t0, u0) under the system's current λ: IDAReInit, then
+  // IDACalcIC(IDA_YA_YDP_INIT) solves the algebraic unknowns and u' with the
+  // differential unknowns held at u0. Should CalcIC fail, one implicit Euler step by
+  // KINSOL supplies the algebraic unknowns and the transient starts there, a
+  // thousandth of the fastest relaxation time later (time() says when).
+  TransientStatus start(double t0, std::span<const double> u0);
+  // One internal step of IDA, never past t_stop (> time()).
+  TransientStatus step(double t_stop);
+  // Internal steps until t_out, calling the observer after each.
+  TransientStatus advance(double t_out, const TransientObserver& observer = {});
+
+  double time() const { return time_; }
+  std::span<const double> state() const;
+  std::span<const double> rate() const;  // u'
+  const std::vector<double>& capacities() const { return capacities_; }
+  // max over differential unknowns of |a_k − b_k| / (rtol·|b_k| + atol_k): a distance in
+  // units of the integration tolerance (1 = what IDA cannot resolve).
+  double differential_distance(std::span<const double> a, std::span<const double> b) const;
+  TransientStatistics statistics() const;
+
+  // Callback state, public for the C trampolines.
+  struct Callbacks;
+
+ private:
+  TransientStatus status_from(int flag, const char* call) const;
+  double fastest_time(std::span<const double> u) const;
+  TransientStatus consistent_start(double t0, std::span<const double> u0, double fastest);
+
+  const SteadySystem& system_;
+  TransientSettings settings_;
+  std::vector<double> capacities_, absolute_;
+  SundialsContext ctx_;
+  Vector y_, yp_, id_, atol_;
+  Matrix jac_;
+  LinearSolver klu_;
+  void* ida_ = nullptr;
+  std::unique_ptr<Callbacks> callbacks_;
+  double time_ = 0.0;
+};
+
+}  // namespace twb

@@ -1,0 +1,75 @@
+// A steady state of the bearing at the model's current load, from a given start or
+// from the paper's cold start, with globalization beyond KINSOL's line search
+// (Cantera's pattern: from a given start damped Newton first, pseudo-time steps when it
+// fails, then Newton again; from the cold start, where Newton never converges,
+// pseudo-time at once). When even that fails, the speed is ramped up from rest, then
+// the load from a fraction the cold start reaches, each step warm-started from the last
+// and halved on failure. Failure is reported, not hidden.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "model/bearing_model.h"
+#include "solver/kinsol_newton.h"
+
+namespace twb {
+
+struct SteadyReport {
+  bool converged = false;
+  std::string strategy;  // "newton", "pseudo-transient", "speed ramp", "load ramp"
+  int newton_solves = 0;
+  long iterations = 0, jacobian_evaluations = 0, residual_evaluations = 0;
+  double residual_norm = 0.0;
+  double wall_ms = 0.0;
+  std::string message;
+};
+
+class SteadySolver {
+ public:
+  SteadySolver(BearingModel& model, NewtonSettings settings);
+
+  // From u (a warm start), falling back to a speed ramp, then a load ramp, from the cold start.
+  SteadyReport solve(std::vector<double>& u);
+  // From the paper's cold start, by the scene's solver.method. On meshes finer than
+  // kSequenceAbove nodes per film, by a mesh sequence first (solve_by_mesh_sequence),
+  // the cold start itself when that fails.
+  SteadyReport solve_cold(std::vector<double>& u);
+  // Off: every cold start by pseudo-time on the mesh itself (the growth benchmark's
+  // comparison).
+  void set_mesh_sequence(bool on) { mesh_sequence_ = on; }
+  // Above the paper's 9×66 (594 nodes) and its 17×66 or 9×132 refinements.
+  static constexpr int kSequenceAbove = 1500;
+
+ private:
+  // The scene's solver.method: paper (solver/paper_scheme.h), from the cold start in u.
+  SteadyReport solve_by_paper(std::vector<double>& u);
+  // The state on the mesh with every other node line, interpolated here, then Newton
+  // (pseudo-time if Newton fails).
+  SteadyReport solve_by_mesh_sequence(std::vector<double>& u);
+  void account(SteadyReport& rep, const NewtonReport& n) const;
+  // KINSOL's Newton from u on the model's Newton form (SteadySystem::set_newton_form),
+  // its own form restored afterwards; counted into rep.
+  bool newton(std::vector<double>& u, const NewtonSettings& s, SteadyReport& rep);
+  SteadyReport ramp(std::vector<double>& u, SteadyReport rep);
+  bool speed_ramp(std::vector<double>& u, SteadyReport& rep);
+  // Newton (if newton_first), then pseudo-transient continuation from u; true when u
+  // is now a steady state.
+  bool reach(std::vector<double>& u, SteadyReport& rep, bool newton_first = true);
+  // reach(), then the ramps when it fails.
+  SteadyReport settle(std::vector<double>& u, bool newton_first);
+  // Walks a parameter (speed, load) from `from` up to `target`, each step warm-started
+  // from the last state; the step grows 1.5× after a success and halves after a failure,
+  // giving up below 1e-4 of the target. Returns the value reached; leaves the
+  // parameter at the target.
+  double walk(const std::function<void(double)>& set, double from, double target, double step,
+              std::vector<double>& state, const std::function<bool(std::vector<double>&)>& solve_step);
+
+  BearingModel& model_;
+  NewtonSettings settings_;
+  KinsolNewton newton_;
+  bool mesh_sequence_ = true;
+};
+
+}  // namespace twb

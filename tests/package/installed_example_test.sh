@@ -1,0 +1,48 @@
+#!/bin/sh
+# The installed package as a program of its own sees it (docs/api.md): `cmake --install`
+# into a fresh prefix, the installed `twb` runs from there, and examples/cpp, a separate
+# CMake project, finds the package with find_package(twb), compiles against the installed
+# public headers alone and links twb::twb. Its distress load must be the installed
+# command's to the last digit written: the same library, the same numbers.
+#
+#   installed_example_test.sh BUILD_DIR SOURCE_DIR
+set -eu
+build=$1
+source=$2
+work=$build/installed-example
+rm -rf "$work"
+mkdir -p "$work"
+
+cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
+# Only the public headers are installed: anything else would be an API by accident.
+installed=$(cd "$work/prefix/include" && find twb -name '*.h' | sort)
+public=$(cd "$source/include" && find twb -name '*.h' | sort)
+if [ "$installed" != "$public" ]; then
+  echo "installed headers differ from include/twb:"; echo "$installed"; exit 1
+fi
+"$work/prefix/bin/twb" --version
+
+cmake -S "$source/examples/cpp" -B "$work/example" -DCMAKE_PREFIX_PATH="$work/prefix" \
+  -DCMAKE_BUILD_TYPE=Release > "$work/configure.log"
+cmake --build "$work/example" > "$work/build.log"
+
+scene=$source/configs/jackson_green_2006.yaml
+"$work/example/washer_points" "$scene" 60 120 180 > "$work/example.txt"
+cat "$work/example.txt"
+"$work/prefix/bin/twb" run "$scene" --set study.error_estimate=none --out "$work/cli" --quiet > /dev/null
+
+# The example prints W_d with %.17g; distress.csv holds it to ten significant digits.
+example_wd=$(sed -n 's/^distress at .*: \([0-9.e+-]*\) N$/\1/p' "$work/example.txt")
+cli_wd=$(awk -F, 'NR == 1 { for (k = 1; k <= NF; ++k) if ($k == "W_d_N") c = k } NR == 2 { print $c }' \
+  "$work/cli/distress.csv")
+if [ -z "$example_wd" ] || [ -z "$cli_wd" ]; then
+  echo "no distress load: example '$example_wd', twb run '$cli_wd'"; exit 1
+fi
+example_10=$(printf '%.10g' "$example_wd")
+if [ "$example_10" != "$cli_wd" ]; then
+  echo "W_d differs: example $example_wd ($example_10), twb run $cli_wd"; exit 1
+fi
+# Three solved loads, each a row of numbers.
+rows=$(grep -cE '^ +[0-9.]+ +[0-9.e+-]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9]+$' "$work/example.txt")
+if [ "$rows" -ne 3 ]; then echo "expected 3 solved loads, found $rows"; exit 1; fi
+echo "installed package: example and twb run agree, W_d = $cli_wd N"
