@@ -3,7 +3,7 @@
 
 It is synthetic, not measured: a Gaussian random profile with a band-limited power-law
 spectrum (wavelengths 6 to 100 um, PSD ~ k^-3.5), scaled to the paper's combined Rq
-(sqrt(2) x 0.515 um), sampled every 0.5 um over 4 mm. Its McCool estimate (MODEL.md
+(sqrt(2) x 0.515 um), sampled every 0.5 um over 4 mm. Its McCool estimate (docs/physics.md
 section 13) lies near the model's default summits: R about 21 um, eta R sigma_s about
 0.055, bandwidth alpha about 8. The seed is fixed, so the file is reproducible:
     /usr/bin/python3 scripts/example_profile.py
@@ -34,7 +34,7 @@ def main():
     z = profile()
     out = pathlib.Path(__file__).resolve().parent.parent / "configs" / "profiles" / "ground_steel_combined.csv"
     lines = [
-        "# Example roughness profile of the combined surface of a film (twb, MODEL.md section 13).",
+        "# Example roughness profile of the combined surface of a film (twb, docs/physics.md section 13).",
         "# SYNTHETIC, not measured: written by scripts/example_profile.py (Gaussian, band 6-100 um,",
         f"# PSD ~ k^-{SLOPE}, Rq {RQ * 1e6:.3f} um, {SAMPLES} heights every {SPACING * 1e6} um, no filter).",
         "x [um], z [um]",

@@ -1,7 +1,7 @@
 #!/bin/sh
 # What the physics the paper names but its model left out does to the distress load,
 # for docs/validation.md ("Physics the paper names"): the paper's scene as shipped
-# (rigid), with thermal_deformation (MODEL.md section 11; laterally free faces, the
+# (rigid), with thermal_deformation (docs/physics.md section 11; laterally free faces, the
 # default, and laterally constrained ones), with summit statistics from the example
 # profile (section 13, configs/profiles/ground_steel_combined.csv), and with
 # mass-conserving cavitation (section 12) whose cavity is at -0.3 bar and at a vacuum, each
