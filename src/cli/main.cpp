@@ -41,12 +41,12 @@ std::string unknowns_table(const twb::UnknownLayout& layout) {
   return out;
 }
 
-// MODEL.md section 13: the moments depend on the sampling interval and the filter, so
+// docs/physics.md section 13: the moments depend on the sampling interval and the filter, so
 // they are shown with the estimate.
 std::string profile_table(const twb::AsperityParameters& a) {
   if (!a.profile) return "";
   const twb::ProfileEstimate& p = *a.profile;
-  std::string out = "summit statistics from measured profiles (McCool 1986, MODEL.md section 13):\n";
+  std::string out = "summit statistics from measured profiles (McCool 1986, docs/physics.md section 13):\n";
   for (std::size_t k = 0; k < p.files.size(); ++k)
     out += fmt::format("  {}: {} heights at {:.6g} m, {:.6g} m long, used as given (mean removed, no filter)\n",
                        p.files[k], p.samples[k], p.spacings[k], p.spacings[k] * double(p.samples[k] - 1));

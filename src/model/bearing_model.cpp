@@ -30,7 +30,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   const int nr = scene_.mesh.radial_nodes, nt = scene_.mesh.circumferential_nodes;
   const bool film1_slides = scene_.operating.sliding == SlidingFilm::carrier_washer;
 
-  // Film 1 covers the washer annulus; film 2 the overlap of washer and gear (MODEL.md 1).
+  // Film 1 covers the washer annulus; film 2 the overlap of washer and gear (docs/physics.md 1).
   const double r2_in = std::max(scene_.washer.inner_radius, scene_.gear.inner_radius);
   const double r2_out = std::min(scene_.washer.outer_radius, scene_.gear.outer_radius);
   if (!(r2_out > r2_in)) throw std::invalid_argument("washer and gear annuli do not overlap");
@@ -62,7 +62,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
     if (fx.hydrodynamics && f.sliding)
       f.pressure_offset = layout_.add(fmt_film_block(f.number, "pressure"), "hydrodynamics",
                                       Index(nr - 2) * nt);
-    // The mass-conserving model's second field (MODEL.md section 12).
+    // The mass-conserving model's second field (docs/physics.md section 12).
     if (f.pressure_offset >= 0 && fx.cavitation == CavitationModel::jfo)
       f.content_offset = layout_.add(fmt_film_block(f.number, "film content"), "hydrodynamics",
                                      Index(nr - 2) * nt);
@@ -81,7 +81,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
     };
     // The carrier is fixed in the load frame (unless the scene averages it, a modelling
     // alternative); the gear always rotates; the washer rotates with the gear when film 1
-    // slides (MODEL.md section 7).
+    // slides (docs/physics.md section 7).
     add_component(ComponentId::carrier, scene_.carrier, films_[0].mesh,
                   fx.carrier_temperature == CarrierTemperature::axisymmetric, true, "carrier");
     add_component(ComponentId::washer, scene_.washer, films_[0].mesh, film1_slides, false, "washer");
@@ -222,7 +222,7 @@ void BearingModel::build_contact() {
   const Material& m2 = scene_.carrier.material;
   const double e_eff = JacksonGreenAsperity::effective_modulus(m1.youngs_modulus, m1.poisson_ratio,
                                                                m2.youngs_modulus, m2.poisson_ratio);
-  // The softer material yields first (MODEL.md section 4).
+  // The softer material yields first (docs/physics.md section 4).
   const Material& soft = (m1.yield_strength <= m2.yield_strength) ? m1 : m2;
   contact_ = shared_contact_table({e_eff, soft.yield_strength, soft.poisson_ratio, scene_.asperities.summit_radius,
                                    scene_.asperities.summit_density, scene_.asperities.summit_sigma});
@@ -256,7 +256,7 @@ void BearingModel::set_curve_parameter(CurveParameter p, double value) {
       scene_.friction.coefficient = value;
       break;
     case CurveParameter::gear_tilt:
-      // Film 2's imposed tilt (MODEL.md section 1); the tilt scale stays.
+      // Film 2's imposed tilt (docs/physics.md section 1); the tilt scale stays.
       scene_.gear.tilt = value;
       films_[1].imposed_tilt = value;
       break;
@@ -370,7 +370,7 @@ double BearingModel::viscosity_temperature(std::span<const double> u, const Film
     if (form) form->add(k, 1.0);
     return temperature_of(u, k);
   }
-  // The paper's rule: the mean of the two bounding surfaces (MODEL.md section 7).
+  // The paper's rule: the mean of the two bounding surfaces (docs/physics.md section 7).
   LinearForm lo, up;
   const double r = film.mesh.radius(i);
   const double t = 0.5 * (face_temperature(u, film.lower, r, j, &lo) + face_temperature(u, film.upper, r, j, &up));

@@ -1,4 +1,4 @@
-// The coupled quasi-steady bearing model (MODEL.md sections 1-7 and 9): one residual
+// The coupled quasi-steady bearing model (docs/physics.md sections 1-7 and 9): one residual
 // F(u) = 0 over the unknowns of the effects a scene enables, with its exact sparse
 // Jacobian. Unknowns and residual rows are scaled so that tolerances read physically:
 //   rigid body   ĉ = c/σ_ref (clearances), γ̂ = γ/γ_ref;  rows: forces / F_ext, moments / (F_ext r_o)
@@ -33,7 +33,7 @@ struct FilmTotals;
 enum class ComponentId { carrier = 0, washer = 1, gear = 2 };
 
 // How a pressure node's row states the cavitation condition p̂ ≥ 0, ŵ ≥ 0, p̂·ŵ = 0
-// (MODEL.md section 3). Both rows vanish at the same states.
+// (docs/physics.md section 3). Both rows vanish at the same states.
 //  - fischer_burmeister: p̂ + ŵ − √(p̂² + ŵ²), whose slopes turn continuously except at
 //    (0, 0): what pseudo-time and the transient march, and what the fold and
 //    arclength systems differentiate. The model's own form.
@@ -45,7 +45,7 @@ enum class ComponentId { carrier = 0, washer = 1, gear = 2 };
 //    set_newton_form): the steady solver's Newton and natural continuation's corrector.
 enum class CavitationRow { fischer_burmeister, minimum };
 
-// A film between two components. Its gap is a plane in the unknowns (MODEL.md section 1):
+// A film between two components. Its gap is a plane in the unknowns (docs/physics.md section 1):
 //   h = c + s·(γx·y − γy·x) − tilt·x
 // film 1 (carrier–washer): c = c1 = z_w,              s = +1, tilt = 0
 // film 2 (washer–gear):    c = c2 = z_g − z_w − t_w,  s = −1, tilt = γ_tilt
@@ -60,12 +60,12 @@ struct Film {
   double sigma = 0.0;             // combined RMS roughness
   double shear_weight = 0.0;      // [(σ_moving/σ)² − (σ_fixed/σ)²], eq [3]
   Index pressure_offset = -1;     // interior nodes (radial 1..Nr-2), -1 without hydrodynamics
-  Index content_offset = -1;      // film content θ at the same nodes, cavitation: jfo only (MODEL.md 12)
+  Index content_offset = -1;      // film content θ at the same nodes, cavitation: jfo only (docs/physics.md 12)
   Index temperature_offset = -1;  // film-node temperatures, -1 without thermal
 };
 
 // A component's temperature field: T(r, θ) on a polar grid, or T(r) when it rotates
-// relative to the load frame (MODEL.md section 7).
+// relative to the load frame (docs/physics.md section 7).
 struct ComponentHeat {
   ComponentId id;
   FilmMesh grid;
@@ -97,7 +97,7 @@ class BearingModel final : public SegregatedSystem {
   // Residual and (if jacobian is non-empty) Jacobian values in pattern().
   void evaluate(std::span<const double> u, std::span<double> residual, std::span<double> jacobian) const override;
 
-  // SteadySystem: λ = load; C from MODEL.md section 7 (bearing_dynamics.cpp).
+  // SteadySystem: λ = load; C from docs/physics.md section 7 (bearing_dynamics.cpp).
   double parameter() const override { return load_; }
   void set_parameter(double value) override { set_load(value); }
   void parameter_derivative(std::span<const double> u, std::span<double> derivative) const override;
@@ -159,12 +159,12 @@ class BearingModel final : public SegregatedSystem {
 
   // Film-node gap h at node (i, j) of a film, physical.
   double film_gap(const Film& film, const RigidPosition& q, double r, double theta) const;
-  // ∂h/∂(ĉ, γ̂x, γ̂y) at (x, y): the plane of MODEL §1 in the scaled unknowns.
+  // ∂h/∂(ĉ, γ̂x, γ̂y) at (x, y): the plane of physics §1 in the scaled unknowns.
   std::array<double, 3> gap_gradient(const Film& film, double x, double y) const {
     return {sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
   }
 
-  // Thermal deformation (MODEL.md section 11; film_shape.cpp): the change δ of a film's
+  // Thermal deformation (docs/physics.md section 11; film_shape.cpp): the change δ of a film's
   // gap at a node from its plane, δ = form · u (m), from the carrier's and gear's face
   // expansion and the washer's dishing. Empty forms without the effect.
   bool deforms() const { return dishing_offset_ >= 0; }
@@ -216,7 +216,7 @@ class BearingModel final : public SegregatedSystem {
   double body_resistance(ComponentId id) const;
   const ComponentHeat* component(ComponentId id) const;
   const Film& sliding_film() const;
-  void build_contact();  // the summit population of the scene (MODEL.md section 4), if contact is on
+  void build_contact();  // the summit population of the scene (docs/physics.md section 4), if contact is on
 
   Scene scene_;
   double load_ = 0;
@@ -226,7 +226,7 @@ class BearingModel final : public SegregatedSystem {
   std::vector<ComponentHeat> components_;
   UnknownLayout layout_;
   Index rigid_offset_ = 0;
-  // One summit population for both films (scene.asperities; MODEL.md section 4).
+  // One summit population for both films (scene.asperities; docs/physics.md section 4).
   std::shared_ptr<const StatisticalContact> contact_;  // shared with models of the same surfaces
   double contact_cutoff_ = 0.0;  // gap above which contact is negligible (p < 1e-20 p(0))
   RoelandsViscosity roelands_{};

@@ -1,4 +1,4 @@
-// The reported quantities of a solved state (MODEL.md section 9).
+// The reported quantities of a solved state (docs/physics.md section 9).
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -73,7 +73,7 @@ BearingState BearingModel::describe(std::span<const double> u) const {
     s.energy_error = std::abs(s.heat_generated - s.heat_to_ambient) / std::max(s.heat_generated, 1e-300);
 
   // Stribeck number Z·N/P: viscosity at the mean film temperature, N in rev/s, P the
-  // load over the washer area (MODEL.md section 9).
+  // load over the washer area (docs/physics.md section 9).
   const double washer_area = std::numbers::pi * (ro * ro - ri * ri);
   s.stribeck = viscosity(mean_visc_t).value * (std::abs(s.speed) / (2 * std::numbers::pi)) / (load_ / washer_area);
 

@@ -1,7 +1,7 @@
 // Loads a film puts on its bounding bodies, integrated over each cell of its polar
 // grid: fluid and contact force with their moments (eqs [31]-[33]), friction and
 // viscous torque (eq [39]), and the heat generated (eqs [19], [20]) spread onto the
-// film nodes with the bilinear hats (MODEL.md sections 3, 4, 6).
+// film nodes with the bilinear hats (docs/physics.md sections 3, 4, 6).
 //
 // Contact, friction and shear vary steeply near the tight rim, within a fraction of a
 // cell, so cells near contact use a high-order Gauss rule on the exact plane h(x, y)
@@ -356,7 +356,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
             if (!film.sliding) continue;
             const double v_slide = std::abs(omega) * r;
             const ValueSlope mu = point_mu[q];
-            // Shear acts over the average gap, which stays positive where h closes (MODEL.md 3, 6).
+            // Shear acts over the average gap, which stays positive where h closes (docs/physics.md 3, 6).
             const ValueSlope gap = point_gap[q];
             const double tau = mu.value * v_slide / gap.value;
             tot.viscous_torque += w * tau * r;
@@ -423,7 +423,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
   }
 
   if (!film.sliding) return;
-  // Boundary friction f·p_cont (MODEL.md section 6). The empirical law [18] depends on
+  // Boundary friction f·p_cont (docs/physics.md section 6). The empirical law [18] depends on
   // the film's total contact force, so f couples every heat row to the rigid body.
   if (scene_.friction.law == FrictionLaw::constant) {
     tot.friction_coefficient = scene_.friction.coefficient;

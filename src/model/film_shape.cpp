@@ -1,4 +1,4 @@
-// Thermal deformation of the films (MODEL.md section 11): carrier and gear faces
+// Thermal deformation of the films (docs/physics.md section 11): carrier and gear faces
 // displaced by their through-thickness expansion, the washer dished by the heat
 // crossing it. Only the gaps change: every place that evaluates a film's gap adds the
 // node values δ of shape_form (interpolated bilinearly inside a cell, linearly along a

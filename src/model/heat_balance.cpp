@@ -1,4 +1,4 @@
-// Heat balance of carrier, washer and gear with zero-capacity film nodes (MODEL.md
+// Heat balance of carrier, washer and gear with zero-capacity film nodes (docs/physics.md
 // section 7). Every row says: heat in − heat out = 0 (W), scaled by a reference
 // conductance so that its value reads in kelvin.
 //
@@ -92,7 +92,7 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
             for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], -scale * dflow_dh * dh[d]);
             a.add_form(row, -scale * dflow_dh, shape);
           }
-          // The heat crossing the washer dishes it (MODEL.md section 11, film_shape.cpp).
+          // The heat crossing the washer dishes it (docs/physics.md section 11, film_shape.cpp).
           if (deforms() && sides[side] == ComponentId::washer) {
             const double cw = dishing_row_weight(film);
             a.add_residual(dishing_offset_, cw * flow);

@@ -1,4 +1,4 @@
-// The modified Reynolds equation [1] on the sliding film (MODEL.md section 3), finite
+// The modified Reynolds equation [1] on the sliding film (docs/physics.md section 3), finite
 // volumes on the polar grid (second order), with the Reynolds cavitation condition as
 // the complementarity p ≥ 0, w ≥ 0, p·w = 0 solved inside Newton through a
 // semismooth function of the scaled pair (p̂, ŵ): Fischer–Burmeister or the minimum
@@ -55,7 +55,7 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
   const ReynoldsOperator op(m);
   auto p_col = [&](int k) -> Index { return k >= 0 ? film.pressure_offset + k : -1; };
   auto p_val = [&](int k) { return k >= 0 ? p_ref_ * u[p_col(k)] : 0.0; };
-  // Mass-conserving cavitation (MODEL.md section 12): the Couette flux carries the film
+  // Mass-conserving cavitation (docs/physics.md section 12): the Couette flux carries the film
   // content θ of its upwind node (θ = 1 on the flooded edges), and the flow balances
   // are rows of their own, the content's; the pressure rows state p̂ ≥ 0, 1 − θ ≥ 0.
   const bool jfo = film.content_offset >= 0;
@@ -84,7 +84,7 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
   };
 
   // The gap the moving surface drags across a circumferential face: h̄T + σ φs with flow
-  // factors, h without (MODEL.md section 3); its slope in h.
+  // factors, h without (docs/physics.md section 3); its slope in h.
   auto carried_gap = [&](double h) {
     if (!factors) return ValueSlope{h, 1.0};
     const ValueSlope gap = average_gap(h, sigma);

@@ -1,11 +1,11 @@
-// The finite-volume flow balance of one film on its polar grid (MODEL.md section 3):
+// The finite-volume flow balance of one film on its polar grid (docs/physics.md section 3):
 // the discretization of the Reynolds equation, and nothing else.
 //
 // Every interior node (i, j), 1 ≤ i ≤ Nr−2, owns the control volume
 // [r_i − Δr/2, r_i + Δr/2] × [θ_j − Δθ/2, θ_j + Δθ/2]; its four faces are shared with its
 // neighbours, so the balance is conservative. The flux through a face, from node A to
 // node B, is second order: the exact flux
-//   q = −g ∇p + (ω r / 2) h̄ e_θ,   g = φ h³ / (12 μ)   (MODEL.md section 3, in flux form)
+//   q = −g ∇p + (ω r / 2) h̄ e_θ,   g = φ h³ / (12 μ)   (docs/physics.md section 3, in flux form)
 // integrated over the face by the midpoint rule, with ∇p by the central difference of
 // the two nodal pressures:
 //   Q = −g · geometry · (p_B − p_A) + (ω r / 2) · carried · couette_width
@@ -76,7 +76,7 @@ class ReynoldsOperator {
   template <class Visit>
   void for_each_face(Visit&& visit) const;
 
-  // Mass-conserving cavitation (MODEL.md section 12): the node whose film content θ the
+  // Mass-conserving cavitation (docs/physics.md section 12): the node whose film content θ the
   // Couette flow carries through a face, the one the sliding comes from (first-order
   // upwind: a full film, θ = 1, is discretized as above); −1 for a radial face, which
   // the Couette flow does not cross. The flux is then flux(…, θ_upwind · carried, …).

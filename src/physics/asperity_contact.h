@@ -1,5 +1,5 @@
 // Single elasto-plastic hemispherical asperity against a rigid flat, Jackson & Green
-// (2005), as used in the paper's eqs [8]-[12]; MODEL.md section 4 (with the corrected
+// (2005), as used in the paper's eqs [8]-[12]; docs/physics.md section 4 (with the corrected
 // eq [10]: e_y = S_y/E' and exponent B/2).
 #pragma once
 

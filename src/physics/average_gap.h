@@ -1,4 +1,4 @@
-// Average gap h_T of Patir & Cheng for Gaussian combined roughness, MODEL.md section 3,
+// Average gap h_T of Patir & Cheng for Gaussian combined roughness, docs/physics.md section 3,
 // paper eq [6]:  h_T = integral over delta > -h of (h + delta) G(delta) d delta,
 // G = N(0, sigma^2), in closed form
 //   h_T = (h/2) [1 + erf(h/(sigma sqrt2))] + sigma/sqrt(2 pi) exp(-h^2/(2 sigma^2)).

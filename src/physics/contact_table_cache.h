@@ -13,7 +13,7 @@
 namespace twb {
 
 // What a table depends on: the asperity law's material and summit radius, and the summit
-// population (MODEL.md section 4).
+// population (docs/physics.md section 4).
 struct ContactTableKey {
   double effective_modulus, yield_strength, poisson_ratio, summit_radius;  // Pa, Pa, -, m
   double summit_density, summit_sigma;                                     // 1/m², m

@@ -1,4 +1,4 @@
-// Patir & Cheng flow factors for isotropic Gaussian roughness, MODEL.md section 3,
+// Patir & Cheng flow factors for isotropic Gaussian roughness, docs/physics.md section 3,
 // paper eqs [2]-[5] (with the corrected exponent of [4]). Argument H = h/sigma with
 // sigma the combined roughness sqrt(sigma1^2 + sigma2^2).
 #pragma once

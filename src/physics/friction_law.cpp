@@ -6,7 +6,7 @@ namespace twb {
 
 FrictionLawResult empirical_friction(double total_contact_force_N) {
   // Eq [18] is a regression of dry test-rig data, valid only in its load range
-  // (MODEL.md section 6): outside it the force is clamped and the caller told so.
+  // (docs/physics.md section 6): outside it the force is clamped and the caller told so.
   double force = total_contact_force_N;
   bool clamped = false;
   if (force < empirical_friction_min_force) {

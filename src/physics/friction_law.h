@@ -1,4 +1,4 @@
-// Boundary (asperity) friction coefficient, MODEL.md section 6, paper eq [18].
+// Boundary (asperity) friction coefficient, docs/physics.md section 6, paper eq [18].
 #pragma once
 
 namespace twb {

@@ -1,4 +1,4 @@
-// Pressure-independent Roelands viscosity, MODEL.md section 5, paper eq [17]:
+// Pressure-independent Roelands viscosity, docs/physics.md section 5, paper eq [17]:
 //   mu(T) = mu_inf * 10^( G0 * (1 + T_C/135)^(-S0) ),  T_C = T - 273.15.
 #pragma once
 

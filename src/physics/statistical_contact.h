@@ -1,5 +1,5 @@
 // Statistical asperity contact pressure of Gaussian summits (Greenwood-Williamson
-// summation of Jackson-Green asperities), MODEL.md section 4, paper eqs [13]-[15]:
+// summation of Jackson-Green asperities), docs/physics.md section 4, paper eqs [13]-[15]:
 //
 //   p_cont(h) = eta * integral_0^inf P(w) phi(w + d) dw,   d = h - y_s,
 //   y_s = 0.045944/(eta R),  phi = N(0, sigma_s^2) density,
@@ -45,7 +45,7 @@ class StatisticalContact {
   StatisticalContact(const JacksonGreenAsperity& asperity, double summit_density,
                      double summit_sigma, StatisticalContactTableOptions options = {});
 
-  // MODEL.md section 4 default summit density from the product eta*R*sigma_s.
+  // docs/physics.md section 4 default summit density from the product eta*R*sigma_s.
   static double summit_density_from_product(double eta_r_sigma, double summit_radius,
                                             double summit_sigma);
 

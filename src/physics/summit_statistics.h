@@ -1,4 +1,4 @@
-// Summit statistics of a rough surface from a measured profile (MODEL.md section 13,
+// Summit statistics of a rough surface from a measured profile (docs/physics.md section 13,
 // McCool 1986): the spectral moments of the heights, and from them the summit density,
 // the summit radius and the summit-height standard deviation of an isotropic Gaussian
 // surface, the three inputs of the statistical contact model (section 4).

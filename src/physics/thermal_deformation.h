@@ -1,4 +1,4 @@
-// Thermal deformation of the three bodies (MODEL.md section 11): only the shapes of the
+// Thermal deformation of the three bodies (docs/physics.md section 11): only the shapes of the
 // films change; the bodies stay otherwise rigid.
 #pragma once
 

@@ -3,32 +3,42 @@
 #include <regex>
 #include <set>
 
+#include <fmt/format.h>
+
 #include "result_cells.h"
 #include "results/atomic_file.h"
 
 namespace twb {
 
-using cells::finite;
 using cells::kelvin_offset;
 
-std::string fields_csv(const std::vector<FilmFields>& films) {
-  std::string out = "film,sliding,r_m,theta_rad,h_m,p_Pa,p_contact_Pa,T_film_C,T_surfaces_C,viscosity_Pa_s\n";
+ResultTable fields_table(const std::vector<FilmFields>& films) {
+  ResultTable t;
+  const auto film = t.count("film"), sliding = t.count("sliding"), r = t.number("r_m"), theta = t.number("theta_rad"),
+             h = t.number("h_m"), p = t.number("p_Pa"), p_contact = t.number("p_contact_Pa"),
+             t_film = t.number("T_film_C"), t_surfaces = t.number("T_surfaces_C"),
+             viscosity = t.number("viscosity_Pa_s");
   for (const FilmFields& f : films) {
     const FilmMesh& m = f.mesh;
     for (int i = 0; i < m.radial_nodes(); ++i)
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const std::size_t k = std::size_t(m.node(i, j));
-        out += fmt::format("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", f.film,
-                           f.sliding ? 1 : 0, finite(m.radius(i), "r"), finite(m.angle(j), "theta"),
-                           finite(f.gap[k], "h"), finite(f.pressure[k], "p"),
-                           finite(f.contact_pressure[k], "p_contact"),
-                           finite(f.film_temperature[k] - kelvin_offset, "T_film"),
-                           finite(f.surface_temperature[k] - kelvin_offset, "T_surfaces"),
-                           finite(f.viscosity[k], "viscosity"));
+        t.put_count(film, f.film);
+        t.put_count(sliding, f.sliding ? 1 : 0);
+        t.put_number(r, m.radius(i));
+        t.put_number(theta, m.angle(j));
+        t.put_number(h, f.gap[k]);
+        t.put_number(p, f.pressure[k]);
+        t.put_number(p_contact, f.contact_pressure[k]);
+        t.put_number(t_film, f.film_temperature[k] - kelvin_offset);
+        t.put_number(t_surfaces, f.surface_temperature[k] - kelvin_offset);
+        t.put_number(viscosity, f.viscosity[k]);
       }
   }
-  return out;
+  return t;
 }
+
+std::string fields_csv(const std::vector<FilmFields>& films) { return fields_table(films).csv(); }
 
 std::string fields_file_name(std::size_t row) { return fmt::format("state_{:04d}.csv", row); }
 

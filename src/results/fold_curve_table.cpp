@@ -4,22 +4,34 @@
 
 namespace twb {
 
-std::string fold_curve_csv(const std::vector<FoldCurveRow>& rows, const std::string& parameter_column,
-                           const std::string& family_column) {
-  std::string out = cells::run_header(family_column, false) + parameter_column +
-                    ",W_fold_N,fold,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff\n";
-  const double offset = parameter_column == "ambient_C" ? cells::kelvin_offset : 0.0;
+using cells::kelvin_offset;
+
+ResultTable fold_curve_table(const std::vector<FoldCurveRow>& rows, const std::string& parameter_column,
+                             const std::string& family_column) {
+  ResultTable t;
+  const cells::RunColumns family(t, family_column, false);
+  const auto parameter = t.number(parameter_column), w_fold = t.number("W_fold_N"), fold = t.text("fold"),
+             t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"), hmin = t.number("hmin_over_sigma"),
+             contact = t.number("contact_share"), f_eff = t.number("f_eff");
+  const double offset = parameter_column == "ambient_C" ? kelvin_offset : 0.0;
   for (const FoldCurveRow& r : rows) {
     const BearingState& s = r.state;
-    out += cells::run_cells(family_column, false, r.member, {});
-    out += fmt::format("{},{},{},{},{},{},{},{}\n", cells::number(r.parameter - offset, "parameter"),
-                       cells::number(s.load, "W_fold"), r.fold,
-                       cells::number(s.washer_mean_temperature - cells::kelvin_offset, "T_mean"),
-                       cells::number(s.max_film_temperature - cells::kelvin_offset, "T_max"),
-                       cells::number(s.hmin_over_sigma, "hmin_over_sigma"),
-                       cells::number(s.contact_share, "contact_share"), cells::number(s.f_eff, "f_eff"));
+    family.put(t, r.member, {});
+    t.put_number(parameter, r.parameter - offset);
+    t.put_number(w_fold, s.load);
+    t.put_text(fold, r.fold);
+    t.put_number(t_mean, s.washer_mean_temperature - kelvin_offset);
+    t.put_number(t_max, s.max_film_temperature - kelvin_offset);
+    t.put_number(hmin, s.hmin_over_sigma);
+    t.put_number(contact, s.contact_share);
+    t.put_number(f_eff, s.f_eff);
   }
-  return out;
+  return t;
+}
+
+std::string fold_curve_csv(const std::vector<FoldCurveRow>& rows, const std::string& parameter_column,
+                           const std::string& family_column) {
+  return fold_curve_table(rows, parameter_column, family_column).csv();
 }
 
 }  // namespace twb

@@ -4,21 +4,31 @@
 
 namespace twb {
 
-std::string sliding_csv(const std::vector<SlidingRow>& rows) {
-  std::string out =
-      "speed_rad_s,load_N,sliding,film_area_m2,fluid_force_N,fluid_share,contact_share,torque_Nm,f_eff,"
-      "hmin_over_sigma,T_mean_C,chosen\n";
+ResultTable sliding_table(const std::vector<SlidingRow>& rows) {
+  ResultTable t;
+  const auto speed = t.number("speed_rad_s"), load = t.number("load_N"), sliding = t.text("sliding"),
+             area = t.number("film_area_m2"), fluid_force = t.number("fluid_force_N"),
+             fluid = t.number("fluid_share"), contact = t.number("contact_share"), torque = t.number("torque_Nm"),
+             f_eff = t.number("f_eff"), hmin = t.number("hmin_over_sigma"), t_mean = t.number("T_mean_C"),
+             chosen = t.count("chosen");
   for (const SlidingRow& r : rows) {
     const BearingState& s = r.solved.state;
-    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", cells::number(s.speed, "speed"),
-                       cells::number(s.load, "load"), r.solved.sliding, cells::number(r.film_area, "film_area"),
-                       cells::number(s.fluid_force, "fluid_force"), cells::number(s.fluid_share, "fluid_share"),
-                       cells::number(s.contact_share, "contact_share"), cells::number(s.torque, "torque"),
-                       cells::number(s.f_eff, "f_eff"), cells::number(s.hmin_over_sigma, "hmin_over_sigma"),
-                       cells::number(s.washer_mean_temperature - cells::kelvin_offset, "T_mean"),
-                       r.chosen ? 1 : 0);
+    t.put_number(speed, s.speed);
+    t.put_number(load, s.load);
+    t.put_text(sliding, r.solved.sliding);
+    t.put_number(area, r.film_area);
+    t.put_number(fluid_force, s.fluid_force);
+    t.put_number(fluid, s.fluid_share);
+    t.put_number(contact, s.contact_share);
+    t.put_number(torque, s.torque);
+    t.put_number(f_eff, s.f_eff);
+    t.put_number(hmin, s.hmin_over_sigma);
+    t.put_number(t_mean, s.washer_mean_temperature - cells::kelvin_offset);
+    t.put_count(chosen, r.chosen ? 1 : 0);
   }
-  return out;
+  return t;
 }
+
+std::string sliding_csv(const std::vector<SlidingRow>& rows) { return sliding_table(rows).csv(); }
 
 }  // namespace twb

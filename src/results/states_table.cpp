@@ -1,34 +1,55 @@
 #include "twb/results/states_table.h"
 
+#include <fmt/format.h>
+
 #include "result_cells.h"
 
 namespace twb {
 
-using cells::finite;
 using cells::kelvin_offset;
+
+ResultTable states_table(const std::vector<SolvedState>& rows, const std::string& parameter_column,
+                         bool sliding_column) {
+  ResultTable t;
+  using Style = ResultColumn::Style;
+  const auto load = t.number("load_N"), speed = t.number("speed_rad_s");
+  const cells::RunColumns run(t, parameter_column, sliding_column);
+  const auto t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"), hmin = t.number("hmin_over_sigma"),
+             gx = t.number("gamma_x_ratio"), gy = t.number("gamma_y_ratio"), fluid = t.number("fluid_share"),
+             contact = t.number("contact_share"), torque = t.number("torque_Nm"), f_eff = t.number("f_eff"),
+             stribeck = t.number("stribeck"), converged = t.count("converged"), iterations = t.count("iterations"),
+             residual = t.number("residual", Style::scientific),
+             energy = t.number("energy_error", Style::scientific), wall = t.number("wall_ms", Style::fixed),
+             branch = t.text("branch"), limits = t.text("limits");
+  for (const SolvedState& r : rows) {
+    const BearingState& s = r.state;
+    t.put_number(load, s.load);
+    t.put_number(speed, s.speed);
+    run.put(t, r.parameter, r.sliding);
+    t.put_number(t_mean, s.washer_mean_temperature - kelvin_offset);
+    t.put_number(t_max, s.max_film_temperature - kelvin_offset);
+    t.put_number(hmin, s.hmin_over_sigma);
+    t.put_number(gx, s.gamma_x_ratio);
+    t.put_number(gy, s.gamma_y_ratio);
+    t.put_number(fluid, s.fluid_share);
+    t.put_number(contact, s.contact_share);
+    t.put_number(torque, s.torque);
+    t.put_number(f_eff, s.f_eff);
+    t.put_number(stribeck, s.stribeck);
+    t.put_count(converged, r.converged ? 1 : 0);
+    t.put_count(iterations, r.iterations);
+    t.put_number(residual, r.residual);
+    t.put_number(energy, s.energy_error);
+    t.put_number(wall, r.wall_ms);
+    t.put_text(branch, r.branch);
+    t.put_text(limits, limit_names(s.limits));
+  }
+  return t;
+}
 
 std::string states_csv(const std::vector<SolvedState>& rows, const std::string& parameter_column,
                        bool sliding_column) {
-  std::string out =
-      "load_N,speed_rad_s," + cells::run_header(parameter_column, sliding_column) +
-      "T_mean_C,T_max_C,hmin_over_sigma,gamma_x_ratio,gamma_y_ratio,fluid_share,"
-      "contact_share,torque_Nm,f_eff,stribeck,converged,iterations,residual,energy_error,wall_ms,branch,limits\n";
-  for (const SolvedState& r : rows) {
-    const BearingState& s = r.state;
-    out += fmt::format("{:.10g},{:.10g},", finite(s.load, "load"), finite(s.speed, "speed")) +
-           cells::run_cells(parameter_column, sliding_column, r.parameter, r.sliding);
-    out += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},"
-                       "{:.10g},{:.10g},{},{},{:.3e},{:.3e},{:.3f},{},{}\n",
-                       finite(s.washer_mean_temperature - kelvin_offset, "T_mean"),
-                       finite(s.max_film_temperature - kelvin_offset, "T_max"),
-                       finite(s.hmin_over_sigma, "hmin_over_sigma"), finite(s.gamma_x_ratio, "gamma_x_ratio"),
-                       finite(s.gamma_y_ratio, "gamma_y_ratio"), finite(s.fluid_share, "fluid_share"),
-                       finite(s.contact_share, "contact_share"), finite(s.torque, "torque"),
-                       finite(s.f_eff, "f_eff"), finite(s.stribeck, "stribeck"), r.converged ? 1 : 0,
-                       r.iterations, finite(r.residual, "residual"), finite(s.energy_error, "energy_error"),
-                       finite(r.wall_ms, "wall_ms"), r.branch, limit_names(s.limits));
-  }
-  return out;
+  return states_table(rows, parameter_column, sliding_column).csv();
 }
 
 std::string states_summary(const std::vector<SolvedState>& rows) {

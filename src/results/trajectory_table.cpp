@@ -4,25 +4,33 @@
 
 namespace twb {
 
-std::string trajectory_csv(const std::vector<TrajectorySample>& samples, const std::string& parameter_column,
-                           bool sliding_column) {
-  std::string header = "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s," +
-                       cells::run_header(parameter_column, sliding_column);
-  header.back() = '\n';
-  std::string out = header;
+using cells::kelvin_offset;
+
+ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const std::string& parameter_column,
+                             bool sliding_column) {
+  ResultTable t;
+  const auto time = t.number("t_s"), t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"),
+             hmin = t.number("hmin_over_sigma"), contact = t.number("contact_share"), f_eff = t.number("f_eff"),
+             load = t.number("load_N"), speed = t.number("speed_rad_s");
+  const cells::RunColumns run(t, parameter_column, sliding_column);
   for (const TrajectorySample& p : samples) {
     const BearingState& s = p.state;
-    std::string row = fmt::format("{},{},{},{},{},{},{},{},", cells::number(p.time, "t"),
-                       cells::number(s.washer_mean_temperature - cells::kelvin_offset, "T_mean"),
-                       cells::number(s.max_film_temperature - cells::kelvin_offset, "T_max"),
-                       cells::number(s.hmin_over_sigma, "hmin_over_sigma"),
-                       cells::number(s.contact_share, "contact_share"), cells::number(s.f_eff, "f_eff"),
-                       cells::number(s.load, "load"), cells::number(s.speed, "speed")) +
-                      cells::run_cells(parameter_column, sliding_column, p.parameter, p.sliding);
-    row.back() = '\n';
-    out += row;
+    t.put_number(time, p.time);
+    t.put_number(t_mean, s.washer_mean_temperature - kelvin_offset);
+    t.put_number(t_max, s.max_film_temperature - kelvin_offset);
+    t.put_number(hmin, s.hmin_over_sigma);
+    t.put_number(contact, s.contact_share);
+    t.put_number(f_eff, s.f_eff);
+    t.put_number(load, s.load);
+    t.put_number(speed, s.speed);
+    run.put(t, p.parameter, p.sliding);
   }
-  return out;
+  return t;
+}
+
+std::string trajectory_csv(const std::vector<TrajectorySample>& samples, const std::string& parameter_column,
+                           bool sliding_column) {
+  return trajectory_table(samples, parameter_column, sliding_column).csv();
 }
 
 }  // namespace twb

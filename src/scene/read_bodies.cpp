@@ -1,5 +1,5 @@
 // The three solid bodies: their annuli and thicknesses (geometry), their steels
-// (materials) and their faces' roughness (surfaces). MODEL.md sections 1, 4 and 10.
+// (materials) and their faces' roughness (surfaces). docs/physics.md sections 1, 4 and 10.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -47,7 +47,7 @@ void read_geometry(const MapReader& scene, Scene& out) {
   out.washer.outer_radius = washer_annulus.outer_radius;
   out.washer.thickness = washer.quantity("thickness", si::length, bounds::thickness);
 
-  // The carrier's face is modelled as covering exactly the washer annulus (MODEL.md 7).
+  // The carrier's face is modelled as covering exactly the washer annulus (docs/physics.md 7).
   out.carrier.inner_radius = out.washer.inner_radius;
   out.carrier.outer_radius = out.washer.outer_radius;
   out.carrier.thickness = carrier.quantity("thickness", si::length, bounds::thickness);
@@ -107,7 +107,7 @@ std::string profile_path(const Node& node) {
   return (std::filesystem::path(node.origin()->name).parent_path() / named).string();
 }
 
-// MODEL.md section 13: one profile of the combined surface, or one per face of the film
+// docs/physics.md section 13: one profile of the combined surface, or one per face of the film
 // (the faces are independent, so their spectral moments add).
 AsperityParameters summits_from_profiles(const Node& profile, const Scene& scene, std::vector<std::string>& warnings) {
   std::vector<Node> files;
@@ -174,7 +174,7 @@ AsperityParameters summits_from_profiles(const Node& profile, const Scene& scene
 }
 
 // Summit statistics of the carrier-washer pair (film 1, the paper's sliding film). The
-// defaults follow MODEL.md section 4: sigma_s = the combined sigma, eta = eta_R_sigma/(R sigma_s).
+// defaults follow docs/physics.md section 4: sigma_s = the combined sigma, eta = eta_R_sigma/(R sigma_s).
 AsperityParameters read_asperities(const MapReader& surfaces, Scene& scene) {
   const MapReader summits = surfaces.map(
       "asperities", {"summit_radius", "summit_sigma", "summit_density", "eta_R_sigma", "profile"});

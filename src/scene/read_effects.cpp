@@ -1,4 +1,4 @@
-// The `effects` list: which physics the model assembles (MODEL.md sections 3, 4, 7).
+// The `effects` list: which physics the model assembles (docs/physics.md sections 3, 4, 7).
 #include <fmt/format.h>
 
 #include "key_suggestion.h"

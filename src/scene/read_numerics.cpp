@@ -199,7 +199,7 @@ void read_study(const MapReader& scene, Scene& out) {
       study.restrict_to({"type", "load_start", "load_end", "duration", "bracket_width"}, "with type: transient");
       if (!out.effects.thermal) {
         const Node type = study.get("type", "");
-        type.fail(fmt::format("{}: a transient study marches the heat balance in pseudo-time (MODEL.md "
+        type.fail(fmt::format("{}: a transient study marches the heat balance in pseudo-time (docs/physics.md "
                               "section 8), so it needs the thermal effect; add 'thermal' to effects",
                               type.path()));
       }

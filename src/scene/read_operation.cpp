@@ -1,5 +1,5 @@
 // How the bearing is run: its oil (lubricant), load, speed and surroundings
-// (operating), and its boundary friction law (friction). MODEL.md sections 2, 5, 6.
+// (operating), and its boundary friction law (friction). docs/physics.md sections 2, 5, 6.
 #include <fmt/format.h>
 
 #include "scene_names.h"

@@ -1,4 +1,4 @@
-// A measured roughness profile file (MODEL.md section 13; docs/scenes.md "Summit
+// A measured roughness profile file (docs/physics.md section 13; docs/scenes.md "Summit
 // statistics from a profile"): CSV, '#' comment lines, a header naming two columns
 // with their units in brackets, then position and height at uniform spacing:
 //   x [um], z [um]

@@ -1,5 +1,5 @@
 // Pseudo-arclength continuation (Keller) of the steady branch F(u; λ) = 0, through
-// turning points, with fold detection and location (MODEL.md section 8: distress is the
+// turning points, with fold detection and location (docs/physics.md section 8: distress is the
 // fold of the steady branch continued in load).
 //
 // Each step predicts x + Δs·t along the unit tangent (continuation_metric.h for the

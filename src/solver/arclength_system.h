@@ -1,5 +1,5 @@
 // Keller's pseudo-arclength corrector as a SteadySystem, so the same KINSOL Newton and
-// KLU that solve the base system correct a continuation step (MODEL.md section 8: the
+// KLU that solve the base system correct a continuation step (docs/physics.md section 8: the
 // distress fold is a turning point in λ, where continuation in λ itself must fail).
 //
 // Unknowns x = (u, μ), μ = λ/λ_scale (continuation_metric.h). Equations

@@ -1,4 +1,4 @@
-// How continuation measures a step along a branch of F(u; λ) = 0 (MODEL.md section 8:
+// How continuation measures a step along a branch of F(u; λ) = 0 (docs/physics.md section 8:
 // distress is a fold of the steady branch continued in load).
 //
 // The branch lives in (u, λ), where u and λ have unrelated units (the bearing: O(1)

@@ -1,4 +1,4 @@
-// Where exactly a branch turns (MODEL.md section 8: distress is that fold, the largest
+// Where exactly a branch turns (docs/physics.md section 8: distress is that fold, the largest
 // load of the low-temperature branch), given two consecutive continuation points on
 // either side of it (the λ component of the unit tangent changes sign between them).
 //

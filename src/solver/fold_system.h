@@ -1,6 +1,6 @@
 // The minimally augmented system of a fold (Govaerts, "Numerical methods for
 // bifurcations of dynamical equilibria", 2000), as a SteadySystem so that KINSOL's
-// Newton and KLU locate the fold like any steady state (MODEL.md section 8: distress is
+// Newton and KLU locate the fold like any steady state (docs/physics.md section 8: distress is
 // the fold of the steady branch in load).
 //
 // Unknowns x = (u, μ), μ = λ/λ_scale. Equations G = [F(u; λ); g(u; λ)], where the test

@@ -4,7 +4,7 @@
 //     G(t, u, u') = C·u' + F(u; λ) = 0,       ∂G/∂u + c_j·∂G/∂u' = ∂F/∂u + c_j·C,
 //
 // with the system's exact sparse Jacobian factored by KLU. Unknowns with C_k = 0 are
-// algebraic (on the bearing: pressures, film-node temperatures, rigid body; MODEL §7):
+// algebraic (on the bearing: pressures, film-node temperatures, rigid body; physics §7):
 // IDA keeps them on the constraint manifold F_alg = 0 at every step.
 //
 // A change of λ (a load step) is a discontinuity of the right-hand side: restart with

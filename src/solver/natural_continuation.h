@@ -1,5 +1,5 @@
 // Natural-parameter continuation: the steady branch followed in λ itself (the bearing's
-// load, MODEL.md section 8), each step predicted from the last states and corrected by
+// load, docs/physics.md section 8), each step predicted from the last states and corrected by
 // KINSOL's Newton at the new λ.
 //
 // The step adapts: it grows after an easy correction, halves after a failed one or

@@ -1,6 +1,6 @@
-// Distress as a runaway of the pseudo-time transient (MODEL §8), generic over
+// Distress as a runaway of the pseudo-time transient (physics §8), generic over
 // SteadySystem: a step of the parameter λ (the load) is applied to a steady state and
-// the transient C·u' = −F(u; λ) (MODEL §7's capacities) decides what happens.
+// the transient C·u' = −F(u; λ) (physics §7's capacities) decides what happens.
 //
 //  - Settled: the trajectory reaches a steady state, proved by Newton (KINSOL) from a
 //    point of the trajectory landing close to that point.
@@ -66,10 +66,10 @@ struct RunawaySettings {
   // scale anyway.
   int relaxation_iterations = 20;
   // bracket_critical stops when (high − low)/|high| is at most this. 0.2 %: the
-  // midpoint is then within 0.1 % of the fold, five times inside MODEL §8's 0.5 %
+  // midpoint is then within 0.1 % of the fold, five times inside physics §8's 0.5 %
   // robustness requirement, for about log2(range/0.002) trials.
   double relative_width = 0.002;
-  // Departure from the continued branch is a runaway too (MODEL §8): a step that
+  // Departure from the continued branch is a runaway too (physics §8): a step that
   // settles, but on a steady state the branch through the start does not reach (the
   // hot branch past a fold, landed on without an acceleration the factor would see),
   // has left it. When set, a settled verdict must pass this test: given the start (a

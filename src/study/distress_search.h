@@ -1,4 +1,4 @@
-// Where the bearing fails at one operating speed (MODEL.md section 8): the fold first,
+// Where the bearing fails at one operating speed (docs/physics.md section 8): the fold first,
 // the dynamics as its proof. The cool branch is continued in load from a light load;
 // every accepted state is judged by its linear stability (linear_stability.h, with the
 // corrector's own factors), and only where that is inconclusive by the pseudo-time

@@ -1,5 +1,5 @@
 // A load step on a running bearing, marched in the pseudo-time thermal transient
-// (MODEL.md sections 7-8) with its trajectory kept: the transient study, and past
+// (docs/physics.md sections 7-8) with its trajectory kept: the transient study, and past
 // distress the runaway step marched to where it goes (the hot, contact-dominated
 // branch). It never hangs: the march ends at a steady state, at the horizon, or where
 // IDA cannot go on, and says which.

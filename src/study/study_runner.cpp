@@ -363,7 +363,7 @@ void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressRepor
   }, journal);
 }
 
-// Which film slides (MODEL.md section 2): both configurations swept over the load grid
+// Which film slides (docs/physics.md section 2): both configurations swept over the load grid
 // at every speed, each continued past its own distress; at every grid load the one of
 // lower friction torque is chosen, the paper's assumption that the washer settles where
 // the friction loss is least.

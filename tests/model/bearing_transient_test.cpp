@@ -1,4 +1,4 @@
-// The bearing's pseudo-time thermal transient (MODEL.md sections 7-8) against its
+// The bearing's pseudo-time thermal transient (docs/physics.md sections 7-8) against its
 // steady states: with no load change it stays put; after a small stable load step it
 // converges to the state KINSOL finds at the new load (issue: to 1e-8 relative).
 #include <gtest/gtest.h>

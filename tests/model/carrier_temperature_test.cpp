@@ -1,4 +1,4 @@
-// The carrier's temperature field as a modelling choice (MODEL.md section 7): fixed in
+// The carrier's temperature field as a modelling choice (docs/physics.md section 7): fixed in
 // the load frame, T(r, θ), or circumferentially averaged, T(r). The averaged carrier
 // allocates one unknown per ring, its state keeps every balance of a converged state,
 // and it spreads film 1's hot spot over the ring, so its hottest node is cooler.

@@ -3,7 +3,7 @@
 //   a. the trapezoid rule over the written pressure reproduces the reported fluid force
 //      to rounding (see below why it is exact, not only to discretization order);
 //   b. the smallest nodal gap of the sliding film lies within the rim's sagitta of the
-//      plane's exact minimum h_min (MODEL.md section 9);
+//      plane's exact minimum h_min (docs/physics.md section 9);
 //   c. contact pressure is non-negative, non-increasing in the gap (one law for both
 //      films) and present at the tight rim of each film; on film 2, which carries the
 //      load by contact alone, the trapezoid rule over it converges to the load at

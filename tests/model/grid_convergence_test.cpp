@@ -1,6 +1,6 @@
 // Grid convergence of the coupled isothermal state (hydrodynamics + flow factors +
 // asperity contact) on the paper's mesh refined twice by 2: 9×66, 17×132, 33×264
-// (radial × circumferential, MODEL.md section 10).
+// (radial × circumferential, docs/physics.md section 10).
 //
 // The scheme is second order (docs/model.md: finite volumes with face-midpoint
 // conductances, bilinear pressure integrated with a 4×4 Gauss rule, contact on the

@@ -1,5 +1,5 @@
 // The mass-conserving discretization (ReynoldsOperator's face flux with the upwind film
-// content, MODEL.md section 12) against the 1-D slider with a pocket, whose
+// content, docs/physics.md section 12) against the 1-D slider with a pocket, whose
 // mass-conserving solution is known in closed form.
 //
 // The slider, sliding at U over a pad fed by a flooded groove at both ends (p = 0,

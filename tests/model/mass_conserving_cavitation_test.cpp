@@ -1,4 +1,4 @@
-// Mass-conserving (JFO / Elrod–Adams) cavitation, MODEL.md section 12: what a converged
+// Mass-conserving (JFO / Elrod–Adams) cavitation, docs/physics.md section 12: what a converged
 // state promises, and the answer it gives for the washer's full annulus.
 //
 // The annulus is periodic in θ and flooded only at its two radii, and the sliding is

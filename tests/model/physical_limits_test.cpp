@@ -1,5 +1,5 @@
 // Limits the coupled model must reproduce whatever its discretization, checked on
-// solved states (MODEL.md sections 1, 3 and 7):
+// solved states (docs/physics.md sections 1, 3 and 7):
 //   a. contact only, no speed: the washer settles mirror-symmetric, γy = γ_tilt/2, γx = 0;
 //   b. the unknowns are exactly those of the enabled effects;
 //   c. temperatures that do not feed back (constant viscosity) leave the mechanics
@@ -52,7 +52,7 @@ double residual_rounding_floor(const BearingModel& m, const std::vector<double>&
 // ---------------------------------------------------------------------------------
 // a. Contact only, zero speed.
 //
-// MODEL.md section 1: with no lift the washer takes the mirror-symmetric position
+// docs/physics.md section 1: with no lift the washer takes the mirror-symmetric position
 // γy = γ_tilt/2 (the continuum answer differs from 0.5 by < 2e-7 because film 1 also
 // touches a little inside the gear's inner radius), and γx = 0 by the symmetry y → −y.
 // Contact is integrated over each cell on the exact plane, so the answer must not
@@ -108,9 +108,9 @@ INSTANTIATE_TEST_SUITE_P(PaperAndOtherMeshes, ContactOnlyStatic, ::testing::Valu
                          });
 
 // ---------------------------------------------------------------------------------
-// b. Unknown counts per effect (MODEL.md sections 1, 3, 7; exact integers, no tolerance).
+// b. Unknown counts per effect (docs/physics.md sections 1, 3, 7; exact integers, no tolerance).
 //
-// From MODEL: 4 rigid-body unknowns always; the pressure only on the sliding film, at
+// From docs/physics.md: 4 rigid-body unknowns always; the pressure only on the sliding film, at
 // the nodes not on its two radial edges (p = 0 there); with thermal, a film-node
 // temperature at every node of both films, the carrier T(r, θ) (fixed in the load
 // frame), the gear T(r) (it always rotates), the washer T(r) when it rotates with the
@@ -269,7 +269,7 @@ TEST(UnknownCounts, TotalDropsByTheEffectsBlocksWhenItIsOff) {
 //
 // No scene key turns viscous heating off, and zero speed would remove the fluid film
 // too, so the comparison is made at speed: with a constant viscosity nothing mechanical
-// depends on temperature (MODEL.md sections 3-6: the film is a rigid plane, friction
+// depends on temperature (docs/physics.md sections 3-6: the film is a rigid plane, friction
 // depends on contact force only, μ is the only coupling), so scene B (thermal) must
 // reproduce scene A's mechanical state although B heats up. Both are solved to scaled
 // residuals ≤ 1e-10 in the same mechanical and Reynolds rows; the rigid-body rows are
@@ -337,7 +337,7 @@ INSTANTIATE_TEST_SUITE_P(FrictionLaws, ThermalDecoupled,
                                            ThermalCase{"empirical_friction", FrictionLaw::empirical, 0.0}),
                          [](const auto& info) { return std::string(info.param.name); });
 
-// At zero speed no heat is generated at all (MODEL.md section 6: q ∝ V), so with the
+// At zero speed no heat is generated at all (docs/physics.md section 6: q ∝ V), so with the
 // Roelands oil the thermal scene must stay at ambient and equal the isothermal one.
 // Temperatures are unknowns in kelvin with rows in kelvin: ≤ 1e-10 K from the solver,
 // 1e-8 K leaves two decades.
@@ -363,7 +363,7 @@ TEST(ThermalDecoupledAtRest, NoSpeedNoHeatAmbientEverywhere) {
 // ---------------------------------------------------------------------------------
 // d. Flow factors → classic Reynolds as σ → 0.
 //
-// MODEL.md section 3: φx = φy = 1 − 0.9·exp(−0.56 h/σ), φs ≡ 0 for identical
+// docs/physics.md section 3: φx = φy = 1 − 0.9·exp(−0.56 h/σ), φs ≡ 0 for identical
 // roughness, h̄T = h + O(σ·exp(−H²/2)); so at fixed film the difference between the
 // averaged and the classic Reynolds equation falls like exp(−0.56 h_min/σ). At
 // 1367 rad/s and 150 N the film is full (h_min/σ ≈ 12 at the paper's σ, no contact):

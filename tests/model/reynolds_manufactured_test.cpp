@@ -1,4 +1,4 @@
-// Order of accuracy of the Reynolds finite volumes (MODEL.md section 3) by the method of
+// Order of accuracy of the Reynolds finite volumes (docs/physics.md section 3) by the method of
 // manufactured solutions, on the paper's washer annulus (5.55 … 11.35 mm).
 //
 // Film: a tilted plane like the bearing's, h = c + a·x + b·y > 0 everywhere, constant μ,

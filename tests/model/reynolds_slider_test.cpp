@@ -1,4 +1,4 @@
-// The Reynolds finite volumes (MODEL.md section 3) against Reynolds' infinitely wide
+// The Reynolds finite volumes (docs/physics.md section 3) against Reynolds' infinitely wide
 // inclined slider: pad length L, outlet film h_o, inlet film K h_o, one surface sliding
 // at U, ambient pressure at both ends; load per unit width
 //   W' = 6 μ U L² / (h_o² (K − 1)²) · [ln K − 2 (K − 1)/(K + 1)].

@@ -1,4 +1,4 @@
-// Thermal deformation (MODEL.md section 11): the formulas, what the effect costs in
+// Thermal deformation (docs/physics.md section 11): the formulas, what the effect costs in
 // unknowns, a converged state's balances with it on, and that a steel that does not
 // expand gives the undeformed state. (Its Jacobian is checked with every other effect's
 // in jacobian_test.cpp; effect off is the suite's other tests, unchanged.)

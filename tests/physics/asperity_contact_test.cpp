@@ -1,4 +1,4 @@
-// Jackson-Green single asperity, MODEL.md section 4 / paper eqs [8]-[12].
+// Jackson-Green single asperity, docs/physics.md section 4 / paper eqs [8]-[12].
 #include "physics/asperity_contact.h"
 
 #include <cmath>

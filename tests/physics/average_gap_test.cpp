@@ -1,4 +1,4 @@
-// Average gap, MODEL.md section 3 / paper eq [6].
+// Average gap, docs/physics.md section 3 / paper eq [6].
 #include "physics/average_gap.h"
 
 #include <cmath>

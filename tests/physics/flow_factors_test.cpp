@@ -1,4 +1,4 @@
-// Patir & Cheng flow factors, MODEL.md section 3 / paper eqs [2]-[5].
+// Patir & Cheng flow factors, docs/physics.md section 3 / paper eqs [2]-[5].
 #include "physics/flow_factors.h"
 
 #include <cmath>

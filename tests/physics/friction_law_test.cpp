@@ -1,4 +1,4 @@
-// Empirical dry friction, MODEL.md section 6 / paper eq [18].
+// Empirical dry friction, docs/physics.md section 6 / paper eq [18].
 #include "physics/friction_law.h"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Roelands viscosity, MODEL.md section 5 / paper eq [17].
+// Roelands viscosity, docs/physics.md section 5 / paper eq [17].
 #include "physics/roelands_viscosity.h"
 
 #include <cmath>
@@ -12,7 +12,7 @@ const twb::RoelandsViscosity transmission_fluid{6.31e-5, 3.545, 1.053};
 double kelvin(double celsius) { return celsius + 273.15; }
 
 TEST(RoelandsViscosity, MatchesModelCheckValues) {
-  // MODEL.md section 5 quotes 4 significant digits: test to relative 1e-4.
+  // docs/physics.md section 5 quotes 4 significant digits: test to relative 1e-4.
   EXPECT_NEAR(transmission_fluid(kelvin(24.0)).value / 0.06081, 1.0, 1e-4);
   EXPECT_NEAR(transmission_fluid(kelvin(100.0)).value / 0.005992, 1.0, 1e-4);
 }

@@ -1,4 +1,4 @@
-// Statistical elasto-plastic contact pressure, MODEL.md section 4 / paper eqs [13]-[15].
+// Statistical elasto-plastic contact pressure, docs/physics.md section 4 / paper eqs [13]-[15].
 #include "physics/statistical_contact.h"
 
 #include <algorithm>
@@ -16,7 +16,7 @@
 
 namespace {
 
-// MODEL.md defaults: sigma_s = sigma = sqrt(2) * 0.515 um (two Table 1 surfaces),
+// docs/physics.md defaults: sigma_s = sigma = sqrt(2) * 0.515 um (two Table 1 surfaces),
 // R = 20 um, eta R sigma_s = 0.05, Table 1 steel.
 constexpr double summit_sigma = std::numbers::sqrt2 * 0.515e-6;
 constexpr double summit_radius = 20e-6;

@@ -1,4 +1,4 @@
-// McCool's summit statistics from a profile (MODEL.md section 13), on synthetic
+// McCool's summit statistics from a profile (docs/physics.md section 13), on synthetic
 // Gaussian profiles whose discrete spectral moments are known in closed form.
 #include "physics/summit_statistics.h"
 

@@ -1,4 +1,4 @@
-// surfaces.asperities.profile (MODEL.md section 13): the summit statistics a scene gets
+// surfaces.asperities.profile (docs/physics.md section 13): the summit statistics a scene gets
 // from measured profiles, and the located errors of a profile file.
 #include <cmath>
 #include <filesystem>

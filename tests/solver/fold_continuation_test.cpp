@@ -1,6 +1,6 @@
 // Pseudo-arclength continuation round the folds of the model problems, with the folds
 // located by the minimally augmented system or, as a fallback, by bracketing t_λ = 0
-// (MODEL.md section 8: distress is such a fold of the bearing's steady branch in load).
+// (docs/physics.md section 8: distress is such a fold of the bearing's steady branch in load).
 #include <gtest/gtest.h>
 
 #include <array>

@@ -1,5 +1,5 @@
 // Natural-parameter continuation: what a predictor saves the corrector, and a clear stop
-// (not a hang, not a jump) when the branch turns back at a fold (MODEL.md section 8).
+// (not a hang, not a jump) when the branch turns back at a fold (docs/physics.md section 8).
 #include <gtest/gtest.h>
 
 #include <cmath>

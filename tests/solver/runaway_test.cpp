@@ -209,7 +209,7 @@ double elapsed_s(std::chrono::steady_clock::time_point t0) {
 
 // With a correct verdict on every trial the fold stays inside the bracket, whatever
 // its width: containment is the exact test of the detector, the 0.5 % of the
-// estimate (MODEL §8's requirement) the coarse one.
+// estimate (physics §8's requirement) the coarse one.
 void expect_contains_fold(const Bracket& b, const Case& c) {
   ASSERT_TRUE(b.valid) << b.message;
   EXPECT_LE(b.low, c.fold);
@@ -245,7 +245,7 @@ TEST(Runaway, BracketLocatesBratuCritical) {
 
 TEST(Runaway, BracketLocatesIgnition) { expect_locates(ignition_case(), ignition_case().fold); }
 
-// Robustness (MODEL §8): halving or doubling any numeric setting of the detector must
+// Robustness (physics §8): halving or doubling any numeric setting of the detector must
 // not move the located fold by 0.5 %. At the default width (0.2 %) the bisection
 // usually makes the same decisions, so each variant is also run to a 1e-5 bracket,
 // which must still contain the fold: the verdicts stay right where the ghost's

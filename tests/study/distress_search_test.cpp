@@ -1,4 +1,4 @@
-// Distress on the bearing (MODEL.md section 8), on a coarse mesh so it runs in CI: the
+// Distress on the bearing (docs/physics.md section 8), on a coarse mesh so it runs in CI: the
 // fold located by continuation is proven by two transients, the load bracketed by them
 // agrees with the fold, steps just below it settle and just above it run away.
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
-// The paper's qualitative trends (Jackson & Green 2006, figs. 6–15; MODEL.md section 10)
+// The paper's qualitative trends (Jackson & Green 2006, figs. 6–15; docs/physics.md section 10)
 // on its Table 1 scene, coarsened to 5×24 nodes so that they run in CI. twb's distress
 // loads are five to eight times below the paper's (docs/model.md, open points), so no
 // load of the paper is asserted: what must hold is the shape of each trend, with
 // thresholds argued from the physics, never a number copied from a run.
 //
-// Distress is the fold of the cool steady branch (MODEL.md section 8); the transient
+// Distress is the fold of the cool steady branch (docs/physics.md section 8); the transient
 // search brackets the runaway there, within 0.2 % of the fold (distress_search_test).
 // ctest runs every test in a process of its own, so each test computes only what it
 // needs: steady branches by natural continuation and their folds by pseudo-arclength
@@ -169,7 +169,7 @@ const Branch& high_speed_branch(double speed, std::optional<double> friction_coe
 
 BearingState light_load_state(double speed) { return follow_branch(paper_scene(speed), {kLightLoad}).states.at(0); }
 
-// The transient distress search (MODEL.md section 8) from the light load.
+// The transient distress search (docs/physics.md section 8) from the light load.
 struct Search {
   std::unique_ptr<BearingModel> model;
   DistressSearch found;
@@ -273,7 +273,7 @@ TEST(PaperTrends, LowSpeedHeatsGraduallyWithoutDistress) {
   }
 }
 
-// MODEL.md section 10: distress "reported at 1117 N for 545 rad/s and 1728 N for
+// docs/physics.md section 10: distress "reported at 1117 N for 545 rad/s and 1728 N for
 // 953 rad/s" (none at 1367 rad/s within the paper's range). The cool branch of each
 // high speed folds, and the folds come in the order of the speeds. Each transient W_d
 // lies within 0.4 % of its fold (DistressAtSpeed: in the bracket, give or take its

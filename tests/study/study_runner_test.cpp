@@ -1,6 +1,6 @@
 // The study runner's multi-run studies on a coarse mesh (5 × 24 nodes, seconds each):
 // a load sweep over several speeds and a second parameter, and the choice of the
-// sliding film (MODEL.md section 2).
+// sliding film (docs/physics.md section 2).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -10,7 +10,7 @@
 // With a finite activation energy ε (Frank-Kamenetskii's exponent θ/(1 + εθ) in place
 // of θ) and ε < 1/4 the steady curve is S-shaped: past the ignition fold the state
 // jumps to a hot branch instead of blowing up, as the bearing's does past distress
-// (MODEL §8). The folds are where (1 + εθ)² = θ.
+// (physics §8). The folds are where (1 + εθ)² = θ.
 //
 // Bratu's problem in 1-D, u_t = u_xx + λ·e^u on (0, 1), u(0) = u(1) = 0, by second-order
 // central differences on n interior nodes. The continuum fold is at λ = 3.513830719;

@@ -1,4 +1,4 @@
-// What twb reports of one solved state of the bearing (MODEL.md section 9), in SI units.
+// What twb reports of one solved state of the bearing (docs/physics.md section 9), in SI units.
 #pragma once
 
 #include <vector>
@@ -12,7 +12,7 @@ struct RigidPosition {
   double c1 = 0, gamma_x = 0, gamma_y = 0, c2 = 0;
 };
 
-// Everything reported per solved state (MODEL.md section 9).
+// Everything reported per solved state (docs/physics.md section 9).
 struct BearingState {
   double load = 0, speed = 0;
   double washer_mean_temperature = 0;  // K, area-weighted

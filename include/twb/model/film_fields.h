@@ -1,4 +1,4 @@
-// The fields of a solved state on each film's polar grid (MODEL.md section 9, "fields
+// The fields of a solved state on each film's polar grid (docs/physics.md section 9, "fields
 // on request"): what a polar map of the film shows, node by node. Every film has them,
 // whether it is simulated for pressure and heat or not: its gap and asperity contact
 // exist as soon as the bodies are placed.
@@ -17,7 +17,7 @@ struct FilmFields {
   bool sliding = false;
   FilmMesh mesh;
   // Nominal film thickness h (m): the separation of the mean surface planes; ≤ 0 where
-  // the rigid planes overlap at a tight rim (MODEL.md section 3).
+  // the rigid planes overlap at a tight rim (docs/physics.md section 3).
   std::vector<double> gap;
   // Fluid pressure (Pa, gauge): the node's pressure unknown; 0 on the film's edges
   // (boundary condition) and on a film without pressure unknowns.

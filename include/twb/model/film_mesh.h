@@ -1,4 +1,4 @@
-// The polar grid of one film (MODEL.md section 10): Nr radial nodes including both
+// The polar grid of one film (docs/physics.md section 10): Nr radial nodes including both
 // edges, Nθ distinct circumferential nodes, periodic in θ. Cells lie between nodes;
 // node areas are the integrals of the bilinear hat functions, so that quantities
 // spread from cells to nodes with those hats sum exactly to the cell totals.

@@ -3,10 +3,10 @@
 // converged state says what a user should not trust it for (docs/model.md, "Limits").
 //  - oil_temperature: the washer's mean temperature, what the oil between the faces
 //    settles to, above the oil's maximum working temperature (lubricant.max_temperature);
-//  - flash_temperature: the hottest film node, the film (flash) temperature of MODEL.md
+//  - flash_temperature: the hottest film node, the film (flash) temperature of docs/physics.md
 //    section 7, above the oil's flash point (lubricant.flash_temperature);
 //  - contact_pressure: the nominal asperity contact pressure where a film is tightest
-//    above the softest face's hardness, 2.84·S_y (Tabor's, the largest H_G of MODEL.md
+//    above the softest face's hardness, 2.84·S_y (Tabor's, the largest H_G of docs/physics.md
 //    section 4, eq [10]): the real contact area would exceed the nominal one, which the
 //    statistical summit model cannot represent;
 //  - film_below_statistics: h_min/σ below 0.5, the smallest gap Patir and Cheng fitted

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include "twb/results/result_table.h"
 
 namespace twb {
 
@@ -27,6 +28,10 @@ struct DistressRow {
   std::optional<double> extrapolated_load;   // N
   std::optional<double> discretization_error;  // N
 };
+
+// The table distress.csv is written from (result_table.h).
+ResultTable distress_table(const std::vector<DistressRow>& rows, const std::string& parameter_column,
+                           bool sliding_column = false);
 
 // parameter_column: e.g. "friction_coefficient", "gear_tilt_rad"; empty for none.
 std::string distress_csv(const std::vector<DistressRow>& rows, const std::string& parameter_column,

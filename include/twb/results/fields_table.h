@@ -7,8 +7,12 @@
 #include <vector>
 
 #include "twb/results/states_table.h"
+#include "twb/results/result_table.h"
 
 namespace twb {
+
+// The table a fields file is written from (result_table.h).
+ResultTable fields_table(const std::vector<FilmFields>& films);
 
 // One row per node, film 1 then film 2, radius outer loop and angle inner loop:
 // film,sliding,r_m,theta_rad,h_m,p_Pa,p_contact_Pa,T_film_C,T_surfaces_C,viscosity_Pa_s

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "twb/model/bearing_state.h"
+#include "twb/results/result_table.h"
 
 namespace twb {
 
@@ -23,6 +24,10 @@ struct FoldCurveRow {
   // A family of curves (study.family): this curve's value of the family parameter (SI).
   std::optional<double> member;
 };
+
+// The table fold_curve.csv is written from (result_table.h).
+ResultTable fold_curve_table(const std::vector<FoldCurveRow>& rows, const std::string& parameter_column,
+                             const std::string& family_column = {});
 
 // parameter_column as above; ambient_C converts the SI (K) values it holds. family_column
 // (e.g. friction_coefficient), when not empty, comes first and holds each row's member.

@@ -1,4 +1,4 @@
-// sliding.csv: which film slides (MODEL.md section 2, the paper's "Component Rotational
+// sliding.csv: which film slides (docs/physics.md section 2, the paper's "Component Rotational
 // Speed"): both configurations at every load of the grid, the one of lower friction
 // torque marked chosen. One row per (speed, load, configuration):
 //   speed_rad_s, load_N, sliding, film_area_m2, fluid_force_N, fluid_share, contact_share,
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "twb/results/states_table.h"
+#include "twb/results/result_table.h"
 
 namespace twb {
 
@@ -17,6 +18,9 @@ struct SlidingRow {
   double film_area = 0.0;  // m², the sliding film's annulus
   bool chosen = false;     // the lowest friction torque at this speed and load
 };
+
+// The table sliding.csv is written from (result_table.h).
+ResultTable sliding_table(const std::vector<SlidingRow>& rows);
 
 std::string sliding_csv(const std::vector<SlidingRow>& rows);
 

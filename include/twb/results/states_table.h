@@ -7,6 +7,7 @@
 
 #include "twb/model/bearing_state.h"
 #include "twb/model/film_fields.h"
+#include "twb/results/result_table.h"
 
 namespace twb {
 
@@ -28,6 +29,10 @@ struct SolvedState {
   // (output.fields); empty otherwise. Written by fields_table.h.
   std::vector<FilmFields> fields;
 };
+
+// The table states.csv is written from (result_table.h).
+ResultTable states_table(const std::vector<SolvedState>& rows, const std::string& parameter_column = {},
+                         bool sliding_column = false);
 
 // parameter_column (e.g. "friction_coefficient"; empty for none) and sliding_column
 // add the columns that tell a study's runs apart, after speed_rad_s.

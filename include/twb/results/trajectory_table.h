@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "twb/model/bearing_state.h"
+#include "twb/results/result_table.h"
 
 namespace twb {
 
@@ -18,6 +19,10 @@ struct TrajectorySample {
   std::optional<double> parameter;  // as in SolvedState
   std::string sliding;
 };
+
+// The table trajectory.csv is written from (result_table.h).
+ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const std::string& parameter_column = {},
+                             bool sliding_column = false);
 
 std::string trajectory_csv(const std::vector<TrajectorySample>& samples, const std::string& parameter_column = {},
                            bool sliding_column = false);

@@ -9,20 +9,20 @@
 
 namespace twb {
 
-// Which film carries the relative speed (MODEL.md section 2). Film 1 lies between
+// Which film carries the relative speed (docs/physics.md section 2). Film 1 lies between
 // carrier and washer (washer stuck to the gear), film 2 between washer and gear
 // (washer stuck to the carrier).
 enum class SlidingFilm { carrier_washer, washer_gear };
 
-// reynolds: the Reynolds (Swift–Stieber) condition p ≥ 0, w ≥ 0, p·w = 0 (MODEL.md
+// reynolds: the Reynolds (Swift–Stieber) condition p ≥ 0, w ≥ 0, p·w = 0 (docs/physics.md
 // section 3, the paper's); jfo: mass-conserving, p ≥ 0, θ ≤ 1, p·(1 − θ) = 0 with the
 // film content θ carried by the Couette flow (section 12).
 enum class CavitationModel { reynolds, jfo };
 
-// Which temperature sets the oil viscosity at a film node (MODEL.md section 7).
+// Which temperature sets the oil viscosity at a film node (docs/physics.md section 7).
 enum class ViscosityTemperature { surface_mean, film_node };
 
-// How the carrier's temperature field sees the heat of film 1 (MODEL.md section 7): fixed
+// How the carrier's temperature field sees the heat of film 1 (docs/physics.md section 7): fixed
 // in the load frame, T(r, θ) (the model's default: the carrier does not rotate relative
 // to the load), or circumferentially averaged, T(r), as for a body rotating under the
 // load (a modelling alternative the validation study compares).
@@ -30,14 +30,14 @@ enum class CarrierTemperature { load_frame, axisymmetric };
 
 enum class ViscosityModel { roelands, constant };
 
-// How a thick plate's face expands under a hot spot (MODEL.md section 11): laterally
+// How a thick plate's face expands under a hot spot (docs/physics.md section 11): laterally
 // free columns (c_ν = 1) or held by the cool plate around it (c_ν = (1+ν)/(1−ν)).
 enum class FaceExpansion { free, constrained };
 
 enum class FrictionLaw { constant, empirical };
 
 // sliding_choice: both sliding configurations over a load grid, the one of lower
-// friction torque kept (MODEL.md section 2, the paper's "Component Rotational Speed").
+// friction torque kept (docs/physics.md section 2, the paper's "Component Rotational Speed").
 enum class StudyType { point, load_sweep, distress_map, transient, sliding_choice, distress_curve };
 
 // The optional second axis of a distress map or load sweep (besides speed).
@@ -60,7 +60,7 @@ struct Effects {
   bool hydrodynamics = false;
   CavitationModel cavitation = CavitationModel::reynolds;
   // jfo only: the gauge pressure of the cavity (Pa, ≤ 0). Below ambient, the cavity draws
-  // oil from the flooded edges; at ambient (0, MODEL.md section 12) nothing supplies a
+  // oil from the flooded edges; at ambient (0, docs/physics.md section 12) nothing supplies a
   // full washer annulus, and its film drains (docs/validation.md).
   double cavity_pressure = 0.0;
   bool flow_factors = false;
@@ -68,7 +68,7 @@ struct Effects {
   bool thermal = false;
   ViscosityTemperature viscosity_temperature = ViscosityTemperature::surface_mean;
   CarrierTemperature carrier_temperature = CarrierTemperature::load_frame;
-  // MODEL.md section 11 (needs thermal): the films' shapes follow the bodies' temperatures.
+  // docs/physics.md section 11 (needs thermal): the films' shapes follow the bodies' temperatures.
   bool thermal_deformation = false;
   FaceExpansion face_expansion = FaceExpansion::free;
 };
@@ -98,7 +98,7 @@ struct Component {
   Roughness roughness;
 };
 
-// Summit statistics estimated from measured profiles (MODEL.md section 13): what they
+// Summit statistics estimated from measured profiles (docs/physics.md section 13): what they
 // came from, for the record (the estimate itself is in AsperityParameters).
 struct ProfileEstimate {
   std::vector<std::string> files;    // one profile of the combined surface, or one per face
@@ -108,7 +108,7 @@ struct ProfileEstimate {
   double bandwidth = 0;              // α_b = m0·m4/m2²
 };
 
-// Statistical summit parameters of the combined surface (MODEL.md section 4).
+// Statistical summit parameters of the combined surface (docs/physics.md section 4).
 struct AsperityParameters {
   double summit_radius = 20e-6;        // m
   double summit_sigma = 0.0;           // m, summit-height standard deviation
@@ -214,7 +214,7 @@ struct Scene {
 
 // Every surface's roughness set to Rq = rq (Ra in the same ratio), the summits following
 // a texture scaled in height by k = new/old combined σ: McCool's spectral moments m0, m2,
-// m4 all scale with k², so σs ∝ k, R ∝ 1/k and η is unchanged (MODEL.md section 4).
+// m4 all scale with k², so σs ∝ k, R ∝ 1/k and η is unchanged (docs/physics.md section 4).
 void set_roughness(Scene& scene, double rq);
 
 }  // namespace twb
