@@ -372,6 +372,33 @@ class TwbPlotTest(unittest.TestCase):
         # configuration may change along the sweep.
         self.assertNotIn("distress load", self.svg_text(os.path.join(out_dir, "fig06_f_eff_vs_load.svg")))
 
+    def test_module_and_python_m_write_what_the_script_writes(self):
+        """The module's make_figures, called from Python, and `python3 -m twb.plot` write
+        the script's files, byte for byte."""
+        d = self.results_dir("api", distress=["speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method",
+                                              "545,1117,1110,1125,1119,runaway; fold at 1119 N"],
+                             trajectory=True)
+        script, module, api = (os.path.join(self.tmp, "figs_" + name) for name in ("script", "module", "api"))
+        result = plot(d, "--out", script, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        env = dict(os.environ, MPLBACKEND="Agg",
+                   PYTHONPATH=os.pathsep.join(p for p in (PYTHON_DIR, os.environ.get("PYTHONPATH")) if p))
+        result = subprocess.run([sys.executable, "-m", "twb.plot", d, "--out", module, "--format", "svg"],
+                                capture_output=True, text=True, env=env, timeout=300)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        os.makedirs(api)
+        written = tp.make_figures(tp.merge([tp.read_run(d)]), api, ["svg"])
+        names = sorted(os.listdir(script))
+        self.assertIn("transient_trajectory.svg", names)
+        self.assertEqual(sorted(os.listdir(module)), names)
+        self.assertEqual(sorted(os.path.basename(p) for p in written), names)
+        for name in names:
+            with open(os.path.join(script, name), "rb") as f:
+                expected = f.read()
+            for other in (module, api):
+                with open(os.path.join(other, name), "rb") as f:
+                    self.assertEqual(f.read(), expected, os.path.join(other, name))
+
     def test_malformed_input_exits_2_naming_the_file(self):
         cases = {
             "states_bad_number": ("states.csv", "line 3", lambda d: self.replace_line(
