@@ -1,4 +1,5 @@
-"""scripts/twb_plot.py on small synthetic results directories.
+"""twb.plot (python/twb/plot/) and its command line, scripts/twb_plot.py, on small
+synthetic results directories.
 
 Run with Debian's interpreter (the one with python3-matplotlib):
     MPLBACKEND=Agg /usr/bin/python3 -m unittest discover -s tests/scripts -p 'test_*.py'
@@ -13,9 +14,11 @@ import tempfile
 import unittest
 import xml.etree.ElementTree as ET
 
-SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "twb_plot.py")
-sys.path.insert(0, os.path.dirname(SCRIPT))
-import twb_plot  # noqa: E402  (the reader functions, beside the script's command line)
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+SCRIPT = os.path.join(ROOT, "scripts", "twb_plot.py")
+PYTHON_DIR = os.path.join(ROOT, "python")
+sys.path.insert(0, PYTHON_DIR)
+import twb.plot as tp  # noqa: E402  (the readers, beside the script's command line)
 
 STATES_HEADER = ("load_N,speed_rad_s,T_mean_C,T_max_C,hmin_over_sigma,gamma_x_ratio,gamma_y_ratio,"
                  "fluid_share,contact_share,torque_Nm,f_eff,stribeck,converged,iterations,residual,"
@@ -246,7 +249,7 @@ class TwbPlotTest(unittest.TestCase):
         self.assertEqual(result.returncode, 0, result.stderr)
         text = self.svg_text(os.path.join(out_dir, "distress_map.svg"))
         self.assertIn("mesh-converged W_d (Richardson)", text)
-        rows = twb_plot.read_distress(os.path.join(d, "distress.csv"))
+        rows = tp.read_distress(os.path.join(d, "distress.csv"))
         self.assertEqual([(r.extrapolated, r.error) for r in rows], [(201.98, 4.25), (None, None), (None, None)])
         self.assertEqual(rows[0].method, "runaway; fold at 188.381 N, proven")
 
@@ -279,14 +282,14 @@ class TwbPlotTest(unittest.TestCase):
                       f"cusp {381.18 * 60 / (2 * math.pi):.4g} rpm"):
             self.assertIn(label, text)
         self.assertIn("&gt; 2000 N", self.svg_text(os.path.join(out_dir, "distress_map.svg")))
-        column, rows = twb_plot.read_fold_curve(os.path.join(d, "fold_curve.csv"))
+        column, rows = tp.read_fold_curve(os.path.join(d, "fold_curve.csv"))
         self.assertEqual(column, "speed_rad_s")
         self.assertEqual([r["fold"] for r in rows].count("cusp"), 1)
         # A family of curves: the family's column first, a colour and a cusp per member.
         with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
             f.write("\n".join(["friction_coefficient," + curve[0]] + [f"{c}," + row for c in (0.1, 0.3)
                                                                        for row in curve[1:]]) + "\n")
-        column, rows = twb_plot.read_fold_curve(os.path.join(d, "fold_curve.csv"))
+        column, rows = tp.read_fold_curve(os.path.join(d, "fold_curve.csv"))
         self.assertEqual({r["member"] for r in rows}, {("friction_coefficient", 0.1), ("friction_coefficient", 0.3)})
         result = plot(d, "--out", out_dir)
         self.assertEqual(result.returncode, 0, result.stderr)
@@ -368,6 +371,33 @@ class TwbPlotTest(unittest.TestCase):
         # A sliding choice's W_d are not marked on the states' load axes: the chosen
         # configuration may change along the sweep.
         self.assertNotIn("distress load", self.svg_text(os.path.join(out_dir, "fig06_f_eff_vs_load.svg")))
+
+    def test_module_and_python_m_write_what_the_script_writes(self):
+        """The module's make_figures, called from Python, and `python3 -m twb.plot` write
+        the script's files, byte for byte."""
+        d = self.results_dir("api", distress=["speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method",
+                                              "545,1117,1110,1125,1119,runaway; fold at 1119 N"],
+                             trajectory=True)
+        script, module, api = (os.path.join(self.tmp, "figs_" + name) for name in ("script", "module", "api"))
+        result = plot(d, "--out", script, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        env = dict(os.environ, MPLBACKEND="Agg",
+                   PYTHONPATH=os.pathsep.join(p for p in (PYTHON_DIR, os.environ.get("PYTHONPATH")) if p))
+        result = subprocess.run([sys.executable, "-m", "twb.plot", d, "--out", module, "--format", "svg"],
+                                capture_output=True, text=True, env=env, timeout=300)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        os.makedirs(api)
+        written = tp.make_figures(tp.merge([tp.read_run(d)]), api, ["svg"])
+        names = sorted(os.listdir(script))
+        self.assertIn("transient_trajectory.svg", names)
+        self.assertEqual(sorted(os.listdir(module)), names)
+        self.assertEqual(sorted(os.path.basename(p) for p in written), names)
+        for name in names:
+            with open(os.path.join(script, name), "rb") as f:
+                expected = f.read()
+            for other in (module, api):
+                with open(os.path.join(other, name), "rb") as f:
+                    self.assertEqual(f.read(), expected, os.path.join(other, name))
 
     def test_malformed_input_exits_2_naming_the_file(self):
         cases = {

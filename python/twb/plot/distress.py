@@ -1,0 +1,180 @@
+"""Where the bearing fails: the distress map (W_d against speed) and the fold curve of a
+distress_curve study (the safe operating region). They answer the solver's own question,
+which the paper's figures leave to the reader.
+"""
+
+import math
+import re
+
+import numpy as np
+from matplotlib.lines import Line2D
+
+from .style import Style, new_figure, parameter_label
+from .tables import FOLD_CURVE_PARAMETERS, SLIDING_LABELS
+
+
+def series_label(key):
+    parameter, sliding = key
+    parts = ([] if parameter is None else [parameter_label(parameter)]) + \
+        ([] if sliding is None else [SLIDING_LABELS[sliding]])
+    return ", ".join(parts) if parts else r"$W_d$"
+
+
+def speed_axis(data):
+    """Scale from rad/s and the axis label: rpm when asked for."""
+    if data.rpm:
+        return 60.0 / (2.0 * math.pi), r"speed (rpm)"
+    return 1.0, r"speed $\omega$ (rad/s)"
+
+
+def searched_up_to(method):
+    """The highest load a search without W_d reached, from its method ("no fold up to 2000 N ...")."""
+    m = re.search(r"up to ([0-9.eE+-]+) N", method or "")
+    return float(m.group(1)) if m else None
+
+
+def figure_fold_curve(data, name, column, rows):
+    """The fold curve of a distress_curve study as the safe operating region: W_d against
+    the parameter (solid), the hot branch's recovery fold (dashed), the cusp where the two
+    meet and sudden distress ends; below W_d no sudden distress, between the two folds a
+    bearing that once passed W_d stays hot. A family of curves (one per value of a second
+    parameter) gets a colour per curve."""
+    fig, ax = new_figure("Safe operating region: distress load along the curve")
+    scale, xlabel = (speed_axis(data) if column == "speed_rad_s" else (1.0, FOLD_CURVE_PARAMETERS[column]))
+    # The whole range the study searched: its end searches are distress.csv's rows.
+    ends = [scale * d.speed for d in data.distress] if column == "speed_rad_s" else []
+    unit = re.search(r"\(([^)]*)\)$", xlabel)
+    unit = " " + unit.group(1) if unit else ""
+    members = sorted({r["member"] for r in rows if r["member"] is not None}, key=lambda m: m[1]) or [None]
+    single = len(members) == 1
+    style = Style(range(len(members)))
+    for i, member in enumerate(members):
+        mine = [r for r in rows if r["member"] == member]
+        color = "tab:red" if single else style.colors[i]
+        tag = "" if member is None else f" ({parameter_label(member)})"
+        branches = {}
+        for r in mine:
+            if r["fold"] in ("distress", "recovery"):
+                branches.setdefault(r["fold"], []).append((scale * r["p"], r["load"]))
+            elif r["fold"] == "cusp":  # where both branches end: drawn into each
+                for kind in ("distress", "recovery"):
+                    branches.setdefault(kind, []).append((scale * r["p"], r["load"]))
+        distress = np.array(sorted(branches.get("distress", [])), dtype=float).reshape(-1, 2)
+        recovery = np.array(sorted(branches.get("recovery", [])), dtype=float).reshape(-1, 2)
+        if len(distress):
+            ax.plot(distress[:, 0], distress[:, 1], color=color, linewidth=1.8,
+                    label=r"distress load $W_d$ (fold)" + tag)
+            ax.fill_between(distress[:, 0], 0, distress[:, 1], color="tab:green" if single else color,
+                            alpha=0.15 if single else 0.06, linewidth=0,
+                            label="below $W_d$: no sudden distress" if single else None)
+        if len(recovery):
+            ax.plot(recovery[:, 0], recovery[:, 1], color="tab:blue" if single else color, linestyle="--",
+                    linewidth=1.4, label="recovery: the hot branch's lowest load" if single else None)
+        if single and len(distress) and len(recovery):
+            lo, hi = max(distress[0, 0], recovery[0, 0]), min(distress[-1, 0], recovery[-1, 0])
+            if hi > lo:
+                x = np.linspace(lo, hi, 200)
+                ax.fill_between(x, np.interp(x, recovery[:, 0], recovery[:, 1]),
+                                np.interp(x, distress[:, 0], distress[:, 1]), facecolor="none",
+                                edgecolor="tab:orange", hatch="//", linewidth=0,
+                                label="between the folds: stays hot once past $W_d$")
+        for r in mine:
+            if r["fold"] not in ("cusp", "turn"):
+                continue
+            x = scale * r["p"]
+            ax.plot([x], [r["load"]], marker="*", markersize=14, color="black" if single else color,
+                    linestyle="none",
+                    label=("cusp: sudden distress ends" if r["fold"] == "cusp" else "the curve turns back")
+                    if single or i == 0 else None)
+            if r["fold"] == "cusp":
+                ax.annotate(f"cusp {x:.4g}{unit}, {r['load']:.4g} N", (x, r["load"]), textcoords="offset points",
+                            xytext=(8, -14), fontsize="small", color="black" if single else color)
+            if r["fold"] == "cusp" and single and len(distress):
+                # The side of the cusp the curve does not reach has no fold: gradual heating.
+                left = distress[:, 0].mean() > x
+                xmin, xmax = ax.get_xlim()
+                if ends:
+                    xmin, xmax = min(xmin, min(ends)), max(xmax, max(ends))
+                ax.axvspan(xmin if left else x, x if left else xmax, color="0.85", alpha=0.5, linewidth=0,
+                           label="no fold: gradual heating")
+                ax.set_xlim(xmin, xmax)
+    if not single:
+        ax.plot([], [], color="0.3", linestyle="--", label="recovery folds (dashed)")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("load (N)")
+    ax.set_ylim(bottom=0)
+    ax.legend(fontsize="small", framealpha=0.85, loc="lower right")
+    return fig
+
+
+def figure_distress_map(data):
+    series = {}
+    for d in data.distress:
+        series.setdefault((d.parameter, d.sliding), []).append(d)
+    plottable = [k for k, rows in series.items()
+                 if any(r.w_d is not None or r.fold is not None for r in rows)]
+    if not plottable:
+        return None
+    plottable.sort(key=lambda k: (k[0] is not None, "" if k[0] is None else k[0][0],
+                                  -math.inf if k[0] is None or k[0][1] is None else k[0][1],
+                                  k[1] or ""))
+    style = Style(range(len(plottable)))
+    fig, ax = new_figure(r"Distress load $W_d$ vs speed: below it, no sudden distress")
+    scale, xlabel = speed_axis(data)
+    any_fold = any_estimate = any_beyond = False
+    for i, key in enumerate(plottable):
+        rows = sorted(series[key], key=lambda r: r.speed)
+        color, marker = style.colors[i], style.markers[i]
+        label = series_label(key)
+        found = [r for r in rows if r.w_d is not None]
+        # A speed without W_d up to the highest load searched is drawn there, as "> load_end".
+        beyond = [(r.speed, load) for r in rows
+                  if r.w_d is None and (load := searched_up_to(r.method)) is not None]
+        if beyond:
+            any_beyond = True
+            ax.plot([scale * b[0] for b in beyond], [b[1] for b in beyond], linestyle="none", marker="^",
+                    markersize=9, markerfacecolor="none", markeredgecolor=color)
+            for speed, load in beyond:
+                ax.annotate(f"> {load:g} N", (scale * speed, load), textcoords="offset points", xytext=(7, -4),
+                            fontsize="small", color=color)
+        if found:
+            x = [scale * r.speed for r in found]
+            y = [r.w_d for r in found]
+            if len(found) > 1:
+                ax.fill_between(x, 0, y, color=color, alpha=0.08, linewidth=0)
+            # A missing bracket side draws no bar; a W_d outside its bracket would be a
+            # twb bug, drawn as a zero-length bar rather than hidden.
+            below = [max(r.w_d - r.low, 0.0) if r.low is not None else 0.0 for r in found]
+            above = [max(r.high - r.w_d, 0.0) if r.high is not None else 0.0 for r in found]
+            ax.errorbar(x, y, yerr=[below, above], color=color, marker=marker, markersize=5,
+                        linewidth=1.2, capsize=4, label=label)
+        converged = [r for r in rows if r.extrapolated is not None and r.error is not None]
+        if converged:
+            any_estimate = True
+            ax.errorbar([scale * r.speed for r in converged], [r.extrapolated for r in converged],
+                        yerr=[r.error for r in converged], color=color, marker="s", markersize=5,
+                        markerfacecolor="none", linestyle="--", linewidth=1.0, capsize=4)
+        folds = [r for r in rows if r.fold is not None]
+        if folds:
+            any_fold = True
+            ax.plot([scale * r.speed for r in folds], [r.fold for r in folds], linestyle="none",
+                    marker="D", markersize=8, markerfacecolor="none", markeredgecolor=color,
+                    markeredgewidth=1.2)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("load (N)")
+    ax.set_ylim(bottom=0)
+    handles, labels = ax.get_legend_handles_labels()
+    handles.append(Line2D([], [], color="black", marker="|", linestyle="none", markersize=10))
+    labels.append("bracket: settled / ran away")
+    if any_beyond:
+        handles.append(Line2D([], [], color="black", linestyle="none", marker="^", markerfacecolor="none"))
+        labels.append("no W_d up to the highest load searched (> load_end)")
+    if any_fold:
+        handles.append(Line2D([], [], color="black", linestyle="none", marker="D",
+                              markerfacecolor="none"))
+        labels.append("fold of the steady branch")
+    if any_estimate:
+        handles.append(Line2D([], [], color="black", linestyle="--", marker="s", markerfacecolor="none"))
+        labels.append("mesh-converged W_d (Richardson) ± error")
+    ax.legend(handles, labels, fontsize="small", framealpha=0.85)
+    return fig

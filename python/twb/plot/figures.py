@@ -1,0 +1,53 @@
+"""Which figures a set of results gets: each family is drawn when its results are there,
+and what cannot be drawn is said on stderr, so a missing figure is never a silent one.
+"""
+
+import sys
+
+from .distress import figure_distress_map, figure_fold_curve
+from .sliding import figure_sliding
+from .states import (LOAD_FIGURES, figure_contact_vs_hmin, figure_stribeck, figure_stribeck_by_friction,
+                     figure_vs_load)
+from .style import parameter_label, save, speed_key, speed_label
+from .tables import SLIDING_LABELS
+from .transient import figure_trajectory
+
+
+def make_figures(data, out_dir, formats):
+    """Every figure the merged results allow, as files FIGDIR/<stem>.<format>; returns
+    their paths in the order written (the field maps are make_field_maps's)."""
+    written = []
+    if data.states["load_N"].size:
+        for stem, column, ylabel, title, number, logy in LOAD_FIGURES:
+            save(figure_vs_load(data, column, ylabel, title, number, logy), out_dir, stem,
+                 formats, written)
+        save(figure_contact_vs_hmin(data), out_dir, "fig13_contact_share_vs_hmin", formats, written)
+        save(figure_stribeck(data), out_dir, "fig14_stribeck", formats, written)
+        if len({f for f in data.friction if f is not None}) > 1:
+            save(figure_stribeck_by_friction(data), out_dir, "fig15_stribeck_by_friction",
+                 formats, written)
+    else:
+        print("twb_plot: note: no solved states, so no figures of states", file=sys.stderr)
+    if data.distress:
+        fig = figure_distress_map(data)
+        if fig is None:
+            print("twb_plot: note: distress.csv has neither a distress load nor a fold; "
+                  "no distress map", file=sys.stderr)
+        else:
+            save(fig, out_dir, "distress_map", formats, written)
+        for d in data.distress:
+            if d.w_d is None:
+                where = speed_label(speed_key(d.speed))
+                if d.parameter is not None:
+                    where += ", " + parameter_label(d.parameter)
+                if d.sliding is not None:
+                    where += ", " + SLIDING_LABELS[d.sliding]
+                print(f"twb_plot: note: no distress load at {where}: {d.method}", file=sys.stderr)
+    for k, (name, column, rows) in enumerate(data.fold_curves):
+        stem = "fold_curve" if len(data.fold_curves) == 1 else f"fold_curve_{k + 1}_{name}"
+        save(figure_fold_curve(data, name, column, rows), out_dir, stem, formats, written)
+    if data.trajectories:
+        save(figure_trajectory(data), out_dir, "transient_trajectory", formats, written)
+    if data.sliding:
+        save(figure_sliding(data), out_dir, "sliding_comparison", formats, written)
+    return written

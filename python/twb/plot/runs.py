@@ -1,0 +1,138 @@
+"""A results directory read whole, and several merged into one set of curves.
+
+The figures compare runs made apart (one directory per speed, per friction law or per
+load), so every figure draws from the merged Data, never from one directory's files.
+"""
+
+import json
+import os
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .style import Style, parameter_label, speed_key, speed_label
+from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_distress, read_fold_curve,
+                     read_sliding, read_states, read_trajectory)
+
+
+def friction_setting(path):
+    """The boundary friction law of run.json's resolved scene, as a legend label.
+
+    run.json is only used for labels, so an unreadable one is ignored, not an error."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            friction = json.load(f)["scene"]["friction"]
+        law = friction["law"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    if law == "constant":
+        return f"dry friction coefficient {friction.get('coefficient', '?')}"
+    if law == "empirical":
+        return "empirical friction law (eq. 18)"
+    return str(law)
+
+
+@dataclass
+class Run:
+    directory: str
+    name: str
+    states: dict
+    tags: list = field(default_factory=list)  # per state: (parameter, sliding)
+    distress: list = field(default_factory=list)
+    trajectory: object = None
+    trajectory_tags: list = field(default_factory=list)
+    sliding: list = field(default_factory=list)
+    friction: object = None
+    has_fields: bool = False
+    fold_curve: object = None  # (parameter column, rows) of fold_curve.csv
+
+
+def read_run(directory):
+    if not os.path.isdir(directory):
+        raise InputError(f"{directory}: not a directory")
+    states_path = os.path.join(directory, "states.csv")
+    if not os.path.isfile(states_path):
+        raise InputError(f"{directory}: no states.csv (every twb results directory has one)")
+    states, tags = read_states(states_path)
+    run = Run(directory, os.path.basename(os.path.normpath(os.path.abspath(directory))), states,
+              tags)
+    distress_path = os.path.join(directory, "distress.csv")
+    if os.path.isfile(distress_path):
+        run.distress = read_distress(distress_path)
+    trajectory_path = os.path.join(directory, "trajectory.csv")
+    if os.path.isfile(trajectory_path):
+        run.trajectory, run.trajectory_tags = read_trajectory(trajectory_path)
+    sliding_path = os.path.join(directory, "sliding.csv")
+    if os.path.isfile(sliding_path):
+        run.sliding = read_sliding(sliding_path)
+    fold_curve_path = os.path.join(directory, "fold_curve.csv")
+    if os.path.isfile(fold_curve_path):
+        run.fold_curve = read_fold_curve(fold_curve_path)
+    run.friction = friction_setting(os.path.join(directory, "run.json"))
+    run.has_fields = os.path.isdir(os.path.join(directory, "fields"))
+    return run
+
+
+@dataclass
+class Data:
+    """All directories merged: one array per states.csv column, plus the rest."""
+    states: dict
+    friction: list          # per state: its friction setting as a label (or None)
+    parameters: list        # per state: (parameter column, value) of its run, or None
+    distress: list
+    trajectories: list      # (label, columns)
+    sliding: list           # rows of sliding.csv
+    speed_style: Style
+    fold_curves: list = field(default_factory=list)  # (run name, parameter column, rows)
+    rpm: bool = False       # speeds drawn in rpm
+
+
+def _split_trajectory(columns, tags):
+    """A trajectory.csv of several runs (speeds, parameter values, sliding films) as one
+    (key, columns) per run, in file order."""
+    keys = []
+    for k, tag in enumerate(tags):
+        speed = speed_key(columns["speed_rad_s"][k]) if "speed_rad_s" in columns else None
+        key = (speed,) + tuple(tag)
+        if key not in keys:
+            keys.append(key)
+    out = []
+    for key in keys:
+        idx = np.array([((speed_key(columns["speed_rad_s"][k]) if "speed_rad_s" in columns else None),)
+                        + tuple(tag) == key for k, tag in enumerate(tags)])
+        out.append((key, {c: v[idx] for c, v in columns.items()}))
+    return out
+
+
+def merge(runs):
+    states = {c: np.concatenate([r.states[c] for r in runs]) for c in STATE_COLUMNS}
+    parameters = [tag[0] for r in runs for tag in r.tags]
+    # A state of a friction coefficient sweep has its own coefficient; otherwise the
+    # run's friction law (run.json) labels it.
+    friction = [(parameter_label(tag[0]) if tag[0] and tag[0][0] == "friction_coefficient"
+                 else r.friction) for r in runs for tag in r.tags]
+    distress = [row for r in runs for row in r.distress]
+    trajectories = []
+    for r in runs:
+        if r.trajectory is None:
+            continue
+        pieces = _split_trajectory(r.trajectory, r.trajectory_tags)
+        for (speed, parameter, sliding), columns in pieces:
+            parts = []
+            speeds = {speed} if speed is not None else {speed_key(v) for v in r.states["speed_rad_s"]}
+            if len(speeds) == 1:
+                parts.append(speed_label(next(iter(speeds))))
+            if parameter is not None:
+                parts.append(parameter_label(parameter))
+            if sliding is not None:
+                parts.append(SLIDING_LABELS[sliding])
+            loads = set(columns["load_N"])
+            if len(loads) == 1:
+                parts.append(f"{next(iter(loads)):g} N")
+            trajectories.append((", ".join(parts) or r.name, columns))
+    sliding = [row for r in runs for row in r.sliding]
+    keys = ([speed_key(v) for v in states["speed_rad_s"]] + [speed_key(d.speed) for d in distress]
+            + [speed_key(row["speed_rad_s"]) for row in sliding])
+    data = Data(states, friction, parameters, distress, trajectories, sliding, Style(keys))
+    data.fold_curves = [(r.name,) + r.fold_curve for r in runs if r.fold_curve is not None]
+    return data

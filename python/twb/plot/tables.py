@@ -1,0 +1,301 @@
+"""Reading the files of a twb results directory, each checked line by line.
+
+These files are the only contract between the solver and its figures, so a file that is
+not what twb writes (a damaged cell, a missing column, a hand-edited row) stops the
+plotting with an InputError naming the file, the line and the column, rather than
+drawing a wrong figure from it.
+"""
+
+import csv
+import math
+import os
+from dataclasses import dataclass
+
+import numpy as np
+
+STATE_COLUMNS = (
+    "load_N", "speed_rad_s", "T_mean_C", "T_max_C", "hmin_over_sigma", "gamma_x_ratio",
+    "gamma_y_ratio", "fluid_share", "contact_share", "torque_Nm", "f_eff", "stribeck",
+    "converged", "iterations", "residual", "energy_error", "wall_ms")
+TRAJECTORY_COLUMNS = (
+    "t_s", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff", "load_N")
+DISTRESS_TAIL = ("W_d_N", "bracket_low_N", "bracket_high_N", "fold_N", "method")
+# Written since W_d has an error bar (study.error_estimate: richardson), before the method.
+DISTRESS_ERROR_COLUMNS = ("W_d_fine_N", "W_d_extrapolated_N", "W_d_error_N")
+SLIDING_COLUMNS = (
+    "speed_rad_s", "load_N", "sliding", "film_area_m2", "fluid_force_N", "fluid_share",
+    "contact_share", "torque_Nm", "f_eff", "hmin_over_sigma", "T_mean_C", "chosen")
+# The columns twb adds after the speed when a study runs several configurations: the
+# value of its second parameter, and the film that slides.
+PARAMETER_COLUMNS = ("friction_coefficient", "gear_tilt_rad", "roughness_Rq_m")
+SLIDING_LABELS = {
+    "carrier_washer": "film 1 slides (washer stuck to the gear)",
+    "washer_gear": "film 2 slides (washer stuck to the carrier)",
+}
+FIELDS_COLUMNS = (
+    "film", "sliding", "r_m", "theta_rad", "h_m", "p_Pa", "p_contact_Pa", "T_film_C",
+    "T_surfaces_C", "viscosity_Pa_s")
+
+
+class InputError(Exception):
+    """An input that is not what twb writes; the message names the file and line."""
+
+
+def _records(path):
+    """(line number, fields) for every non-blank line, header included."""
+    reader = None
+    try:
+        with open(path, newline="", encoding="utf-8") as f:
+            reader = csv.reader(f)
+            for fields in reader:
+                if fields:
+                    yield reader.line_num, fields
+    except UnicodeDecodeError as e:
+        raise InputError(f"{path}: not UTF-8 text ({e.reason})") from None
+    except csv.Error as e:
+        raise InputError(f"{path}: line {reader.line_num}: {e}") from None
+    except OSError as e:
+        raise InputError(f"{path}: cannot read: {e.strerror}") from None
+
+
+def _number(path, line, column, text, optional=False):
+    text = text.strip()
+    if optional and text == "":
+        return None
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    # twb never writes NaN or infinity (an absent value is an empty cell), so one here
+    # means the file did not come from twb or was damaged.
+    if not math.isfinite(value):
+        expected = "a finite number or an empty cell" if optional else "a finite number"
+        raise InputError(f"{path}: line {line}: column '{column}': expected {expected}, got {text!r}")
+    return value
+
+
+def _header_line(path, records, expected):
+    """The header's line number and its column names; an empty file is an error that
+    says which header was expected."""
+    try:
+        line, header = next(records)
+    except StopIteration:
+        raise InputError(f"{path}: line 1: expected the header {expected}, got an empty file") from None
+    return line, [h.strip() for h in header]
+
+
+def _header(path, records, required, what):
+    line, header = _header_line(path, records, ",".join(required))
+    missing = [c for c in required if c not in header]
+    if missing:
+        raise InputError(f"{path}: line {line}: expected the {what} header {','.join(required)}; "
+                         f"missing column(s): {', '.join(missing)}")
+    return header
+
+
+def _check_width(path, line, fields, header):
+    if len(fields) != len(header):
+        raise InputError(f"{path}: line {line}: expected {len(header)} comma-separated fields "
+                         f"as in the header, got {len(fields)}")
+
+
+def _run_tags(path, line, fields, header):
+    """The run a row belongs to: ((parameter column, value) or None, sliding film or None)."""
+    parameter = next((c for c in header if c in PARAMETER_COLUMNS), None)
+    tag = None
+    if parameter is not None:
+        tag = (parameter, _number(path, line, parameter, fields[header.index(parameter)],
+                                  optional=True))
+    sliding = None
+    if "sliding" in header:
+        sliding = fields[header.index("sliding")].strip()
+        if sliding not in SLIDING_LABELS:
+            raise InputError(f"{path}: line {line}: column 'sliding': expected one of "
+                             f"{', '.join(SLIDING_LABELS)}, got {sliding!r}")
+    return tag, sliding
+
+
+def _read_table(path, required, what, optional=()):
+    """Columns of a twb table as float arrays (optional ones when present), in file
+    order, and each row's run tags."""
+    records = _records(path)
+    header = _header(path, records, required, what)
+    names = list(required) + [c for c in optional if c in header]
+    index = {c: header.index(c) for c in names}
+    columns = {c: [] for c in names}
+    tags = []
+    for line, fields in records:
+        _check_width(path, line, fields, header)
+        for c in names:
+            columns[c].append(_number(path, line, c, fields[index[c]]))
+        tags.append(_run_tags(path, line, fields, header))
+        if "converged" in columns and columns["converged"][-1] not in (0.0, 1.0):
+            raise InputError(f"{path}: line {line}: column 'converged': expected 0 or 1, "
+                             f"got {fields[index['converged']].strip()!r}")
+    return {c: np.array(v, dtype=float) for c, v in columns.items()}, tags
+
+
+def read_states(path):
+    """Columns of states.csv as float arrays, in file order, and each state's run tags."""
+    return _read_table(path, STATE_COLUMNS, "states.csv")
+
+
+def read_trajectory(path):
+    # speed_rad_s is optional: twb wrote it only from the multi-speed load sweep on.
+    return _read_table(path, TRAJECTORY_COLUMNS, "trajectory.csv", optional=("speed_rad_s",))
+
+
+# fold_curve.csv (study type distress_curve): the curve's parameter first, then these.
+FOLD_CURVE_PARAMETERS = {
+    "speed_rad_s": r"speed $\omega$ (rad/s)", "friction_coefficient": "dry friction coefficient",
+    "gear_tilt_rad": "gear tilt (rad)", "ambient_C": "ambient temperature (°C)",
+    "viscosity_scale": "oil viscosity / the scene's", "roughness_Rq_m": "roughness Rq (m)"}
+FOLD_CURVE_TAIL = ("W_fold_N", "fold", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff")
+FOLD_KINDS = ("distress", "recovery", "cusp", "turn")
+
+
+def read_fold_curve(path):
+    """fold_curve.csv: (parameter column, rows as dicts with 'p', 'load', 'fold', ...,
+    and 'member': (family column, value) of a family of curves, else None)."""
+    records = _records(path)
+    expected = f"[<family>,]<parameter>,{','.join(FOLD_CURVE_TAIL)}"
+    line, header = _header_line(path, records, expected)
+    family = header[0] if len(header) == len(FOLD_CURVE_TAIL) + 2 and header[0] in PARAMETER_COLUMNS else None
+    first = 1 if family else 0
+    if len(header) != len(FOLD_CURVE_TAIL) + 1 + first or header[first] not in FOLD_CURVE_PARAMETERS \
+            or tuple(header[first + 1:]) != FOLD_CURVE_TAIL:
+        raise InputError(f"{path}: line {line}: expected the header {expected} with <parameter> one of "
+                         f"{', '.join(FOLD_CURVE_PARAMETERS)} and <family> one of {', '.join(PARAMETER_COLUMNS)}, "
+                         f"got {','.join(header)}")
+    rows = []
+    for line, fields in records:
+        _check_width(path, line, fields, header)
+        kind = fields[first + 2].strip()
+        if kind not in FOLD_KINDS:
+            raise InputError(f"{path}: line {line}: column 'fold': expected one of {', '.join(FOLD_KINDS)}, "
+                             f"got {kind!r}")
+        row = {"p": _number(path, line, header[first], fields[first]),
+               "load": _number(path, line, "W_fold_N", fields[first + 1]), "fold": kind,
+               "member": (family, _number(path, line, family, fields[0])) if family else None}
+        for k, c in enumerate(FOLD_CURVE_TAIL[2:], start=first + 3):
+            row[c] = _number(path, line, c, fields[k])
+        rows.append(row)
+    return header[first], rows
+
+
+def read_sliding(path):
+    """sliding.csv: the sliding choice's rows, as dicts of floats plus 'sliding'."""
+    records = _records(path)
+    header = _header(path, records, SLIDING_COLUMNS, "sliding.csv")
+    rows = []
+    for line, fields in records:
+        _check_width(path, line, fields, header)
+        row = {c: _number(path, line, c, fields[header.index(c)])
+               for c in SLIDING_COLUMNS if c != "sliding"}
+        row["sliding"] = _run_tags(path, line, fields, header)[1]
+        if row["chosen"] not in (0.0, 1.0):
+            raise InputError(f"{path}: line {line}: column 'chosen': expected 0 or 1, "
+                             f"got {fields[header.index('chosen')].strip()!r}")
+        rows.append(row)
+    return rows
+
+
+@dataclass
+class DistressRow:
+    speed: float
+    parameter: object  # (column name, value) or None
+    w_d: object
+    low: object
+    high: object
+    fold: object
+    method: str
+    sliding: object = None  # the sliding film of a sliding choice's row
+    extrapolated: object = None  # mesh-converged W_d (Richardson), N
+    error: object = None  # its error bar, N
+
+
+def read_distress(path):
+    records = _records(path)
+    line, header = _header_line(path, records,
+                                f"speed_rad_s[,<parameter>][,sliding],{','.join(DISTRESS_TAIL)}")
+    tail = DISTRESS_TAIL
+    if tuple(header[-4:-1]) == DISTRESS_ERROR_COLUMNS:
+        tail = DISTRESS_TAIL[:4] + DISTRESS_ERROR_COLUMNS + DISTRESS_TAIL[4:]
+    middle = header[1:-len(tail)]
+    sliding = bool(middle) and middle[-1] == "sliding"
+    if sliding:
+        middle = middle[:-1]
+    if (len(middle) > 1 or header[0] != "speed_rad_s" or "sliding" in middle
+            or tuple(header[-len(tail):]) != tail):
+        raise InputError(f"{path}: line {line}: expected the header speed_rad_s[,<parameter>][,sliding],"
+                         f"{','.join(DISTRESS_TAIL)}, got {','.join(header)}")
+    parameter = middle[0] if middle else None
+    rows = []
+    for line, fields in records:
+        if len(fields) < len(header):
+            raise InputError(f"{path}: line {line}: expected {len(header)} comma-separated fields "
+                             f"as in the header, got {len(fields)}")
+        # The method is free text that twb writes unquoted, so any extra commas belong to it.
+        n = len(header) - 1
+        fields = fields[:n] + [",".join(fields[n:])]
+        speed = _number(path, line, "speed_rad_s", fields[0])
+        value = None
+        if parameter is not None:
+            value = _number(path, line, parameter, fields[1], optional=True)
+        k = len(header) - len(tail)
+        w_d, low, high, fold = (_number(path, line, tail[i], fields[k + i], optional=True)
+                                for i in range(4))
+        extrapolated = error = None
+        if len(tail) > len(DISTRESS_TAIL):
+            extrapolated, error = (_number(path, line, tail[i], fields[k + i], optional=True) for i in (5, 6))
+        film = _run_tags(path, line, fields, header)[1] if sliding else None
+        rows.append(DistressRow(speed, None if parameter is None else (parameter, value),
+                                w_d, low, high, fold, fields[-1].strip(), film, extrapolated, error))
+    return rows
+
+
+def fields_path(directory, state):
+    return os.path.join(directory, "fields", f"state_{state:04d}.csv")
+
+
+def read_fields(path):
+    """fields/state_NNNN.csv as {film: {"sliding": bool, "r": radii, "theta": angles,
+    column: 2-D array [radius, angle]}}, checked to be a complete polar grid per film."""
+    records = _records(path)
+    header = _header(path, records, FIELDS_COLUMNS, "fields")
+    index = {c: header.index(c) for c in FIELDS_COLUMNS}
+    rows = {}
+    for line, fields in records:
+        _check_width(path, line, fields, header)
+        values = {c: _number(path, line, c, fields[index[c]]) for c in FIELDS_COLUMNS}
+        for c, allowed in (("film", (1.0, 2.0)), ("sliding", (0.0, 1.0))):
+            if values[c] not in allowed:
+                raise InputError(f"{path}: line {line}: column '{c}': expected "
+                                 f"{' or '.join(f'{a:g}' for a in allowed)}, "
+                                 f"got {fields[index[c]].strip()!r}")
+        rows.setdefault(int(values["film"]), []).append((line, values))
+    if not rows:
+        raise InputError(f"{path}: line 2: expected one row per node of each film, got none")
+    films = {}
+    for film, entries in rows.items():
+        r = np.unique([v["r_m"] for _, v in entries])
+        theta = np.unique([v["theta_rad"] for _, v in entries])
+        if len(entries) != r.size * theta.size or r.size < 2 or theta.size < 3:
+            raise InputError(f"{path}: line {entries[-1][0]}: film {film}: expected a complete "
+                             f"polar grid (every radius at every angle), got {len(entries)} rows "
+                             f"for {r.size} radii and {theta.size} angles")
+        grid = {c: np.full((r.size, theta.size), np.nan) for c in FIELDS_COLUMNS[4:]}
+        sliding = set()
+        for line, v in entries:
+            i, j = np.searchsorted(r, v["r_m"]), np.searchsorted(theta, v["theta_rad"])
+            if not np.isnan(grid["h_m"][i, j]):
+                raise InputError(f"{path}: line {line}: film {film}: node r = {v['r_m']:g} m, "
+                                 f"theta = {v['theta_rad']:g} rad appears twice")
+            for c in grid:
+                grid[c][i, j] = v[c]
+            sliding.add(v["sliding"])
+        if len(sliding) != 1:
+            raise InputError(f"{path}: line {entries[-1][0]}: film {film}: column 'sliding': "
+                             f"expected the same value on every row of the film")
+        films[film] = dict(grid, sliding=sliding.pop() == 1.0, r=r, theta=theta)
+    return films
