@@ -9,6 +9,8 @@ packages=(
   libyaml-cpp-dev libudunits2-dev libcli11-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   python3-matplotlib python3-numpy
+  # The Python module (import twb): pybind11 and the interpreter's headers.
+  pybind11-dev python3-dev
   # The scene fuzzer: clang with libFuzzer and its sanitizers, llvm-symbolizer for
   # readable reports (GCC's sanitizers come with build-essential).
   clang libclang-rt-14-dev llvm

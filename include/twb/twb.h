@@ -10,6 +10,7 @@
 #include "twb/results/fields_table.h"
 #include "twb/results/fold_curve_table.h"
 #include "twb/results/limit_notes.h"
+#include "twb/results/result_table.h"
 #include "twb/results/run_timings.h"
 #include "twb/results/sliding_table.h"
 #include "twb/results/states_table.h"

@@ -101,20 +101,9 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
   outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
   const std::filesystem::path dir(out_dir);
-  const std::string& parameter = outcome.parameter_column;
-  const bool sliding = outcome.sliding_column;
-  twb::write_file_atomically(dir / "states.csv", twb::states_csv(outcome.states, parameter, sliding));
+  for (const twb::NamedTable& table : twb::study_tables(outcome, scene.study.type))
+    twb::write_file_atomically(dir / (table.name + ".csv"), table.table.csv());
   twb::write_state_fields(dir, outcome.states);
-  const twb::StudyType type = scene.study.type;
-  if (type != twb::StudyType::point && type != twb::StudyType::transient)
-    twb::write_file_atomically(dir / "distress.csv", twb::distress_csv(outcome.distress, parameter, sliding));
-  if (type == twb::StudyType::sliding_choice)
-    twb::write_file_atomically(dir / "sliding.csv", twb::sliding_csv(outcome.sliding));
-  if (type == twb::StudyType::distress_curve)
-    twb::write_file_atomically(dir / "fold_curve.csv",
-                               twb::fold_curve_csv(outcome.fold_curve, outcome.fold_curve_column, parameter));
-  if (!outcome.trajectory.empty())
-    twb::write_file_atomically(dir / "trajectory.csv", twb::trajectory_csv(outcome.trajectory, parameter, sliding));
   const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message
                                                     : (outcome.message.empty() ? "ok" : outcome.message);
   twb::write_file_atomically(dir / "run.json", twb::run_json(path, twb::describe_scene(scene), model.layout(),

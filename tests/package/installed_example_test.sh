@@ -5,10 +5,14 @@
 # public headers alone and links twb::twb. Its distress load must be the installed
 # command's to the last digit written: the same library, the same numbers.
 #
-#   installed_example_test.sh BUILD_DIR SOURCE_DIR
+# With PYTHON, the installed Python module too: it imports from the prefix (finding the
+# installed libtwb, not the build's) and its point is the installed command's.
+#
+#   installed_example_test.sh BUILD_DIR SOURCE_DIR [PYTHON]
 set -eu
 build=$1
 source=$2
+python=${3:-}
 work=$build/installed-example
 rm -rf "$work"
 mkdir -p "$work"
@@ -46,3 +50,22 @@ fi
 rows=$(grep -cE '^ +[0-9.]+ +[0-9.e+-]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9]+$' "$work/example.txt")
 if [ "$rows" -ne 3 ]; then echo "expected 3 solved loads, found $rows"; exit 1; fi
 echo "installed package: example and twb run agree, W_d = $cli_wd N"
+
+if [ -n "$python" ]; then
+  module=$(find "$work/prefix" -name '_twb*.so')
+  [ -n "$module" ] || { echo "the Python module was not installed"; exit 1; }
+  site=$(dirname "$(dirname "$module")")
+  "$work/prefix/bin/twb" run "$scene" --set operating.load="150 N" --set 'study={type: point}' \
+    --out "$work/cli-point" --quiet > /dev/null
+  cli_feff=$(awk -F, 'NR == 1 { for (k = 1; k <= NF; ++k) if ($k == "f_eff") c = k } NR == 2 { print $c }' \
+    "$work/cli-point/states.csv")
+  # Only the prefix on the path, and the build's library out of reach.
+  py_feff=$(cd "$work" && env -u LD_LIBRARY_PATH PYTHONPATH="$site" "$python" -c "
+import twb, os
+assert twb.__file__.startswith('$site'), twb.__file__
+r = twb.run('$scene', overrides={'operating.load': '150 N', 'study': {'type': 'point'}})
+print('%.10g' % r.states['f_eff'][0])")
+  if [ "$py_feff" != "$cli_feff" ]; then echo "f_eff differs: module $py_feff, twb run $cli_feff"; exit 1; fi
+  ldd "$module" | grep -q "$work/prefix" || { echo "the module does not load the installed libtwb:"; ldd "$module"; exit 1; }
+  echo "installed Python module: f_eff = $py_feff at 150 N, as twb run"
+fi

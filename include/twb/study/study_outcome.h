@@ -13,6 +13,7 @@
 #include "twb/results/sliding_table.h"
 #include "twb/results/states_table.h"
 #include "twb/results/trajectory_table.h"
+#include "twb/scene/scene.h"
 
 namespace twb {
 
@@ -47,5 +48,15 @@ struct RunOptions {
   // (search_journal.h); none: nothing journaled.
   const SearchJournal* journal = nullptr;
 };
+
+// The tables a study writes, named by their file's stem ("states", "distress",
+// "sliding", "fold_curve", "trajectory"): the results directory's CSV files and the
+// Python module's tables are both made from this list, so they hold the same columns.
+// The state fields (output.fields) are per state: fields_table(state.fields).
+struct NamedTable {
+  std::string name;
+  ResultTable table;
+};
+std::vector<NamedTable> study_tables(const StudyOutcome& outcome, StudyType type);
 
 }  // namespace twb

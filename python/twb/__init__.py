@@ -1,0 +1,196 @@
+"""twb from Python: thrust washer bearings in mixed lubrication (Jackson & Green 2006).
+
+    import twb
+    r = twb.run("configs/jackson_green_2006.yaml",
+                overrides={"operating.load": "150 N", "study": {"type": "point"}})
+    r.states["f_eff"], r.distress["W_d_N"]        # numpy arrays, the columns of the CSV files
+    pandas.DataFrame(r.states)                     # one line to a data frame
+
+A scene is loaded and validated exactly as `twb run` loads it; a defect raises
+twb.SceneError with the file, line and column of the offending text. Results are the
+numbers `twb run` writes, unrounded (the CSV files hold them to ten digits). The
+figures are in twb.plot, which needs only the results files, not the compiled core.
+"""
+
+import os
+
+try:
+    from . import _twb
+except ImportError as _error:  # the plotting part (twb.plot) works without it
+    _twb = None
+    _import_error = _error
+
+__all__ = ["Scene", "Results", "Table", "SceneError", "SolverFailure", "run", "override_texts"]
+
+
+def _core():
+    if _twb is None:
+        raise ImportError(
+            "twb's compiled core (twb/_twb*.so) is not built or not on the path: build the "
+            "project with CMake (docs/api.md, 'Python') and put build/python on PYTHONPATH, "
+            f"or install it ({_import_error})")
+    return _twb
+
+
+if _twb is not None:
+    SceneError = _twb.SceneError
+    SolverFailure = _twb.SolverFailure
+    __version__ = _twb.__version__
+else:
+    class SceneError(ValueError):
+        """A defect in a scene; has file, line, column and message."""
+
+    class SolverFailure(RuntimeError):
+        """A state a run needed could not be solved."""
+
+
+def _flow(value):
+    """A Python value as YAML flow text, as one writes it after `twb run --set path=`."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return repr(value)
+    if isinstance(value, str):
+        return value
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{k}: {_flow(v)}" for k, v in value.items()) + "}"
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_flow(v) for v in value) + "]"
+    raise TypeError(f"override value {value!r}: use str, int, float, bool, list or dict")
+
+
+def override_texts(overrides):
+    """Overrides as `twb run --set` takes them: from a mapping {"operating.load": "150 N",
+    "study": {"type": "point"}} (a dict value replaces the key's map as `--set
+    'study={type: point}'` does), or from "path=value" strings as they are."""
+    if overrides is None:
+        return []
+    if isinstance(overrides, dict):
+        return [f"{path}={_flow(value)}" for path, value in overrides.items()]
+    if isinstance(overrides, str):
+        return [overrides]
+    return [str(o) for o in overrides]
+
+
+class Scene:
+    """A scene file loaded, converted to SI and validated, with its overrides."""
+
+    def __init__(self, path, overrides=None, *, _text=None):
+        self.path = os.fspath(path)
+        self.overrides = override_texts(overrides)
+        self._text = _text
+        if _text is None:
+            self._scene = _core().load_scene(self.path, self.overrides)
+        else:
+            self._scene = _core().load_scene_text(_text, self.path, self.overrides)
+
+    @classmethod
+    def from_text(cls, text, name="<scene>", overrides=None):
+        """A scene held in a string; `name` stands for the file in error messages
+        (a scene read from text cannot extend a file by a relative path)."""
+        return cls(name, overrides, _text=text)
+
+    def override(self, overrides):
+        """A new Scene: this one's overrides, then these."""
+        return Scene(self.path, self.overrides + override_texts(overrides), _text=self._text)
+
+    def resolved(self):
+        """The resolved scene, every default filled in, as nested dicts of "value unit"
+        strings in SI (what `twb check` prints)."""
+        return self._scene.resolved()
+
+    def resolved_yaml(self):
+        return self._scene.resolved_yaml()
+
+    def unknowns(self):
+        """The unknown blocks the scene's effects bring: [{"name", "effect", "size"}]."""
+        return self._scene.unknowns()
+
+    def unknowns_per_effect(self):
+        counts = {}
+        for block in self.unknowns():
+            counts[block["effect"]] = counts.get(block["effect"], 0) + block["size"]
+        return counts
+
+    def sources(self):
+        """Where each value was written: [(path, file, line)] (scenes that extend scenes)."""
+        if self._text is not None:
+            raise ValueError("a scene read from text has no files to trace")
+        return _core().value_sources(self.path, self.overrides)
+
+    @property
+    def warnings(self):
+        return list(self._scene.warnings)
+
+    @property
+    def study_type(self):
+        return self._scene.study_type
+
+    def run(self, progress=None, threads=0):
+        """Runs the scene's study (see twb.run)."""
+        return Results(_core().run(self._scene, progress, threads), self)
+
+    def __repr__(self):
+        extra = f", overrides={self.overrides!r}" if self.overrides else ""
+        return f"twb.Scene({self.path!r}{extra})"
+
+
+class Table(dict):
+    """One results table: column name -> numpy array (float64, NaN where the CSV cell is
+    empty; int64 for counts) or list of str. `formats` holds each column's printf format
+    in the CSV file. pandas.DataFrame(table) makes a data frame of it."""
+
+    def __init__(self, columns, formats):
+        super().__init__(columns)
+        self.formats = dict(formats)
+
+    @property
+    def rows(self):
+        return len(next(iter(self.values()))) if self else 0
+
+    def __repr__(self):
+        return f"twb.Table({self.rows} rows: {', '.join(self)})"
+
+
+class Results:
+    """What a study gives back. Tables (None where the study writes no such file):
+    states, distress, trajectory, sliding, fold_curve; fields: per state, its fields
+    table (output.fields) or None; summary and limit_notes: the lines twb run prints at
+    the end; message, solver_failed; timings: run.json's counts."""
+
+    def __init__(self, raw, scene):
+        self.scene = scene
+        self.tables = {name: Table(columns, raw["formats"][name]) for name, columns in raw["tables"].items()}
+        self.fields = [None if f is None else Table(f, {}) for f in raw["fields"]]
+        self.summary = list(raw["summary"])
+        self.limit_notes = list(raw["limit_notes"])
+        self.diagnostics = list(raw["diagnostics"])
+        self.solver_failed = bool(raw["solver_failed"])
+        self.message = raw["message"]
+        self.timings = dict(raw["timings"])
+
+    states = property(lambda self: self.tables.get("states"))
+    distress = property(lambda self: self.tables.get("distress"))
+    trajectory = property(lambda self: self.tables.get("trajectory"))
+    sliding = property(lambda self: self.tables.get("sliding"))
+    fold_curve = property(lambda self: self.tables.get("fold_curve"))
+
+    def __repr__(self):
+        parts = ", ".join(f"{name}: {table.rows} rows" for name, table in self.tables.items())
+        return f"twb.Results({parts})"
+
+
+def run(scene, overrides=None, progress=None, threads=0):
+    """Runs the study a scene names and returns its Results.
+
+    scene: a path or a twb.Scene; overrides: as for twb.Scene (applied after the
+    scene's own); progress: called with each progress line twb run would print (from
+    the solving threads, one at a time; an exception it raises is raised when the study
+    has finished); threads: for the study's independent searches, 0 = one per core (the
+    results do not depend on it). The GIL is released while solving."""
+    if isinstance(scene, Scene):
+        if overrides:
+            scene = scene.override(overrides)
+    else:
+        scene = Scene(scene, overrides)
+    return scene.run(progress=progress, threads=threads)

@@ -1,0 +1,222 @@
+// twb._twb: the compiled half of the Python module (python/twb/__init__.py is the other),
+// written against the public API alone (docs/api.md). It loads scenes with the loader's
+// own validation, runs studies with the GIL released, and hands every results table
+// over as the columns the CSV files are written from (study_tables), so that Python
+// sees the numbers twb run writes, unrounded.
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "twb/twb.h"
+
+namespace py = pybind11;
+
+namespace {
+
+// A results table as a dict of columns: numbers as float64 arrays (NaN where a value does
+// not exist, an empty CSV cell), counts as int64 arrays, texts as lists of str; and the
+// printf format each column is written with in the CSV file.
+py::tuple table_columns(const twb::ResultTable& table) {
+  py::dict columns, formats;
+  for (const twb::ResultColumn& c : table.columns()) {
+    switch (c.kind) {
+      case twb::ResultColumn::Kind::number: {
+        columns[py::str(c.name)] = py::array_t<double>(py::ssize_t(c.numbers.size()), c.numbers.data());
+        const char* f = c.style == twb::ResultColumn::Style::scientific ? "%.3e"
+                        : c.style == twb::ResultColumn::Style::fixed    ? "%.3f"
+                                                                         : "%.10g";
+        formats[py::str(c.name)] = f;
+        break;
+      }
+      case twb::ResultColumn::Kind::count: {
+        py::array_t<long long> a(py::ssize_t(c.numbers.size()));
+        auto w = a.mutable_unchecked<1>();
+        for (std::size_t k = 0; k < c.numbers.size(); ++k) w(py::ssize_t(k)) = static_cast<long long>(c.numbers[k]);
+        columns[py::str(c.name)] = a;
+        formats[py::str(c.name)] = "%d";
+        break;
+      }
+      case twb::ResultColumn::Kind::text:
+        columns[py::str(c.name)] = py::cast(c.texts);
+        formats[py::str(c.name)] = "%s";
+        break;
+    }
+  }
+  return py::make_tuple(columns, formats);
+}
+
+// The resolved scene (describe_scene's YAML) as nested dicts and lists of strings.
+py::object yaml_to_python(const YAML::Node& node) {
+  if (node.IsMap()) {
+    py::dict d;
+    for (const auto& kv : node) d[py::str(kv.first.as<std::string>())] = yaml_to_python(kv.second);
+    return d;
+  }
+  if (node.IsSequence()) {
+    py::list l;
+    for (const auto& v : node) l.append(yaml_to_python(v));
+    return l;
+  }
+  if (node.IsNull()) return py::none();
+  return py::str(node.as<std::string>());
+}
+
+py::dict timings_dict(const twb::RunTimings& t) {
+  py::dict d;
+  d["total_ms"] = t.total_ms;
+  d["setup_ms"] = t.setup_ms;
+  d["solve_ms"] = t.solve_ms;
+  d["states"] = t.states;
+  d["newton_iterations"] = t.newton_iterations;
+  d["jacobian_evaluations"] = t.jacobian_evaluations;
+  d["transients"] = t.transients;
+  d["ida_steps"] = t.ida_steps;
+  d["ida_factorizations"] = t.ida_factorizations;
+  d["klu_factorizations"] = t.klu_factorizations;
+  return d;
+}
+
+py::list unknowns_list(const twb::Scene& scene) {
+  py::list out;
+  for (const twb::UnknownBlock& b : twb::Bearing(scene).unknowns()) {
+    py::dict d;
+    d["name"] = b.name;
+    d["effect"] = b.effect;
+    d["size"] = b.size;
+    out.append(d);
+  }
+  return out;
+}
+
+// The progress callback runs on whichever thread a search reports from: it takes the
+// GIL for the call. An exception it raises cannot unwind through the solvers' threads;
+// the first is kept and raised when the study has finished.
+class ProgressRelay {
+ public:
+  explicit ProgressRelay(py::object callback) : callback_(std::move(callback)) {}
+  twb::ProgressReport report() {
+    if (callback_.is_none()) return {};
+    return [this](const std::string& line) {
+      py::gil_scoped_acquire gil;
+      {
+        std::lock_guard lock(mutex_);
+        if (error_) return;
+      }
+      try {
+        callback_(line);
+      } catch (py::error_already_set& e) {
+        std::lock_guard lock(mutex_);
+        error_ = std::current_exception();
+      }
+    };
+  }
+  void raise_if_failed() {
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ private:
+  py::object callback_;
+  std::mutex mutex_;
+  std::exception_ptr error_;
+};
+
+py::dict run_scene(const twb::Scene& scene, py::object progress, int threads) {
+  ProgressRelay relay(std::move(progress));
+  const twb::ProgressReport report = relay.report();
+  twb::StudyOutcome outcome;
+  {
+    py::gil_scoped_release no_gil;
+    const auto t0 = std::chrono::steady_clock::now();
+    twb::Bearing bearing(scene);
+    const double setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    outcome = bearing.run_study(report, twb::RunOptions{.threads = threads});
+    outcome.timings.setup_ms = setup_ms;
+    outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  }
+  relay.raise_if_failed();
+
+  py::dict tables, formats;
+  for (const twb::NamedTable& t : twb::study_tables(outcome, scene.study.type)) {
+    py::tuple cf = table_columns(t.table);
+    tables[py::str(t.name)] = cf[0];
+    formats[py::str(t.name)] = cf[1];
+  }
+  py::list fields;
+  for (const twb::SolvedState& s : outcome.states) {
+    if (s.fields.empty()) {
+      fields.append(py::none());
+      continue;
+    }
+    fields.append(table_columns(twb::fields_table(s.fields))[0]);
+  }
+  py::dict out;
+  out["tables"] = tables;
+  out["formats"] = formats;
+  out["fields"] = fields;
+  out["summary"] = outcome.summary;
+  out["limit_notes"] = twb::limit_notes(outcome.states, outcome.distress);
+  out["diagnostics"] = outcome.diagnostics;
+  out["solver_failed"] = outcome.solver_failed;
+  out["message"] = outcome.message;
+  out["timings"] = timings_dict(outcome.timings);
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_twb, m) {
+  m.doc() = "twb's compiled core; use the twb package (import twb).";
+  m.attr("__version__") = twb::version();
+
+  // twb.SceneError: the located message as str(e), and where: file, line, column.
+  static py::exception<twb::InputError> scene_error(m, "SceneError", PyExc_ValueError);
+  static py::exception<twb::SolverFailure> solver_failure(m, "SolverFailure", PyExc_RuntimeError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const twb::InputError& e) {
+      py::object error = py::handle(scene_error.ptr())(e.what());
+      error.attr("file") = e.file();
+      error.attr("line") = e.line();
+      error.attr("column") = e.column();
+      error.attr("message") = e.message();
+      PyErr_SetObject(scene_error.ptr(), error.ptr());
+    } catch (const twb::SolverFailure& e) {
+      PyErr_SetString(solver_failure.ptr(), e.what());
+    }
+  });
+
+  py::class_<twb::Scene>(m, "Scene")
+      .def_readonly("source", &twb::Scene::source)
+      .def_readonly("warnings", &twb::Scene::warnings)
+      .def_property_readonly("study_type",
+                             [](const twb::Scene& s) {
+                               return yaml_to_python(YAML::Load(twb::describe_scene(s)))["study"]["type"];
+                             })
+      .def("resolved_yaml", [](const twb::Scene& s) { return twb::describe_scene(s); })
+      .def("resolved", [](const twb::Scene& s) { return yaml_to_python(YAML::Load(twb::describe_scene(s))); })
+      .def("unknowns", &unknowns_list);
+
+  m.def("load_scene", &twb::load_scene, py::arg("path"), py::arg("overrides") = std::vector<std::string>{});
+  m.def("load_scene_text", &twb::load_scene_text, py::arg("text"), py::arg("name"),
+        py::arg("overrides") = std::vector<std::string>{});
+  m.def(
+      "value_sources",
+      [](const std::string& path, const std::vector<std::string>& overrides) {
+        py::list out;
+        for (const twb::ValueSource& v : twb::scene_value_sources(path, overrides))
+          out.append(py::make_tuple(v.path, v.file, v.line));
+        return out;
+      },
+      py::arg("path"), py::arg("overrides") = std::vector<std::string>{});
+  m.def("run", &run_scene, py::arg("scene"), py::arg("progress") = py::none(), py::arg("threads") = 0);
+}

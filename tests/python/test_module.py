@@ -1,0 +1,189 @@
+"""The Python module (import twb; docs/api.md) against the twb command: the same scene
+gives the same numbers, errors are SceneError with their location, overrides behave as
+--set, progress reaches Python, and the GIL is free while solving.
+
+Needs PYTHONPATH to hold the build's python directory and TWB_BINARY the twb command
+(set by CTest)."""
+
+import csv
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import unittest
+
+import twb
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+SCENE = os.path.join(ROOT, "configs", "jackson_green_2006.yaml")
+TWB = os.environ.get("TWB_BINARY", "twb")
+COARSE = {"mesh.radial_nodes": 5, "mesh.circumferential_nodes": 24}
+POINT = {"operating.load": "150 N", "study": {"type": "point"}}
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return rows[0], rows[1:]
+
+
+def cell(value, fmt):
+    """A value as twb run writes it (result_table.cpp): an absent number is an empty cell."""
+    if fmt == "%s":
+        return value
+    if fmt != "%d" and math.isnan(value):
+        return ""
+    return fmt % value
+
+
+class CommandComparison(unittest.TestCase):
+    """One scene through the command and through the module: every cell of every table,
+    formatted as the CSV file formats it, is the same text; so the module's numbers are
+    the command's up to the last digit written, and carry the digits the file drops."""
+
+    def compare(self, overrides):
+        with tempfile.TemporaryDirectory(prefix="twb_python_") as out:
+            args = [TWB, "run", SCENE, "--out", out, "--quiet"]
+            for o in twb.override_texts(overrides):
+                args += ["--set", o]
+            subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
+            result = twb.run(SCENE, overrides=overrides, threads=2)
+            written = sorted(f[:-4] for f in os.listdir(out) if f.endswith(".csv"))
+            self.assertEqual(written, sorted(result.tables))
+            for name, table in result.tables.items():
+                header, rows = read_csv(os.path.join(out, name + ".csv"))
+                self.assertEqual(header, list(table), name)
+                self.assertEqual(len(rows), table.rows, name)
+                for k, column in enumerate(header):
+                    if column == "wall_ms":  # a time, not a result
+                        continue
+                    mine = [cell(v, table.formats[column]) for v in table[column]]
+                    self.assertEqual([r[k] for r in rows], mine, f"{name}.csv, column {column}")
+        return result
+
+    def test_default_scene(self):
+        result = self.compare({})
+        self.assertEqual(result.scene.study_type, "load_sweep")
+        self.assertEqual(len(result.distress["W_d_N"]), 1)
+        self.assertFalse(math.isnan(result.distress["W_d_N"][0]))
+        self.assertIsNotNone(result.trajectory)
+
+    def test_point_with_overrides(self):
+        result = self.compare(POINT)
+        self.assertEqual(list(result.states["load_N"]), [150.0])
+        self.assertIsNone(result.distress)
+        self.assertEqual(result.states["converged"][0], 1)
+
+    def test_distress_map_on_two_speeds(self):
+        self.compare(dict(COARSE, study={"type": "distress_map", "speeds": ["545 rad/s", "953 rad/s"],
+                                         "load_start": "100 N", "load_end": "800 N",
+                                         "error_estimate": "none"}))
+
+
+class Errors(unittest.TestCase):
+    def test_malformed_scene_raises_scene_error_with_its_line(self):
+        with tempfile.TemporaryDirectory(prefix="twb_python_") as d:
+            path = os.path.join(d, "bad.yaml")
+            with open(path, "w") as f:
+                f.write(f"extends: {os.path.abspath(SCENE)}\n\noperating:\n  load: 150 kg\n")
+            with self.assertRaises(twb.SceneError) as caught:
+                twb.Scene(path)
+            e = caught.exception
+            self.assertEqual((e.file, e.line, e.column), (path, 4, 9))
+            self.assertIn("bad.yaml:4:9", str(e))
+            self.assertIsInstance(e, ValueError)
+
+    def test_bad_override_names_the_override(self):
+        with self.assertRaises(twb.SceneError) as caught:
+            twb.run(SCENE, overrides={"operating.lod": "150 N"})
+        self.assertIn("operating.lod", caught.exception.file)
+        self.assertIn("load", str(caught.exception))  # the key it suggests
+
+    def test_missing_file(self):
+        with self.assertRaises(twb.SceneError):
+            twb.Scene(os.path.join(ROOT, "configs", "no_such_scene.yaml"))
+
+
+class Scenes(unittest.TestCase):
+    def test_overrides_as_mapping_and_as_set_texts(self):
+        self.assertEqual(twb.override_texts(POINT), ["operating.load=150 N", "study={type: point}"])
+        self.assertEqual(twb.override_texts({"effects": ["hydrodynamics", "thermal"], "mesh.radial_nodes": 5,
+                                             "output.fields": True}),
+                         ["effects=[hydrodynamics, thermal]", "mesh.radial_nodes=5", "output.fields=true"])
+        self.assertEqual(twb.override_texts(["operating.load=1 kN"]), ["operating.load=1 kN"])
+
+    def test_resolved_and_unknowns(self):
+        scene = twb.Scene(SCENE, POINT)
+        self.assertEqual(scene.resolved()["operating"]["load"], "150 N")
+        per_effect = scene.unknowns_per_effect()
+        self.assertEqual(sum(b["size"] for b in scene.unknowns()), sum(per_effect.values()))
+        self.assertIn("thermal", per_effect)
+        isothermal = scene.override({"effects": ["hydrodynamics", "flow_factors", "asperity_contact"]})
+        self.assertNotIn("thermal", isothermal.unknowns_per_effect())
+        self.assertEqual(isothermal.overrides[:2], scene.overrides)
+
+    def test_sources_of_an_extending_scene(self):
+        scene = twb.Scene(os.path.join(ROOT, "configs", "studies", "distress_map.yaml"))
+        files = {os.path.basename(f) for _, f, _ in scene.sources()}
+        self.assertEqual(files, {"distress_map.yaml", "jackson_green_2006.yaml"})
+
+
+class Running(unittest.TestCase):
+    def test_progress_lines_reach_python(self):
+        lines = []
+        twb.run(SCENE, overrides=dict(COARSE, **{"study.error_estimate": "none"}), progress=lines.append)
+        self.assertTrue(any("fold" in line or "steady" in line for line in lines), lines[:5])
+
+    def test_an_exception_in_progress_is_raised_after_the_run(self):
+        def stop(line):
+            raise KeyError("from the callback")
+        with self.assertRaises(KeyError):
+            twb.run(SCENE, overrides=dict(COARSE, **{"study.error_estimate": "none"}), progress=stop)
+
+    def test_gil_is_released_while_solving(self):
+        # With the GIL held, this thread could not wake from its sleeps until the run ends.
+        done = threading.Event()
+        worker = threading.Thread(target=lambda: (twb.run(SCENE, overrides={"study.error_estimate": "none"},
+                                                          threads=1), done.set()))
+        ticks = 0
+        started = time.monotonic()
+        worker.start()
+        while worker.is_alive():
+            time.sleep(0.002)
+            ticks += 1
+        worker.join()
+        elapsed = time.monotonic() - started
+        self.assertTrue(done.is_set())
+        # At least a quarter of the sleeps the run's duration allows.
+        self.assertGreater(ticks, 0.25 * elapsed / 0.002, f"{ticks} ticks in {elapsed:.2f} s")
+
+    def test_threads_do_not_change_results(self):
+        overrides = dict(COARSE, study={"type": "distress_map", "speeds": ["545 rad/s", "953 rad/s"],
+                                        "load_start": "100 N", "load_end": "800 N", "error_estimate": "none"})
+        one = twb.run(SCENE, overrides=overrides, threads=1)
+        two = twb.run(SCENE, overrides=overrides, threads=2)
+        for name in one.tables:
+            for column in one.tables[name]:
+                if column == "wall_ms":
+                    continue
+                a, b = list(one.tables[name][column]), list(two.tables[name][column])
+                self.assertEqual([str(x) for x in a], [str(x) for x in b], f"{name}.{column}")
+
+
+class Example(unittest.TestCase):
+    def test_wd_over_speed_runs_and_draws(self):
+        with tempfile.TemporaryDirectory(prefix="twb_python_") as d:
+            out = os.path.join(d, "wd.png")
+            run = subprocess.run([sys.executable, os.path.join(ROOT, "examples", "python", "wd_over_speed.py"),
+                                  "--mesh", "5x24", "--speeds", "300,900", "--out", out, "-q"],
+                                 capture_output=True, text=True)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            self.assertIn("900.0 rad/s   W_d =", run.stdout)
+            self.assertGreater(os.path.getsize(out), 1000)
+
+
+if __name__ == "__main__":
+    unittest.main()
