@@ -11,6 +11,8 @@ packages=(
   python3-matplotlib python3-numpy
   # The Python module (import twb): pybind11 and the interpreter's headers.
   pybind11-dev python3-dev
+  # MPI jobs of the twb command (optional for building; CI tests them).
+  libopenmpi-dev openmpi-bin
   # The scene fuzzer: clang with libFuzzer and its sanitizers, llvm-symbolizer for
   # readable reports (GCC's sanitizers come with build-essential).
   clang libclang-rt-14-dev llvm

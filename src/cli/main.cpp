@@ -1,18 +1,23 @@
-// The twb command: `twb check SCENE` and `twb run SCENE`.
+// The twb command: `twb check SCENE`, `twb run SCENE` (also under mpirun, or one slice of a
+// job array) and `twb merge` (a job array's slices into one results directory).
 // Exit status: 0 success (a distress found is a result), 2 invalid input,
 // 3 solver failure, 4 internal error.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "interruption.h"
+#include "mpi_searches.h"
 #include "results_directory.h"
 #include "model/bearing_model.h"
 #include "results/atomic_file.h"
@@ -21,6 +26,7 @@
 #include "twb/results/limit_notes.h"
 #include "twb/results/states_table.h"
 #include "study/search_journal.h"
+#include "study/search_scheduler.h"
 #include "twb/scene/input_error.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/sundials_context.h"
@@ -78,35 +84,40 @@ int check(const std::string& path, const std::vector<std::string>& overrides) {
   return 0;
 }
 
-int run(const std::string& path, const std::vector<std::string>& overrides, std::string out_dir, bool quiet,
-        bool verbose, int threads, bool resume) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const twb::Scene scene = twb::load_scene(path, overrides);
-  print_warnings(scene, std::cerr);
-  if (out_dir.empty()) out_dir = scene.output.directory;
-  // Before any work: a directory this run cannot write into, or one another run is
-  // writing into, is the user's to fix now, not after the study.
-  const twb::cli::ResultsDirectory results(out_dir);
-  twb::cli::end_cleanly_on_interruption(out_dir.c_str());
-  // Each finished search of the study is kept at once: a killed run resumes from them.
-  const twb::SearchJournal journal(out_dir, twb::describe_scene(scene), resume);
-  twb::BearingModel model(scene);
-  const double setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  if (!quiet) std::cerr << fmt::format("twb: {} unknowns, {} Jacobian nonzeros\n", model.size(), model.pattern().nnz());
+// The studies whose searches are independent: what threads, MPI ranks and slices spread.
+bool has_independent_searches(twb::StudyType type) {
+  return type == twb::StudyType::load_sweep || type == twb::StudyType::distress_map ||
+         type == twb::StudyType::sliding_choice;
+}
 
-  twb::StudyOutcome outcome =
-      twb::run_study(model, quiet ? twb::ProgressReport{} : [](const std::string& s) { std::cerr << s << "\n"; },
-                     twb::RunOptions{.threads = threads, .journal = &journal});
-  outcome.timings.setup_ms = setup_ms;
-  outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+struct RunRequest {
+  std::string path;
+  std::vector<std::string> overrides;
+  std::string out_dir;
+  bool quiet = false, verbose = false, resume = false;
+  int threads = 0;
+  std::string slice;  // "K/N", or empty
+};
 
-  const std::filesystem::path dir(out_dir);
+// "K/N" of --slice.
+std::pair<int, int> parse_slice(const std::string& text) {
+  int k = 0, n = 0;
+  char slash = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &k, &slash, &n, &rest) != 3 || slash != '/' || n < 1 || k < 1 || k > n)
+    throw std::invalid_argument(fmt::format("--slice '{}': write K/N with 1 <= K <= N, e.g. --slice 3/8", text));
+  return {k, n};
+}
+
+// The study's results: the tables, the fields, run.json last; then the summary on stdout.
+int write_results(const std::filesystem::path& dir, const std::string& scene_path, const twb::Scene& scene,
+                  const twb::BearingModel& model, const twb::StudyOutcome& outcome, const twb::SearchJournal& journal,
+                  bool verbose) {
   for (const twb::NamedTable& table : twb::study_tables(outcome, scene.study.type))
     twb::write_file_atomically(dir / (table.name + ".csv"), table.table.csv());
   twb::write_state_fields(dir, outcome.states);
   const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message
                                                     : (outcome.message.empty() ? "ok" : outcome.message);
-  twb::write_file_atomically(dir / "run.json", twb::run_json(path, twb::describe_scene(scene), model.layout(),
+  twb::write_file_atomically(dir / "run.json", twb::run_json(scene_path, twb::describe_scene(scene), model.layout(),
                                                              outcome.timings, verdict));
   journal.finish();
   twb::cli::run_is_complete();
@@ -133,39 +144,155 @@ int run(const std::string& path, const std::vector<std::string>& overrides, std:
   return outcome.solver_failed ? exit_solver_failure : 0;
 }
 
+twb::ProgressReport progress_lines(bool quiet, const std::string& prefix = {}) {
+  if (quiet) return {};
+  return [prefix](const std::string& s) { std::cerr << prefix << s << "\n"; };
+}
+
+// Another rank of an MPI job: the same scene and model, its share of the searches, no files.
+int run_as_worker(const RunRequest& r, const twb::cli::MpiJob& job) {
+  const twb::Scene scene = twb::load_scene(r.path, r.overrides);
+  if (!has_independent_searches(scene.study.type)) return 0;  // rank 0 runs such a study alone
+  twb::BearingModel model(scene);
+  twb::cli::MpiScheduler scheduler(job);
+  twb::run_study(model, progress_lines(r.quiet || !r.verbose, fmt::format("twb[rank {}]: ", job.rank())),
+                 twb::RunOptions{.threads = 1, .journal = nullptr, .scheduler = &scheduler});
+  return 0;
+}
+
+int run(RunRequest r, const twb::cli::MpiJob& job) {
+  if (job.rank() != 0) return run_as_worker(r, job);
+  const auto t0 = std::chrono::steady_clock::now();
+  const twb::Scene scene = twb::load_scene(r.path, r.overrides);
+  print_warnings(scene, std::cerr);
+  std::optional<twb::SliceScheduler> slice;
+  if (!r.slice.empty()) {
+    if (!has_independent_searches(scene.study.type))
+      throw std::invalid_argument("--slice needs a study of independent searches (load_sweep, distress_map, "
+                                  "sliding_choice): this scene's study is one piece of work");
+    const auto [k, n] = parse_slice(r.slice);
+    slice.emplace(k, n);
+  }
+  if (r.out_dir.empty()) r.out_dir = scene.output.directory;
+  // Before any work: a directory this run cannot write into, or one another run is
+  // writing into, is the user's to fix now, not after the study.
+  const twb::cli::ResultsDirectory results(r.out_dir);
+  twb::cli::end_cleanly_on_interruption(r.out_dir.c_str());
+  // Each finished search of the study is kept at once: a killed run resumes from them.
+  const twb::SearchJournal journal(r.out_dir, twb::describe_scene(scene), r.resume);
+  twb::BearingModel model(scene);
+  const double setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (!r.quiet) std::cerr << fmt::format("twb: {} unknowns, {} Jacobian nonzeros\n", model.size(), model.pattern().nnz());
+
+  std::optional<twb::cli::MpiScheduler> ranks;
+  twb::SearchScheduler* scheduler = nullptr;
+  int threads = r.threads;
+  if (slice) {
+    scheduler = &*slice;
+  } else if (job.active()) {
+    if (has_independent_searches(scene.study.type)) {
+      ranks.emplace(job);
+      scheduler = &*ranks;
+      if (threads == 0) threads = 1;  // one search per rank, as on every other rank
+    } else if (!r.quiet) {
+      std::cerr << "twb: this study is one piece of work: rank 0 runs it, the other ranks wait\n";
+    }
+  }
+  twb::StudyOutcome outcome = twb::run_study(model, progress_lines(r.quiet),
+                                             twb::RunOptions{.threads = threads, .journal = &journal,
+                                                             .scheduler = scheduler});
+  outcome.timings.setup_ms = setup_ms;
+  outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (slice) {
+    const std::size_t total = journal.entries().size();
+    twb::cli::run_is_complete();
+    std::cout << fmt::format("slice {}: {} searches journaled in {} ({:.1f} s); when every slice is done:\n"
+                             "  twb merge --out RESULTS SLICE_DIR...\n",
+                             r.slice, total, r.out_dir, outcome.timings.total_ms / 1000.0);
+    return outcome.solver_failed ? exit_solver_failure : 0;
+  }
+  return write_results(r.out_dir, r.path, scene, model, outcome, journal, r.verbose);
+}
+
+// twb merge: the slices' journals into one results directory, exactly as one run writes it.
+int merge(const std::vector<std::string>& slices, const std::string& out_dir, bool quiet, bool verbose) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::optional<std::string> scene_text;
+  for (const std::string& dir : slices) {
+    const std::optional<std::string> text = twb::SearchJournal::scene_of(dir);
+    if (!text)
+      throw std::invalid_argument(fmt::format("'{}' holds no journaled searches (the results directory of a twb "
+                                              "run --slice K/N is meant)", dir));
+    if (scene_text && !twb::SearchJournal::same_scene(*text, *scene_text))
+      throw std::invalid_argument(fmt::format("'{}' belongs to another scene (or other --set values) than '{}'", dir,
+                                              slices.front()));
+    scene_text = text;
+  }
+  const std::string scene_name = (std::filesystem::path(slices.front()) / ".twb-journal" / "scene.yaml").string();
+  const twb::Scene scene = twb::load_scene_text(*scene_text, scene_name);
+  const twb::cli::ResultsDirectory results(out_dir);
+  twb::cli::end_cleanly_on_interruption(out_dir.c_str());
+  {
+    const twb::SearchJournal gathered(out_dir, twb::describe_scene(scene), false);
+    for (const std::string& dir : slices) {
+      const twb::SearchJournal slice(dir, *scene_text, true);
+      for (std::size_t i : slice.entries()) gathered.write_entry(i, slice.entry_bytes(i));
+    }
+  }
+  const twb::SearchJournal journal(out_dir, twb::describe_scene(scene), true);
+  twb::BearingModel model(scene);
+  twb::JournalOnlyScheduler only_journaled;
+  twb::StudyOutcome outcome = twb::run_study(model, progress_lines(quiet),
+                                             twb::RunOptions{.threads = 1, .journal = &journal,
+                                                             .scheduler = &only_journaled});
+  outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return write_results(out_dir, scene_name, scene, model, outcome, journal, verbose);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  const twb::cli::MpiJob job(argc, argv);
   CLI::App app{"twb: thrust washer bearings in mixed lubrication (Jackson & Green 2006)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string(twb::version()));
 
-  std::string scene_path, out_dir;
+  std::string scene_path;
   std::vector<std::string> overrides;
-  bool quiet = false;
+  RunRequest request;
 
   auto* check_cmd = app.add_subcommand("check", "validate a scene, print it resolved (SI) and its unknowns");
   check_cmd->add_option("scene", scene_path, "scene file (YAML)")->required();
   check_cmd->add_option("--set", overrides, "override a key: path=value, e.g. operating.load=\"800 N\"");
 
   auto* run_cmd = app.add_subcommand("run", "run the scene's study and write the results directory");
-  run_cmd->add_option("scene", scene_path, "scene file (YAML)")->required();
-  run_cmd->add_option("--out", out_dir, "results directory (default: the scene's output.directory)");
-  run_cmd->add_option("--set", overrides, "override a key: path=value, e.g. operating.load=\"800 N\"");
-  run_cmd->add_flag("-q,--quiet", quiet, "no progress on stderr");
-  bool verbose = false;
-  int threads = 0;
-  run_cmd->add_option("--threads", threads,
-                      "threads for a study's independent searches (speeds, parameter values); default: one per core. "
-                      "The results are the same for any number")
+  run_cmd->add_option("scene", request.path, "scene file (YAML)")->required();
+  run_cmd->add_option("--out", request.out_dir, "results directory (default: the scene's output.directory)");
+  run_cmd->add_option("--set", request.overrides, "override a key: path=value, e.g. operating.load=\"800 N\"");
+  run_cmd->add_flag("-q,--quiet", request.quiet, "no progress on stderr");
+  run_cmd->add_option("--threads", request.threads,
+                      "threads for a study's independent searches (speeds, parameter values); default: one per core "
+                      "(under mpirun: one per rank). The results are the same for any number")
       ->check(CLI::NonNegativeNumber);
-  bool resume = false;
-  run_cmd->add_flag("--resume", resume,
+  run_cmd->add_flag("--resume", request.resume,
                     "finish a run that was killed: the searches it finished are read from the results directory's "
                     "journal, the others run (the same scene and --set values)");
-  run_cmd->add_flag("-v,--verbose", verbose,
+  run_cmd->add_option("--slice", request.slice,
+                      "K/N: run only slice K of N of the study's independent searches (a job array; docs/scaling.md) "
+                      "and journal them in the results directory; `twb merge` makes the study's files of all N");
+  run_cmd->add_flag("-v,--verbose", request.verbose,
                     "also the solvers' own words where a search went on regardless (e.g. why natural "
                     "continuation stopped at a fold)");
+
+  std::vector<std::string> slice_dirs;
+  std::string merge_out;
+  bool merge_quiet = false, merge_verbose = false;
+  auto* merge_cmd = app.add_subcommand("merge", "make one study's results directory of the slices of a job array "
+                                                "(twb run --slice K/N), the same files as one run writes");
+  merge_cmd->add_option("slices", slice_dirs, "the slices' results directories")->required();
+  merge_cmd->add_option("--out", merge_out, "results directory to write")->required();
+  merge_cmd->add_flag("-q,--quiet", merge_quiet, "no progress on stderr");
+  merge_cmd->add_flag("-v,--verbose", merge_verbose, "also the solvers' own words (as twb run --verbose)");
 
   try {
     app.parse(argc, argv);
@@ -174,23 +301,26 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : exit_invalid_input;
   }
 
+  // Under mpirun every rank reads the same scene: only rank 0 says what is wrong, and an
+  // error there ends the job (the other ranks would wait for work).
+  auto fail = [&](int status, const std::string& message) {
+    if (job.rank() == 0) std::cerr << message << "\n";
+    if (job.active() && job.rank() == 0) job.abort(status);
+    return status;
+  };
   try {
     if (*check_cmd) return check(scene_path, overrides);
-    return run(scene_path, overrides, out_dir, quiet, verbose, threads, resume);
+    if (*merge_cmd) return merge(slice_dirs, merge_out, merge_quiet, merge_verbose);
+    return run(request, job);
   } catch (const twb::InputError& e) {
-    std::cerr << e.what() << "\n";
-    return exit_invalid_input;
+    return fail(exit_invalid_input, e.what());
   } catch (const twb::cli::ResultsDirectoryError& e) {
-    std::cerr << "twb: error: " << e.what() << "\n";
-    return exit_invalid_input;
+    return fail(exit_invalid_input, std::string("twb: error: ") + e.what());
   } catch (const std::invalid_argument& e) {
-    std::cerr << "twb: error: " << e.what() << "\n";
-    return exit_invalid_input;
+    return fail(exit_invalid_input, std::string("twb: error: ") + e.what());
   } catch (const twb::SolverFailure& e) {
-    std::cerr << "twb: solver failure: " << e.what() << "\n";
-    return exit_solver_failure;
+    return fail(exit_solver_failure, std::string("twb: solver failure: ") + e.what());
   } catch (const std::exception& e) {
-    std::cerr << "twb: internal error: " << e.what() << "\n";
-    return exit_internal_error;
+    return fail(exit_internal_error, std::string("twb: internal error: ") + e.what());
   }
 }

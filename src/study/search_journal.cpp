@@ -1,5 +1,6 @@
 #include "study/search_journal.h"
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -203,11 +204,20 @@ SearchJournal::SearchJournal(const fs::path& results, const std::string& scene, 
   write_file_atomically(name, scene);
 }
 
-std::optional<JournaledSearch> SearchJournal::read(std::size_t search) const {
+std::string journal_entry(const DistressSearch& found, long klu_factorizations) {
+  Out out;
+  out(std::string(kMagic));
+  const struct {
+    const DistressSearch& found;
+    long klu_factorizations;
+  } entry{found, klu_factorizations};
+  fields_of_search(out, entry);
+  return out.bytes();
+}
+
+std::optional<JournaledSearch> read_journal_entry(const std::string& bytes) {
   try {
-    const fs::path p = entry_path(dir_, search);
-    if (!fs::exists(p)) return std::nullopt;
-    In in(read_file(p));
+    In in(bytes);
     std::string magic;
     in(magic);
     if (magic != kMagic) return std::nullopt;  // another version's: run the search again
@@ -216,24 +226,55 @@ std::optional<JournaledSearch> SearchJournal::read(std::size_t search) const {
     if (!in.done()) return std::nullopt;
     return j;
   } catch (const std::exception&) {
-    return std::nullopt;  // unreadable or damaged: run the search again
+    return std::nullopt;  // damaged: run the search again
+  }
+}
+
+std::optional<JournaledSearch> SearchJournal::read(std::size_t search) const {
+  try {
+    const fs::path p = entry_path(dir_, search);
+    if (!fs::exists(p)) return std::nullopt;
+    return read_journal_entry(read_file(p));
+  } catch (const std::exception&) {
+    return std::nullopt;  // unreadable: run the search again
   }
 }
 
 void SearchJournal::write(std::size_t search, const DistressSearch& found, long klu_factorizations) const {
-  Out out;
-  out(std::string(kMagic));
-  const struct {
-    const DistressSearch& found;
-    long klu_factorizations;
-  } entry{found, klu_factorizations};
-  fields_of_search(out, entry);
+  write_entry(search, journal_entry(found, klu_factorizations));
+}
+
+void SearchJournal::write_entry(std::size_t search, const std::string& entry) const {
   try {
-    write_file_atomically(entry_path(dir_, search), out.bytes());
+    write_file_atomically(entry_path(dir_, search), entry);
   } catch (const std::exception&) {
     // The journal only spares a resume work: a full disk must not end the study (its
     // results are written at the end, and fail there with the reason if it is still full).
   }
+}
+
+std::vector<std::size_t> SearchJournal::entries() const {
+  std::vector<std::size_t> found;
+  if (!fs::is_directory(dir_)) return found;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir_)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("search-", 0) == 0 && name.size() > 7 && name.find_first_not_of("0123456789", 7) == std::string::npos)
+      found.push_back(std::size_t(std::stoull(name.substr(7))));
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+bool SearchJournal::same_scene(const std::string& a, const std::string& b) {
+  return without_comments(a) == without_comments(b);
+}
+
+std::string SearchJournal::entry_bytes(std::size_t search) const { return read_file(entry_path(dir_, search)); }
+
+std::optional<std::string> SearchJournal::scene_of(const fs::path& results) {
+  const fs::path name = results / ".twb-journal" / "scene.yaml";
+  if (!fs::exists(name)) return std::nullopt;
+  return read_file(name);
 }
 
 void SearchJournal::finish() const { fs::remove_all(dir_); }

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "study/distress_search.h"
 
@@ -23,6 +24,12 @@ struct JournaledSearch {
   long klu_factorizations = 0;
 };
 
+// A search as one journal entry: every field, doubles bit for bit, with the format's and
+// the build's signature; what an MPI rank sends the rank that writes. Read back: none for
+// another build's entry or a damaged one.
+std::string journal_entry(const DistressSearch& found, long klu_factorizations);
+std::optional<JournaledSearch> read_journal_entry(const std::string& entry);
+
 class SearchJournal {
  public:
   // The journal in `results`; `scene` (the resolved scene's text) names the run. With
@@ -32,6 +39,16 @@ class SearchJournal {
 
   std::optional<JournaledSearch> read(std::size_t search) const;
   void write(std::size_t search, const DistressSearch& found, long klu_factorizations) const;
+  // An entry as journal_entry() made it (another process's search).
+  void write_entry(std::size_t search, const std::string& entry) const;
+  // The searches journaled so far, and one's entry as it is stored (twb merge).
+  std::vector<std::size_t> entries() const;
+  std::string entry_bytes(std::size_t search) const;
+  // The resolved scene a results directory's journal belongs to; none without a journal.
+  static std::optional<std::string> scene_of(const std::filesystem::path& results);
+  // Whether two resolved scenes are the same run's (their comments, which name the file as
+  // typed, aside).
+  static bool same_scene(const std::string& a, const std::string& b);
   // The run's files are written: nothing left to resume.
   void finish() const;
 

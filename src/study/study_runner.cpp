@@ -16,6 +16,7 @@
 #include "load_step_march.h"
 #include "parallel.h"
 #include "study/search_journal.h"
+#include "study/search_scheduler.h"
 #include "richardson.h"
 #include "study_support.h"
 #include "twb/scene/scene_loader.h"
@@ -184,6 +185,13 @@ void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings
                          e->fine_fold, e->fine_mesh, e->extrapolated, e->error, elapsed_ms(t0) / 1000.0));
 }
 
+// How a study's searches run: on how many threads here, journaled where, spread how.
+struct Running {
+  int threads = 1;
+  const SearchJournal* journal = nullptr;
+  SearchScheduler* scheduler = nullptr;
+};
+
 // One search of run_searches: its own model (no state shared between threads), found
 // and tagged with its run.
 struct SearchTask {
@@ -239,8 +247,8 @@ SearchDone search_one(const BearingModel& base, const SearchTask& task, const Di
 // left; a search that throws becomes a failed row, so that the study's other searches are
 // kept.
 void run_searches(BearingModel& base, const std::vector<Variant>& variants, const DistressSearchSettings& settings,
-                  const ProgressReport& progress, int threads, RunTimings& timings,
-                  std::vector<std::string>& diagnostics, const SearchResult& take, const SearchJournal* journal) {
+                  const ProgressReport& progress, const Running& how, RunTimings& timings,
+                  std::vector<std::string>& diagnostics, const SearchResult& take) {
   const std::vector<double> speeds = study_speeds(base);
   std::vector<SearchTask> tasks;
   for (const Variant& variant : variants)
@@ -251,31 +259,10 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
   std::map<std::size_t, SearchDone> ready;
   std::size_t next_to_take = 0, done = 0;
   const auto t0 = Clock::now();
-  run_in_parallel(total, threads, [&](std::size_t i) {
-    const SearchTask& task = tasks[i];
-    SearchDone result;
-    std::optional<JournaledSearch> kept = journal ? journal->read(i) : std::nullopt;
-    if (kept) {
-      // Found before the run was stopped: its model is rebuilt (the takers read its
-      // films), its search is not. A model that cannot be built runs the search again,
-      // which reports why.
-      try {
-        result.model = std::make_unique<BearingModel>(task.variant->scene ? *task.variant->scene : base.scene());
-        result.model->set_speed(task.speed);
-        result.found = std::move(kept->found);
-        result.klu_factorizations = kept->klu_factorizations;
-        if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}: from the journal", i + 1, total, task.speed, task.variant->label));
-      } catch (const std::exception&) {
-        kept.reset();
-      }
-    }
-    if (!kept) {
-      if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
-      result = search_one(base, task, settings, say);
-      // A search that failed is not kept: a resume tries it again (perhaps with fewer
-      // threads, or after the user freed memory).
-      if (journal && !result.found.failed) journal->write(i, result.found, result.klu_factorizations);
-    }
+  const SearchJournal* journal = how.journal;
+
+  // Hands search i to `take` once all before it are taken: the study's order.
+  auto deliver = [&](std::size_t i, SearchDone result) {
     const std::lock_guard<std::mutex> hold(lock);
     ready.emplace(i, std::move(result));
     ++done;
@@ -302,7 +289,64 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
       ready.erase(it);
       ++next_to_take;
     }
-  });
+  };
+  // A search found elsewhere (the journal, another process): its model is rebuilt (the
+  // takers read its films), its search is not. None when the model cannot be built.
+  auto from_entry = [&](std::size_t i, JournaledSearch&& kept) -> std::optional<SearchDone> {
+    const SearchTask& task = tasks[i];
+    try {
+      SearchDone result;
+      result.model = std::make_unique<BearingModel>(task.variant->scene ? *task.variant->scene : base.scene());
+      result.model->set_speed(task.speed);
+      result.found = std::move(kept.found);
+      result.klu_factorizations = kept.klu_factorizations;
+      return result;
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  };
+
+  // Found before the run was stopped: read, not run. A search whose model cannot be built
+  // runs again, which reports why.
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < total; ++i) {
+    std::optional<JournaledSearch> kept = journal ? journal->read(i) : std::nullopt;
+    std::optional<SearchDone> result = kept ? from_entry(i, std::move(*kept)) : std::nullopt;
+    if (!result) {
+      todo.push_back(i);
+      continue;
+    }
+    if (say)
+      say(fmt::format("[{}/{}] {:.6g} rad/s{}: from the journal", i + 1, total, tasks[i].speed, tasks[i].variant->label));
+    deliver(i, std::move(*result));
+  }
+
+  SearchScheduler::Work work;
+  work.run_here = [&](std::size_t i) {
+    const SearchTask& task = tasks[i];
+    if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
+    SearchDone result = search_one(base, task, settings, say);
+    // A search that failed is not kept: a resume tries it again (perhaps with fewer
+    // threads, or after the user freed memory).
+    if (journal && !result.found.failed) journal->write(i, result.found, result.klu_factorizations);
+    deliver(i, std::move(result));
+  };
+  work.run_for_another = [&](std::size_t i) {
+    const SearchTask& task = tasks[i];
+    if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
+    const SearchDone result = search_one(base, task, settings, say);
+    return journal_entry(result.found, result.klu_factorizations);
+  };
+  work.arrived = [&](std::size_t i, const std::string& entry) {
+    std::optional<JournaledSearch> kept = read_journal_entry(entry);
+    if (!kept) throw std::runtime_error(fmt::format("search {} came back damaged from another process", i + 1));
+    if (journal && !kept->found.failed) journal->write_entry(i, entry);
+    std::optional<SearchDone> result = from_entry(i, std::move(*kept));
+    if (!result) throw std::runtime_error(fmt::format("search {}: its model cannot be built here", i + 1));
+    deliver(i, std::move(*result));
+  };
+  ThreadScheduler here;
+  (how.scheduler ? *how.scheduler : here).run(todo, how.threads, work);
 }
 
 std::vector<double> load_grid(const Study& st) {
@@ -335,24 +379,22 @@ void keep_failure(StudyOutcome& out, const DistressSearch& found) {
   out.message += (out.message.empty() ? "" : "; ") + found.message;
 }
 
-void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads,
-                    const SearchJournal* journal) {
+void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, const Running& how) {
   const std::vector<Variant> variants = parameter_variants(model.scene(), out.parameter_column);
-  run_searches(model, variants, grid_settings(model.scene().study), progress, threads, out.timings, out.diagnostics,
+  run_searches(model, variants, grid_settings(model.scene().study), progress, how, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
                  out.states.insert(out.states.end(), found.states.begin(), found.states.end());
                  out.trajectory.insert(out.trajectory.end(), found.runaway.begin(), found.runaway.end());
                  out.distress.push_back(found.row);
                  keep_failure(out, found);
-               }, journal);
+               });
 }
 
-void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, int threads,
-                      const SearchJournal* journal) {
+void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, const Running& how) {
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
   DistressSearchSettings settings = range_settings(base.scene().study);
   settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
-  run_searches(base, variants, settings, progress, threads, out.timings, out.diagnostics,
+  run_searches(base, variants, settings, progress, how, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
     out.distress.push_back(found.row);
     // The cool branch's states are results too (f_eff, temperature against load).
@@ -360,15 +402,14 @@ void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressRepor
                       found.states.begin() + std::ptrdiff_t(found.cool_states));
     // One point that fails must not lose the map's other rows.
     if (found.failed) out.message += (out.message.empty() ? "" : "; ") + found.message;
-  }, journal);
+  });
 }
 
 // Which film slides (docs/physics.md section 2): both configurations swept over the load grid
 // at every speed, each continued past its own distress; at every grid load the one of
 // lower friction torque is chosen, the paper's assumption that the washer settles where
 // the friction loss is least.
-void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, int threads,
-                        const SearchJournal* journal) {
+void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, const Running& how) {
   const Study& st = base.scene().study;
   out.sliding_column = true;
   std::vector<Variant> variants;
@@ -382,7 +423,7 @@ void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressRep
   // Per speed and grid load, the state of each configuration that reached it.
   std::vector<std::vector<std::vector<SlidingRow>>> at(study_speeds(base).size(),
                                                         std::vector<std::vector<SlidingRow>>(grid.size()));
-  run_searches(base, variants, grid_settings(st), progress, threads, out.timings, out.diagnostics,
+  run_searches(base, variants, grid_settings(st), progress, how, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t speed, const BearingModel& model, DistressSearch& found) {
     const auto film = std::find_if(model.films().begin(), model.films().end(), [](const Film& f) { return f.sliding; });
     const double area = film->mesh.area();
@@ -392,7 +433,7 @@ void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressRep
     out.trajectory.insert(out.trajectory.end(), found.runaway.begin(), found.runaway.end());
     out.distress.push_back(found.row);
     keep_failure(out, found);
-  }, journal);
+  });
   for (auto& speed : at)
     for (std::vector<SlidingRow>& rows : speed) {
       if (rows.empty()) continue;
@@ -441,6 +482,7 @@ void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport&
 
 StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, const RunOptions& options) {
   const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  const Running how{threads, options.journal, options.scheduler};
   StudyOutcome out;
   const auto t0 = Clock::now();
   const SparseLu::Counts klu_before = SparseLu::thread_counts();
@@ -449,16 +491,16 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
       run_point(model, out);
       break;
     case StudyType::load_sweep:
-      run_load_sweep(model, out, progress, threads, options.journal);
+      run_load_sweep(model, out, progress, how);
       break;
     case StudyType::distress_map:
-      run_distress_map(model, out, progress, threads, options.journal);
+      run_distress_map(model, out, progress, how);
       break;
     case StudyType::transient:
       run_transient(model, out, progress);
       break;
     case StudyType::sliding_choice:
-      run_sliding_choice(model, out, progress, threads, options.journal);
+      run_sliding_choice(model, out, progress, how);
       break;
     case StudyType::distress_curve:
       run_distress_curve(model, out, progress, threads);

@@ -39,6 +39,7 @@ struct StudyOutcome {
 using ProgressReport = std::function<void(const std::string&)>;
 
 class SearchJournal;
+class SearchScheduler;
 
 struct RunOptions {
   // Threads for the study's independent searches (speeds, parameter values, sliding
@@ -47,6 +48,9 @@ struct RunOptions {
   // Where each finished search is written at once and, on resume, read instead of run
   // (search_journal.h); none: nothing journaled.
   const SearchJournal* journal = nullptr;
+  // Where the study's independent searches run (search_scheduler.h: MPI ranks, a slice of
+  // a job array); none: on `threads` threads here. Like the journal, twb's command's own.
+  SearchScheduler* scheduler = nullptr;
 };
 
 // The tables a study writes, named by their file's stem ("states", "distress",

@@ -1,0 +1,102 @@
+#!/bin/sh
+# How a study's searches scale over cores and ranks, for docs/scaling.md:
+#   - an even map: 8 distress searches of similar cost (8 speeds from 900 to 1040 rad/s on
+#     the paper's 9 x 66 mesh, no error bar), run REPS times each on 1 thread, on 2
+#     threads and (with mpirun) on 2 MPI ranks of one thread: the median wall time, the
+#     speedup over 1 thread and the efficiency (speedup / 2), measured in this one run;
+#   - with --design, the shipped design map (configs/studies/design_map.yaml, 200
+#     searches) once on 1 thread, 2 threads and 2 ranks, with its speedups.
+# Every variant's CSV files are compared with the 1-thread run's, byte for byte.
+#
+#   scripts/scaling_study.sh [--twb PATH] [--out DIR] [--reps N] [--design]
+#
+#   --twb PATH   the twb binary (default: build-rel/twb, else build/twb, else twb on PATH)
+#   --out DIR    where results go (default: results/scaling)
+#   --reps N     repetitions of the even map (default 3; the median is reported)
+#   --design     also the 200-search design map (about 10 min on 2 cores)
+#
+# Writes DIR/scaling.csv (study, runner, repetition, seconds) and prints the Markdown table
+# of docs/scaling.md. Exit status: 0 done; 1 a run failed or its files differ; 2 bad usage.
+set -u
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+twb=""
+out="results/scaling"
+reps=3
+design=0
+args=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --reps) reps=$2; shift 2 ;;
+    --design) design=1; shift ;;
+    *) args="$args $1"; shift ;;
+  esac
+done
+. "$root/scripts/find_twb.sh"
+# shellcheck disable=SC2086
+study_options scaling_study.sh 13,18 $args
+
+mpiexec=$(command -v mpirun || true)
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mkdir -p "$out"
+rm -f "$out/failed"
+csv="$out/scaling.csv"
+echo "study,runner,repetition,seconds" > "$csv"
+status=0
+
+even_map() {
+  "$@" run "$root/configs/jackson_green_2006.yaml" --quiet \
+    --set 'study={type: distress_map, speeds: [900 rad/s, 920 rad/s, 940 rad/s, 960 rad/s, 980 rad/s, 1000 rad/s, 1020 rad/s, 1040 rad/s], load_start: 60 N, load_end: 2000 N, error_estimate: none}'
+}
+design_map() { "$@" run "$root/configs/studies/design_map.yaml" --quiet; }
+
+seconds() {  # seconds NAME -- COMMAND...: wall time of the command (its output discarded)
+  start=$(date +%s%N)
+  shift
+  if ! "$@" > /dev/null 2>&1; then echo "scaling_study.sh: failed: $*" >&2; touch "$out/failed"; fi
+  end=$(date +%s%N)
+  ms=$(( (end - start) / 1000000 ))
+  printf '%d.%03d\n' $((ms / 1000)) $((ms % 1000))
+}
+
+same() {  # same DIR_A DIR_B: the CSVs byte for byte
+  for f in $(cd "$1" && find . -name '*.csv'); do
+    cmp -s "$1/$f" "$2/$f" || { echo "scaling_study.sh: $2/$f differs from $1/$f" >&2; status=1; }
+  done
+}
+
+measure() {  # measure STUDY REPS
+  study=$1 n=$2
+  for r in $(seq 1 "$n"); do
+    t=$(seconds x -- $study "$twb" --threads 1 --out "$out/$study/threads-1"); echo "$study,1 thread,$r,$t" >> "$csv"
+    t=$(seconds x -- $study "$twb" --threads 2 --out "$out/$study/threads-2"); echo "$study,2 threads,$r,$t" >> "$csv"
+    same "$out/$study/threads-1" "$out/$study/threads-2"
+    if [ -n "$mpiexec" ]; then
+      t=$(seconds x -- $study "$mpiexec" -np 2 "$twb" --out "$out/$study/ranks-2")
+      echo "$study,2 MPI ranks,$r,$t" >> "$csv"
+      same "$out/$study/threads-1" "$out/$study/ranks-2"
+    fi
+  done
+}
+
+measure even_map "$reps"
+[ "$design" -eq 1 ] && measure design_map 1
+
+/usr/bin/python3 - "$csv" <<'PY'
+import csv, statistics, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+print("| study | runner | median s (runs) | speedup | efficiency |")
+print("|---|---|---|---|---|")
+for study in dict.fromkeys(r["study"] for r in rows):
+    times = {}
+    for r in rows:
+        if r["study"] == study:
+            times.setdefault(r["runner"], []).append(float(r["seconds"]))
+    base = statistics.median(times["1 thread"])
+    for runner, t in times.items():
+        m = statistics.median(t)
+        workers = 1 if runner == "1 thread" else 2
+        print(f"| {study} | {runner} | {m:.1f} ({len(t)}) | {base / m:.2f} | {base / m / workers:.2f} |")
+PY
+[ -e "$out/failed" ] && status=1
+exit $status

@@ -1,0 +1,148 @@
+#include "mpi_searches.h"
+
+#include <cstdlib>
+
+#ifdef TWB_WITH_MPI
+// The C interface only: Open MPI's and MPICH's deprecated C++ bindings need a library of their own.
+#define OMPI_SKIP_MPICXX 1
+#define MPICH_SKIP_MPICXX 1
+#include <mpi.h>
+
+#include <algorithm>
+#include <atomic>
+#include <optional>
+#include <utility>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+#endif
+
+namespace twb::cli {
+
+#ifdef TWB_WITH_MPI
+
+namespace {
+
+// Started by a launcher: Open MPI's mpirun, or any PMI/PMIx one (MPICH, Slurm's srun).
+bool launched_by_mpi() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+    if (std::getenv(name)) return true;
+  return false;
+}
+
+constexpr int kAsk = 1;     // rank → 0: the search just run (if any) and a request for the next
+constexpr int kAssign = 2;  // 0 → rank: the next search, or kNone
+
+constexpr std::int64_t kNone = -1;
+
+// A request: [has_result: 1 byte][search: 8 bytes][journal entry...].
+std::string ask(std::optional<std::pair<std::size_t, std::string>> result) {
+  std::string msg(1 + sizeof(std::int64_t), '\0');
+  msg[0] = result ? 1 : 0;
+  const std::int64_t search = result ? std::int64_t(result->first) : kNone;
+  std::memcpy(msg.data() + 1, &search, sizeof search);
+  if (result) msg += result->second;
+  return msg;
+}
+
+void check(int code, const char* call) {
+  if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + call + " failed");
+}
+
+}  // namespace
+
+MpiJob::MpiJob(int& argc, char**& argv) {
+  if (!launched_by_mpi()) return;
+  // Only the main thread calls MPI; rank 0's searches run on threads of their own.
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  initialized_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiJob::~MpiJob() {
+  if (initialized_) MPI_Finalize();
+}
+
+void MpiJob::abort(int status) const {
+  if (initialized_ && size_ > 1) MPI_Abort(MPI_COMM_WORLD, status);
+  std::exit(status);
+}
+
+void MpiScheduler::run(const std::vector<std::size_t>& todo, int threads, const Work& work) {
+  if (job_.rank() != 0) {
+    // A worker: ask, run what is assigned, send it back with the next request.
+    std::optional<std::pair<std::size_t, std::string>> result;
+    for (;;) {
+      const std::string msg = ask(std::move(result));
+      result.reset();
+      check(MPI_Send(msg.data(), int(msg.size()), MPI_BYTE, 0, kAsk, MPI_COMM_WORLD), "MPI_Send");
+      std::int64_t search = kNone;
+      check(MPI_Recv(&search, 1, MPI_INT64_T, 0, kAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
+      if (search == kNone) return;
+      result.emplace(std::size_t(search), work.run_for_another(std::size_t(search)));
+    }
+  }
+
+  // Rank 0: one counter over `todo` for its own threads and for every other rank's requests.
+  std::atomic<std::size_t> next{0};
+  auto claim = [&]() -> std::optional<std::size_t> {
+    const std::size_t k = next++;
+    if (k < todo.size()) return todo[k];
+    return std::nullopt;
+  };
+  std::vector<std::thread> own;
+  for (int t = 0; t < std::max(threads, 1); ++t)
+    own.emplace_back([&]() {
+      while (const auto i = claim()) work.run_here(*i);
+    });
+  // Polled with a short sleep, so that waiting for requests does not take a core from the
+  // searches (a blocking receive spins in Open MPI).
+  int working = job_.size() - 1;
+  std::string buffer;
+  while (working > 0) {
+    int flag = 0;
+    MPI_Status status;
+    check(MPI_Iprobe(MPI_ANY_SOURCE, kAsk, MPI_COMM_WORLD, &flag, &status), "MPI_Iprobe");
+    if (!flag) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      continue;
+    }
+    int bytes = 0;
+    MPI_Get_count(&status, MPI_BYTE, &bytes);
+    buffer.resize(std::size_t(bytes));
+    check(MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, kAsk, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+          "MPI_Recv");
+    if (buffer.size() >= 1 + sizeof(std::int64_t) && buffer[0] == 1) {
+      std::int64_t search = kNone;
+      std::memcpy(&search, buffer.data() + 1, sizeof search);
+      work.arrived(std::size_t(search), buffer.substr(1 + sizeof search));
+    }
+    const auto i = claim();
+    const std::int64_t assign = i ? std::int64_t(*i) : kNone;
+    check(MPI_Send(&assign, 1, MPI_INT64_T, status.MPI_SOURCE, kAssign, MPI_COMM_WORLD), "MPI_Send");
+    if (!i) --working;
+  }
+  for (std::thread& t : own) t.join();
+}
+
+bool built_with_mpi() { return true; }
+
+#else
+
+MpiJob::MpiJob(int&, char**&) {}
+MpiJob::~MpiJob() = default;
+void MpiJob::abort(int status) const { std::exit(status); }
+void MpiScheduler::run(const std::vector<std::size_t>& todo, int threads, const Work& work) {
+  ThreadScheduler().run(todo, threads, work);
+}
+bool built_with_mpi() { return false; }
+
+#endif
+
+}  // namespace twb::cli
