@@ -37,7 +37,9 @@ void run_scene(benchmark::State& state, const fs::path& path) {
 int main(int argc, char** argv) {
   std::vector<fs::path> scenes{fs::path(TWB_SOURCE_DIR) / "configs" / "jackson_green_2006.yaml"};
   for (const auto& entry : fs::directory_iterator(fs::path(TWB_SOURCE_DIR) / "configs" / "studies"))
-    if (entry.path().extension() == ".yaml") scenes.push_back(entry.path());
+    // The 200-search design map is timed by scripts/scaling_study.sh (docs/scaling.md), on
+    // 1 and 2 threads and 2 ranks: a minute a run would dwarf the rest here.
+    if (entry.path().extension() == ".yaml" && entry.path().stem() != "design_map") scenes.push_back(entry.path());
   std::sort(scenes.begin() + 1, scenes.end());
   for (const fs::path& scene : scenes)
     benchmark::RegisterBenchmark(scene.stem().string().c_str(), [scene](benchmark::State& s) { run_scene(s, scene); })

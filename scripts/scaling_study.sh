@@ -44,36 +44,48 @@ csv="$out/scaling.csv"
 echo "study,runner,repetition,seconds" > "$csv"
 status=0
 
+launch=""  # empty, or the MPI launcher and its options
 even_map() {
-  "$@" run "$root/configs/jackson_green_2006.yaml" --quiet \
-    --set 'study={type: distress_map, speeds: [900 rad/s, 920 rad/s, 940 rad/s, 960 rad/s, 980 rad/s, 1000 rad/s, 1020 rad/s, 1040 rad/s], load_start: 60 N, load_end: 2000 N, error_estimate: none}'
+  $launch "$twb" run "$root/configs/jackson_green_2006.yaml" --quiet \
+    --set 'study={type: distress_map, speeds: [900 rad/s, 920 rad/s, 940 rad/s, 960 rad/s, 980 rad/s, 1000 rad/s, 1020 rad/s, 1040 rad/s], load_start: 60 N, load_end: 2000 N, error_estimate: none}' "$@"
 }
-design_map() { "$@" run "$root/configs/studies/design_map.yaml" --quiet; }
+design_map() { $launch "$twb" run "$root/configs/studies/design_map.yaml" --quiet "$@"; }
 
-seconds() {  # seconds NAME -- COMMAND...: wall time of the command (its output discarded)
+seconds() {  # seconds COMMAND...: its wall time (its output to $out/last.log)
   start=$(date +%s%N)
-  shift
-  if ! "$@" > /dev/null 2>&1; then echo "scaling_study.sh: failed: $*" >&2; touch "$out/failed"; fi
+  if ! "$@" > "$out/last.log" 2>&1; then
+    echo "scaling_study.sh: failed: $*" >&2
+    cat "$out/last.log" >&2
+    touch "$out/failed"
+  fi
   end=$(date +%s%N)
   ms=$(( (end - start) / 1000000 ))
   printf '%d.%03d\n' $((ms / 1000)) $((ms % 1000))
 }
 
-same() {  # same DIR_A DIR_B: the CSVs byte for byte
+# A CSV file without states.csv's wall_ms (a measured time, the one column not a result).
+results_of() {
+  awk -F, 'NR == 1 { for (k = 1; k <= NF; ++k) if ($k == "wall_ms") w = k }
+           { s = ""; for (k = 1; k <= NF; ++k) if (k != w) s = s "," $k; print s }' "$1"
+}
+
+same() {  # same DIR_A DIR_B: the CSVs byte for byte, wall_ms aside
   for f in $(cd "$1" && find . -name '*.csv'); do
-    cmp -s "$1/$f" "$2/$f" || { echo "scaling_study.sh: $2/$f differs from $1/$f" >&2; status=1; }
+    [ "$(results_of "$1/$f" | cksum)" = "$(results_of "$2/$f" | cksum)" ] ||
+      { echo "scaling_study.sh: $2/$f differs from $1/$f" >&2; status=1; }
   done
 }
 
 measure() {  # measure STUDY REPS
   study=$1 n=$2
   for r in $(seq 1 "$n"); do
-    t=$(seconds x -- $study "$twb" --threads 1 --out "$out/$study/threads-1"); echo "$study,1 thread,$r,$t" >> "$csv"
-    t=$(seconds x -- $study "$twb" --threads 2 --out "$out/$study/threads-2"); echo "$study,2 threads,$r,$t" >> "$csv"
+    launch=""
+    t=$(seconds $study --threads 1 --out "$out/$study/threads-1"); echo "$study,1 thread,$r,$t" >> "$csv"
+    t=$(seconds $study --threads 2 --out "$out/$study/threads-2"); echo "$study,2 threads,$r,$t" >> "$csv"
     same "$out/$study/threads-1" "$out/$study/threads-2"
     if [ -n "$mpiexec" ]; then
-      t=$(seconds x -- $study "$mpiexec" -np 2 "$twb" --out "$out/$study/ranks-2")
-      echo "$study,2 MPI ranks,$r,$t" >> "$csv"
+      launch="$mpiexec -np 2"
+      t=$(seconds $study --out "$out/$study/ranks-2"); echo "$study,2 MPI ranks,$r,$t" >> "$csv"
       same "$out/$study/threads-1" "$out/$study/ranks-2"
     fi
   done

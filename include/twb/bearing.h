@@ -33,23 +33,27 @@ class Bearing {
 
   // The steady state at `load` (N) and `speed` (rad/s): Newton from the last state this
   // object solved, which is what a caller stepping through nearby operating points wants
-  // (one or two iterations), and from the paper's cold start the first time or after a
-  // failure, with the same fall-backs as a study's point (pseudo-time, ramps). Throws
-  // twb::SolverFailure when no steady state is found; the last good state is kept.
+  // (a few iterations), and from the paper's cold start the first time (or after
+  // forget_state), with the same fall-backs as a study's point (pseudo-time, ramps).
+  // Throws twb::SolverFailure when no steady state is found; the last good state is
+  // kept. Between the cool branch's fold (W_d) and the hot branch's return, two steady
+  // states exist at one load: a warm start stays on the branch it comes from, a cold
+  // start finds the cool one if it can. The state says neither (its `branch` is empty);
+  // a load sweep study follows and names the branches.
   SolvedState solve(double load, double speed);
   // Forgets the last state: the next solve starts cold, as `twb run` on a point does.
   void forget_state();
 
   // The study the scene names, as `twb run` runs it (the same numbers to the last bit),
-  // without writing anything. The load and speed are the scene's.
+  // without writing anything, at the scene's load and speed whatever solve() was asked.
   StudyOutcome run_study(const ProgressReport& progress = {}, const RunOptions& options = {});
 
-  // The model itself, for twb's own layers (its header is not installed).
-  BearingModel& model() { return *model_; }
+  // A moved-from Bearing may only be assigned to or destroyed.
 
  private:
   std::unique_ptr<BearingModel> model_;
   std::vector<double> state_;
+  double scene_load_ = 0.0, scene_speed_ = 0.0;  // where the scene puts the bearing
 };
 
 }  // namespace twb

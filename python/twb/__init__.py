@@ -12,7 +12,10 @@ numbers `twb run` writes, unrounded (the CSV files hold them to ten digits). The
 figures are in twb.plot, which needs only the results files, not the compiled core.
 """
 
+import json
+import numbers
 import os
+import re
 
 try:
     from . import _twb
@@ -20,7 +23,7 @@ except ImportError as _error:  # the plotting part (twb.plot) works without it
     _twb = None
     _import_error = _error
 
-__all__ = ["Scene", "Results", "Table", "SceneError", "SolverFailure", "run", "override_texts"]
+__all__ = ["Bearing", "Scene", "Results", "Table", "SceneError", "SolverFailure", "run", "override_texts"]
 
 
 def _core():
@@ -37,6 +40,8 @@ if _twb is not None:
     SolverFailure = _twb.SolverFailure
     __version__ = _twb.__version__
 else:
+    __version__ = None
+
     class SceneError(ValueError):
         """A defect in a scene; has file, line, column and message."""
 
@@ -44,18 +49,27 @@ else:
         """A state a run needed could not be solved."""
 
 
-def _flow(value):
-    """A Python value as YAML flow text, as one writes it after `twb run --set path=`."""
+# Text YAML reads as the same plain string inside a flow list or map: anything else
+# (a comma, a colon, a bracket, a quote ...) is quoted.
+_PLAIN = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_ .+\-/]*")
+
+
+def _flow(value, nested=False):
+    """A Python value as YAML flow text, as one writes it after `twb run --set path=`.
+    A string at the top is that text as it is (so "[a, b]" is a list, as with --set);
+    inside a list or map it is quoted where YAML would read it otherwise."""
     if isinstance(value, bool):
         return "true" if value else "false"
-    if isinstance(value, (int, float)):
-        return repr(value)
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        return repr(float(value))
     if isinstance(value, str):
-        return value
+        return value if not nested or _PLAIN.fullmatch(value) else json.dumps(value)
     if isinstance(value, dict):
-        return "{" + ", ".join(f"{k}: {_flow(v)}" for k, v in value.items()) + "}"
+        return "{" + ", ".join(f"{k}: {_flow(v, True)}" for k, v in value.items()) + "}"
     if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(_flow(v) for v in value) + "]"
+        return "[" + ", ".join(_flow(v, True) for v in value) + "]"
     raise TypeError(f"override value {value!r}: use str, int, float, bool, list or dict")
 
 
@@ -180,14 +194,41 @@ class Results:
         return f"twb.Results({parts})"
 
 
+class Bearing:
+    """The bearing of one scene for point after point, as a program embedding twb uses
+    it (twb::Bearing): solve(load, speed) is the steady state there, Newton from the
+    last state solved (a few iterations for a nearby point), cold the first time. It
+    returns a mapping of states.csv's columns to their values, unrounded. Between W_d
+    and the hot branch's return two states exist at one load: a warm start stays on
+    its branch (a load_sweep study follows and names them)."""
+
+    def __init__(self, scene, overrides=None):
+        if not isinstance(scene, Scene):
+            scene = Scene(scene, overrides)
+        elif overrides:
+            scene = scene.override(overrides)
+        self.scene = scene
+        self._bearing = _core().Bearing(scene._scene)
+
+    def solve(self, load, speed):
+        """The state at `load` (N) and `speed` (rad/s); twb.SolverFailure if none is found
+        (the last good state is kept for the next warm start)."""
+        return self._bearing.solve(float(load), float(speed))
+
+    def forget_state(self):
+        """The next solve starts cold."""
+        self._bearing.forget_state()
+
+
 def run(scene, overrides=None, progress=None, threads=0):
     """Runs the study a scene names and returns its Results.
 
     scene: a path or a twb.Scene; overrides: as for twb.Scene (applied after the
     scene's own); progress: called with each progress line twb run would print (from
-    the solving threads, one at a time; an exception it raises is raised when the study
-    has finished); threads: for the study's independent searches, 0 = one per core (the
-    results do not depend on it). The GIL is released while solving."""
+    the solving threads, one at a time); threads: for the study's independent searches,
+    0 = one per core (the results do not depend on it). The GIL is released while
+    solving. An exception from the callback, or Ctrl-C, stops the study: the searches
+    under way finish, no new one begins, and the exception is raised then."""
     if isinstance(scene, Scene):
         if overrides:
             scene = scene.override(overrides)

@@ -9,7 +9,9 @@
 
 namespace twb {
 
-Bearing::Bearing(const Scene& scene) : model_(std::make_unique<BearingModel>(scene)) {}
+Bearing::Bearing(const Scene& scene)
+    : model_(std::make_unique<BearingModel>(scene)), scene_load_(scene.operating.load),
+      scene_speed_(scene.operating.speed) {}
 Bearing::~Bearing() = default;
 Bearing::Bearing(Bearing&&) noexcept = default;
 Bearing& Bearing::operator=(Bearing&&) noexcept = default;
@@ -21,20 +23,38 @@ std::vector<UnknownBlock> Bearing::unknowns() const { return model_->layout().bl
 long Bearing::unknown_count() const { return long(model_->size()); }
 long Bearing::jacobian_nonzeros() const { return long(model_->pattern().nnz()); }
 
+namespace {
+
+// The model at another operating point for one solve, back at the scene's afterwards
+// (on every way out), so that scene() and run_study() stay the scene's.
+class OperatingPoint {
+ public:
+  OperatingPoint(BearingModel& model, double load, double speed, double scene_load, double scene_speed)
+      : model_(model), scene_load_(scene_load), scene_speed_(scene_speed) {
+    model_.set_load(load);
+    model_.set_speed(speed);
+  }
+  ~OperatingPoint() {
+    model_.set_load(scene_load_);
+    model_.set_speed(scene_speed_);
+  }
+  OperatingPoint(const OperatingPoint&) = delete;
+  OperatingPoint& operator=(const OperatingPoint&) = delete;
+
+ private:
+  BearingModel& model_;
+  double scene_load_, scene_speed_;
+};
+
+}  // namespace
+
 SolvedState Bearing::solve(double load, double speed) {
-  // The scene's load and speed are where a study starts; a point asked for here must
-  // not depend on them, so both are set before either solve.
-  const double old_load = model_->load(), old_speed = model_->speed();
-  model_->set_load(load);
-  model_->set_speed(speed);
+  const OperatingPoint at(*model_, load, speed, scene_load_, scene_speed_);
   SteadySolver solver(*model_, newton_settings(model_->scene()));
   std::vector<double> u = state_;
   const SteadyReport rep = u.empty() ? solver.solve_cold(u) : solver.solve(u);
-  if (!rep.converged) {
-    model_->set_load(old_load);
-    model_->set_speed(old_speed);
+  if (!rep.converged)
     throw SolverFailure(fmt::format("no steady state at {:.6g} N, {:.6g} rad/s: {}", load, speed, rep.message), -1);
-  }
   state_ = u;
   SolvedState row = solved_state(*model_, u);
   row.converged = true;

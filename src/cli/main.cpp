@@ -84,17 +84,11 @@ int check(const std::string& path, const std::vector<std::string>& overrides) {
   return 0;
 }
 
-// The studies whose searches are independent: what threads, MPI ranks and slices spread.
-bool has_independent_searches(twb::StudyType type) {
-  return type == twb::StudyType::load_sweep || type == twb::StudyType::distress_map ||
-         type == twb::StudyType::sliding_choice;
-}
-
 struct RunRequest {
   std::string path;
   std::vector<std::string> overrides;
   std::string out_dir;
-  bool quiet = false, verbose = false, resume = false;
+  bool quiet = false, verbose = false, resume = false, full_precision = false;
   int threads = 0;
   std::string slice;  // "K/N", or empty
 };
@@ -111,10 +105,10 @@ std::pair<int, int> parse_slice(const std::string& text) {
 // The study's results: the tables, the fields, run.json last; then the summary on stdout.
 int write_results(const std::filesystem::path& dir, const std::string& scene_path, const twb::Scene& scene,
                   const twb::BearingModel& model, const twb::StudyOutcome& outcome, const twb::SearchJournal& journal,
-                  bool verbose) {
+                  bool verbose, int digits) {
   for (const twb::NamedTable& table : twb::study_tables(outcome, scene.study.type))
-    twb::write_file_atomically(dir / (table.name + ".csv"), table.table.csv());
-  twb::write_state_fields(dir, outcome.states);
+    twb::write_file_atomically(dir / (table.name + ".csv"), table.table.csv(digits));
+  twb::write_state_fields(dir, outcome.states, digits);
   const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message
                                                     : (outcome.message.empty() ? "ok" : outcome.message);
   twb::write_file_atomically(dir / "run.json", twb::run_json(scene_path, twb::describe_scene(scene), model.layout(),
@@ -152,11 +146,11 @@ twb::ProgressReport progress_lines(bool quiet, const std::string& prefix = {}) {
 // Another rank of an MPI job: the same scene and model, its share of the searches, no files.
 int run_as_worker(const RunRequest& r, const twb::cli::MpiJob& job) {
   const twb::Scene scene = twb::load_scene(r.path, r.overrides);
-  if (!has_independent_searches(scene.study.type)) return 0;  // rank 0 runs such a study alone
+  if (!twb::has_independent_searches(scene.study.type)) return 0;  // rank 0 runs such a study alone
   twb::BearingModel model(scene);
   twb::cli::MpiScheduler scheduler(job);
   twb::run_study(model, progress_lines(r.quiet || !r.verbose, fmt::format("twb[rank {}]: ", job.rank())),
-                 twb::RunOptions{.threads = 1, .journal = nullptr, .scheduler = &scheduler});
+                 twb::RunOptions{.threads = 1}, twb::StudyPlumbing{.journal = nullptr, .scheduler = &scheduler});
   return 0;
 }
 
@@ -167,7 +161,7 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   print_warnings(scene, std::cerr);
   std::optional<twb::SliceScheduler> slice;
   if (!r.slice.empty()) {
-    if (!has_independent_searches(scene.study.type))
+    if (!twb::has_independent_searches(scene.study.type))
       throw std::invalid_argument("--slice needs a study of independent searches (load_sweep, distress_map, "
                                   "sliding_choice): this scene's study is one piece of work");
     const auto [k, n] = parse_slice(r.slice);
@@ -190,7 +184,7 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   if (slice) {
     scheduler = &*slice;
   } else if (job.active()) {
-    if (has_independent_searches(scene.study.type)) {
+    if (twb::has_independent_searches(scene.study.type)) {
       ranks.emplace(job);
       scheduler = &*ranks;
       if (threads == 0) threads = 1;  // one search per rank, as on every other rank
@@ -198,9 +192,8 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
       std::cerr << "twb: this study is one piece of work: rank 0 runs it, the other ranks wait\n";
     }
   }
-  twb::StudyOutcome outcome = twb::run_study(model, progress_lines(r.quiet),
-                                             twb::RunOptions{.threads = threads, .journal = &journal,
-                                                             .scheduler = scheduler});
+  twb::StudyOutcome outcome = twb::run_study(model, progress_lines(r.quiet), twb::RunOptions{.threads = threads},
+                                             twb::StudyPlumbing{.journal = &journal, .scheduler = scheduler});
   outcome.timings.setup_ms = setup_ms;
   outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (slice) {
@@ -211,11 +204,12 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
                              r.slice, total, r.out_dir, outcome.timings.total_ms / 1000.0);
     return outcome.solver_failed ? exit_solver_failure : 0;
   }
-  return write_results(r.out_dir, r.path, scene, model, outcome, journal, r.verbose);
+  return write_results(r.out_dir, r.path, scene, model, outcome, journal, r.verbose, r.full_precision ? 17 : 10);
 }
 
 // twb merge: the slices' journals into one results directory, exactly as one run writes it.
-int merge(const std::vector<std::string>& slices, const std::string& out_dir, bool quiet, bool verbose) {
+int merge(const std::vector<std::string>& slices, const std::string& out_dir, bool quiet, bool verbose,
+          bool full_precision) {
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<std::string> scene_text;
   for (const std::string& dir : slices) {
@@ -242,11 +236,10 @@ int merge(const std::vector<std::string>& slices, const std::string& out_dir, bo
   const twb::SearchJournal journal(out_dir, twb::describe_scene(scene), true);
   twb::BearingModel model(scene);
   twb::JournalOnlyScheduler only_journaled;
-  twb::StudyOutcome outcome = twb::run_study(model, progress_lines(quiet),
-                                             twb::RunOptions{.threads = 1, .journal = &journal,
-                                                             .scheduler = &only_journaled});
+  twb::StudyOutcome outcome = twb::run_study(model, progress_lines(quiet), twb::RunOptions{.threads = 1},
+                                             twb::StudyPlumbing{.journal = &journal, .scheduler = &only_journaled});
   outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  return write_results(out_dir, scene_name, scene, model, outcome, journal, verbose);
+  return write_results(out_dir, scene_name, scene, model, outcome, journal, verbose, full_precision ? 17 : 10);
 }
 
 }  // namespace
@@ -280,19 +273,23 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--slice", request.slice,
                       "K/N: run only slice K of N of the study's independent searches (a job array; docs/scaling.md) "
                       "and journal them in the results directory; `twb merge` makes the study's files of all N");
+  run_cmd->add_flag("--full-precision", request.full_precision,
+                    "write every number of the general columns with 17 significant digits, so that each reads "
+                    "back as the very double twb computed (default: 10)");
   run_cmd->add_flag("-v,--verbose", request.verbose,
                     "also the solvers' own words where a search went on regardless (e.g. why natural "
                     "continuation stopped at a fold)");
 
   std::vector<std::string> slice_dirs;
   std::string merge_out;
-  bool merge_quiet = false, merge_verbose = false;
+  bool merge_quiet = false, merge_verbose = false, merge_full_precision = false;
   auto* merge_cmd = app.add_subcommand("merge", "make one study's results directory of the slices of a job array "
                                                 "(twb run --slice K/N), the same files as one run writes");
   merge_cmd->add_option("slices", slice_dirs, "the slices' results directories")->required();
   merge_cmd->add_option("--out", merge_out, "results directory to write")->required();
   merge_cmd->add_flag("-q,--quiet", merge_quiet, "no progress on stderr");
   merge_cmd->add_flag("-v,--verbose", merge_verbose, "also the solvers' own words (as twb run --verbose)");
+  merge_cmd->add_flag("--full-precision", merge_full_precision, "17 significant digits (as twb run --full-precision)");
 
   try {
     app.parse(argc, argv);
@@ -310,7 +307,7 @@ int main(int argc, char** argv) {
   };
   try {
     if (*check_cmd) return check(scene_path, overrides);
-    if (*merge_cmd) return merge(slice_dirs, merge_out, merge_quiet, merge_verbose);
+    if (*merge_cmd) return merge(slice_dirs, merge_out, merge_quiet, merge_verbose, merge_full_precision);
     return run(request, job);
   } catch (const twb::InputError& e) {
     return fail(exit_invalid_input, e.what());

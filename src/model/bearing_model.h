@@ -18,6 +18,7 @@
 #include "twb/model/bearing_state.h"
 #include "twb/model/film_fields.h"
 #include "twb/model/film_mesh.h"
+#include "model/gauss_rule.h"
 #include "twb/model/operating_limits.h"
 #include "model/sparse_assembly.h"
 #include "model/unknown_layout.h"

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "model/limit_thresholds.h"
 #include "assembly_totals.h"
 
 namespace twb {

@@ -1,5 +1,7 @@
 #include "twb/model/operating_limits.h"
 
+#include "model/limit_thresholds.h"
+
 #include <algorithm>
 
 #include <fmt/format.h>

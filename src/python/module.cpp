@@ -8,6 +8,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
+#include <chrono>
 #include <exception>
 #include <mutex>
 #include <optional>
@@ -86,8 +88,13 @@ py::dict timings_dict(const twb::RunTimings& t) {
 }
 
 py::list unknowns_list(const twb::Scene& scene) {
+  std::vector<twb::UnknownBlock> blocks;
+  {
+    py::gil_scoped_release no_gil;  // building the model takes a while on fine meshes
+    blocks = twb::Bearing(scene).unknowns();
+  }
   py::list out;
-  for (const twb::UnknownBlock& b : twb::Bearing(scene).unknowns()) {
+  for (const twb::UnknownBlock& b : blocks) {
     py::dict d;
     d["name"] = b.name;
     d["effect"] = b.effect;
@@ -98,27 +105,28 @@ py::list unknowns_list(const twb::Scene& scene) {
 }
 
 // The progress callback runs on whichever thread a search reports from: it takes the
-// GIL for the call. An exception it raises cannot unwind through the solvers' threads;
-// the first is kept and raised when the study has finished.
+// GIL for the call, and there Python's signals are looked at too (Ctrl-C), on the main
+// thread, whether or not there is a callback. An exception from either cannot unwind
+// through the solvers' threads: the first is kept, the study is told to stop (the
+// searches under way finish, no new one begins), and it is raised once the study ends.
 class ProgressRelay {
  public:
   explicit ProgressRelay(py::object callback) : callback_(std::move(callback)) {}
   twb::ProgressReport report() {
-    if (callback_.is_none()) return {};
     return [this](const std::string& line) {
+      if (stop_.load()) return;
       py::gil_scoped_acquire gil;
-      {
-        std::lock_guard lock(mutex_);
-        if (error_) return;
-      }
       try {
-        callback_(line);
-      } catch (py::error_already_set& e) {
-        std::lock_guard lock(mutex_);
-        error_ = std::current_exception();
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        if (!callback_.is_none()) callback_(line);
+      } catch (...) {
+        const std::lock_guard lock(mutex_);
+        if (!error_) error_ = std::current_exception();
+        stop_.store(true);
       }
     };
   }
+  const std::atomic<bool>* stop() const { return &stop_; }
   void raise_if_failed() {
     if (error_) std::rethrow_exception(error_);
   }
@@ -127,6 +135,7 @@ class ProgressRelay {
   py::object callback_;
   std::mutex mutex_;
   std::exception_ptr error_;
+  std::atomic<bool> stop_{false};
 };
 
 py::dict run_scene(const twb::Scene& scene, py::object progress, int threads) {
@@ -138,7 +147,7 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads) {
     const auto t0 = std::chrono::steady_clock::now();
     twb::Bearing bearing(scene);
     const double setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    outcome = bearing.run_study(report, twb::RunOptions{.threads = threads});
+    outcome = bearing.run_study(report, twb::RunOptions{.threads = threads, .stop = relay.stop()});
     outcome.timings.setup_ms = setup_ms;
     outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
@@ -206,9 +215,10 @@ PYBIND11_MODULE(_twb, m) {
       .def("resolved", [](const twb::Scene& s) { return yaml_to_python(YAML::Load(twb::describe_scene(s))); })
       .def("unknowns", &unknowns_list);
 
-  m.def("load_scene", &twb::load_scene, py::arg("path"), py::arg("overrides") = std::vector<std::string>{});
+  m.def("load_scene", &twb::load_scene, py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
+        py::call_guard<py::gil_scoped_release>());
   m.def("load_scene_text", &twb::load_scene_text, py::arg("text"), py::arg("name"),
-        py::arg("overrides") = std::vector<std::string>{});
+        py::arg("overrides") = std::vector<std::string>{}, py::call_guard<py::gil_scoped_release>());
   m.def(
       "value_sources",
       [](const std::string& path, const std::vector<std::string>& overrides) {
@@ -219,4 +229,27 @@ PYBIND11_MODULE(_twb, m) {
       },
       py::arg("path"), py::arg("overrides") = std::vector<std::string>{});
   m.def("run", &run_scene, py::arg("scene"), py::arg("progress") = py::none(), py::arg("threads") = 0);
+
+  // One bearing for point after point (twb::Bearing): each state a mapping of states.csv's
+  // columns to their values, unrounded.
+  py::class_<twb::Bearing>(m, "Bearing")
+      .def(py::init<const twb::Scene&>(), py::call_guard<py::gil_scoped_release>())
+      .def("solve",
+           [](twb::Bearing& b, double load, double speed) {
+             twb::SolvedState s;
+             {
+               py::gil_scoped_release no_gil;
+               s = b.solve(load, speed);
+             }
+             py::dict state;
+             const twb::ResultTable table = twb::states_table({s});
+             for (const twb::ResultColumn& c : table.columns()) {
+               if (c.kind == twb::ResultColumn::Kind::text) state[py::str(c.name)] = c.texts.front();
+               else if (c.kind == twb::ResultColumn::Kind::count) state[py::str(c.name)] = static_cast<long long>(c.numbers.front());
+               else state[py::str(c.name)] = c.numbers.front();
+             }
+             return state;
+           },
+           py::arg("load"), py::arg("speed"))
+      .def("forget_state", &twb::Bearing::forget_state);
 }

@@ -42,14 +42,15 @@ std::string fields_csv(const std::vector<FilmFields>& films) { return fields_tab
 
 std::string fields_file_name(std::size_t row) { return fmt::format("state_{:04d}.csv", row); }
 
-std::size_t write_state_fields(const std::filesystem::path& dir, const std::vector<SolvedState>& rows) {
+std::size_t write_state_fields(const std::filesystem::path& dir, const std::vector<SolvedState>& rows,
+                               int significant_digits) {
   namespace fs = std::filesystem;
   const fs::path fields_dir = dir / "fields";
   std::set<std::string> written;
   for (std::size_t k = 0; k < rows.size(); ++k) {
     if (rows[k].fields.empty()) continue;
     const std::string name = fields_file_name(k + 1);
-    write_file_atomically(fields_dir / name, fields_csv(rows[k].fields));
+    write_file_atomically(fields_dir / name, fields_table(rows[k].fields).csv(significant_digits));
     written.insert(name);
   }
   if (!fs::is_directory(fields_dir)) return written.size();

@@ -18,7 +18,7 @@ std::string text_cell(const std::string& text) {
   return out + "\"";
 }
 
-std::string number_cell(double v, ResultColumn::Style style) {
+std::string number_cell(double v, ResultColumn::Style style, int digits) {
   if (std::isnan(v)) return {};  // absent (put_number refuses any other non-finite value)
   switch (style) {
     case ResultColumn::Style::scientific:
@@ -28,7 +28,7 @@ std::string number_cell(double v, ResultColumn::Style style) {
     case ResultColumn::Style::general:
       break;
   }
-  return fmt::format("{:.10g}", v);
+  return fmt::format("{:.{}g}", v, digits);
 }
 
 }  // namespace
@@ -70,7 +70,7 @@ std::size_t ResultTable::rows() const {
   return c.kind == ResultColumn::Kind::text ? c.texts.size() : c.numbers.size();
 }
 
-std::string ResultTable::csv() const {
+std::string ResultTable::csv(int significant_digits) const {
   std::string out;
   for (std::size_t k = 0; k < columns_.size(); ++k) out += (k ? "," : "") + columns_[k].name;
   out += "\n";
@@ -81,7 +81,7 @@ std::string ResultTable::csv() const {
       if (k) out += ",";
       switch (c.kind) {
         case ResultColumn::Kind::number:
-          out += number_cell(c.numbers.at(i), c.style);
+          out += number_cell(c.numbers.at(i), c.style, significant_digits);
           break;
         case ResultColumn::Kind::count:
           out += fmt::format("{}", static_cast<long long>(c.numbers.at(i)));

@@ -16,4 +16,8 @@ std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
   return tables;
 }
 
+bool has_independent_searches(StudyType type) {
+  return type == StudyType::load_sweep || type == StudyType::distress_map || type == StudyType::sliding_choice;
+}
+
 }  // namespace twb

@@ -190,6 +190,7 @@ struct Running {
   int threads = 1;
   const SearchJournal* journal = nullptr;
   SearchScheduler* scheduler = nullptr;
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // One search of run_searches: its own model (no state shared between threads), found
@@ -323,6 +324,7 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
 
   SearchScheduler::Work work;
   work.run_here = [&](std::size_t i) {
+    if (how.stop && how.stop->load()) return;  // the study ends with the searches taken so far
     const SearchTask& task = tasks[i];
     if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
     SearchDone result = search_one(base, task, settings, say);
@@ -480,9 +482,10 @@ void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport&
 
 }  // namespace
 
-StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, const RunOptions& options) {
+StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, const RunOptions& options,
+                       const StudyPlumbing& plumbing) {
   const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  const Running how{threads, options.journal, options.scheduler};
+  const Running how{threads, plumbing.journal, plumbing.scheduler, options.stop};
   StudyOutcome out;
   const auto t0 = Clock::now();
   const SparseLu::Counts klu_before = SparseLu::thread_counts();
@@ -512,6 +515,10 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
       type != StudyType::distress_curve) {
     out.timings.klu_factorizations =
         SparseLu::thread_counts().factored_since(klu_before) + out.timings.ida_factorizations;
+  }
+  if (options.stop && options.stop->load() && has_independent_searches(type)) {
+    out.stopped = true;
+    out.message += (out.message.empty() ? "" : "; ") + std::string("stopped before the study's end: searches are missing");
   }
   out.timings.states = int(out.states.size());
   // Continuation and distress searches count their work in states, transients and

@@ -54,6 +54,22 @@ TEST(BearingTest, WarmStartReachesTheSameState) {
   testing::expect_balanced(s.state);
 }
 
+// solve() moves the bearing to the operating point asked for and back: the study that
+// follows runs at the scene's load and speed, exactly as a fresh Bearing's.
+TEST(BearingTest, StudyAfterPointsIsTheScenes) {
+  Scene s = coarse_point(120.0);
+  Bearing fresh(s);
+  const StudyOutcome expected = fresh.run_study();
+  Bearing used(s);
+  used.solve(90.0, 300.0);
+  EXPECT_EQ(used.scene().operating.speed, 545.0);
+  const StudyOutcome study = used.run_study();
+  ASSERT_EQ(study.states.size(), 1u);
+  EXPECT_EQ(study.states[0].state.load, expected.states[0].state.load);
+  EXPECT_EQ(study.states[0].state.speed, expected.states[0].state.speed);
+  EXPECT_EQ(study.states[0].state.f_eff, expected.states[0].state.f_eff);
+}
+
 TEST(BearingTest, UnknownsAreTheEffectsBlocks) {
   Bearing full(coarse_point(120.0));
   const auto blocks = full.unknowns();

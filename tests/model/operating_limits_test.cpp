@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "model/limit_thresholds.h"
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "twb/results/limit_notes.h"

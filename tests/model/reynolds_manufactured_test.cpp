@@ -27,6 +27,7 @@
 #include <numbers>
 #include <vector>
 
+#include "model/gauss_rule.h"
 #include "twb/model/film_mesh.h"
 #include "model/reynolds_operator.h"
 

@@ -24,6 +24,11 @@ public=$(cd "$source/include" && find twb -name '*.h' | sort)
 if [ "$installed" != "$public" ]; then
   echo "installed headers differ from include/twb:"; echo "$installed"; exit 1
 fi
+# Self-contained: the public headers include the standard library and each other, nothing
+# else (a dependency's header would compile here, where Debian's are all installed, and
+# fail for a user without them).
+foreign=$(grep -rhE '^ *# *include' "$work/prefix/include/twb" | grep -vE '<[a-z_]+>|"twb/' || true)
+if [ -n "$foreign" ]; then echo "public headers include more than the standard library and twb:"; echo "$foreign"; exit 1; fi
 "$work/prefix/bin/twb" --version
 
 cmake -S "$source/examples/cpp" -B "$work/example" -DCMAKE_PREFIX_PATH="$work/prefix" \

@@ -8,12 +8,6 @@
 
 namespace twb {
 
-struct GaussRule {
-  std::vector<double> points;   // on [0, 1]
-  std::vector<double> weights;  // sum to 1
-  static GaussRule legendre(int n);
-};
-
 class FilmMesh {
  public:
   FilmMesh(double inner_radius, double outer_radius, int radial_nodes, int circumferential_nodes);

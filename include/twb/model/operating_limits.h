@@ -19,8 +19,6 @@
 #include <string_view>
 #include <vector>
 
-#include "twb/scene/scene.h"
-
 namespace twb {
 
 enum class LimitKind { oil_temperature, flash_temperature, contact_pressure, film_below_statistics };
@@ -30,23 +28,6 @@ struct LimitExcess {
   double value = 0.0;  // SI: K, Pa, or h_min/σ
   double limit = 0.0;
 };
-
-struct OperatingLimits {
-  double max_oil_temperature = 0.0;  // K
-  double flash_temperature = 0.0;    // K
-  double hardness = 0.0;             // Pa, the softer face's; 0: no contact model
-  double least_film = 0.5;           // h_min/σ
-  bool statistical = true;           // a statistical model (contact, flow factors) is on
-  static OperatingLimits of(const Scene& scene);
-};
-
-// The state's values against the limits (SI), in LimitKind order; empty when none.
-struct LimitValues {
-  double washer_mean_temperature = 0.0, max_film_temperature = 0.0, max_contact_pressure = 0.0;
-  double hmin_over_sigma = 0.0;
-  bool thermal = false;
-};
-std::vector<LimitExcess> exceeded_limits(const LimitValues& values, const OperatingLimits& limits);
 
 // "oil_temperature" and so on: the names in states.csv's limits column.
 std::string_view limit_name(LimitKind kind);

@@ -1,4 +1,4 @@
-// distress.csv: one row per distress search (issue contract):
+// distress.csv: one row per distress search :
 //   speed_rad_s, <param>, sliding, W_d_N, bracket_low_N, bracket_high_N, fold_N,
 //   W_d_fine_N, W_d_extrapolated_N, W_d_error_N, method
 // <param> is the study's second axis (e.g. friction_coefficient), sliding the film that
@@ -20,9 +20,9 @@ struct DistressRow {
   std::optional<double> bracket_low;      // highest load whose step settled, N
   std::optional<double> bracket_high;     // lowest load whose step ran away, N
   std::optional<double> fold_load;        // turning point of the steady branch, N
-  std::string method;                     // how W_d was decided (see distress_search.h)
+  std::string method;                     // how W_d was decided (docs/model.md, "Distress on the bearing")
   std::string sliding;                    // sliding_choice: "carrier_washer" or "washer_gear"
-  // study.error_estimate: richardson (study/richardson.h): the fold on the mesh refined
+  // study.error_estimate: richardson (docs/model.md): the fold on the mesh refined
   // by two, the extrapolated W_d and its error bar.
   std::optional<double> fine_fold_load;      // N
   std::optional<double> extrapolated_load;   // N

@@ -25,6 +25,7 @@ std::string fields_file_name(std::size_t row);
 // and removes the state_*.csv files an earlier run left there that this one did not
 // write (they would belong to another states.csv); the directory goes when empty.
 // Returns how many files were written.
-std::size_t write_state_fields(const std::filesystem::path& dir, const std::vector<SolvedState>& rows);
+std::size_t write_state_fields(const std::filesystem::path& dir, const std::vector<SolvedState>& rows,
+                               int significant_digits = 10);
 
 }  // namespace twb

@@ -1,5 +1,5 @@
 // What the summary after a run says about the model's and the oil's limits
-// (model/operating_limits.h): for every run of a study (a speed, a parameter value, a
+// (twb/model/operating_limits.h): for every run of a study (a speed, a parameter value, a
 // sliding film) and every limit, the lightest load whose state exceeds it, and whether
 // that state lies on the cool branch below W_d, i.e. the bearing leaves the range where
 // its results can be trusted before thermo-viscous distress.

@@ -15,7 +15,8 @@ namespace twb {
 
 struct ResultColumn {
   enum class Kind { number, count, text };
-  // How a number is written in CSV: {:.10g}, {:.3e} (residuals), {:.3f} (milliseconds).
+  // How a number is written in CSV: {:.10g} (or more digits, csv()), {:.3e} (residuals),
+  // {:.3f} (milliseconds).
   enum class Style { general, scientific, fixed };
   std::string name;
   Kind kind = Kind::number;
@@ -41,7 +42,9 @@ class ResultTable {
   // Rows: the length of the first column (every column gets one cell per row).
   std::size_t rows() const;
   // Header line, then one line per row; text cells quoted as RFC 4180 asks where needed.
-  std::string csv() const;
+  // Numbers of the general style with `significant_digits` (17: each reads back as the
+  // same double; twb run --full-precision).
+  std::string csv(int significant_digits = 10) const;
 
  private:
   std::vector<ResultColumn> columns_;

@@ -1,4 +1,4 @@
-// states.csv: one row per solved state, units in the column names (issue contract).
+// states.csv: one row per solved state, units in the column names.
 #pragma once
 
 #include <optional>

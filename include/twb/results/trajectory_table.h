@@ -1,4 +1,4 @@
-// trajectory.csv: the pseudo-time thermal transient after a load step (issue contract):
+// trajectory.csv: the pseudo-time thermal transient after a load step:
 //   t_s, T_mean_C, T_max_C, hmin_over_sigma, contact_share, f_eff, load_N, speed_rad_s
 // then, for a study of several runs, the columns that tell them apart (the parameter,
 // the sliding film); each run's transient starts again at t_s = 0.

@@ -45,7 +45,7 @@ enum class StudyType { point, load_sweep, distress_map, transient, sliding_choic
 enum class MapParameter { none, friction_coefficient, gear_tilt, roughness };
 
 // A parameter of the bearing a fold curve is continued in (study type distress_curve),
-// set on a built model without rebuilding it (BearingModel::set_curve_parameter).
+// set on a built model without rebuilding it.
 // viscosity_scale multiplies the oil's viscosity at every temperature (1: the scene's oil).
 // roughness: the Rq of every surface (set_roughness).
 enum class CurveParameter { speed, friction_coefficient, gear_tilt, ambient_temperature, viscosity_scale, roughness };
@@ -124,7 +124,7 @@ struct Lubricant {
   double g0 = 3.545;             // Roelands
   double s0 = 1.053;             // Roelands
   double constant_viscosity = 0.06081;  // Pa s, when viscosity_model == constant
-  // Where the oil stops being trusted (model/operating_limits.h): an automatic
+  // Where the oil stops being trusted (twb/model/operating_limits.h): an automatic
   // transmission fluid's maximum working temperature, which its oxidation life halves
   // about every 10 K beyond, and its flash point (ASTM D92, about 180 degC).
   double max_temperature = 423.15;    // K, 150 degC
@@ -148,13 +148,13 @@ struct MeshSettings {
   int circumferential_nodes = 66;  // distinct nodes (periodic)
   int contact_quadrature = 8;      // Gauss points per direction per cell for contact integrals
   // The same on cells where the contact pressure varies by less than a factor e^½ (at
-  // most contact_quadrature; 6 integrates them to rounding: film_loads.cpp).
+  // most contact_quadrature; 6 integrates them to rounding: docs/model.md, "Integrals over cells").
   int flat_contact_quadrature = 6;
 };
 
 // How a steady state is solved: twb's monolithic Newton (KINSOL, KLU), or the paper's
 // segregated scheme (Fig. 5: Newton-Raphson on the rigid body around projected SOR and
-// the heat field's solve; solver/paper_scheme.h), kept as the baseline.
+// the heat field's solve; docs/model.md, "The paper's scheme"), kept as the baseline.
 enum class SolverMethod { newton, paper };
 
 struct SolverSettings {
@@ -184,7 +184,7 @@ struct Study {
   // distress_curve: the fold continued in this parameter from `from` to `to` (SI).
   CurveParameter curve_parameter = CurveParameter::speed;
   double from = 0.0, to = 0.0;
-  // load_sweep, distress_map: W_d's discretization error (study/richardson.h).
+  // load_sweep, distress_map: W_d's discretization error (docs/model.md, "Distress on the bearing").
   ErrorEstimate error_estimate = ErrorEstimate::richardson;
   // transient: pseudo-time span in s; 0 marches until the state settles or runs away.
   double duration = 0.0;

@@ -3,6 +3,7 @@
 // progress callback.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -32,25 +33,22 @@ struct StudyOutcome {
   // The solvers' own words where a search went on regardless (twb run --verbose).
   std::vector<std::string> diagnostics;
   bool solver_failed = false;  // a state the study needed could not be solved
+  bool stopped = false;        // RunOptions::stop ended it early: some searches are missing
   std::string message;
   RunTimings timings;
 };
 
 using ProgressReport = std::function<void(const std::string&)>;
 
-class SearchJournal;
-class SearchScheduler;
-
 struct RunOptions {
   // Threads for the study's independent searches (speeds, parameter values, sliding
-  // films); 0: one per core. The results do not depend on it.
+  // films); 0: one per core. The results do not depend on it. One by default: a program
+  // embedding twb owns its cores (twb run and twb.run use every core unless told).
   int threads = 1;
-  // Where each finished search is written at once and, on resume, read instead of run
-  // (search_journal.h); none: nothing journaled.
-  const SearchJournal* journal = nullptr;
-  // Where the study's independent searches run (search_scheduler.h: MPI ranks, a slice of
-  // a job array); none: on `threads` threads here. Like the journal, twb's command's own.
-  SearchScheduler* scheduler = nullptr;
+  // When set (from any thread), the searches not yet begun are not run: the study ends
+  // with what it has and StudyOutcome::stopped. A search under way runs to its end, and
+  // a study of one piece of work (point, transient, fold curve) is not stopped.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // The tables a study writes, named by their file's stem ("states", "distress",
@@ -62,5 +60,10 @@ struct NamedTable {
   ResultTable table;
 };
 std::vector<NamedTable> study_tables(const StudyOutcome& outcome, StudyType type);
+
+// Whether a study is made of independent distress searches (load_sweep, distress_map,
+// sliding_choice): what threads, MPI ranks and the slices of a job array share out, and
+// what RunOptions::stop can stop between.
+bool has_independent_searches(StudyType type);
 
 }  // namespace twb
