@@ -97,6 +97,18 @@ void MpiScheduler::run(const std::vector<std::size_t>& todo, int threads, const 
     return std::nullopt;
   };
   std::vector<std::thread> own;
+  // However this function is left (a damaged message throws), rank 0's own searches are
+  // let finish and no new one begins, before the error ends the job (main: MPI_Abort).
+  struct Finish {
+    std::vector<std::thread>& threads;
+    std::atomic<std::size_t>& next;
+    std::size_t end;
+    ~Finish() {
+      next = end;
+      for (std::thread& t : threads)
+        if (t.joinable()) t.join();
+    }
+  } finish{own, next, todo.size()};
   for (int t = 0; t < std::max(threads, 1); ++t)
     own.emplace_back([&]() {
       while (const auto i = claim()) work.run_here(*i);
@@ -128,7 +140,6 @@ void MpiScheduler::run(const std::vector<std::size_t>& todo, int threads, const 
     check(MPI_Send(&assign, 1, MPI_INT64_T, status.MPI_SOURCE, kAssign, MPI_COMM_WORLD), "MPI_Send");
     if (!i) --working;
   }
-  for (std::thread& t : own) t.join();
 }
 
 bool built_with_mpi() { return true; }
