@@ -8,6 +8,7 @@ Needs PYTHONPATH to hold the build's python directory and TWB_BINARY the twb com
 import csv
 import math
 import os
+import pickle
 import subprocess
 import sys
 import tempfile
@@ -98,6 +99,11 @@ class Errors(unittest.TestCase):
             self.assertEqual((e.file, e.line, e.column), (path, 4, 9))
             self.assertIn("bad.yaml:4:9", str(e))
             self.assertIsInstance(e, ValueError)
+            # As a worker process of a multiprocessing pool hands it back: pickled.
+            back = pickle.loads(pickle.dumps(e))
+            self.assertIsInstance(back, twb.SceneError)
+            self.assertEqual((back.file, back.line, back.column, back.message, str(back)),
+                             (e.file, e.line, e.column, e.message, str(e)))
 
     def test_bad_override_names_the_override(self):
         with self.assertRaises(twb.SceneError) as caught:
