@@ -12,6 +12,7 @@
 #include "twb/results/limit_notes.h"
 #include "twb/results/result_table.h"
 #include "twb/results/run_timings.h"
+#include "twb/results/scene_record.h"
 #include "twb/results/sliding_table.h"
 #include "twb/results/states_table.h"
 #include "twb/results/trajectory_table.h"

@@ -109,9 +109,14 @@ class Scene:
         return Scene(self.path, self.overrides + override_texts(overrides), _text=self._text)
 
     def resolved(self):
-        """The resolved scene, every default filled in, as nested dicts of "value unit"
-        strings in SI (what `twb check` prints)."""
-        return self._scene.resolved()
+        """The resolved scene, every default filled in, as run.json records it: nested
+        dicts with numbers in SI and the unit in each key's name, as in the CSVs
+        (resolved()["operating"]["load_N"])."""
+        return json.loads(self._scene.record_json())
+
+    def resolved_text(self):
+        """The same as nested dicts of the "value unit" strings `twb check` prints."""
+        return self._scene.resolved_text()
 
     def resolved_yaml(self):
         return self._scene.resolved_yaml()

@@ -212,7 +212,8 @@ PYBIND11_MODULE(_twb, m) {
                                return yaml_to_python(YAML::Load(twb::describe_scene(s)))["study"]["type"];
                              })
       .def("resolved_yaml", [](const twb::Scene& s) { return twb::describe_scene(s); })
-      .def("resolved", [](const twb::Scene& s) { return yaml_to_python(YAML::Load(twb::describe_scene(s))); })
+      .def("resolved_text", [](const twb::Scene& s) { return yaml_to_python(YAML::Load(twb::describe_scene(s))); })
+      .def("record_json", [](const twb::Scene& s) { return twb::scene_record_json(s); })
       .def("unknowns", &unknowns_list);
 
   m.def("load_scene", &twb::load_scene, py::arg("path"), py::arg("overrides") = std::vector<std::string>{},

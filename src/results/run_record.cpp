@@ -1,5 +1,8 @@
 #include "results/run_record.h"
 
+#include "twb/results/scene_record.h"
+#include "twb/scene/scene_loader.h"
+
 #include <Eigen/Core>
 #include <boost/version.hpp>
 #include <fmt/format.h>
@@ -107,6 +110,8 @@ std::vector<std::pair<std::string, std::string>> library_versions() {
       {"compiler", __VERSION__},
   };
 }
+
+std::string scene_record_json(const Scene& scene) { return scene_json(YAML::Load(describe_scene(scene))).dump(); }
 
 std::string run_json(const std::string& scene_path, const std::string& resolved_scene_yaml,
                      const UnknownLayout& layout, const RunTimings& t, const std::string& outcome) {

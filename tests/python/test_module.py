@@ -126,7 +126,10 @@ class Scenes(unittest.TestCase):
 
     def test_resolved_and_unknowns(self):
         scene = twb.Scene(SCENE, POINT)
-        self.assertEqual(scene.resolved()["operating"]["load"], "150 N")
+        self.assertEqual(scene.resolved()["operating"]["load_N"], 150.0)
+        # 0.635 mm converted to metres by udunits2: one rounding.
+        self.assertAlmostEqual(scene.resolved()["geometry"]["washer"]["thickness_m"], 0.635e-3, delta=1e-18)
+        self.assertEqual(scene.resolved_text()["operating"]["load"], "150 N")
         per_effect = scene.unknowns_per_effect()
         self.assertEqual(sum(b["size"] for b in scene.unknowns()), sum(per_effect.values()))
         self.assertIn("thermal", per_effect)
