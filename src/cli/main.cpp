@@ -31,6 +31,7 @@
 #include "twb/scene/scene_loader.h"
 #include "solver/sundials_context.h"
 #include "study/study_runner.h"
+#include "study/study_support.h"
 #include "twb/version.h"
 
 namespace {
@@ -175,7 +176,7 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   // Each finished search of the study is kept at once: a killed run resumes from them.
   const twb::SearchJournal journal(r.out_dir, twb::describe_scene(scene), r.resume);
   twb::BearingModel model(scene);
-  const double setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const double setup_ms = twb::elapsed_ms(t0);
   if (!r.quiet) std::cerr << fmt::format("twb: {} unknowns, {} Jacobian nonzeros\n", model.size(), model.pattern().nnz());
 
   std::optional<twb::cli::MpiScheduler> ranks;
@@ -195,7 +196,7 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   twb::StudyOutcome outcome = twb::run_study(model, progress_lines(r.quiet), twb::RunOptions{.threads = threads},
                                              twb::StudyPlumbing{.journal = &journal, .scheduler = scheduler});
   outcome.timings.setup_ms = setup_ms;
-  outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  outcome.timings.total_ms = twb::elapsed_ms(t0);
   if (slice) {
     const std::size_t total = journal.entries().size();
     twb::cli::run_is_complete();
@@ -226,19 +227,16 @@ int merge(const std::vector<std::string>& slices, const std::string& out_dir, bo
   const twb::Scene scene = twb::load_scene_text(*scene_text, scene_name);
   const twb::cli::ResultsDirectory results(out_dir);
   twb::cli::end_cleanly_on_interruption(out_dir.c_str());
-  {
-    const twb::SearchJournal gathered(out_dir, twb::describe_scene(scene), false);
-    for (const std::string& dir : slices) {
-      const twb::SearchJournal slice(dir, *scene_text, true);
-      for (std::size_t i : slice.entries()) gathered.write_entry(i, slice.entry_bytes(i));
-    }
+  const twb::SearchJournal journal(out_dir, twb::describe_scene(scene), false);
+  for (const std::string& dir : slices) {
+    const twb::SearchJournal slice(dir, *scene_text, true);
+    for (std::size_t i : slice.entries()) journal.write_entry(i, slice.entry_bytes(i));
   }
-  const twb::SearchJournal journal(out_dir, twb::describe_scene(scene), true);
   twb::BearingModel model(scene);
   twb::JournalOnlyScheduler only_journaled;
   twb::StudyOutcome outcome = twb::run_study(model, progress_lines(quiet), twb::RunOptions{.threads = 1},
                                              twb::StudyPlumbing{.journal = &journal, .scheduler = &only_journaled});
-  outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  outcome.timings.total_ms = twb::elapsed_ms(t0);
   return write_results(out_dir, scene_name, scene, model, outcome, journal, verbose, full_precision ? 17 : 10);
 }
 

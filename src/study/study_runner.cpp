@@ -148,7 +148,8 @@ std::vector<double> study_speeds(const BearingModel& model) {
   return listed.empty() ? std::vector<double>{model.speed()} : listed;
 }
 
-// Called after each search with the speed's index in study_speeds.
+// Called after each search with the speed's index in study_speeds and a model of its
+// variant, whose films (not its speed) a taker may read.
 using SearchResult = std::function<void(const Variant&, std::size_t speed, const BearingModel&, DistressSearch&)>;
 
 // W_d's error bar (study.error_estimate: richardson) for a search that found a fold.
@@ -201,7 +202,9 @@ struct SearchTask {
   double speed = 0.0;
 };
 struct SearchDone {
-  std::unique_ptr<BearingModel> model;
+  // What `take` reads the films of: the search's own model, or for a search found
+  // elsewhere its variant's (the films do not depend on the speed).
+  std::shared_ptr<const BearingModel> model;
   DistressSearch found;
   long klu_factorizations = 0;  // the whole task's, its error bar's search included
 };
@@ -213,9 +216,10 @@ SearchDone search_one(const BearingModel& base, const SearchTask& task, const Di
   const Variant& variant = *task.variant;
   const SparseLu::Counts before = SparseLu::thread_counts();  // this thread's, so this task's
   try {
-    done.model = std::make_unique<BearingModel>(variant.scene ? *variant.scene : base.scene());
-    done.model->set_speed(task.speed);
-    found = search_distress(*done.model, settings, progress);
+    auto model = std::make_shared<BearingModel>(variant.scene ? *variant.scene : base.scene());
+    model->set_speed(task.speed);
+    done.model = model;
+    found = search_distress(*model, settings, progress);
   } catch (const std::exception& e) {
     found = DistressSearch{};
     found.failed = true;
@@ -291,20 +295,26 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
       ++next_to_take;
     }
   };
-  // A search found elsewhere (the journal, another process): its model is rebuilt (the
-  // takers read its films), its search is not. None when the model cannot be built.
+  // A search found elsewhere (the journal, another process) is not run again; the takers
+  // read the films of its variant's model, built once per variant (about 10 ms each on
+  // 9 x 66: not once per search, which on rank 0 of an MPI job would delay every
+  // answer). None when the model cannot be built.
+  std::vector<std::shared_ptr<const BearingModel>> variant_models(variants.size());
+  std::mutex variant_models_lock;
   auto from_entry = [&](std::size_t i, JournaledSearch&& kept) -> std::optional<SearchDone> {
-    const SearchTask& task = tasks[i];
+    const Variant& variant = *tasks[i].variant;
+    SearchDone result;
     try {
-      SearchDone result;
-      result.model = std::make_unique<BearingModel>(task.variant->scene ? *task.variant->scene : base.scene());
-      result.model->set_speed(task.speed);
-      result.found = std::move(kept.found);
-      result.klu_factorizations = kept.klu_factorizations;
-      return result;
+      const std::lock_guard<std::mutex> hold(variant_models_lock);
+      std::shared_ptr<const BearingModel>& model = variant_models[std::size_t(&variant - variants.data())];
+      if (!model) model = std::make_shared<const BearingModel>(variant.scene ? *variant.scene : base.scene());
+      result.model = model;
     } catch (const std::exception&) {
       return std::nullopt;
     }
+    result.found = std::move(kept.found);
+    result.klu_factorizations = kept.klu_factorizations;
+    return result;
   };
 
   // Found before the run was stopped: read, not run. A search whose model cannot be built
@@ -323,20 +333,21 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
   }
 
   SearchScheduler::Work work;
-  work.run_here = [&](std::size_t i) {
-    if (how.stop && how.stop->load()) return;  // the study ends with the searches taken so far
+  auto run = [&](std::size_t i) {
     const SearchTask& task = tasks[i];
     if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
-    SearchDone result = search_one(base, task, settings, say);
+    return search_one(base, task, settings, say);
+  };
+  work.run_here = [&](std::size_t i) {
+    if (how.stop && how.stop->load()) return;  // the study ends with the searches taken so far
+    SearchDone result = run(i);
     // A search that failed is not kept: a resume tries it again (perhaps with fewer
     // threads, or after the user freed memory).
     if (journal && !result.found.failed) journal->write(i, result.found, result.klu_factorizations);
     deliver(i, std::move(result));
   };
   work.run_for_another = [&](std::size_t i) {
-    const SearchTask& task = tasks[i];
-    if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
-    const SearchDone result = search_one(base, task, settings, say);
+    const SearchDone result = run(i);
     return journal_entry(result.found, result.klu_factorizations);
   };
   work.arrived = [&](std::size_t i, const std::string& entry) {
