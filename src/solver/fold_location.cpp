@@ -126,6 +126,38 @@ bool arclength_bracket(SteadySystem& system, const ContinuationMetric& metric, c
 
 }  // namespace
 
+FoldPoint locate_fold_near(SteadySystem& system, std::span<const double> u, double lambda,
+                           std::span<const double> null_guess, const NewtonSettings& newton) {
+  FoldPoint fold;
+  const auto n = std::size_t(system.size());
+  system.set_parameter(lambda);
+  const ContinuationMetric metric = ContinuationMetric::of(system, std::abs(lambda));
+  std::vector<double> f_lambda(n);
+  system.parameter_derivative(u, f_lambda);
+  try {
+    FoldSystem augmented(system, metric, f_lambda, null_guess);
+    std::vector<double> x = augmented.extend(u, lambda);
+    KinsolNewton solver(augmented);
+    const NewtonReport rep = solver.solve(x, newton);
+    fold.iterations = rep.iterations;
+    if (rep.converged) {
+      fold.u.assign(x.begin(), x.begin() + std::ptrdiff_t(n));
+      fold.lambda = augmented.lambda_of(x);
+      fold.null_vector = augmented.null_vector(x);
+      fold.residual_norm = rep.residual_norm;
+      fold.method = FoldMethod::minimally_augmented;
+      fold.curvature = augmented.fold_curvature(x);
+    } else {
+      fold.message = "minimally augmented Newton failed: " + rep.message;
+    }
+  } catch (const std::exception& e) {
+    fold.u.clear();
+    fold.message = std::string("minimally augmented Newton failed: ") + e.what();
+  }
+  system.set_parameter(fold.u.empty() ? lambda : fold.lambda);
+  return fold;
+}
+
 FoldPoint locate_fold(SteadySystem& system, const ContinuationMetric& metric, const FoldBracket& bracket,
                       const NewtonSettings& newton, const FoldSettings& settings) {
   FoldPoint fold;

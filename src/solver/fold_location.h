@@ -11,6 +11,8 @@
 // correction and one tangent.
 #pragma once
 
+#include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,9 @@ struct FoldPoint {
   std::vector<double> null_vector;  // spans the null space of ∂F/∂u; unit in the metric's state norm
   FoldMethod method = FoldMethod::interpolated;
   double residual_norm = 0.0;  // max-norm of [F; g] (minimally augmented) or of F (bracket)
+  // κ of FoldSystem::fold_curvature where it was computed (locate_fold_near): > 0 where the
+  // branch's parameter is largest, < 0 where smallest; NaN elsewhere.
+  double curvature = std::numeric_limits<double>::quiet_NaN();
   long iterations = 0;         // Newton iterations, or root-finder evaluations
   std::string message;         // why a method was given up, if one was
 };
@@ -54,5 +59,15 @@ struct FoldSettings {
 // within it. Leaves the system's parameter at the returned λ.
 FoldPoint locate_fold(SteadySystem& system, const ContinuationMetric& metric, const FoldBracket& bracket,
                       const NewtonSettings& newton, const FoldSettings& settings = {});
+
+// The fold near a guess of it (u at λ, and null_guess, any scale, for its null vector),
+// by Newton on the minimally augmented system alone: no branch is followed, so the
+// guess must be within Newton's reach, e.g. the fold of a mesh coarser by two,
+// interpolated (5 % off in load on the paper's bearing). Converged: u non-empty, method
+// minimally_augmented, curvature set (the caller decides whether the fold is of the
+// kind it wanted). Otherwise u empty and message says why. Leaves the system's
+// parameter at the returned λ, or at `lambda`.
+FoldPoint locate_fold_near(SteadySystem& system, std::span<const double> u, double lambda,
+                           std::span<const double> null_guess, const NewtonSettings& newton);
 
 }  // namespace twb

@@ -23,6 +23,7 @@
 #include <string>
 
 #include "twb/scene/scene.h"
+#include "solver/fold_location.h"
 #include "study/distress_search.h"
 
 namespace twb {
@@ -37,10 +38,27 @@ struct MeshErrorEstimate {
 // The scene with its mesh refined by two in each direction.
 Scene refined_mesh(const Scene& scene);
 
-// From the fold on the scene's mesh at `speed`; the fold on the refined mesh is searched
-// from settings.load_start to settings.load_end. Empty, with the reason in `why`, when
-// the refined mesh has no fold there.
-std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double speed, double coarse_fold,
+// The fold on the scene's mesh, as its search found it.
+struct CoarseFold {
+  double load = 0.0;  // N
+  // The located fold and the model it lives on, when the search has them: the refined
+  // fold is then located from it directly (interpolated onto the refined mesh, one Newton
+  // on the minimally augmented system), and searched along the branch only where that
+  // fails.
+  const BearingModel* model = nullptr;
+  const FoldPoint* point = nullptr;
+};
+
+// Where the refined mesh's fold comes from: a few Newton iterations from the coarse
+// fold (on the paper's bearing, 9×66 → 17×132: about a fifth of the cost of continuing
+// the refined branch from the light load). The located fold must be a largest load
+// (fold curvature κ > 0, as the cool branch's end is) within half the coarse load of
+// it; otherwise the refined branch is continued from the light load as before.
+//
+// From the fold on the scene's mesh at `speed`. The fold on the refined mesh is located
+// from the coarse one (above) or searched from settings.load_start to settings.load_end.
+// Empty, with the reason in `why`, when the refined mesh has no fold there.
+std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double speed, const CoarseFold& coarse,
                                                      DistressSearchSettings settings, std::string& why,
                                                      const SearchProgress& progress = {});
 

@@ -170,7 +170,8 @@ void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings
   const auto t0 = Clock::now();
   std::optional<MeshErrorEstimate> e;
   try {
-    e = richardson_estimate(model.scene(), model.speed(), *found.row.fold_load, from, why, progress);
+    const CoarseFold coarse{*found.row.fold_load, &model, found.fold ? &*found.fold : nullptr};
+    e = richardson_estimate(model.scene(), model.speed(), coarse, from, why, progress);
   } catch (const std::exception& failure) {
     why = std::string("the refined mesh's search failed: ") + failure.what();
   }

@@ -18,13 +18,17 @@ DistressSearchSettings fold_range() {
   return s;
 }
 
-double fold_on(const Scene& scene) {
-  BearingModel model(scene);
+DistressSearch fold_search(BearingModel& model) {
   DistressSearchSettings s = fold_range();
   s.fold_only = true;
-  const DistressSearch found = search_distress(model, s, {});
-  if (!found.row.fold_load) throw std::runtime_error("no fold: " + found.row.method);
-  return *found.row.fold_load;
+  DistressSearch found = search_distress(model, s, {});
+  if (!found.row.fold_load || !found.fold) throw std::runtime_error("no fold: " + found.row.method);
+  return found;
+}
+
+double fold_on(const Scene& scene) {
+  BearingModel model(scene);
+  return *fold_search(model).row.fold_load;
 }
 
 TEST(RichardsonEstimate, RefinesBothDirectionsByTwo) {
@@ -44,12 +48,12 @@ TEST(RichardsonEstimate, ErrorBarCoversTheFinerExtrapolation) {
   const Scene middle = refined_mesh(coarse), finest = refined_mesh(middle);
   const double w1 = fold_on(coarse);
   std::string why;
-  const auto first = richardson_estimate(coarse, 545.0, w1, fold_range(), why);
+  const auto first = richardson_estimate(coarse, 545.0, {w1}, fold_range(), why);
   ASSERT_TRUE(first) << why;
   const double w2 = first->fine_fold;
   // The estimate's refined fold is the middle mesh's own (same search, same mesh).
   EXPECT_NEAR(w2, fold_on(middle), 1e-9 * w2);
-  const auto second = richardson_estimate(middle, 545.0, w2, fold_range(), why);
+  const auto second = richardson_estimate(middle, 545.0, {w2}, fold_range(), why);
   ASSERT_TRUE(second) << why;
   const double w3 = second->fine_fold;
 
@@ -61,6 +65,48 @@ TEST(RichardsonEstimate, ErrorBarCoversTheFinerExtrapolation) {
       << "coarse pair " << first->extrapolated << " ± " << first->error << ", finer pair " << second->extrapolated;
   // The finer pair's bar is the smaller one: the estimate converges.
   EXPECT_LT(second->error, first->error);
+}
+
+// The refined fold located directly from the coarse one (interpolated, one Newton on the
+// minimally augmented system) is the fold the refined branch's own continuation finds.
+// Both solve the same regular system [F; g] = 0 (the fold does not depend on the
+// borders) to the scaled residual 1e-10, so they agree to that tolerance times the
+// system's conditioning: 1e-8 relative leaves it a factor 100 (measured: 8e-16, Newton's last quadratic step).
+TEST(RichardsonEstimate, RefinedFoldFromTheCoarseFoldIsTheRefinedBranchsOwn) {
+  Scene coarse = testing::table1_scene(true, true, true, true, 545.0, 100.0);
+  testing::use_coarse_mesh(coarse);
+  BearingModel model(coarse);
+  const DistressSearch found = fold_search(model);
+  std::string why;
+  std::vector<std::string> said;
+  const auto e = richardson_estimate(coarse, 545.0, {*found.row.fold_load, &model, &*found.fold}, fold_range(), why,
+                                     [&](const std::string& s) { said.push_back(s); });
+  ASSERT_TRUE(e) << why;
+  ASSERT_FALSE(said.empty());
+  EXPECT_NE(said.front().find("the fold from the coarse mesh's:"), std::string::npos) << said.front();
+  const double own = fold_on(refined_mesh(coarse));
+  EXPECT_NEAR(e->fine_fold, own, 1e-8 * own) << "relative difference " << (e->fine_fold - own) / own;
+}
+
+// A coarse fold that is not a fold of this bearing's branch (its state moved far off, its
+// load halved) sends the estimate back to continuing the refined branch, which still
+// finds the refined fold.
+TEST(RichardsonEstimate, FallsBackToTheBranchWhenTheCoarseFoldMisleads) {
+  Scene coarse = testing::table1_scene(true, true, true, true, 545.0, 100.0);
+  testing::use_coarse_mesh(coarse);
+  BearingModel model(coarse);
+  const DistressSearch found = fold_search(model);
+  FoldPoint wrong = *found.fold;
+  for (double& c : wrong.u) c = 0.0;
+  std::string why;
+  std::vector<std::string> said;
+  const auto e = richardson_estimate(coarse, 545.0, {0.5 * *found.row.fold_load, &model, &wrong}, fold_range(), why,
+                                     [&](const std::string& s) { said.push_back(s); });
+  ASSERT_TRUE(e) << why;
+  ASSERT_FALSE(said.empty());
+  EXPECT_NE(said.front().find("continuing the branch instead"), std::string::npos) << said.front();
+  const double own = fold_on(refined_mesh(coarse));
+  EXPECT_NEAR(e->fine_fold, own, 1e-9 * own);
 }
 
 }  // namespace
