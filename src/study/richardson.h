@@ -50,7 +50,7 @@ struct CoarseFold {
 };
 
 // Where the refined mesh's fold comes from: a few Newton iterations from the coarse
-// fold (on the paper's bearing, 9×66 → 17×132: about a fifth of the cost of continuing
+// fold (on the paper's bearing, 9×66 → 17×132: about a third of the cost of continuing
 // the refined branch from the light load). The located fold must be a largest load
 // (fold curvature κ > 0, as the cool branch's end is) within half the coarse load of
 // it; otherwise the refined branch is continued from the light load as before.
