@@ -4,11 +4,16 @@
 // globalization is tuned on this survey, so its changes are judged on all 36 states,
 // not on the three the benchmark times.
 //
-//   ./build/benchmarks/cold_start_survey [states.bin [reference.bin]]
+//   ./build/benchmarks/cold_start_survey [options] [states.bin [reference.bin]]
 //
 // With a file name, the converged states are written there; with a second, they are
 // compared with that earlier survey's, unknown by unknown (largest difference relative
 // to the unknown's largest magnitude over the state).
+//
+// Options (the thermal deformation's cold start, steady_solver.h):
+//   --deformation=free|constrained   the scene with the thermal_deformation effect
+//   --no-homotopy                    its cold start by pseudo-time on the deformed film alone
+//   --loads=100,150,300              other loads (N) than 100, 300, ..., 1700
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -16,25 +21,46 @@
 
 #include <fmt/format.h>
 
+#include "mesh_option.h"
 #include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/steady_solver.h"
 
 int main(int argc, char** argv) {
-  const twb::Scene paper = twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml");
+  twb::Scene paper = twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml");
+  bool homotopy = true;
+  std::vector<double> loads;
+  for (double load = 100.0; load <= 1700.0; load += 200.0) loads.push_back(load);
+  std::vector<std::string> files;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.rfind("--deformation=", 0) == 0) {
+      paper.effects.thermal_deformation = true;
+      paper.effects.face_expansion =
+          arg.substr(14) == "constrained" ? twb::FaceExpansion::constrained : twb::FaceExpansion::free;
+    } else if (arg == "--no-homotopy") {
+      homotopy = false;
+    } else if (arg.rfind("--loads=", 0) == 0) {
+      loads.clear();
+      for (const std::string& load : twb::bench::split_list(arg.substr(8))) loads.push_back(std::stod(load));
+    } else {
+      files.push_back(arg);
+    }
+  }
   std::ofstream out;
-  if (argc > 1) out.open(argv[1], std::ios::binary);
+  if (!files.empty()) out.open(files[0], std::ios::binary);
   std::ifstream ref;
-  if (argc > 2) ref.open(argv[2], std::ios::binary);
+  if (files.size() > 1) ref.open(files[1], std::ios::binary);
   long iterations = 0, jacobians = 0, residuals = 0, failures = 0;
   double wall = 0.0, worst = 0.0;
   for (double speed : {136.0, 545.0, 953.0, 1367.0}) {
-    for (double load = 100.0; load <= 1700.0; load += 200.0) {
+    for (const double load : loads) {
       twb::Scene s = paper;
       s.operating.speed = speed;
       s.operating.load = load;
       twb::BearingModel model(s);
       twb::SteadySolver solver(model, {});
+      solver.set_deformation_homotopy(homotopy);
       std::vector<double> u;
       const twb::SteadyReport rep = solver.solve_cold(u);
       double difference = 0.0;
@@ -48,9 +74,10 @@ int main(int argc, char** argv) {
       }
       if (out.is_open()) out.write(reinterpret_cast<const char*>(u.data()), std::streamsize(u.size() * sizeof(double)));
       const double t_max = rep.converged ? model.describe(u).max_film_temperature - 273.15 : NAN;
-      fmt::print("{:6.0f} rad/s {:6.0f} N  {:16s} {:4d} its {:4d} jac {:4d} res {:7.1f} ms  T_max {:7.1f} C  {}\n", speed,
-                 load, rep.converged ? rep.strategy : "FAILED", rep.iterations, rep.jacobian_evaluations,
-                 rep.residual_evaluations, rep.wall_ms, t_max,
+      const double t_mean = rep.converged ? model.describe(u).washer_mean_temperature - 273.15 : NAN;
+      fmt::print("{:6.0f} rad/s {:6.0f} N  {:20s} {:4d} its {:4d} jac {:4d} res {:7.1f} ms  T_mean {:6.1f} C  T_max {:7.1f} C  {}\n",
+                 speed, load, rep.converged ? rep.strategy : "FAILED", rep.iterations, rep.jacobian_evaluations,
+                 rep.residual_evaluations, rep.wall_ms, t_mean, t_max,
                  ref.is_open() ? fmt::format("differs {:.2e}", difference) : "");
       iterations += rep.iterations;
       jacobians += rep.jacobian_evaluations;

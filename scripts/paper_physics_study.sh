@@ -15,7 +15,7 @@
 #   --out DIR    where results go (default: results/paper_physics)
 #
 # Writes DIR/<variation>/{map,branch}/, DIR/summary.csv (W_d on 9 x 66, extrapolated,
-# its error, at both speeds) and DIR/lift_hmin.png. About 2 min on one core. Exit
+# its error, at both speeds) and DIR/lift_hmin.png. About 45 s on one core. Exit
 # status: 0 every run succeeded; 1 a run failed (the others are still written); 2 bad usage.
 set -u
 

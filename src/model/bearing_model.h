@@ -169,6 +169,11 @@ class BearingModel final : public SegregatedSystem {
   // gap at a node from its plane, δ = form · u (m), from the carrier's and gear's face
   // expansion and the washer's dishing. Empty forms without the effect.
   bool deforms() const { return dishing_offset_ >= 0; }
+  // The shapes δ scaled by s in [0, 1] (the cold start's homotopy, steady_solver.cpp): 0
+  // is the rigid film with the deformation's own unknowns riding along, 1 the model.
+  // The Jacobian's pattern is the same for every s.
+  void set_deformation_scale(double s);
+  double deformation_scale() const { return deformation_scale_; }
   const LinearForm& shape_form(const Film& film, int node) const {
     return shape_forms_[std::size_t(film.number - 1)][std::size_t(node)];
   }
@@ -232,6 +237,7 @@ class BearingModel final : public SegregatedSystem {
   double contact_cutoff_ = 0.0;  // gap above which contact is negligible (p < 1e-20 p(0))
   RoelandsViscosity roelands_{};
   double viscosity_scale_ = 1.0;  // CurveParameter::viscosity_scale
+  double deformation_scale_ = 1.0;  // set_deformation_scale
   std::optional<double> uniform_roughness_;  // CurveParameter::roughness, once set
   std::tuple<Component, Component, Component, AsperityParameters> roughness_origin_;  // the scene's surfaces
   double sigma_ref_ = 0, gamma_ref_ = 0, p_ref_ = 0, h_ref_ = 0, mu_ref_ = 0;

@@ -37,15 +37,22 @@ void BearingModel::build_shape_forms() {
           LinearForm face;
           face_temperature(zero, side, r, j, &face);
           for (const auto& [k, w] : face.terms)
-            if (w != 0.0) form.add(k, -per_kelvin * w);
+            if (w != 0.0) form.add(k, -deformation_scale_ * per_kelvin * w);
         }
         // The dished washer's mid-surface rises by w(r) towards film 2: film 1 (washer
         // above) opens by w, film 2 (washer below) closes by w.
         const double towards = film.upper == ComponentId::washer ? 1.0 : -1.0;
-        form.add(dishing_offset_, towards * curvature_ref_ * dishing_shape(r, ri, ro));
+        form.add(dishing_offset_, deformation_scale_ * towards * curvature_ref_ * dishing_shape(r, ri, ro));
       }
     }
   }
+}
+
+void BearingModel::set_deformation_scale(double s) {
+  if (s == deformation_scale_) return;
+  deformation_scale_ = s;
+  // The same terms with other coefficients: the pattern and its slot tape still hold.
+  build_shape_forms();
 }
 
 double BearingModel::shape_at(std::span<const double> u, const Film& film, int node) const {

@@ -33,12 +33,15 @@ class SteadySolver {
   // From u (a warm start), falling back to a speed ramp, then a load ramp, from the cold start.
   SteadyReport solve(std::vector<double>& u);
   // From the paper's cold start, by the scene's solver.method. On meshes finer than
-  // kSequenceAbove nodes per film, by a mesh sequence first (solve_by_mesh_sequence),
-  // the cold start itself when that fails.
+  // kSequenceAbove nodes per film, by a mesh sequence first (solve_by_mesh_sequence);
+  // with thermal deformation, by its homotopy (solve_by_deformation_homotopy); the cold
+  // start itself when those fail.
   SteadyReport solve_cold(std::vector<double>& u);
   // Off: every cold start by pseudo-time on the mesh itself (the growth benchmark's
   // comparison).
   void set_mesh_sequence(bool on) { mesh_sequence_ = on; }
+  // Off: thermal deformation's cold start without its homotopy (the tests' comparison).
+  void set_deformation_homotopy(bool on) { deformation_homotopy_ = on; }
   // Above the paper's 9×66 (594 nodes) and its 17×66 or 9×132 refinements.
   static constexpr int kSequenceAbove = 1500;
 
@@ -48,6 +51,9 @@ class SteadySolver {
   // The state on the mesh with every other node line, interpolated here, then Newton
   // (pseudo-time if Newton fails).
   SteadyReport solve_by_mesh_sequence(std::vector<double>& u);
+  // Thermal deformation's cold start: the rigid film's (the shapes scaled by 0), then the
+  // shapes brought in by walking their scale to 1, each step Newton from the last.
+  SteadyReport solve_by_deformation_homotopy(std::vector<double>& u);
   void account(SteadyReport& rep, const NewtonReport& n) const;
   // KINSOL's Newton from u on the model's Newton form (SteadySystem::set_newton_form),
   // its own form restored afterwards; counted into rep.
@@ -61,15 +67,17 @@ class SteadySolver {
   SteadyReport settle(std::vector<double>& u, bool newton_first);
   // Walks a parameter (speed, load) from `from` up to `target`, each step warm-started
   // from the last state; the step grows 1.5× after a success and halves after a failure,
-  // giving up below 1e-4 of the target. Returns the value reached; leaves the
+  // giving up below `smallest` of the target. Returns the value reached; leaves the
   // parameter at the target.
   double walk(const std::function<void(double)>& set, double from, double target, double step,
-              std::vector<double>& state, const std::function<bool(std::vector<double>&)>& solve_step);
+              std::vector<double>& state, const std::function<bool(std::vector<double>&)>& solve_step,
+              double smallest = 1e-4);
 
   BearingModel& model_;
   NewtonSettings settings_;
   KinsolNewton newton_;
   bool mesh_sequence_ = true;
+  bool deformation_homotopy_ = true;
 };
 
 }  // namespace twb

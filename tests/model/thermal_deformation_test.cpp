@@ -93,6 +93,64 @@ TEST(ThermalDeformationModel, SteelThatDoesNotExpandLeavesTheStateAlone) {
   EXPECT_NEAR(still.state.fluid_share, plain.state.fluid_share, 1e-9);
 }
 
+// The cold start's homotopy (steady_solver.h): at scale 0 the deformed model is the
+// rigid film (its two extra unknowns ride along), and walking the scale to 1 lands on
+// the state the deformed film's own pseudo-time reaches from the cold start. All solved
+// to 1e-10 in scaled residuals: the states agree to a few times that (as above).
+TEST(ThermalDeformationModel, ShapesScaledToZeroAreTheRigidFilm) {
+  Scene s = testing::table1_scene(true, true, true, true, 545.0, 150.0);
+  testing::use_coarse_mesh(s);
+  const Converged plain = solve(s);
+  s.effects.thermal_deformation = true;
+  BearingModel m(s);
+  m.set_deformation_scale(0.0);
+  SteadySolver solver(m, {});
+  solver.set_deformation_homotopy(false);  // which would walk the scale to 1
+  std::vector<double> u;
+  ASSERT_TRUE(solver.solve_cold(u).converged);
+  const BearingState rigid = m.describe(u);
+  EXPECT_NEAR(rigid.hmin_over_sigma, plain.state.hmin_over_sigma, 1e-8);
+  EXPECT_NEAR(rigid.washer_mean_temperature, plain.state.washer_mean_temperature, 1e-7);
+  EXPECT_NEAR(rigid.f_eff, plain.state.f_eff, 1e-9);
+}
+
+// Free faces at 150 N have one steady state: both cold starts find it. Constrained faces
+// have two there (5×24): the deformed film's own pseudo-time from the cold start finds the
+// hot one (87 °C, h_min/σ 0.8), the homotopy the cool one its rigid film continues into
+// (36 °C): the state a bearing loaded while running is in, below its W_d.
+TEST(ThermalDeformationModel, ColdStartByHomotopyFindsTheCoolState) {
+  for (const FaceExpansion faces : {FaceExpansion::free, FaceExpansion::constrained}) {
+    SCOPED_TRACE(faces == FaceExpansion::free ? "free faces" : "constrained faces");
+    Scene s = testing::table1_scene(true, true, true, true, 545.0, 150.0);
+    testing::use_coarse_mesh(s);
+    s.effects.thermal_deformation = true;
+    s.effects.face_expansion = faces;
+    BearingModel m(s);
+    std::vector<double> by_homotopy, by_pseudo_time;
+    const SteadyReport homotopy = SteadySolver(m, {}).solve_cold(by_homotopy);
+    ASSERT_TRUE(homotopy.converged) << homotopy.message;
+    EXPECT_EQ(homotopy.strategy, "deformation homotopy");
+    EXPECT_EQ(m.deformation_scale(), 1.0);
+    testing::expect_balanced(m.describe(by_homotopy));
+    SteadySolver plain(m, {});
+    plain.set_deformation_homotopy(false);
+    const SteadyReport pseudo = plain.solve_cold(by_pseudo_time);
+    ASSERT_TRUE(pseudo.converged) << pseudo.message;
+    EXPECT_NE(pseudo.strategy, "deformation homotopy");
+    const BearingState a = m.describe(by_homotopy), b = m.describe(by_pseudo_time);
+    if (faces == FaceExpansion::free) {
+      EXPECT_NEAR(a.hmin_over_sigma, b.hmin_over_sigma, 1e-8);
+      EXPECT_NEAR(a.washer_mean_temperature, b.washer_mean_temperature, 1e-7);
+      EXPECT_NEAR(a.f_eff, b.f_eff, 1e-9);
+      EXPECT_NEAR(m.dishing_curvature(by_homotopy), m.dishing_curvature(by_pseudo_time),
+                  1e-8 * std::abs(m.dishing_curvature(by_pseudo_time)));
+    } else {
+      EXPECT_LT(a.washer_mean_temperature, b.washer_mean_temperature - 10.0);
+      EXPECT_GT(a.hmin_over_sigma, 2.0 * b.hmin_over_sigma);
+    }
+  }
+}
+
 TEST(ThermalDeformationModel, HeatThroughTheWasherDishesItsRimTowardsFilm2) {
   // Film 1 slides and makes the heat; what crosses the washer from film 1 to film 2
   // dishes it with its rim towards film 2 (κ̄ > 0).
