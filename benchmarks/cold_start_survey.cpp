@@ -35,9 +35,13 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg.rfind("--deformation=", 0) == 0) {
+      const std::string faces = arg.substr(14);
+      if (faces != "free" && faces != "constrained") {
+        fmt::print(stderr, "cold_start_survey: --deformation is free or constrained, not '{}'\n", faces);
+        return 2;
+      }
       paper.effects.thermal_deformation = true;
-      paper.effects.face_expansion =
-          arg.substr(14) == "constrained" ? twb::FaceExpansion::constrained : twb::FaceExpansion::free;
+      paper.effects.face_expansion = faces == "constrained" ? twb::FaceExpansion::constrained : twb::FaceExpansion::free;
     } else if (arg == "--no-homotopy") {
       homotopy = false;
     } else if (arg.rfind("--loads=", 0) == 0) {

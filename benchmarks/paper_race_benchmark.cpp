@@ -203,8 +203,6 @@ void BM_DistressByTwb(benchmark::State& state) {
 // on 9×66 and 17×132; benchmarks/README.md "What accuracy costs: W_d"). twb as the study
 // does it: the proven W_d, then the refined fold located from the coarse one. The
 // paper's scheme steps and bisects on both meshes; its W_d is its bracket's midpoint.
-double extrapolated(double coarse, double fine) { return fine + (fine - coarse) / 3.0; }
-
 void BM_ConvergedDistressByTwb(benchmark::State& state) {
   const twb::Scene scene = race_scene("newton");
   twb::BearingModel model(scene);
@@ -213,7 +211,10 @@ void BM_ConvergedDistressByTwb(benchmark::State& state) {
   for (auto _ : state) {
     const twb::DistressSearchSettings s = twb_search();
     const twb::DistressSearch found = twb::search_distress(model, s, {});
-    if (!found.row.fold_load || !found.fold) break;
+    if (!found.row.fold_load || !found.fold) {
+      why = "no fold on the race mesh: " + found.row.method;
+      break;
+    }
     e = twb::richardson_estimate(scene, model.speed(), {*found.row.fold_load, &model, &*found.fold}, s, why);
   }
   if (!e) {
@@ -239,7 +240,7 @@ void BM_ConvergedDistressByPaperScheme(benchmark::State& state) {
     return;
   }
   const double wc = 0.5 * (c.low + c.high), wf = 0.5 * (f.low + f.high);
-  state.counters["W_d_extrapolated_N"] = extrapolated(wc, wf);
+  state.counters["W_d_extrapolated_N"] = twb::richardson_extrapolation(wc, wf).extrapolated;
   state.counters["W_d_fine_N"] = wf;
   state.counters["solves"] = double(c.solves + f.solves);
   state.counters["assemblies"] = double(c.assemblies + f.assemblies);

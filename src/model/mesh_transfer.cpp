@@ -102,14 +102,15 @@ std::vector<double> BearingModel::interpolated_from(const BearingModel& source, 
 }
 
 std::unique_ptr<BearingModel> BearingModel::on_mesh(int radial_nodes, int circumferential_nodes) const {
-  // The scene holds every parameter changed since construction except the load and the
-  // viscosity scale (set_curve_parameter).
+  // The scene holds every parameter changed since construction except the load, the
+  // viscosity scale (set_curve_parameter) and the deformation scale.
   Scene scene = scene_;
   scene.mesh.radial_nodes = radial_nodes;
   scene.mesh.circumferential_nodes = circumferential_nodes;
   auto model = std::make_unique<BearingModel>(scene);
   model->set_load(load_);
   if (viscosity_scale_ != 1.0) model->set_curve_parameter(CurveParameter::viscosity_scale, viscosity_scale_);
+  model->set_deformation_scale(deformation_scale_);
   model->set_newton_form(newton_form());
   return model;
 }

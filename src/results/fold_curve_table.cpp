@@ -12,7 +12,8 @@ ResultTable fold_curve_table(const std::vector<FoldCurveRow>& rows, const std::s
   const cells::RunColumns family(t, family_column, false);
   const auto parameter = t.number(parameter_column), w_fold = t.number("W_fold_N"), fold = t.text("fold"),
              t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"), hmin = t.number("hmin_over_sigma"),
-             contact = t.number("contact_share"), f_eff = t.number("f_eff");
+             contact = t.number("contact_share"), f_eff = t.number("f_eff"), fine = t.number("W_fold_fine_N"),
+             extrapolated = t.number("W_fold_extrapolated_N"), error = t.number("W_fold_error_N");
   const double offset = parameter_column == "ambient_C" ? kelvin_offset : 0.0;
   for (const FoldCurveRow& r : rows) {
     const BearingState& s = r.state;
@@ -25,6 +26,9 @@ ResultTable fold_curve_table(const std::vector<FoldCurveRow>& rows, const std::s
     t.put_number(hmin, s.hmin_over_sigma);
     t.put_number(contact, s.contact_share);
     t.put_number(f_eff, s.f_eff);
+    t.put_number(fine, r.fine_load);
+    t.put_number(extrapolated, r.extrapolated_load);
+    t.put_number(error, r.discretization_error);
   }
   return t;
 }

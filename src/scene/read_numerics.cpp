@@ -221,9 +221,11 @@ void read_study(const MapReader& scene, Scene& out) {
       read_load_grid(study, out);
       break;
     case StudyType::distress_curve:
-      study.restrict_to({"type", "parameter", "from", "to", "load_start", "load_end", "bracket_width", "family"},
+      study.restrict_to({"type", "parameter", "from", "to", "load_start", "load_end", "bracket_width", "family",
+                         "error_estimate"},
                         "with type: distress_curve");
       read_fold_curve(study, out);
+      s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
       read_map_parameter(study, s, out, "family");
       break;
     case StudyType::distress_map: {

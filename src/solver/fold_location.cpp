@@ -1,6 +1,7 @@
 #include "solver/fold_location.h"
 
 #include <cmath>
+#include <functional>
 
 #include <boost/math/tools/toms748_solve.hpp>
 
@@ -44,17 +45,18 @@ void unit(std::vector<double>& v, const ContinuationMetric& metric) {
   for (double& c : v) c /= size;
 }
 
-bool minimally_augmented(SteadySystem& system, const ContinuationMetric& metric, const FoldBracket& br,
-                         const NewtonSettings& newton, FoldPoint& fold) {
+// Newton on [F; g] from x = (u, μ), the borders F_λ at u and the state direction t; on
+// success fold holds the fold (u, λ, null vector, curvature when asked) and x the root.
+// `accept` may still refuse the root (with fold.message saying why).
+bool augmented_newton(SteadySystem& system, const ContinuationMetric& metric, std::vector<double>& x,
+                      std::span<const double> direction, const NewtonSettings& newton, bool with_curvature,
+                      const std::function<bool(std::span<const double>)>& accept, FoldPoint& fold) {
   const auto n = std::size_t(system.size());
-  const double tau = interpolated_zero(br);
-  std::vector<double> x = between(br.x_a, br.x_b, tau);
-  const std::vector<double> t = between(br.t_a, br.t_b, tau);
   system.set_parameter(x[n] * metric.parameter_scale());
   std::vector<double> f_lambda(n);
   system.parameter_derivative(std::span<const double>(x).first(n), f_lambda);
   try {
-    FoldSystem augmented(system, metric, f_lambda, std::span<const double>(t).first(n));
+    FoldSystem augmented(system, metric, f_lambda, direction);
     KinsolNewton solver(augmented);
     const NewtonReport rep = solver.solve(x, newton);
     fold.iterations = rep.iterations;
@@ -62,22 +64,39 @@ bool minimally_augmented(SteadySystem& system, const ContinuationMetric& metric,
       fold.message = "minimally augmented Newton failed: " + rep.message;
       return false;
     }
-    // A root far outside the bracket belongs to another fold (or to nothing real).
-    const double reach = 2.0 * std::max(br.step, metric.norm(along(br.x_b, br.x_a, -1.0)));
-    if (metric.norm(along(x, br.x_a, -1.0)) > reach) {
-      fold.message = "minimally augmented Newton converged outside the bracket";
+    if (accept && !accept(x)) return false;
+    std::vector<double> null_vector = augmented.null_vector(x);
+    if (null_vector.size() != n) {
+      fold.message = "minimally augmented Newton: the bordered matrix is singular at its root";
       return false;
     }
     fold.u.assign(x.begin(), x.begin() + std::ptrdiff_t(n));
     fold.lambda = augmented.lambda_of(x);
-    fold.null_vector = augmented.null_vector(x);
+    fold.null_vector = std::move(null_vector);
     fold.residual_norm = rep.residual_norm;
     fold.method = FoldMethod::minimally_augmented;
+    if (with_curvature) fold.curvature = augmented.fold_curvature(x);
     return true;
   } catch (const std::exception& e) {
     fold.message = std::string("minimally augmented Newton failed: ") + e.what();
     return false;
   }
+}
+
+bool minimally_augmented(SteadySystem& system, const ContinuationMetric& metric, const FoldBracket& br,
+                         const NewtonSettings& newton, FoldPoint& fold) {
+  const auto n = std::size_t(system.size());
+  const double tau = interpolated_zero(br);
+  std::vector<double> x = between(br.x_a, br.x_b, tau);
+  const std::vector<double> t = between(br.t_a, br.t_b, tau);
+  // A root far outside the bracket belongs to another fold (or to nothing real).
+  const double reach = 2.0 * std::max(br.step, metric.norm(along(br.x_b, br.x_a, -1.0)));
+  const auto inside = [&](std::span<const double> root) {
+    if (metric.norm(along(root, br.x_a, -1.0)) <= reach) return true;
+    fold.message = "minimally augmented Newton converged outside the bracket";
+    return false;
+  };
+  return augmented_newton(system, metric, x, std::span<const double>(t).first(n), newton, false, inside, fold);
 }
 
 bool arclength_bracket(SteadySystem& system, const ContinuationMetric& metric, const FoldBracket& br,
@@ -129,30 +148,18 @@ bool arclength_bracket(SteadySystem& system, const ContinuationMetric& metric, c
 FoldPoint locate_fold_near(SteadySystem& system, std::span<const double> u, double lambda,
                            std::span<const double> null_guess, const NewtonSettings& newton) {
   FoldPoint fold;
-  const auto n = std::size_t(system.size());
+  if (null_guess.size() != u.size() || Index(u.size()) != system.size()) {
+    fold.message = "locate_fold_near: the guess and its null vector must have one entry per unknown";
+    return fold;
+  }
   system.set_parameter(lambda);
   const ContinuationMetric metric = ContinuationMetric::of(system, std::abs(lambda));
-  std::vector<double> f_lambda(n);
-  system.parameter_derivative(u, f_lambda);
-  try {
-    FoldSystem augmented(system, metric, f_lambda, null_guess);
-    std::vector<double> x = augmented.extend(u, lambda);
-    KinsolNewton solver(augmented);
-    const NewtonReport rep = solver.solve(x, newton);
-    fold.iterations = rep.iterations;
-    if (rep.converged) {
-      fold.u.assign(x.begin(), x.begin() + std::ptrdiff_t(n));
-      fold.lambda = augmented.lambda_of(x);
-      fold.null_vector = augmented.null_vector(x);
-      fold.residual_norm = rep.residual_norm;
-      fold.method = FoldMethod::minimally_augmented;
-      fold.curvature = augmented.fold_curvature(x);
-    } else {
-      fold.message = "minimally augmented Newton failed: " + rep.message;
-    }
-  } catch (const std::exception& e) {
-    fold.u.clear();
-    fold.message = std::string("minimally augmented Newton failed: ") + e.what();
+  std::vector<double> x(u.begin(), u.end());
+  x.push_back(lambda / metric.parameter_scale());
+  if (!augmented_newton(system, metric, x, null_guess, newton, true, {}, fold)) {
+    const std::string why = fold.message;
+    fold = FoldPoint{};
+    fold.message = why;
   }
   system.set_parameter(fold.u.empty() ? lambda : fold.lambda);
   return fold;

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "solver/natural_continuation.h"
 #include "solver/paper_scheme.h"
 #include "solver/sparse_lu.h"
 
@@ -198,10 +199,25 @@ bool SteadySolver::reach(std::vector<double>& u, SteadyReport& rep, bool newton_
 
 SteadyReport SteadySolver::solve(std::vector<double>& u) { return settle(u, true); }
 
+namespace {
+
+// A failed attempt's work, counted into the report of what came after it.
+SteadyReport with_work_of(SteadyReport rep, const SteadyReport& failed) {
+  rep.newton_solves += failed.newton_solves;
+  rep.iterations += failed.iterations;
+  rep.jacobian_evaluations += failed.jacobian_evaluations;
+  rep.residual_evaluations += failed.residual_evaluations;
+  rep.wall_ms += failed.wall_ms;
+  return rep;
+}
+
+}  // namespace
+
 SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
   u = model_.cold_start();
   if (model_.scene().solver.method == SolverMethod::paper) return solve_by_paper(u);
   const FilmMesh& mesh = model_.films().front().mesh;
+  SteadyReport spent;  // by the strategies that failed
   // The coarser mesh must still be a legal one (docs/scenes.md, "Bounds"): at least
   // 5 × 24, so that it keeps interior pressure nodes and its wedge.
   if (mesh_sequence_ && mesh.node_count() > kSequenceAbove && (mesh.radial_nodes() + 1) / 2 >= 5 &&
@@ -209,14 +225,20 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
     try {
       SteadyReport rep = solve_by_mesh_sequence(u);
       if (rep.converged) return rep;
+      spent = with_work_of(spent, rep);
     } catch (const std::exception&) {
       // The cold start on the mesh itself below says what is wrong, if anything.
     }
     u = model_.cold_start();
   }
   if (model_.deforms() && deformation_homotopy_) {
-    SteadyReport rep = solve_by_deformation_homotopy(u);
-    if (rep.converged) return rep;
+    try {
+      SteadyReport rep = solve_by_deformation_homotopy(u);
+      if (rep.converged) return with_work_of(rep, spent);
+      spent = with_work_of(spent, rep);
+    } catch (const std::exception&) {
+      // As above: the deformed film's own cold start follows.
+    }
     u = model_.cold_start();
   }
   // From the paper's cold start Newton never converges: over the 36 cold starts of the
@@ -226,7 +248,7 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
   // started from the same cold state. Pseudo-time goes first: the same 36 states (to
   // 2e-16), 1468 iterations instead of 1870 (with the pseudo-time settings of then; now
   // 643, docs/model.md).
-  return settle(u, false);
+  return with_work_of(settle(u, false), spent);
 }
 
 SteadyReport SteadySolver::solve_by_mesh_sequence(std::vector<double>& u) {
@@ -239,6 +261,7 @@ SteadyReport SteadySolver::solve_by_mesh_sequence(std::vector<double>& u) {
   const std::unique_ptr<BearingModel> coarse =
       model_.on_mesh((mesh.radial_nodes() + 1) / 2, (mesh.circumferential_nodes() + 1) / 2);
   SteadySolver coarse_solver(*coarse, settings_);
+  coarse_solver.set_deformation_homotopy(deformation_homotopy_);
   std::vector<double> uc;
   SteadyReport rep = coarse_solver.solve_cold(uc);
   if (rep.converged) {
@@ -254,6 +277,45 @@ SteadyReport SteadySolver::solve_by_mesh_sequence(std::vector<double>& u) {
   return rep;
 }
 
+namespace {
+
+// The bearing with its deformation scale as the parameter (the homotopy's continuation):
+// everything else is the model's.
+class DeformationScale final : public SteadySystem {
+ public:
+  explicit DeformationScale(BearingModel& model) : model_(model) {}
+  Index size() const override { return model_.size(); }
+  const SparsePattern& pattern() const override { return model_.pattern(); }
+  void evaluate(std::span<const double> u, std::span<double> residual, std::span<double> jacobian) const override {
+    model_.evaluate(u, residual, jacobian);
+  }
+  double parameter() const override { return model_.deformation_scale(); }
+  void set_parameter(double value) override { model_.set_deformation_scale(value); }
+  // Central differences: F is smooth in the scale, which moves only the gaps.
+  void parameter_derivative(std::span<const double> u, std::span<double> derivative) const override {
+    const double s = model_.deformation_scale(), h = 1e-6;
+    std::vector<double> plus(derivative.size()), minus(derivative.size());
+    model_.set_deformation_scale(s + h);
+    model_.evaluate(u, plus, {});
+    model_.set_deformation_scale(s - h);
+    model_.evaluate(u, minus, {});
+    model_.set_deformation_scale(s);
+    for (std::size_t k = 0; k < derivative.size(); ++k) derivative[k] = (plus[k] - minus[k]) / (2.0 * h);
+  }
+  std::vector<double> capacities() const override { return model_.capacities(); }
+  std::vector<double> step_weights() const override { return model_.step_weights(); }
+  std::string block_name(Index k) const override { return model_.block_name(k); }
+  std::string describe_row(Index k) const override { return model_.describe_row(k); }
+  void set_newton_form(bool on) override { model_.set_newton_form(on); }
+  bool newton_form() const override { return model_.newton_form(); }
+  double newton_form_tolerance_ratio() const override { return model_.newton_form_tolerance_ratio(); }
+
+ private:
+  BearingModel& model_;
+};
+
+}  // namespace
+
 SteadyReport SteadySolver::solve_by_deformation_homotopy(std::vector<double>& u) {
   // From the cold start the deformed film's pseudo-time crawls: the faces' expansion
   // follows temperatures that are themselves far from settled, and closes the film where
@@ -261,27 +323,37 @@ SteadyReport SteadySolver::solve_by_deformation_homotopy(std::vector<double>& u)
   // the rigid film 15). The rigid film's state is a few Newton steps from the deformed
   // one's at each fraction of the shapes.
   const auto t0 = std::chrono::steady_clock::now();
-  // The whole shapes again however this ends, a solver's exception included.
-  struct WholeShapesAfter {
+  // The model's own shapes (whole, unless a caller scaled them) are where the walk ends,
+  // and what the model is left with however this ends, a solver's exception included.
+  const double own = model_.deformation_scale();
+  struct OwnShapesAfter {
     BearingModel& model;
-    ~WholeShapesAfter() { model.set_deformation_scale(1.0); }
-  } restore{model_};
+    double scale;
+    ~OwnShapesAfter() { model.set_deformation_scale(scale); }
+  } restore{model_, own};
   model_.set_deformation_scale(0.0);
   SteadyReport rep = settle(u, false);
   if (rep.converged) {
-    // A step of the scale from a converged state takes Newton a few iterations (the
-    // whole walk mostly 10 to 25 on 9×66 below W_d: benchmarks/cold_start_survey
-    // --deformation); one that needs more than 12 is too long and is halved.
-    NewtonSettings quick = settings_;
-    quick.max_iterations = 12;
-    // Steps below 1 % of the shapes are not pursued: a branch that needs them is turning
-    // in the scale (a fold: the state with the whole shapes lies on another branch, or
-    // nowhere), and the cold start on the deformed film below is the better try.
-    const double reached = walk([&](double s) { model_.set_deformation_scale(s); }, 0.0, 1.0, 0.25, u,
-                                [&](std::vector<double>& x) { return newton(x, quick, rep); }, 0.01);
-    rep.converged = reached >= 1.0;
-    if (!rep.converged)
-      rep.message = fmt::format("the deformation's homotopy stalled at {:.4g} of the shapes", reached);
+    // Natural continuation in the scale, with its jump test: Newton from the last state
+    // can land on another steady state (the deformed film has several at some loads:
+    // on 5×24 at 545 rad/s, 150 N, constrained faces, a step of the scale from 0.625 to 1
+    // landed on one 1 σ thinner and 3.6 K hotter than the branch's), and a corrected
+    // state far from the tangent's prediction is such a jump: the step is halved.
+    DeformationScale scale(model_);
+    NaturalSettings walk;
+    walk.newton = settings_;
+    walk.newton.max_iterations = std::min(settings_.max_iterations, 10);
+    walk.initial_step = 0.25 * own;
+    walk.max_step = 0.25 * own;
+    walk.min_step = 0.01 * own;
+    const NaturalReport r = continue_in_parameter(scale, u, own, walk);
+    ++rep.newton_solves;
+    rep.iterations += r.corrector_iterations;
+    rep.converged = r.reached_target;
+    if (rep.converged)
+      rep.message.clear();
+    else
+      rep.message = fmt::format("the deformation's homotopy stalled at {:.4g} of the shapes: {}", r.lambda, r.message);
   }
   rep.strategy = "deformation homotopy";
   rep.wall_ms = elapsed_ms(t0);
@@ -329,7 +401,7 @@ SteadyReport SteadySolver::settle(std::vector<double>& u, bool newton_first) {
 
 double SteadySolver::walk(const std::function<void(double)>& set, double from, double target, double step,
                           std::vector<double>& state,
-                          const std::function<bool(std::vector<double>&)>& solve_step, double smallest) {
+                          const std::function<bool(std::vector<double>&)>& solve_step) {
   double reached = from;
   while (reached < target) {
     const double next = std::min(target, reached + step);
@@ -341,7 +413,7 @@ double SteadySolver::walk(const std::function<void(double)>& set, double from, d
       step *= 1.5;
     } else {
       step *= 0.5;
-      if (step < smallest * target) break;
+      if (step < 1e-4 * target) break;
     }
   }
   set(target);

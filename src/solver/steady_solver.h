@@ -67,11 +67,10 @@ class SteadySolver {
   SteadyReport settle(std::vector<double>& u, bool newton_first);
   // Walks a parameter (speed, load) from `from` up to `target`, each step warm-started
   // from the last state; the step grows 1.5× after a success and halves after a failure,
-  // giving up below `smallest` of the target. Returns the value reached; leaves the
+  // giving up below 1e-4 of the target. Returns the value reached; leaves the
   // parameter at the target.
   double walk(const std::function<void(double)>& set, double from, double target, double step,
-              std::vector<double>& state, const std::function<bool(std::vector<double>&)>& solve_step,
-              double smallest = 1e-4);
+              std::vector<double>& state, const std::function<bool(std::vector<double>&)>& solve_step);
 
   BearingModel& model_;
   NewtonSettings settings_;

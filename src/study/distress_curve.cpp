@@ -8,6 +8,7 @@
 #include "study_support.h"
 #include "solver/fold_curve.h"
 #include "study/distress_search.h"
+#include "study/richardson.h"
 
 namespace twb {
 
@@ -123,6 +124,10 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     model.set_load(load);
     return model.describe(u);
   };
+  // W_d's error bar all along the curve: each fold again on the refined mesh
+  // (study/richardson.h), from the curve's model as it stands at the first fold.
+  std::optional<RefinedFoldCurve> refined;
+  if (st.error_estimate == ErrorEstimate::richardson) refined.emplace(model, which, *first->fold);
   FoldCurve curve;
   try {
     curve = trace_fold_curve(model, parameter, *first->fold, fs, [&](const FoldCurvePoint& pt) {
@@ -139,6 +144,17 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     return;
   }
   const auto n = std::size_t(model.size());
+  auto add_row = [&](double p, const std::string& fold, const BearingState& state) -> FoldCurveRow& {
+    FoldCurveRow& row = out.fold_curve.emplace_back();
+    row.parameter = p;
+    row.fold = fold;
+    row.state = state;
+    row.member = member;
+    return row;
+  };
+  const auto t_bars = std::chrono::steady_clock::now();
+  int with_bar = 0, folds = 0;
+  std::string last_why;
   std::size_t next_turn = 0;
   std::string kind = "distress";  // the start's: W_d, proven
   for (std::size_t k = 0; k < curve.points.size(); ++k) {
@@ -146,13 +162,29 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     // (a curvature that could not be computed, NaN, keeps the previous point's kind)
     if (pt.curvature > 0) kind = "distress";
     if (pt.curvature < 0) kind = "recovery";
-    out.fold_curve.push_back({pt.p, kind, describe_at(pt.p, pt.lambda, pt.u), member});
+    FoldCurveRow& row = add_row(pt.p, kind, describe_at(pt.p, pt.lambda, pt.u));
+    if (refined) {
+      ++folds;
+      std::string why;
+      std::optional<MeshErrorEstimate> e;
+      try {
+        e = refined->at(pt.p, pt.lambda, pt.u, kind == "distress" ? +1 : -1, why);
+      } catch (const std::exception& failure) {
+        why = failure.what();
+      }
+      if (e) {
+        row.fine_load = e->fine_fold;
+        row.extrapolated_load = e->extrapolated;
+        row.discretization_error = e->error;
+        ++with_bar;
+      } else {
+        last_why = why;
+      }
+    }
     const bool turns = k + 1 < curve.points.size() && pt.tangent_p * curve.points[k + 1].tangent_p < 0.0;
     if (turns && next_turn < curve.turns.size()) {
       const CurveTurn& t = curve.turns[next_turn++];
-      out.fold_curve.push_back(
-          {t.p, t.cusp ? "cusp" : "turn", describe_at(t.p, t.lambda, std::span<const double>(t.point.u).first(n)),
-           member});
+      add_row(t.p, t.cusp ? "cusp" : "turn", describe_at(t.p, t.lambda, std::span<const double>(t.point.u).first(n)));
       out.summary.push_back(
           t.cusp ? fmt::format("fold curve{}: cusp at {}, {:.2f} N: the cool and hot branches merge; on the side "
                                "without a fold the bearing heats gradually, with no sudden distress",
@@ -160,6 +192,13 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
                  : fmt::format("fold curve{}: turns back at {}, {:.2f} N without a cusp", label, shown(which, t.p),
                                t.lambda));
     }
+  }
+  if (refined) {
+    const std::string line =
+        fmt::format("fold curve{}: error bars from the {} mesh at {} of {} folds{}", label, refined->mesh(), with_bar,
+                    folds, with_bar < folds ? " (the last missing: " + last_why + ")" : std::string());
+    say(fmt::format("[curve{}] {} [{:.1f} s]", label, line.substr(line.find(':') + 2), elapsed_ms(t_bars) / 1000.0));
+    out.summary.push_back(line);
   }
   // Where the curve ended: past the range's end, or inside it where continuation could
   // not go on (the reason is the continuation's own, in terms of the curve parameter).

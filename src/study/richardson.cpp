@@ -1,5 +1,6 @@
 #include "richardson.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -15,6 +16,15 @@ constexpr double safety_factor = 1.25;  // Roache's F_s
 
 }  // namespace
 
+MeshErrorEstimate richardson_extrapolation(double coarse, double fine) {
+  MeshErrorEstimate e;
+  e.fine_fold = fine;
+  const double change = (fine - coarse) / (std::pow(2.0, formal_order) - 1.0);
+  e.extrapolated = fine + change;
+  e.error = safety_factor * std::abs(change);
+  return e;
+}
+
 Scene refined_mesh(const Scene& scene) {
   Scene fine = scene;
   fine.mesh.radial_nodes = 2 * (scene.mesh.radial_nodes - 1) + 1;
@@ -24,44 +34,71 @@ Scene refined_mesh(const Scene& scene) {
 
 namespace {
 
-// The coarse fold moved onto the refined model: its state, and its null vector as the
-// difference of two interpolated states (the interpolation is linear in the state, and the
-// edge values cancel).
-struct MovedFold {
-  std::vector<double> u, null_vector;
-};
+MeshErrorEstimate extrapolated(double coarse, double fine, const std::string& mesh) {
+  MeshErrorEstimate e = richardson_extrapolation(coarse, fine);
+  e.fine_mesh = mesh;
+  return e;
+}
 
-MovedFold moved_fold(const BearingModel& fine, const BearingModel& coarse, const FoldPoint& fold) {
-  MovedFold moved;
-  moved.u = fine.interpolated_from(coarse, fold.u);
-  std::vector<double> shifted = fold.u;
-  for (std::size_t k = 0; k < shifted.size(); ++k) shifted[k] += fold.null_vector[k];
-  moved.null_vector = fine.interpolated_from(coarse, shifted);
-  for (std::size_t k = 0; k < moved.u.size(); ++k) moved.null_vector[k] -= moved.u[k];
-  return moved;
+std::string mesh_name(const Scene& scene) {
+  return fmt::format("{} x {}", scene.mesh.radial_nodes, scene.mesh.circumferential_nodes);
+}
+
+// A difference of two states carried onto the refined mesh (the interpolation is affine
+// in the state: the edge values and the ambient shift cancel).
+std::vector<double> moved_difference(const BearingModel& fine, const BearingModel& coarse, std::span<const double> a,
+                                     std::span<const double> b) {
+  std::vector<double> d = fine.interpolated_from(coarse, a);
+  const std::vector<double> base = fine.interpolated_from(coarse, b);
+  for (std::size_t k = 0; k < d.size(); ++k) d[k] -= base[k];
+  return d;
+}
+
+// A direction v at the coarse state u (a null vector) carried onto the refined mesh.
+std::vector<double> moved_direction(const BearingModel& fine, const BearingModel& coarse, std::span<const double> u,
+                                    std::span<const double> v) {
+  std::vector<double> shifted(u.begin(), u.end());
+  for (std::size_t k = 0; k < shifted.size(); ++k) shifted[k] += v[k];
+  return moved_difference(fine, coarse, shifted, u);
+}
+
+// The fold found from a guess, checked: converged, of the coarse fold's kind (the sign
+// of its curvature), and within 30 % of the coarse load (the coarsest legal meshes put
+// W_d about 20 % low: benchmarks/README.md, "What accuracy costs: W_d"). Newton gets 20
+// iterations: from the coarse fold it takes 8 on the paper's bearing, 4 to 6 along a
+// curve, and each iteration costs three Jacobians and a bordered factorization on the
+// refined mesh, so a guess outside its reach is given up early.
+std::optional<FoldPoint> checked_fold(BearingModel& fine, std::span<const double> u, double load,
+                                      std::span<const double> null_guess, double coarse_load, int kind,
+                                      std::string& why) {
+  NewtonSettings newton = newton_settings(fine.scene());
+  newton.max_iterations = std::min(newton.max_iterations, 20);
+  FoldPoint fold = locate_fold_near(fine, u, load, null_guess, newton);
+  if (fold.u.empty()) {
+    why = fold.message;
+    return std::nullopt;
+  }
+  if (!(fold.curvature * kind > 0.0)) {
+    why = fmt::format("the fold found at {:.6g} N is not a {} load (curvature {:.3g})", fold.lambda,
+                      kind > 0 ? "largest" : "smallest", fold.curvature);
+    return std::nullopt;
+  }
+  if (!(std::abs(fold.lambda - coarse_load) <= 0.3 * coarse_load)) {
+    why = fmt::format("the fold found at {:.6g} N is too far from the coarse fold at {:.6g} N", fold.lambda,
+                      coarse_load);
+    return std::nullopt;
+  }
+  return fold;
 }
 
 // The refined fold from the coarse one; empty with the reason in `why` when Newton fails
 // or finds another kind of fold, or one too far away to be the same.
 std::optional<double> fold_from_coarse(BearingModel& fine, const CoarseFold& coarse, std::string& why) {
-  const MovedFold moved = moved_fold(fine, *coarse.model, *coarse.point);
-  const FoldPoint fold =
-      locate_fold_near(fine, moved.u, coarse.load, moved.null_vector, newton_settings(fine.scene()));
-  if (fold.u.empty()) {
-    why = fold.message;
-    return std::nullopt;
-  }
-  if (!(fold.curvature > 0.0)) {
-    why = fmt::format("the fold found at {:.6g} N is not a largest load (curvature {:.3g})", fold.lambda,
-                      fold.curvature);
-    return std::nullopt;
-  }
-  if (!(std::abs(fold.lambda - coarse.load) <= 0.5 * coarse.load)) {
-    why = fmt::format("the fold found at {:.6g} N is too far from the coarse fold at {:.6g} N", fold.lambda,
-                      coarse.load);
-    return std::nullopt;
-  }
-  return fold.lambda;
+  const FoldPoint& c = *coarse.point;
+  const auto fold = checked_fold(fine, fine.interpolated_from(*coarse.model, c.u), coarse.load,
+                                 moved_direction(fine, *coarse.model, c.u, c.null_vector), coarse.load, +1, why);
+  if (!fold) return std::nullopt;
+  return fold->lambda;
 }
 
 }  // namespace
@@ -72,7 +109,7 @@ std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double 
   const Scene fine_scene = refined_mesh(scene);
   BearingModel fine(fine_scene);
   fine.set_speed(speed);
-  const std::string mesh = fmt::format("{} x {}", fine_scene.mesh.radial_nodes, fine_scene.mesh.circumferential_nodes);
+  const std::string mesh = mesh_name(fine_scene);
   const auto say = [&](const std::string& s) {
     if (progress) progress("  [" + mesh + "]" + s);
   };
@@ -97,13 +134,42 @@ std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double 
     }
     fine_fold = *found.row.fold_load;
   }
-  MeshErrorEstimate e;
-  e.fine_fold = *fine_fold;
-  const double change = (e.fine_fold - coarse.load) / (std::pow(2.0, formal_order) - 1.0);
-  e.extrapolated = e.fine_fold + change;
-  e.error = safety_factor * std::abs(change);
-  e.fine_mesh = mesh;
-  return e;
+  return extrapolated(coarse.load, *fine_fold, mesh);
+}
+
+RefinedFoldCurve::RefinedFoldCurve(const BearingModel& coarse, CurveParameter which, const FoldPoint& first)
+    : coarse_(coarse), which_(which) {
+  const Scene fine = refined_mesh(coarse.scene());
+  fine_ = coarse.on_mesh(fine.mesh.radial_nodes, fine.mesh.circumferential_nodes);
+  mesh_ = mesh_name(fine);
+  first_null_ = moved_direction(*fine_, coarse_, first.u, first.null_vector);
+}
+
+std::optional<MeshErrorEstimate> RefinedFoldCurve::at(double p, double load, std::span<const double> u, int kind,
+                                                      std::string& why) {
+  fine_->set_curve_parameter(which_, p);
+  std::vector<double> guess;
+  double guess_load = load;
+  const bool follow = !last_fine_.empty();
+  if (follow) {
+    // The last refined fold, moved as the coarse curve moved.
+    guess = moved_difference(*fine_, coarse_, u, last_coarse_);
+    for (std::size_t k = 0; k < guess.size(); ++k) guess[k] += last_fine_[k];
+    guess_load = last_fine_load_ + (load - last_coarse_load_);
+  } else {
+    guess = fine_->interpolated_from(coarse_, u);
+  }
+  const auto fold = checked_fold(*fine_, guess, guess_load, follow ? last_null_ : first_null_, load, kind, why);
+  last_coarse_.assign(u.begin(), u.end());
+  last_coarse_load_ = load;
+  if (!fold) {
+    last_fine_.clear();
+    return std::nullopt;
+  }
+  last_fine_ = fold->u;
+  last_null_ = fold->null_vector;
+  last_fine_load_ = fold->lambda;
+  return extrapolated(load, fold->lambda, mesh_);
 }
 
 }  // namespace twb

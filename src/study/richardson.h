@@ -19,8 +19,11 @@
 // meshes. tests/study/richardson_test.cpp checks the order and the cover on three meshes.
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "twb/scene/scene.h"
 #include "solver/fold_location.h"
@@ -38,6 +41,10 @@ struct MeshErrorEstimate {
 // The scene with its mesh refined by two in each direction.
 Scene refined_mesh(const Scene& scene);
 
+// The extrapolation and its error bar from a value on a mesh and on the mesh refined by
+// two (the formula above); fine_mesh left empty.
+MeshErrorEstimate richardson_extrapolation(double coarse, double fine);
+
 // The fold on the scene's mesh, as its search found it.
 struct CoarseFold {
   double load = 0.0;  // N
@@ -52,8 +59,8 @@ struct CoarseFold {
 // Where the refined mesh's fold comes from: a few Newton iterations from the coarse
 // fold (on the paper's bearing, 9×66 → 17×132: about a third of the cost of continuing
 // the refined branch from the light load). The located fold must be a largest load
-// (fold curvature κ > 0, as the cool branch's end is) within half the coarse load of
-// it; otherwise the refined branch is continued from the light load as before.
+// (fold curvature κ > 0, as the cool branch's end is) within 30 % of the coarse load;
+// otherwise the refined branch is continued from the light load as before.
 //
 // From the fold on the scene's mesh at `speed`. The fold on the refined mesh is located
 // from the coarse one (above) or searched from settings.load_start to settings.load_end.
@@ -61,5 +68,33 @@ struct CoarseFold {
 std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double speed, const CoarseFold& coarse,
                                                      DistressSearchSettings settings, std::string& why,
                                                      const SearchProgress& progress = {});
+
+// The folds of a fold curve (study type distress_curve) again on the refined mesh, point
+// after point along the curve: each from the last refined fold moved by the coarse
+// curve's step (the coarse-to-fine difference changes little from point to point), the
+// first from the coarse fold itself as above. Not for concurrent use; one per curve.
+class RefinedFoldCurve {
+ public:
+  // coarse: the curve's model (its curve parameter and every other setting as the
+  // curve's); first: the curve's first fold on it.
+  RefinedFoldCurve(const BearingModel& coarse, CurveParameter which, const FoldPoint& first);
+
+  // The estimate at the curve point (p, coarse load, coarse state u) whose fold is a
+  // largest load (kind > 0, distress) or a smallest (kind < 0, recovery); empty, with the
+  // reason in `why`, where Newton fails there or finds another kind of fold, or one
+  // more than 30 % of the coarse load away (the next point then starts afresh).
+  std::optional<MeshErrorEstimate> at(double p, double load, std::span<const double> u, int kind, std::string& why);
+  const std::string& mesh() const { return mesh_; }  // e.g. "17 x 132"
+
+ private:
+  const BearingModel& coarse_;
+  std::unique_ptr<BearingModel> fine_;
+  CurveParameter which_;
+  std::string mesh_;
+  std::vector<double> first_null_;  // the first fold's null vector, coarse
+  // The last point's coarse state and load and its refined fold, when it had one.
+  std::vector<double> last_coarse_, last_fine_, last_null_;
+  double last_coarse_load_ = 0.0, last_fine_load_ = 0.0;
+};
 
 }  // namespace twb

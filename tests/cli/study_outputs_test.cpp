@@ -89,7 +89,9 @@ TEST(StudyOutputs, DistressCurveAndSafeRegionInOneCommand) {
   ASSERT_EQ(run_twb("distress_curve.yaml", dir, "--set study.load_end='1000 N'"), 0);
   const auto rows = lines_of(dir / "fold_curve.csv");
   ASSERT_GT(rows.size(), 5u);
-  EXPECT_EQ(rows[0], "speed_rad_s,W_fold_N,fold,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff");
+  EXPECT_EQ(rows[0],
+            "speed_rad_s,W_fold_N,fold,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,W_fold_fine_N,"
+            "W_fold_extrapolated_N,W_fold_error_N");
   EXPECT_EQ(cusp_rows(rows), 1);
   fs::remove_all(dir);
 

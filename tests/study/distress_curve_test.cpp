@@ -10,6 +10,7 @@
 #include "../support/table1_scene.h"
 #include "solver/fold_curve.h"
 #include "study/distress_search.h"
+#include "study/richardson.h"
 #include "study/study_runner.h"
 
 namespace twb {
@@ -144,6 +145,52 @@ TEST(DistressCurve, StudyWritesTheCurveAndTheCusp) {
   EXPECT_NEAR(cusp->parameter, shared().curve.turns.front().p, 1e-6 * cusp->parameter);
   ASSERT_FALSE(out.summary.empty());
   EXPECT_NE(out.summary.front().find("cusp"), std::string::npos) << out.summary.front();
+}
+
+// W_d's error bar all along the curve (study.error_estimate: richardson, the default):
+// every distress fold has its fold on the mesh refined by two, and the first is the one
+// the refined mesh's own search finds at that speed (both Newton on the same fold
+// system to the scaled residual 1e-10: 1e-8 relative leaves room for its conditioning,
+// as in richardson_test.cpp). Without the estimate the columns stay empty.
+TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
+  Scene scene = speed_curve_scene();
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.fold_curve.empty());
+  long distress = 0, recovery_with_bar = 0;
+  for (const FoldCurveRow& r : out.fold_curve) {
+    if (r.fold == "distress") {
+      ++distress;
+      ASSERT_TRUE(r.fine_load && r.extrapolated_load && r.discretization_error) << "at " << r.parameter;
+      // Finer meshes carry more load here (W_d 7 % low on 9×66, 20 % on 5×24).
+      EXPECT_GT(*r.fine_load, r.state.load);
+      EXPECT_NEAR(*r.extrapolated_load, *r.fine_load + (*r.fine_load - r.state.load) / 3.0, 1e-12 * *r.fine_load);
+    }
+    if (r.fold == "cusp" || r.fold == "turn") {
+      EXPECT_FALSE(r.fine_load);
+    }
+    if (r.fold == "recovery" && r.fine_load) ++recovery_with_bar;
+  }
+  EXPECT_GT(distress, 3);
+  EXPECT_GT(recovery_with_bar, 0);
+
+  const FoldCurveRow& first = out.fold_curve.front();
+  Scene fine = refined_mesh(scene);
+  fine.operating.speed = first.parameter;
+  BearingModel refined(fine);
+  DistressSearchSettings s;
+  s.load_start = scene.study.load_start;
+  s.load_end = scene.study.load_end;
+  s.fold_only = true;
+  const DistressSearch own = search_distress(refined, s, {});
+  ASSERT_TRUE(own.row.fold_load) << own.row.method;
+  EXPECT_NEAR(*first.fine_load, *own.row.fold_load, 1e-8 * *own.row.fold_load);
+
+  scene.study.error_estimate = ErrorEstimate::none;
+  BearingModel plain(scene);
+  const StudyOutcome without = run_study(plain, {});
+  EXPECT_TRUE(std::none_of(without.fold_curve.begin(), without.fold_curve.end(),
+                           [](const FoldCurveRow& r) { return r.fine_load.has_value(); }));
 }
 
 // A family of curves, one per dry friction coefficient (the constant law, Fig. 15): each

@@ -77,6 +77,8 @@ TEST(RichardsonEstimate, RefinedFoldFromTheCoarseFoldIsTheRefinedBranchsOwn) {
   testing::use_coarse_mesh(coarse);
   BearingModel model(coarse);
   const DistressSearch found = fold_search(model);
+  // The tolerance's argument needs the branch's fold from the same fold system.
+  ASSERT_EQ(found.fold->method, FoldMethod::minimally_augmented);
   std::string why;
   std::vector<std::string> said;
   const auto e = richardson_estimate(coarse, 545.0, {*found.row.fold_load, &model, &*found.fold}, fold_range(), why,
@@ -105,8 +107,25 @@ TEST(RichardsonEstimate, FallsBackToTheBranchWhenTheCoarseFoldMisleads) {
   ASSERT_TRUE(e) << why;
   ASSERT_FALSE(said.empty());
   EXPECT_NE(said.front().find("continuing the branch instead"), std::string::npos) << said.front();
+  EXPECT_NE(said.front().find("Newton failed"), std::string::npos) << said.front();
   const double own = fold_on(refined_mesh(coarse));
   EXPECT_NEAR(e->fine_fold, own, 1e-9 * own);
+}
+
+// A coarse fold whose load is far from where its state's fold lies: Newton finds the
+// refined fold near the state, more than 30 % from the load given, and the estimate
+// does not trust it.
+TEST(RichardsonEstimate, RefusesARefinedFoldFarFromTheCoarseLoad) {
+  Scene coarse = testing::table1_scene(true, true, true, true, 545.0, 100.0);
+  testing::use_coarse_mesh(coarse);
+  BearingModel model(coarse);
+  const DistressSearch found = fold_search(model);
+  std::string why;
+  std::vector<std::string> said;
+  const auto e = richardson_estimate(coarse, 545.0, {2.0 * *found.row.fold_load, &model, &*found.fold}, fold_range(),
+                                     why, [&](const std::string& s) { said.push_back(s); });
+  ASSERT_FALSE(said.empty());
+  EXPECT_NE(said.front().find("too far from the coarse fold"), std::string::npos) << said.front();
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // fold_curve.csv: the fold of the cool branch continued in a second parameter (study
 // type distress_curve), one row per point of the curve and one per turn:
-//   <parameter>, W_fold_N, fold, T_mean_C, T_max_C, hmin_over_sigma, contact_share, f_eff
+//   <parameter>, W_fold_N, fold, T_mean_C, T_max_C, hmin_over_sigma, contact_share, f_eff,
+//   W_fold_fine_N, W_fold_extrapolated_N, W_fold_error_N
 // <parameter> is the curve's parameter with its unit (speed_rad_s, friction_coefficient,
 // gear_tilt_rad, ambient_C, viscosity_scale, roughness_Rq_m); fold says which fold the row is: "distress" (the branch's
 // largest load: W_d), "recovery" (its smallest: the hot branch turning back to the cool
@@ -23,6 +24,10 @@ struct FoldCurveRow {
   BearingState state;  // at the fold; state.load is W_fold
   // A family of curves (study.family): this curve's value of the family parameter (SI).
   std::optional<double> member;
+  // The fold's discretization error (study.error_estimate: richardson): the same fold on
+  // the mesh refined by two, the Richardson extrapolation and its error bar (N); absent
+  // for cusps and turns, and where the refined fold was not found.
+  std::optional<double> fine_load, extrapolated_load, discretization_error;
 };
 
 // The table fold_curve.csv is written from (result_table.h).

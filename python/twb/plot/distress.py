@@ -35,7 +35,8 @@ def searched_up_to(method):
 
 def figure_fold_curve(data, name, column, rows):
     """The fold curve of a distress_curve study as the safe operating region: W_d against
-    the parameter (solid), the hot branch's recovery fold (dashed), the cusp where the two
+    the parameter (solid), its mesh-converged value with the error bar where the study has
+    it (dotted, shaded), the hot branch's recovery fold (dashed), the cusp where the two
     meet and sudden distress ends; below W_d no sudden distress, between the two folds a
     bearing that once passed W_d stays hot. A family of curves (one per value of a second
     parameter) gets a colour per curve."""
@@ -67,6 +68,16 @@ def figure_fold_curve(data, name, column, rows):
             ax.fill_between(distress[:, 0], 0, distress[:, 1], color="tab:green" if single else color,
                             alpha=0.15 if single else 0.06, linewidth=0,
                             label="below $W_d$: no sudden distress" if single else None)
+        # The mesh-converged W_d (Richardson) with its error bar, where the study has it.
+        converged = np.array(sorted((scale * r["p"], r["W_fold_extrapolated_N"], r["W_fold_error_N"])
+                                    for r in mine if r["fold"] == "distress"
+                                    and r.get("W_fold_extrapolated_N") is not None), dtype=float).reshape(-1, 3)
+        if len(converged):
+            ax.plot(converged[:, 0], converged[:, 1], color=color, linestyle=":", linewidth=1.4,
+                    label="$W_d$ mesh-converged (Richardson)" + tag if single or i == 0 else None)
+            ax.fill_between(converged[:, 0], converged[:, 1] - converged[:, 2], converged[:, 1] + converged[:, 2],
+                            color=color, alpha=0.12, linewidth=0,
+                            label="its error bar" if single or i == 0 else None)
         if len(recovery):
             ax.plot(recovery[:, 0], recovery[:, 1], color="tab:blue" if single else color, linestyle="--",
                     linewidth=1.4, label="recovery: the hot branch's lowest load" if single else None)

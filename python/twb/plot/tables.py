@@ -151,19 +151,25 @@ FOLD_CURVE_PARAMETERS = {
     "gear_tilt_rad": "gear tilt (rad)", "ambient_C": "ambient temperature (°C)",
     "viscosity_scale": "oil viscosity / the scene's", "roughness_Rq_m": "roughness Rq (m)"}
 FOLD_CURVE_TAIL = ("W_fold_N", "fold", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff")
+# W_d's error bar along the curve (study.error_estimate: richardson): after the tail in
+# files written since it exists, empty cells where a fold has none.
+FOLD_CURVE_ERROR = ("W_fold_fine_N", "W_fold_extrapolated_N", "W_fold_error_N")
 FOLD_KINDS = ("distress", "recovery", "cusp", "turn")
 
 
 def read_fold_curve(path):
     """fold_curve.csv: (parameter column, rows as dicts with 'p', 'load', 'fold', ...,
-    and 'member': (family column, value) of a family of curves, else None)."""
+    the error bar's columns (None where absent), and 'member': (family column, value) of
+    a family of curves, else None)."""
     records = _records(path)
-    expected = f"[<family>,]<parameter>,{','.join(FOLD_CURVE_TAIL)}"
+    expected = f"[<family>,]<parameter>,{','.join(FOLD_CURVE_TAIL)}[,{','.join(FOLD_CURVE_ERROR)}]"
     line, header = _header_line(path, records, expected)
-    family = header[0] if len(header) == len(FOLD_CURVE_TAIL) + 2 and header[0] in PARAMETER_COLUMNS else None
+    errors = tuple(header[-len(FOLD_CURVE_ERROR):]) == FOLD_CURVE_ERROR
+    body = header[:-len(FOLD_CURVE_ERROR)] if errors else header
+    family = body[0] if len(body) == len(FOLD_CURVE_TAIL) + 2 and body[0] in PARAMETER_COLUMNS else None
     first = 1 if family else 0
-    if len(header) != len(FOLD_CURVE_TAIL) + 1 + first or header[first] not in FOLD_CURVE_PARAMETERS \
-            or tuple(header[first + 1:]) != FOLD_CURVE_TAIL:
+    if len(body) != len(FOLD_CURVE_TAIL) + 1 + first or body[first] not in FOLD_CURVE_PARAMETERS \
+            or tuple(body[first + 1:]) != FOLD_CURVE_TAIL:
         raise InputError(f"{path}: line {line}: expected the header {expected} with <parameter> one of "
                          f"{', '.join(FOLD_CURVE_PARAMETERS)} and <family> one of {', '.join(PARAMETER_COLUMNS)}, "
                          f"got {','.join(header)}")
@@ -179,6 +185,8 @@ def read_fold_curve(path):
                "member": (family, _number(path, line, family, fields[0])) if family else None}
         for k, c in enumerate(FOLD_CURVE_TAIL[2:], start=first + 3):
             row[c] = _number(path, line, c, fields[k])
+        for k, c in enumerate(FOLD_CURVE_ERROR, start=len(body)):
+            row[c] = _number(path, line, c, fields[k], optional=True) if errors else None
         rows.append(row)
     return header[first], rows
 
