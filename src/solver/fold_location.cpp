@@ -157,9 +157,10 @@ FoldPoint locate_fold_near(SteadySystem& system, std::span<const double> u, doub
   std::vector<double> x(u.begin(), u.end());
   x.push_back(lambda / metric.parameter_scale());
   if (!augmented_newton(system, metric, x, null_guess, newton, true, {}, fold)) {
-    const std::string why = fold.message;
-    fold = FoldPoint{};
-    fold.message = why;
+    FoldPoint failed;
+    failed.message = fold.message;
+    failed.iterations = fold.iterations;
+    fold = std::move(failed);
   }
   system.set_parameter(fold.u.empty() ? lambda : fold.lambda);
   return fold;

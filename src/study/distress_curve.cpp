@@ -127,7 +127,14 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   // W_d's error bar all along the curve: each fold again on the refined mesh
   // (study/richardson.h), from the curve's model as it stands at the first fold.
   std::optional<RefinedFoldCurve> refined;
-  if (st.error_estimate == ErrorEstimate::richardson) refined.emplace(model, which, *first->fold);
+  std::string no_bars;
+  if (st.error_estimate == ErrorEstimate::richardson) {
+    try {
+      refined.emplace(model, which, *first->fold);
+    } catch (const std::exception& e) {
+      no_bars = fmt::format("fold curve{}: no error bars: the refined mesh could not be built: {}", label, e.what());
+    }
+  }
   FoldCurve curve;
   try {
     curve = trace_fold_curve(model, parameter, *first->fold, fs, [&](const FoldCurvePoint& pt) {
@@ -193,6 +200,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
                                t.lambda));
     }
   }
+  if (!no_bars.empty()) out.summary.push_back(no_bars);
   if (refined) {
     const std::string line =
         fmt::format("fold curve{}: error bars from the {} mesh at {} of {} folds{}", label, refined->mesh(), with_bar,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -147,6 +148,9 @@ RefinedFoldCurve::RefinedFoldCurve(const BearingModel& coarse, CurveParameter wh
 
 std::optional<MeshErrorEstimate> RefinedFoldCurve::at(double p, double load, std::span<const double> u, int kind,
                                                       std::string& why) {
+  // The coarse model must stand at p: its state u is interpolated through its settings.
+  if (coarse_.curve_parameter(which_) != p)
+    throw std::logic_error("RefinedFoldCurve::at: the coarse model is not at the point's parameter");
   fine_->set_curve_parameter(which_, p);
   std::vector<double> guess;
   double guess_load = load;
@@ -159,7 +163,10 @@ std::optional<MeshErrorEstimate> RefinedFoldCurve::at(double p, double load, std
   } else {
     guess = fine_->interpolated_from(coarse_, u);
   }
-  const auto fold = checked_fold(*fine_, guess, guess_load, follow ? last_null_ : first_null_, load, kind, why);
+  // The border needs only a vector not orthogonal to the null vector: the last one found
+  // (kept across a refused point), else the first fold's.
+  const auto fold =
+      checked_fold(*fine_, guess, guess_load, last_null_.empty() ? first_null_ : last_null_, load, kind, why);
   last_coarse_.assign(u.begin(), u.end());
   last_coarse_load_ = load;
   if (!fold) {

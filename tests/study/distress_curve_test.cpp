@@ -183,7 +183,8 @@ TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
   s.load_end = scene.study.load_end;
   s.fold_only = true;
   const DistressSearch own = search_distress(refined, s, {});
-  ASSERT_TRUE(own.row.fold_load) << own.row.method;
+  ASSERT_TRUE(own.row.fold_load && own.fold) << own.row.method;
+  ASSERT_EQ(own.fold->method, FoldMethod::minimally_augmented);  // the tolerance's argument
   EXPECT_NEAR(*first.fine_load, *own.row.fold_load, 1e-8 * *own.row.fold_load);
 
   scene.study.error_estimate = ErrorEstimate::none;

@@ -69,9 +69,13 @@ def figure_fold_curve(data, name, column, rows):
                             alpha=0.15 if single else 0.06, linewidth=0,
                             label="below $W_d$: no sudden distress" if single else None)
         # The mesh-converged W_d (Richardson) with its error bar, where the study has it.
-        converged = np.array(sorted((scale * r["p"], r["W_fold_extrapolated_N"], r["W_fold_error_N"])
-                                    for r in mine if r["fold"] == "distress"
-                                    and r.get("W_fold_extrapolated_N") is not None), dtype=float).reshape(-1, 3)
+        # A fold without its bar (refused, or the estimate off there) breaks the line (NaN).
+        converged = np.array(sorted((scale * r["p"],
+                                     math.nan if r.get("W_fold_extrapolated_N") is None else r["W_fold_extrapolated_N"],
+                                     math.nan if r.get("W_fold_error_N") is None else r["W_fold_error_N"])
+                                    for r in mine if r["fold"] == "distress"), dtype=float).reshape(-1, 3)
+        if not np.isfinite(converged[:, 1]).any():
+            converged = converged[:0]
         if len(converged):
             ax.plot(converged[:, 0], converged[:, 1], color=color, linestyle=":", linewidth=1.4,
                     label="$W_d$ mesh-converged (Richardson)" + tag if single or i == 0 else None)
