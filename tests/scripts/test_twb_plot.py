@@ -295,6 +295,18 @@ class TwbPlotTest(unittest.TestCase):
         self.assertEqual(result.returncode, 0, result.stderr)
         text = self.svg_text(os.path.join(out_dir, "fold_curve.svg"))
         self.assertIn("dry friction coefficient 0.3", text)
+        # With the folds' error bars (study.error_estimate): the mesh-converged curve and
+        # its band are drawn, an empty cell reads as None.
+        errors = ",W_fold_fine_N,W_fold_extrapolated_N,W_fold_error_N"
+        bars = {1: ",238.6,242.3,4.6", 2: ",234.0,237.7,4.6"}  # the rest without a bar
+        with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
+            f.write("\n".join([curve[0] + errors] + [row + bars.get(k, ",,,")
+                                                     for k, row in enumerate(curve[1:], start=1)]) + "\n")
+        column, rows = tp.read_fold_curve(os.path.join(d, "fold_curve.csv"))
+        self.assertEqual([r["W_fold_extrapolated_N"] for r in rows[:4]], [242.3, 237.7, None, None])
+        result = plot(d, "--out", out_dir)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("mesh-converged (Richardson)", self.svg_text(os.path.join(out_dir, "fold_curve.svg")))
         with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
             f.write("\n".join(curve[:2] + ["1000,223.0,sudden,50.0,120.0,2.5,0.02,0.03"]) + "\n")
         result = plot(d, "--out", out_dir)
