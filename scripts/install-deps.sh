@@ -8,7 +8,7 @@ packages=(
   libsundials-dev libsuitesparse-dev libeigen3-dev libfmt-dev
   libyaml-cpp-dev libudunits2-dev libcli11-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
-  python3-matplotlib python3-numpy
+  python3-matplotlib python3-numpy python3-pandas
   # The Python module (import twb): pybind11 and the interpreter's headers.
   pybind11-dev python3-dev
   # MPI jobs of the twb command (optional for building; CI tests them).

@@ -117,20 +117,8 @@ int write_results(const std::filesystem::path& dir, const std::string& scene_pat
   journal.finish();
   twb::cli::run_is_complete();
   std::cout << twb::states_summary(outcome.states);
-  for (const twb::DistressRow& d : outcome.distress)
-    std::cout << fmt::format(
-        "distress at {:.6g} rad/s{}{}: {}{} ({})\n", d.speed,
-        d.parameter ? fmt::format(", {} = {:.6g}", outcome.parameter_column, *d.parameter) : "",
-        d.sliding.empty() ? "" : ", sliding " + d.sliding,
-        d.distress_load ? fmt::format("W_d = {:.2f} N", *d.distress_load) : "none",
-        d.extrapolated_load && d.discretization_error
-            ? fmt::format(" on the scene's mesh; mesh-converged {:.1f} ± {:.1f} N (Richardson, {:.2f} N on the "
-                          "mesh refined by two)",
-                          *d.extrapolated_load, *d.discretization_error, *d.fine_fold_load)
-            : "",
-        d.method);
+  for (const std::string& line : twb::summary_lines(outcome)) std::cout << line << "\n";
   for (const std::string& line : twb::limit_notes(outcome.states, outcome.distress)) std::cout << line << "\n";
-  for (const std::string& line : outcome.summary) std::cout << line << "\n";
   std::cout << fmt::format("results: {}  ({} states, {:.1f} ms)\n", dir.string(), outcome.states.size(),
                            outcome.timings.total_ms);
   if (verbose)

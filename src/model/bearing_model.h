@@ -194,6 +194,9 @@ class BearingModel final : public SegregatedSystem {
   // Pressure (Pa) at node (i, j) of the sliding film; 0 on edges and without hydrodynamics.
   double pressure_at(std::span<const double> u, const Film& film, int i, int j) const;
   double temperature_of(std::span<const double> u, Index k) const;
+  // The hottest face temperature (K) of a body in state u: its material's temperature
+  // (heat_balance.cpp); the ambient without the thermal effect.
+  double hottest_face_temperature(std::span<const double> u, ComponentId id) const;
 
  private:
   struct Totals;  // per-film integrals gathered during assembly

@@ -92,9 +92,10 @@ BearingState BearingModel::describe(std::span<const double> u) const {
       if (least <= contact_cutoff_)
         s.max_contact_pressure = std::max(s.max_contact_pressure, contact_->pressure(least).value);
     }
-  s.limits = exceeded_limits({s.washer_mean_temperature, s.max_film_temperature, s.max_contact_pressure,
-                              s.hmin_over_sigma, scene_.effects.thermal},
-                             OperatingLimits::of(scene_));
+  s.carrier_max_temperature = hottest_face_temperature(u, ComponentId::carrier);
+  s.washer_max_temperature = hottest_face_temperature(u, ComponentId::washer);
+  s.gear_max_temperature = hottest_face_temperature(u, ComponentId::gear);
+  s.limits = exceeded_limits(LimitValues::of(s, scene_.effects.thermal), OperatingLimits::of(scene_));
   return s;
 }
 

@@ -7,6 +7,7 @@
 // nominal film closes). A face temperature on a component's grid is a linear
 // interpolation in r; the heat it receives is spread with the same weights, so the
 // exchange between grids is conservative.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -159,6 +160,42 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
       }
     }
   }
+}
+
+}  // namespace twb
+
+namespace twb {
+
+// A body's hottest face (docs/physics.md section 8, material temperature): the face
+// temperature at a film node lies on the heat path between the film node and the body's
+// own node, body_resistance/R of the way from the body's; the carrier's and gear's faces
+// are their nodes (no resistance on their side), the washer's lie half its thickness
+// nearer the film than its mid-plane.
+double BearingModel::hottest_face_temperature(std::span<const double> u, ComponentId id) const {
+  const ComponentHeat* comp = component(id);
+  double hottest = scene_.operating.ambient;
+  if (!comp || !scene_.effects.thermal) return hottest;
+  for (Index k = comp->offset; k < comp->offset + comp->node_count(); ++k)
+    hottest = std::max(hottest, scene_.operating.ambient + u[k]);
+  const double own = body_resistance(id);
+  if (own <= 0.0) return hottest;
+  const RigidPosition q = position(u);
+  const double k_oil = scene_.lubricant.conductivity;
+  for (const Film& film : films_) {
+    if (film.lower != id && film.upper != id) continue;
+    const FilmMesh& m = film.mesh;
+    for (int i = 0; i < m.radial_nodes(); ++i)
+      for (int j = 0; j < m.circumferential_nodes(); ++j) {
+        const int n = m.node(i, j);
+        const HeatNode& node = heat_nodes_[std::size_t(film.number - 1)][std::size_t(n)];
+        const double h = gap_at(film, q, node.x, node.y) + (deforms() ? shape_at(u, film, n) : 0.0);
+        const double path = average_gap(h, film.sigma).value / (2.0 * k_oil) + own;
+        const double body = face_temperature(u, id, m.radius(i), j, nullptr);
+        const double tf = temperature_of(u, film.temperature_offset + n);
+        hottest = std::max(hottest, body + (tf - body) * own / path);
+      }
+  }
+  return hottest;
 }
 
 }  // namespace twb

@@ -2,8 +2,11 @@
 // from the scene, and the test of a state's values against them.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <vector>
 
+#include "twb/model/bearing_state.h"
 #include "twb/model/operating_limits.h"
 #include "twb/scene/scene.h"
 
@@ -15,15 +18,27 @@ struct OperatingLimits {
   double hardness = 0.0;             // Pa, the softer face's; 0: no contact model
   double least_film = 0.5;           // h_min/σ
   bool statistical = true;           // a statistical model (contact, flow factors) is on
+  // Failure criteria a scene may add: each body's material limit (K; carrier, washer,
+  // gear) and the least h_min/σ.
+  std::array<std::optional<double>, 3> material_temperature;
+  std::optional<double> min_film_ratio;
   static OperatingLimits of(const Scene& scene);
 };
+
 
 // The state's values against the limits (SI), in LimitKind order; empty when none.
 struct LimitValues {
   double washer_mean_temperature = 0.0, max_film_temperature = 0.0, max_contact_pressure = 0.0;
   double hmin_over_sigma = 0.0;
   bool thermal = false;
+  std::array<double, 3> body_temperature{};  // K: carrier, washer, gear hottest faces
+  static LimitValues of(const BearingState& state, bool thermal);
 };
 std::vector<LimitExcess> exceeded_limits(const LimitValues& values, const OperatingLimits& limits);
+
+// How far a state is from crossing a failure criterion, in the criterion's own unit (K,
+// or h_min/σ): positive within it, zero on it, negative past it; none where the scene does
+// not apply the criterion (no thermal effect, no material limit, no least film).
+std::optional<double> failure_margin(LimitKind kind, const LimitValues& values, const OperatingLimits& limits);
 
 }  // namespace twb

@@ -3,6 +3,7 @@
 #include "model/limit_thresholds.h"
 
 #include <algorithm>
+#include <array>
 
 #include <fmt/format.h>
 
@@ -27,7 +28,55 @@ OperatingLimits OperatingLimits::of(const Scene& scene) {
     l.hardness = kHardnessOverYield * softest;
   }
   l.statistical = scene.effects.asperity_contact || scene.effects.flow_factors;
+  l.material_temperature = {scene.carrier.material.max_temperature, scene.washer.material.max_temperature,
+                            scene.gear.material.max_temperature};
+  l.min_film_ratio = scene.limits.min_film_ratio;
   return l;
+}
+
+LimitValues LimitValues::of(const BearingState& s, bool thermal) {
+  return {s.washer_mean_temperature,
+          s.max_film_temperature,
+          s.max_contact_pressure,
+          s.hmin_over_sigma,
+          thermal,
+          {s.carrier_max_temperature, s.washer_max_temperature, s.gear_max_temperature}};
+}
+
+namespace {
+// The body of a material-temperature criterion: 0 carrier, 1 washer, 2 gear.
+std::optional<std::size_t> body_of(LimitKind kind) {
+  switch (kind) {
+    case LimitKind::carrier_temperature: return 0;
+    case LimitKind::washer_temperature: return 1;
+    case LimitKind::gear_temperature: return 2;
+    default: return std::nullopt;
+  }
+}
+}  // namespace
+
+bool is_failure_criterion(LimitKind kind) {
+  return kind != LimitKind::contact_pressure && kind != LimitKind::film_below_statistics;
+}
+
+std::optional<double> failure_margin(LimitKind kind, const LimitValues& v, const OperatingLimits& l) {
+  if (const auto body = body_of(kind)) {
+    if (!v.thermal || !l.material_temperature[*body]) return std::nullopt;
+    return *l.material_temperature[*body] - v.body_temperature[*body];
+  }
+  switch (kind) {
+    case LimitKind::oil_temperature:
+      if (!v.thermal) return std::nullopt;
+      return l.max_oil_temperature - v.washer_mean_temperature;
+    case LimitKind::flash_temperature:
+      if (!v.thermal) return std::nullopt;
+      return l.flash_temperature - v.max_film_temperature;
+    case LimitKind::film_ratio:
+      if (!l.min_film_ratio) return std::nullopt;
+      return v.hmin_over_sigma - *l.min_film_ratio;
+    default:
+      return std::nullopt;
+  }
 }
 
 std::vector<LimitExcess> exceeded_limits(const LimitValues& v, const OperatingLimits& l) {
@@ -40,6 +89,13 @@ std::vector<LimitExcess> exceeded_limits(const LimitValues& v, const OperatingLi
     out.push_back({LimitKind::contact_pressure, v.max_contact_pressure, l.hardness});
   if (l.statistical && v.hmin_over_sigma < l.least_film)
     out.push_back({LimitKind::film_below_statistics, v.hmin_over_sigma, l.least_film});
+  for (std::size_t b = 0; b < 3; ++b)
+    if (v.thermal && l.material_temperature[b] && v.body_temperature[b] > *l.material_temperature[b])
+      out.push_back({std::array{LimitKind::carrier_temperature, LimitKind::washer_temperature,
+                                LimitKind::gear_temperature}[b],
+                     v.body_temperature[b], *l.material_temperature[b]});
+  if (l.min_film_ratio && v.hmin_over_sigma < *l.min_film_ratio)
+    out.push_back({LimitKind::film_ratio, v.hmin_over_sigma, *l.min_film_ratio});
   return out;
 }
 
@@ -49,6 +105,24 @@ std::string_view limit_name(LimitKind kind) {
     case LimitKind::flash_temperature: return "flash_temperature";
     case LimitKind::contact_pressure: return "contact_pressure";
     case LimitKind::film_below_statistics: return "film_below_statistics";
+    case LimitKind::carrier_temperature: return "material_temperature:carrier";
+    case LimitKind::washer_temperature: return "material_temperature:washer";
+    case LimitKind::gear_temperature: return "material_temperature:gear";
+    case LimitKind::film_ratio: return "film_ratio";
+  }
+  return "?";
+}
+
+std::string_view criterion_phrase(LimitKind kind) {
+  switch (kind) {
+    case LimitKind::oil_temperature: return "the oil's maximum temperature";
+    case LimitKind::flash_temperature: return "the flash temperature";
+    case LimitKind::contact_pressure: return "the contact pressure";
+    case LimitKind::film_below_statistics: return "the statistical models' least film";
+    case LimitKind::carrier_temperature: return "the carrier's material temperature";
+    case LimitKind::washer_temperature: return "the washer's material temperature";
+    case LimitKind::gear_temperature: return "the gear's material temperature";
+    case LimitKind::film_ratio: return "the least film ratio";
   }
   return "?";
 }
@@ -71,6 +145,16 @@ std::string describe_limit(const LimitExcess& e) {
       return fmt::format("h_min/sigma = {:.3g} is below {:.3g}, where the statistical contact and flow-factor "
                          "models hold",
                          e.value, e.limit);
+    case LimitKind::carrier_temperature:
+    case LimitKind::washer_temperature:
+    case LimitKind::gear_temperature:
+      return fmt::format("the {}'s hottest face {:.0f} degC is above its material's limit {:.0f} degC "
+                         "(materials.{}.max_temperature)",
+                         limit_name(e.kind).substr(21), e.value - kCelsius, e.limit - kCelsius,
+                         limit_name(e.kind).substr(21));
+    case LimitKind::film_ratio:
+      return fmt::format("h_min/sigma = {:.3g} is below the least film ratio {:.3g} (limits.min_film_ratio)",
+                         e.value, e.limit);
   }
   return {};
 }
@@ -82,6 +166,13 @@ std::string limit_names(const std::vector<LimitExcess>& limits) {
     out += limit_name(e.kind);
   }
   return out;
+}
+
+std::string failure_names(const std::vector<LimitExcess>& limits) {
+  std::vector<LimitExcess> failures;
+  for (const LimitExcess& e : limits)
+    if (is_failure_criterion(e.kind)) failures.push_back(e);
+  return limit_names(failures);
 }
 
 }  // namespace twb

@@ -171,7 +171,7 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads) {
   out["tables"] = tables;
   out["formats"] = formats;
   out["fields"] = fields;
-  out["summary"] = outcome.summary;
+  out["summary"] = twb::summary_lines(outcome);
   out["limit_notes"] = twb::limit_notes(outcome.states, outcome.distress);
   out["diagnostics"] = outcome.diagnostics;
   out["solver_failed"] = outcome.solver_failed;
@@ -209,7 +209,11 @@ PYBIND11_MODULE(_twb, m) {
       .def_readonly("warnings", &twb::Scene::warnings)
       .def_property_readonly("study_type",
                              [](const twb::Scene& s) {
-                               return yaml_to_python(YAML::Load(twb::describe_scene(s)))["study"]["type"];
+                               // Each level held by a name: an accessor into a temporary
+                               // dangles once the statement ends.
+                               const py::object scene = yaml_to_python(YAML::Load(twb::describe_scene(s)));
+                               const py::object study = scene["study"];
+                               return py::object(study["type"]);
                              })
       .def("resolved_yaml", [](const twb::Scene& s) { return twb::describe_scene(s); })
       .def("resolved_text", [](const twb::Scene& s) { return yaml_to_python(YAML::Load(twb::describe_scene(s))); })

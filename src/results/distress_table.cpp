@@ -1,5 +1,7 @@
 #include "twb/results/distress_table.h"
 
+#include <algorithm>
+
 #include "result_cells.h"
 
 namespace twb {
@@ -9,12 +11,23 @@ ResultTable distress_table(const std::vector<DistressRow>& rows, const std::stri
   ResultTable t;
   const auto speed = t.number("speed_rad_s");
   const cells::RunColumns run(t, parameter_column, sliding_column);
+  const auto w_fail = t.number("W_fail_N");
+  const auto criterion = t.text("criterion");
   const auto w_d = t.number("W_d_N"), low = t.number("bracket_low_N"), high = t.number("bracket_high_N"),
              fold = t.number("fold_N"), fine = t.number("W_d_fine_N"), extrapolated = t.number("W_d_extrapolated_N"),
-             error = t.number("W_d_error_N"), method = t.text("method");
+             error = t.number("W_d_error_N");
+  std::vector<ResultTable::Column> criteria;
+  for (LimitKind kind : kFailureCriteria) {
+    std::string name(limit_name(kind));
+    std::replace(name.begin(), name.end(), ':', '_');
+    criteria.push_back(t.number("W_" + name + "_N"));
+  }
+  const auto failure = t.text("failure"), method = t.text("method");
   for (const DistressRow& r : rows) {
     t.put_number(speed, r.speed);
     run.put(t, r.parameter, r.sliding);
+    t.put_number(w_fail, r.failure_load);
+    t.put_text(criterion, r.criterion);
     t.put_number(w_d, r.distress_load);
     t.put_number(low, r.bracket_low);
     t.put_number(high, r.bracket_high);
@@ -22,9 +35,17 @@ ResultTable distress_table(const std::vector<DistressRow>& rows, const std::stri
     t.put_number(fine, r.fine_fold_load);
     t.put_number(extrapolated, r.extrapolated_load);
     t.put_number(error, r.discretization_error);
+    for (std::size_t k = 0; k < criteria.size(); ++k) t.put_number(criteria[k], r.criterion_loads[k]);
+    t.put_text(failure, r.failure);
     t.put_text(method, r.method);
   }
   return t;
+}
+
+std::optional<double> criterion_load(const DistressRow& row, LimitKind kind) {
+  for (std::size_t k = 0; k < std::size(kFailureCriteria); ++k)
+    if (kFailureCriteria[k] == kind) return row.criterion_loads[k];
+  return std::nullopt;
 }
 
 std::string distress_csv(const std::vector<DistressRow>& rows, const std::string& parameter_column,

@@ -14,13 +14,14 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::string
   using Style = ResultColumn::Style;
   const auto load = t.number("load_N"), speed = t.number("speed_rad_s");
   const cells::RunColumns run(t, parameter_column, sliding_column);
-  const auto t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"), hmin = t.number("hmin_over_sigma"),
+  const auto t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"), t_carrier = t.number("T_carrier_max_C"),
+             t_washer = t.number("T_washer_max_C"), t_gear = t.number("T_gear_max_C"), hmin = t.number("hmin_over_sigma"),
              gx = t.number("gamma_x_ratio"), gy = t.number("gamma_y_ratio"), fluid = t.number("fluid_share"),
              contact = t.number("contact_share"), torque = t.number("torque_Nm"), f_eff = t.number("f_eff"),
              stribeck = t.number("stribeck"), converged = t.count("converged"), iterations = t.count("iterations"),
              residual = t.number("residual", Style::scientific),
              energy = t.number("energy_error", Style::scientific), wall = t.number("wall_ms", Style::fixed),
-             branch = t.text("branch"), limits = t.text("limits");
+             branch = t.text("branch"), fails_by = t.text("fails_by"), limits = t.text("limits");
   for (const SolvedState& r : rows) {
     const BearingState& s = r.state;
     t.put_number(load, s.load);
@@ -28,6 +29,9 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::string
     run.put(t, r.parameter, r.sliding);
     t.put_number(t_mean, s.washer_mean_temperature - kelvin_offset);
     t.put_number(t_max, s.max_film_temperature - kelvin_offset);
+    t.put_number(t_carrier, s.carrier_max_temperature - kelvin_offset);
+    t.put_number(t_washer, s.washer_max_temperature - kelvin_offset);
+    t.put_number(t_gear, s.gear_max_temperature - kelvin_offset);
     t.put_number(hmin, s.hmin_over_sigma);
     t.put_number(gx, s.gamma_x_ratio);
     t.put_number(gy, s.gamma_y_ratio);
@@ -42,6 +46,9 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::string
     t.put_number(energy, s.energy_error);
     t.put_number(wall, r.wall_ms);
     t.put_text(branch, r.branch);
+    // A state past a failure criterion says so beside its branch: "cool" alone is
+    // never a verdict of safety.
+    t.put_text(fails_by, failure_names(s.limits));
     t.put_text(limits, limit_names(s.limits));
   }
   return t;
@@ -58,11 +65,13 @@ std::string states_summary(const std::vector<SolvedState>& rows) {
                                 "fluid", "contact", "torque Nm", "f_eff", "iter", "ms");
   for (const SolvedState& r : rows) {
     const BearingState& s = r.state;
-    out += fmt::format("{:9.1f} {:9.1f} {:8.2f} {:8.2f} {:8.3f} {:8.4f} {:8.4f} {:7.4f} {:7.4f} {:9.3e} {:7.4f} {:4} {:8.1f}{}{}\n",
+    out += fmt::format("{:9.1f} {:9.1f} {:8.2f} {:8.2f} {:8.3f} {:8.4f} {:8.4f} {:7.4f} {:7.4f} {:9.3e} {:7.4f} {:4} {:8.1f}{}{}{}\n",
                        s.load, s.speed, s.washer_mean_temperature - kelvin_offset,
                        s.max_film_temperature - kelvin_offset, s.hmin_over_sigma, s.gamma_x_ratio, s.gamma_y_ratio,
                        s.fluid_share, s.contact_share, s.torque, s.f_eff, r.iterations, r.wall_ms,
-                       r.converged ? "" : "  NOT CONVERGED", s.limits.empty() ? "" : "  limits: " + limit_names(s.limits));
+                       r.converged ? "" : "  NOT CONVERGED",
+                       failure_names(s.limits).empty() ? "" : "  FAILS BY " + failure_names(s.limits),
+                       s.limits.empty() ? "" : "  limits: " + limit_names(s.limits));
   }
   return out;
 }

@@ -21,11 +21,21 @@ inline constexpr Range roelands_temperature{.low = kRoelandsLowestTemperature, .
                                             .reason = "Roelands' law needs T > -135 degC; no oil works above 300 degC"};
 inline constexpr Range absolute_temperature{.low = 0.0, .low_open = true, .high = kHighestTemperature,
                                             .reason = "an absolute temperature up to 300 degC, where oils decompose"};
+inline constexpr Range material_temperature{.low = 0.0, .low_open = true, .high = 2000.0,
+                                            .reason = "a material's working limit, an absolute temperature up to "
+                                                      "2000 K"};
+inline constexpr Range film_ratio{.low = 0.0, .high = 100.0,
+                                  .reason = "a least h_min/sigma, e.g. 1 (mixed lubrication) or 3 (full film)"};
 inline constexpr Range friction_coefficient{.low = 0.0, .high = 5.0,
                                             .reason = "a dry friction coefficient, 0 to 5"};
 
 // Geometry.
-inline constexpr Range tilt{.low = 0.0, .high = 0.1, .high_open = true, .reason = "a small imposed tilt of the gear"};
+// The film's gap is the tilted plane's small-angle form, c + γ·x (docs/physics.md section
+// 1); the plane's own is c + tan γ·x, whose slope differs by γ²/3 relatively: up to
+// 50 mrad within 0.1 %, beyond it a model error that grows as γ².
+inline constexpr Range tilt{.low = 0.0, .high = 0.05,
+                            .reason = "a small imposed tilt of the gear, at most 50 mrad (2.9 degrees), where the "
+                                      "model's small-angle gap is within 0.1 % of the tilted plane's"};
 inline constexpr Range diameter{.low = 1e-3, .high = 2.0, .reason = "a thrust washer's diameter, 1 mm to 2 m"};
 inline constexpr Range thickness{.low = 1e-5, .high = 0.2, .reason = "a thickness from 10 um to 200 mm"};
 
@@ -56,6 +66,11 @@ inline constexpr Range roelands_g0{.low = 0.0, .low_open = true, .high = 50.0, .
 inline constexpr Range roelands_s0{.low = 0.0, .low_open = true, .high = 5.0, .reason = "Roelands' S0, about 1"};
 inline constexpr Range constant_viscosity{.low = 1e-6, .high = 1e3,
                                           .reason = "from gases (1e-5 Pa s) to bitumen-like fluids (1e3 Pa s)"};
+inline constexpr Range kinematic_viscosity{.low = 1e-7, .high = 1e-1,
+                                           .reason = "an oil's kinematic viscosity, 0.1 to 1e5 cSt"};
+inline constexpr Range oil_density{.low = 500.0, .high = 2000.0, .reason = "an oil's density, 500 to 2000 kg/m^3"};
+inline constexpr Range oil_expansion{.low = 0.0, .high = 2e-3,
+                                     .reason = "an oil's volumetric expansion, about 6.5e-4 1/K"};
 inline constexpr Range viscosity_scale{.low = 0.0, .low_open = true, .high = 1e4,
                                        .reason = "a factor on the oil's viscosity, e.g. 0.5 for half as viscous"};
 

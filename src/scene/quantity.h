@@ -29,6 +29,7 @@ inline constexpr SiUnit conductivity{"W/(m K)", "a thermal conductivity", "60.5 
 inline constexpr SiUnit density{"kg/m^3", "a density", "7850 kg/m^3"};
 inline constexpr SiUnit specific_heat{"J/(kg K)", "a specific heat", "470 J/(kg K)"};
 inline constexpr SiUnit viscosity{"Pa s", "a dynamic viscosity", "0.06 Pa s"};
+inline constexpr SiUnit kinematic_viscosity{"m^2/s", "a kinematic viscosity", "29.5 mm^2/s"};
 inline constexpr SiUnit areal_density{"1/m^2", "a number per unit area", "1e11 1/m^2"};
 inline constexpr SiUnit expansion{"1/K", "a thermal expansion coefficient", "1.2e-5 1/K"};
 inline constexpr SiUnit dimensionless{"1", "a dimensionless number", "0.296"};

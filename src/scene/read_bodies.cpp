@@ -76,7 +76,8 @@ void read_geometry(const MapReader& scene, Scene& out) {
 
 Material read_material(const MapReader& materials, std::string_view component) {
   const MapReader steel = materials.map(component, {"youngs_modulus", "poisson_ratio", "yield_strength",
-                                                    "conductivity", "density", "specific_heat", "thermal_expansion"});
+                                                    "conductivity", "density", "specific_heat", "thermal_expansion",
+                                                    "max_temperature"});
   Material m;
   m.youngs_modulus = steel.quantity("youngs_modulus", si::stress, bounds::youngs_modulus, m.youngs_modulus);
   m.poisson_ratio = steel.quantity("poisson_ratio", si::dimensionless,
@@ -88,14 +89,29 @@ Material read_material(const MapReader& materials, std::string_view component) {
   m.specific_heat = steel.quantity("specific_heat", si::specific_heat, bounds::specific_heat, m.specific_heat);
   m.thermal_expansion =
       steel.quantity("thermal_expansion", si::expansion, bounds::thermal_expansion, m.thermal_expansion);
+  if (steel.has("max_temperature"))
+    m.max_temperature = steel.quantity("max_temperature", si::temperature, bounds::material_temperature);
   return m;
 }
 
 Roughness read_roughness(const MapReader& surfaces, std::string_view component) {
   const MapReader face = surfaces.map(component, {"Ra", "Rq"});
   Roughness r;
-  r.ra = face.quantity("Ra", si::length, bounds::roughness, r.ra);
-  r.rq = face.quantity("Rq", si::length, bounds::roughness, r.rq);
+  // Ra enters no equation (σ is Rq); a face given by one of the two keeps the default
+  // texture's Ra/Rq for the other, so that Ra ≤ Rq holds as it does for any surface
+  // (Ra is the mean |z|, Rq its root mean square).
+  const double ratio = r.ra / r.rq;
+  const bool has_ra = face.has("Ra"), has_rq = face.has("Rq");
+  if (has_rq) r.rq = face.quantity("Rq", si::length, bounds::roughness);
+  if (has_ra) r.ra = face.quantity("Ra", si::length, bounds::roughness);
+  if (has_rq && !has_ra) r.ra = ratio * r.rq;
+  if (has_ra && !has_rq) r.rq = r.ra / ratio;
+  if (r.ra > r.rq) {
+    const Node node = face.get("Ra", "");
+    node.fail(fmt::format("{}: Ra {:.4g} m is larger than Rq {:.4g} m; no surface has one: Ra (the mean |z|) is at "
+                          "most Rq (the root mean square of z)",
+                          node.path(), r.ra, r.rq));
+  }
   return r;
 }
 

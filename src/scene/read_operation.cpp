@@ -5,9 +5,97 @@
 #include "scene_names.h"
 #include "physical_bounds.h"
 #include "scene_sections.h"
+#include "physics/viscosity_fit.h"
 
 namespace twb::scene_io {
 namespace {
+
+// The oil's density at temperature t (K), from the data sheet's value at its reference
+// temperature and a volumetric expansion (docs/physics.md section 5).
+struct OilDensity {
+  double value = 0, reference = 0, expansion = 0;
+  double at(double t) const { return value * (1.0 - expansion * (t - reference)); }
+};
+
+OilDensity read_density(const MapReader& viscosity, bool required, std::string_view why) {
+  OilDensity d;
+  if (!viscosity.has("density")) {
+    if (required)
+      viscosity.node().fail(fmt::format("{}: needs density (kg/m^3, e.g. 850 kg/m^3) {}", viscosity.node().name(), why));
+    return d;
+  }
+  d.value = viscosity.quantity("density", si::density, bounds::oil_density);
+  d.reference = viscosity.quantity("density_temperature", si::temperature, bounds::absolute_temperature, 288.15);
+  d.expansion = viscosity.quantity("density_expansion", si::expansion, bounds::oil_expansion, 6.5e-4);
+  return d;
+}
+
+void read_fitted_viscosity(const MapReader& viscosity, bool data_sheet, Lubricant& l) {
+  ViscosityFit fit;
+  if (data_sheet) {
+    viscosity.restrict_to({"model", "kv40", "kv100", "density", "density_temperature", "density_expansion"},
+                          "with model: data_sheet");
+    const double nu40 = viscosity.quantity("kv40", si::kinematic_viscosity, bounds::kinematic_viscosity);
+    const double nu100 = viscosity.quantity("kv100", si::kinematic_viscosity, bounds::kinematic_viscosity);
+    if (nu100 >= nu40) {
+      const Node node = viscosity.get("kv100", "");
+      node.fail(fmt::format("{}: {} at 100 degC is not below kv40 {} at 40 degC; an oil thins as it warms: give "
+                            "the data sheet's kinematic viscosity at 100 degC, less than at 40 degC",
+                            node.path(), node.yaml().Scalar(), viscosity.get("kv40", "").yaml().Scalar()));
+    }
+    const OilDensity d = read_density(viscosity, true, "to turn the kinematic viscosities into dynamic ones");
+    fit = fit_data_sheet(nu40, nu100, d.value, d.reference, d.expansion);
+  } else {
+    viscosity.restrict_to({"model", "points", "density", "density_temperature", "density_expansion"},
+                          "with model: table");
+    const Node table = viscosity.get("points", "a list of {temperature, viscosity} or {temperature, kinematic}");
+    const std::vector<Node> rows =
+        table.list("a list of points, each {temperature: 40 degC, viscosity: 0.025 Pa s} or "
+                   "{temperature: 40 degC, kinematic: 29.5 cSt}");
+    if (rows.size() < 2)
+      table.fail(fmt::format("{}: {} point{}; a viscosity table needs at least two (two fix Roelands' G0 and "
+                             "S0, three or more fit mu_infinity too)",
+                             table.path(), rows.size(), rows.size() == 1 ? "" : "s"));
+    const OilDensity d = read_density(viscosity, false, "");
+    std::vector<ViscosityPoint> points;
+    std::vector<double> kinematic;
+    for (const Node& row : rows) {
+      const MapReader p(row, {"temperature", "viscosity", "kinematic"});
+      const double t = p.quantity("temperature", si::temperature, bounds::absolute_temperature);
+      double mu = 0;
+      if (p.has("kinematic")) {
+        p.restrict_to({"temperature", "kinematic"}, "with kinematic");
+        if (d.value <= 0)
+          viscosity.node().fail(fmt::format("{}: a kinematic viscosity in points needs the oil's density "
+                                            "(density: 850 kg/m^3)",
+                                            viscosity.node().name()));
+        const double nu = p.quantity("kinematic", si::kinematic_viscosity, bounds::kinematic_viscosity);
+        kinematic.push_back(nu);
+        mu = d.at(t) * nu;
+      } else {
+        mu = p.quantity("viscosity", si::viscosity, bounds::constant_viscosity);
+      }
+      if (!points.empty() && !(t > points.back().temperature && mu < points.back().viscosity))
+        row.fail(fmt::format("{}: the points must rise in temperature and fall in viscosity ({} after {:.2f} degC, "
+                             "{:.4g} Pa s)",
+                             row.path(), mu < points.back().viscosity ? "a temperature not above" : "a viscosity not below",
+                             points.back().temperature - 273.15, points.back().viscosity));
+      points.push_back({t, mu});
+    }
+    // Two points fix G0 and S0 with Roelands' own μ∞ (6.31e-5 Pa s); more are fitted.
+    fit = points.size() == 2 ? fit_roelands(points, 6.31e-5) : fit_roelands(points);
+
+  }
+  l.mu_infinity = fit.law.mu_infinity;
+  l.g0 = fit.law.g0;
+  l.s0 = fit.law.s0;
+  ViscositySource src{data_sheet ? "data_sheet" : "table", {}, {}, fit.relative_errors, fit.largest_error};
+  for (const ViscosityPoint& p : fit.points) {
+    src.temperatures.push_back(p.temperature);
+    src.viscosities.push_back(p.viscosity);
+  }
+  l.viscosity_source = std::move(src);
+}
 
 void read_lubricant(const MapReader& scene, Scene& out) {
   const MapReader oil = scene.map("lubricant", {"conductivity", "viscosity", "max_temperature", "flash_temperature"});
@@ -17,9 +105,16 @@ void read_lubricant(const MapReader& scene, Scene& out) {
   l.flash_temperature =
       oil.quantity("flash_temperature", si::temperature, bounds::absolute_temperature, l.flash_temperature);
 
-  const MapReader viscosity = oil.map("viscosity", {"model", "mu_infinity", "G0", "S0", "value"});
-  l.viscosity_model = read_choice(viscosity, "model", kViscosityModels, l.viscosity_model);
-  if (l.viscosity_model == ViscosityModel::roelands) {
+  const MapReader viscosity =
+      oil.map("viscosity", {"model", "mu_infinity", "G0", "S0", "value", "kv40", "kv100", "density",
+                            "density_temperature", "density_expansion", "points"});
+  // data_sheet and table are Roelands' law fitted at load time (physics/viscosity_fit.h).
+  static constexpr std::string_view kModels[] = {"roelands", "constant", "data_sheet", "table"};
+  const std::size_t model = viscosity.choice("model", kModels, 0);
+  l.viscosity_model = model == 1 ? ViscosityModel::constant : ViscosityModel::roelands;
+  if (model >= 2) {
+    read_fitted_viscosity(viscosity, model == 2, l);
+  } else if (l.viscosity_model == ViscosityModel::roelands) {
     viscosity.restrict_to({"model", "mu_infinity", "G0", "S0"}, "with model: roelands");
     l.mu_infinity = viscosity.quantity("mu_infinity", si::viscosity, bounds::mu_infinity, l.mu_infinity);
     l.g0 = viscosity.quantity("G0", si::dimensionless, bounds::roelands_g0, l.g0);
@@ -43,6 +138,13 @@ void read_operating(const MapReader& scene, Scene& out) {
   o.ambient = operating.quantity("ambient", si::temperature, ambient_range, o.ambient);
 }
 
+// limits: failure criteria besides the temperatures of the oil and the materials.
+void read_limits(const MapReader& scene, Scene& out) {
+  const MapReader limits = scene.map("limits", {"min_film_ratio"});
+  if (limits.has("min_film_ratio"))
+    out.limits.min_film_ratio = limits.quantity("min_film_ratio", si::dimensionless, bounds::film_ratio);
+}
+
 void read_friction(const MapReader& scene, Scene& out) {
   const MapReader friction = scene.map("friction", {"law", "coefficient"});
   Friction& f = out.friction;
@@ -58,6 +160,7 @@ void read_friction(const MapReader& scene, Scene& out) {
 
 void read_operation(const MapReader& scene, Scene& out) {
   read_lubricant(scene, out);
+  read_limits(scene, out);
   read_operating(scene, out);
   read_friction(scene, out);
 }

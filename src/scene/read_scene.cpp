@@ -7,7 +7,7 @@ namespace twb::scene_io {
 
 Scene read_scene(const Node& root) {
   const MapReader scene(root, {"effects", "geometry", "materials", "surfaces", "lubricant",
-                               "operating", "friction", "mesh", "solver", "study", "output"});
+                               "limits", "operating", "friction", "mesh", "solver", "study", "output"});
   Scene out;
   out.effects = read_effects(scene);
   read_bodies(scene, out);

@@ -94,6 +94,9 @@ void write_materials(Writer& w, const Scene& s) {
     w.entry(2, "density", quantity(m.density, "kg/m^3"));
     w.entry(2, "specific_heat", quantity(m.specific_heat, "J/(kg K)"));
     w.entry(2, "thermal_expansion", quantity(m.thermal_expansion, "1/K"));
+    if (m.max_temperature)
+      w.entry(2, "max_temperature", quantity(*m.max_temperature, "K"),
+              fmt::format("{:.2f} degC", *m.max_temperature - 273.15));
   }
 }
 
@@ -126,8 +129,20 @@ void write_operation(Writer& w, const Scene& s) {
     w.entry(2, "mu_infinity", quantity(l.mu_infinity, "Pa s"));
     w.entry(2, "G0", quantity(l.g0, "1"));
     w.entry(2, "S0", quantity(l.s0, "1"));
+    if (const auto& src = l.viscosity_source) {
+      w.line(2, fmt::format("# fitted at load time to the scene's {} (largest error {:.3g} % over the fit):",
+                            src->kind == "data_sheet" ? "data sheet" : "table", 100.0 * src->largest_error));
+      for (std::size_t k = 0; k < src->temperatures.size(); ++k)
+        w.line(2, fmt::format("#   {:.2f} degC: given {:.6g} Pa s, fitted {:+.3f} %", src->temperatures[k] - 273.15,
+                              src->viscosities[k], 100.0 * src->relative_errors[k]));
+    }
   } else {
     w.entry(2, "value", quantity(l.constant_viscosity, "Pa s"));
+  }
+
+  if (s.limits.min_film_ratio) {
+    w.line(0, "limits:");
+    w.entry(1, "min_film_ratio", quantity(*s.limits.min_film_ratio, "1"));
   }
 
   const Operating& o = s.operating;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "fold_approach.h"
+#include "failure_load.h"
 #include "fold_proof.h"
 #include "load_step_march.h"
 #include "study_support.h"
@@ -122,9 +123,12 @@ RunawaySettings distress_detector(const Scene& scene, double bracket_width) {
 
 namespace {
 
-// The search from a steady state `u` at settings.load_start, on the cool branch.
+// The search from a steady state `u` at settings.load_start, on the cool branch. The
+// branch's states are left in `cool` (continued in load) and `approach` (by arclength,
+// before the fold), for the failure criteria.
 DistressSearch search_from(BearingModel& model, const DistressSearchSettings& settings, std::vector<double> u,
-                           const SteadyReport& first, const SearchProgress& progress) {
+                           const SteadyReport& first, const SearchProgress& progress, BranchStates& cool,
+                           BranchStates& approach_states) {
   DistressSearch out;
   out.row.speed = model.speed();
   const NewtonSettings newton = newton_settings(model.scene());
@@ -190,13 +194,14 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   std::vector<double> low_state = u;
   double low = settings.load_start;
   // The cool branch's states (load, state), to start the proof of a fold from.
-  BranchStates cool{{low, low_state}};
+  cool = {{low, low_state}};
+  approach_states.clear();
   bool branch_ended = false, ran_away = false, near_fold = false;
   double runaway_load = 0.0;
   FoldApproach approach;
   NaturalContinuation cool_branch(model);
-  std::optional<ArclengthReport> around_fold;  // the arclength round the fold, once run
-  BranchStates approach_states;                // its states before the turn
+  std::optional<ArclengthReport> around_fold;  // the arclength round the fold, once run (its states
+                                               // before the turn: approach_states)
   for (std::size_t t = 0; t < targets.size() && !ran_away && !branch_ended;) {
     std::vector<Pending> pending;
     near_fold = false;
@@ -408,6 +413,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
         low_state = step.final_state;
         model.set_load(low);
         out.states.push_back(record(model, low_state, step.newton_attempts, 0.0));
+        cool.emplace_back(low, low_state);
         ++out.cool_states;
         say(fmt::format("  the step to {:.2f} N settles", low));
         high = std::min(low * (1.0 + widen), settings.load_end);
@@ -522,7 +528,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
 }
 
 DistressSearch search_from_start(BearingModel& model, const DistressSearchSettings& settings,
-                                 const SearchProgress& progress) {
+                                 const SearchProgress& progress, BranchStates& cool, BranchStates& approach) {
   const NewtonSettings newton = newton_settings(model.scene());
   model.set_load(settings.load_start);
   std::vector<double> u;
@@ -537,7 +543,7 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
     out.row.method = "no steady state at load_start";
     return out;
   }
-  DistressSearch out = search_from(model, settings, u, first, progress);
+  DistressSearch out = search_from(model, settings, u, first, progress, cool, approach);
   const std::vector<double> capacity = model.capacities();
   if (settings.fold_only || std::none_of(capacity.begin(), capacity.end(), [](double c) { return c > 0.0; }))
     return out;
@@ -581,7 +587,7 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
   const SearchCounts spent = out.counts;
   DistressSearchSettings from_light = settings;
   from_light.load_start = light;
-  out = search_from(model, from_light, light_state, light_start, progress);
+  out = search_from(model, from_light, light_state, light_start, progress, cool, approach);
   out.counts.add(spent);
   if (out.row.distress_load && *out.row.distress_load < settings.load_start) {
     out.start_past_distress = true;
@@ -603,7 +609,26 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
 DistressSearch search_distress(BearingModel& model, const DistressSearchSettings& settings,
                                const SearchProgress& progress) {
   const SparseLu::Counts before = SparseLu::thread_counts();
-  DistressSearch out = search_from_start(model, settings, progress);
+  BranchStates cool, approach;
+  DistressSearch out = search_from_start(model, settings, progress, cool, approach);
+  if (!settings.fold_only && !out.failed) {
+    // The branch from the start up to where it ends: the states continuation accepted,
+    // those arclength passed before the turn, and the fold.
+    BranchStates branch = cool;
+    for (auto& state : approach)
+      if (branch.empty() || state.first > branch.back().first) branch.push_back(std::move(state));
+    if (out.fold && out.fold->u.size() >= std::size_t(model.size()) &&
+        (branch.empty() || out.fold->lambda > branch.back().first))
+      branch.emplace_back(out.fold->lambda, std::vector<double>(out.fold->u.begin(), out.fold->u.begin() +
+                                                                   std::ptrdiff_t(model.size())));
+    const double start = out.states.empty() ? settings.load_start : out.states.front().state.load;
+    const auto t0 = std::chrono::steady_clock::now();
+    long solves = 0;
+    locate_failure(model, branch, {start, settings.load_end, settings.bracket_width}, out.row, solves);
+    if (progress && out.row.failure_load)
+      progress(fmt::format("  {:.6g} rad/s: {} [{} steady solves, {:.1f} s]", model.speed(), out.row.failure, solves,
+                           elapsed_ms(t0) / 1000.0));
+  }
   out.counts.klu_factorizations = SparseLu::thread_counts().factored_since(before) + out.counts.ida_factorizations;
   return out;
 }

@@ -18,6 +18,7 @@ namespace twb {
 
 struct StepMarch {
   bool settled = false;       // a steady state at the new load was reached (Newton-polished)
+  bool started = false;       // a consistent state after the step was found (the march ran)
   std::vector<double> state;  // that state, or the last one integrated
   std::vector<TrajectorySample> trajectory;
   double time = 0.0;          // pseudo-time reached, s

@@ -20,12 +20,12 @@ namespace fs = std::filesystem;
 // A field added to a state must be journaled too, or a resumed run would write it as
 // zero: the size fails to compile until fields_of_state is extended (the other structs'
 // sizes are in kMagic, so an entry of another layout is never read).
-static_assert(sizeof(BearingState) == 8 * 27 + sizeof(std::vector<LimitExcess>),
+static_assert(sizeof(BearingState) == 8 * 30 + sizeof(std::vector<LimitExcess>),
               "journal every BearingState field (search_journal.cpp)");
 
 // The format, the program's version and the journaled structs' layout: an entry written
 // by another build is not read (its search runs again) rather than misread.
-const std::string kMagic = fmt::format("twb-search-journal 2 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
+const std::string kMagic = fmt::format("twb-search-journal 3 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
                                        sizeof(SolvedState), sizeof(DistressRow), sizeof(TrajectorySample),
                                        sizeof(SearchCounts));
 
@@ -48,6 +48,7 @@ void fields_of_limit(A& a, S& e) {
 template <class A, class S>
 void fields_of_state(A& a, S& s) {
   a(s.load), a(s.speed), a(s.washer_mean_temperature), a(s.max_film_temperature), a(s.hmin_over_sigma);
+  a(s.carrier_max_temperature), a(s.washer_max_temperature), a(s.gear_max_temperature);
   a(s.gamma_x_ratio), a(s.gamma_y_ratio), a(s.fluid_force), a(s.contact_force), a(s.fluid_share);
   a(s.contact_share), a(s.torque), a(s.f_eff), a(s.stribeck), a(s.friction_coefficient), a(s.friction_clamped);
   a(s.heat_generated), a(s.heat_to_ambient), a(s.energy_error), a(s.force_balance_error);
@@ -72,6 +73,8 @@ template <class A, class S>
 void fields_of_row(A& a, S& r) {
   a(r.speed), a(r.parameter), a(r.distress_load), a(r.bracket_low), a(r.bracket_high), a(r.fold_load);
   a(r.fine_fold_load), a(r.extrapolated_load), a(r.discretization_error), a(r.method), a(r.sliding);
+  a(r.failure_load), a(r.criterion), a(r.failure);
+  for (auto& load : r.criterion_loads) a(load);
 }
 template <class A, class S>
 void fields_of_search(A& a, S& j) {

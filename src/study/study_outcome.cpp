@@ -1,5 +1,8 @@
 #include "twb/study/study_outcome.h"
 
+#include <fmt/format.h>
+
+
 namespace twb {
 
 std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
@@ -14,6 +17,27 @@ std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
     tables.push_back({"fold_curve", fold_curve_table(out.fold_curve, out.fold_curve_column, parameter)});
   if (!out.trajectory.empty()) tables.push_back({"trajectory", trajectory_table(out.trajectory, parameter, sliding)});
   return tables;
+}
+
+std::vector<std::string> summary_lines(const StudyOutcome& outcome) {
+  std::vector<std::string> lines;
+  for (const DistressRow& d : outcome.distress) {
+    const std::string where =
+        fmt::format("{:.6g} rad/s{}{}", d.speed,
+                    d.parameter ? fmt::format(", {} = {:.6g}", outcome.parameter_column, *d.parameter) : "",
+                    d.sliding.empty() ? "" : ", sliding " + d.sliding);
+    lines.push_back(fmt::format(
+        "distress at {}: {}{} ({})", where, d.distress_load ? fmt::format("W_d = {:.2f} N", *d.distress_load) : "none",
+        d.extrapolated_load && d.discretization_error
+            ? fmt::format(" on the scene's mesh; mesh-converged {:.1f} ± {:.1f} N (Richardson, {:.2f} N on the "
+                          "mesh refined by two)",
+                          *d.extrapolated_load, *d.discretization_error, *d.fine_fold_load)
+            : "",
+        d.method));
+    if (!d.failure.empty()) lines.push_back(fmt::format("failure at {}: {}", where, d.failure));
+  }
+  lines.insert(lines.end(), outcome.summary.begin(), outcome.summary.end());
+  return lines;
 }
 
 bool has_independent_searches(StudyType type) {

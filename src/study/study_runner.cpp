@@ -490,6 +490,8 @@ void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport&
   last.wall_ms = march.wall_ms;
   out.states.push_back(last);
   out.message = "transient: " + march.message;
+  // A march that never started has no trajectory to report: the study failed.
+  if (!march.started) out.solver_failed = true;
 }
 
 }  // namespace

@@ -137,6 +137,21 @@ class Scenes(unittest.TestCase):
         self.assertNotIn("thermal", isothermal.unknowns_per_effect())
         self.assertEqual(isothermal.overrides[:2], scene.overrides)
 
+    def test_study_type_read_twice(self):
+        # Read twice in one process: an accessor into a temporary once crashed it here.
+        scene = twb.Scene(os.path.join(ROOT, "configs", "washers", "bronze_cusn8.yaml"))
+        self.assertEqual(scene.study_type, "distress_map")
+        self.assertEqual(scene.study_type, "distress_map")
+
+    def test_summary_holds_the_distress_and_failure_lines(self):
+        r = twb.run(os.path.join(ROOT, "configs", "washers", "bronze_cusn8.yaml"),
+                    overrides=dict(COARSE, **{"study.load_end": "1000 N"}))
+        self.assertTrue(any(line.startswith("distress at ") for line in r.summary), r.summary)
+        failure = [line for line in r.summary if line.startswith("failure at ")]
+        self.assertEqual(len(failure), 1, r.summary)
+        self.assertIn("by the flash temperature", failure[0])
+        self.assertEqual(list(r.distress["criterion"]), ["flash_temperature"])
+
     def test_sources_of_an_extending_scene(self):
         scene = twb.Scene(os.path.join(ROOT, "configs", "studies", "distress_map.yaml"))
         files = {os.path.basename(f) for _, f, _ in scene.sources()}

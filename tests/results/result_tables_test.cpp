@@ -12,31 +12,44 @@
 namespace twb {
 namespace {
 
+// Every failure criterion's load, in kFailureCriteria order.
+#define kCriteria                                                                                         \
+  "W_oil_temperature_N,W_flash_temperature_N,W_material_temperature_carrier_N,W_material_temperature_washer_N," \
+  "W_material_temperature_gear_N,W_film_ratio_N,"
+
 TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
   DistressRow found{545.0, 0.1, 185.25, 185.0, 185.5, 185.3, "runaway; fold", {}, {}, {}, {}};
   DistressRow none{136.0, 0.2, std::nullopt, std::nullopt, std::nullopt, std::nullopt, "not reached below 2000 N", {}, {}, {}, {}};
   EXPECT_EQ(distress_csv({found, none}, "friction_coefficient"),
-            "speed_rad_s,friction_coefficient,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,"
-            "W_d_extrapolated_N,W_d_error_N,method\n"
-            "545,0.1,185.25,185,185.5,185.3,,,,runaway; fold\n"
-            "136,0.2,,,,,,,,not reached below 2000 N\n");
+            "speed_rad_s,friction_coefficient,W_fail_N,criterion,W_d_N,bracket_low_N,bracket_high_N,fold_N,"
+            "W_d_fine_N,W_d_extrapolated_N,W_d_error_N," kCriteria "failure,method\n"
+            "545,0.1,,,185.25,185,185.5,185.3,,,,,,,,,,,runaway; fold\n"
+            "136,0.2,,,,,,,,,,,,,,,,,not reached below 2000 N\n");
   found.parameter.reset();
   EXPECT_EQ(distress_csv({found}, ""),
-            "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,method\n"
-            "545,185.25,185,185.5,185.3,,,,runaway; fold\n");
+            "speed_rad_s,W_fail_N,criterion,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
+            "W_d_error_N," kCriteria "failure,method\n"
+            "545,,,185.25,185,185.5,185.3,,,,,,,,,,,runaway; fold\n");
   found.fine_fold_load = 195.0;
   found.extrapolated_load = 198.25;
   found.discretization_error = 4.0625;
+  found.failure_load = 185.25;
+  found.criterion = "distress";
+  found.criterion_loads[1] = 300.5;  // flash_temperature
+  found.failure = "fails at 185.25 N by thermo-viscous distress";
   EXPECT_EQ(distress_csv({found}, ""),
-            "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,method\n"
-            "545,185.25,185,185.5,185.3,195,198.25,4.0625,runaway; fold\n");
+            "speed_rad_s,W_fail_N,criterion,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
+            "W_d_error_N," kCriteria "failure,method\n"
+            "545,185.25,distress,185.25,185,185.5,185.3,195,198.25,4.0625,,300.5,,,,,"
+            "fails at 185.25 N by thermo-viscous distress,runaway; fold\n");
 }
 
 TEST(DistressTable, QuotesAMethodWithCommas) {
   DistressRow row{545.0, std::nullopt, 1.0, 1.0, 1.0, std::nullopt, "a, \"b\"", {}, {}, {}, {}};
   EXPECT_EQ(distress_csv({row}, ""),
-            "speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,method\n"
-            "545,1,1,1,,,,,\"a, \"\"b\"\"\"\n");
+            "speed_rad_s,W_fail_N,criterion,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
+            "W_d_error_N," kCriteria "failure,method\n"
+            "545,,,1,1,1,,,,,,,,,,,,\"a, \"\"b\"\"\"\n");
 }
 
 TEST(DistressTable, RefusesNaN) {
@@ -75,15 +88,19 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   EXPECT_EQ(states.rfind("load_N,speed_rad_s,friction_coefficient,sliding,T_mean_C,", 0), 0u) << states;
   EXPECT_NE(states.find("\n150,545,0.2,washer_gear,24,24,"), std::string::npos) << states;
   EXPECT_EQ(states_csv({a}).rfind("load_N,speed_rad_s,T_mean_C,", 0), 0u);
-  // The branch and the limits close the row: empty for a state no branch was followed
-  // to and for one within every limit.
-  EXPECT_NE(states.find(",wall_ms,branch,limits\n"), std::string::npos) << states;
+  // The branch, the failure criteria passed and the limits close the row: empty for a
+  // state no branch was followed to and for one within every limit.
+  EXPECT_NE(states.find(",wall_ms,branch,fails_by,limits\n"), std::string::npos) << states;
   EXPECT_EQ(states.back(), '\n');
-  EXPECT_EQ(states.substr(states.size() - 3), ",,\n") << "empty branch and limits cells";
+  EXPECT_EQ(states.substr(states.size() - 4), ",,,\n") << "empty branch, fails_by and limits cells";
   a.branch = "hot";
   a.state.limits = {{LimitKind::oil_temperature, 500.0, 423.15}, {LimitKind::flash_temperature, 900.0, 453.15}};
   const std::string hot = states_csv({a});
-  EXPECT_TRUE(hot.ends_with(",hot,oil_temperature;flash_temperature\n")) << hot;
+  EXPECT_TRUE(hot.ends_with(",hot,oil_temperature;flash_temperature,oil_temperature;flash_temperature\n")) << hot;
+  // fails_by keeps the failure criteria only; limits has every limit.
+  a.state.limits.push_back({LimitKind::contact_pressure, 3e9, 2.8e9});
+  EXPECT_TRUE(states_csv({a}).ends_with(",hot,oil_temperature;flash_temperature,"
+                                        "oil_temperature;flash_temperature;contact_pressure\n"));
   // A run without its parameter's value is a bug upstream: an empty cell, never NaN.
   a.parameter.reset();
   EXPECT_NE(states_csv({a}, "friction_coefficient").find("\n150,545,,24,"), std::string::npos);
@@ -98,9 +115,10 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   EXPECT_NE(trajectory.find(",150,545,0.05,carrier_washer\n"), std::string::npos) << trajectory;
 
   DistressRow row{953.0, std::nullopt, 400.0, 399.0, 401.0, 400.5, "runaway", "washer_gear", {}, {}, {}};
-  EXPECT_EQ(distress_csv({row}, "", true), "speed_rad_s,sliding,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,"
-            "method\n"
-                                           "953,washer_gear,400,399,401,400.5,,,,runaway\n");
+  EXPECT_EQ(distress_csv({row}, "", true),
+            "speed_rad_s,sliding,W_fail_N,criterion,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,"
+            "W_d_extrapolated_N,W_d_error_N," kCriteria "failure,method\n"
+            "953,washer_gear,,,400,399,401,400.5,,,,,,,,,,,runaway\n");
 }
 
 TEST(SlidingTable, OneRowPerConfigurationWithTheChoiceMarked) {

@@ -28,6 +28,11 @@ inline std::string malformed_path(const MalformedCase& c) {
 // value for value errors, the map (its '{' or first key) for a missing key.
 inline const std::vector<MalformedCase>& malformed_cases() {
   static const std::vector<MalformedCase> cases{
+    {"ra_above_rq", 8, 16, {"surfaces.washer.Ra", "larger than Rq", "Ra (the mean |z|) is at most Rq"}},
+    {"tilt_beyond_small_angle", 6, 84, {"geometry.gear.tilt", "at most 50 mrad", "small-angle gap"}},
+    {"data_sheet_viscosity_rising", 8, 54, {"lubricant.viscosity.kv100", "is not below kv40", "an oil thins as it warms"}},
+    {"viscosity_table_one_point", 10, 13, {"lubricant.viscosity.points: 1 point", "needs at least two"}},
+    {"data_sheet_without_density", 8, 14, {"'lubricant.viscosity': needs density"}},
     {"unknown_key", 5, 62, {"unknown key 'thicknes' in 'geometry.washer'", "did you mean 'thickness'?", "Allowed: inner_diameter, outer_diameter, thickness"}},
     {"unknown_top_level_key", 12, 1, {"unknown key 'meshes' at the top level", "did you mean 'mesh'?", "Allowed: effects, geometry"}},
     {"unknown_key_without_suggestion", 13, 3, {"unknown key 'banana' in 'solver'", "Allowed: method, residual_tolerance, step_tolerance, max_iterations, cold_start_film, over_relaxation"}},
@@ -68,8 +73,8 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"ambient_past_any_oil", 11, 12, {"operating.ambient: '350 degC' (= 623.15 K) is out of range; must be in (138.15, 573.15] K", "no oil works above 300 degC"}},
     {"mesh_too_fine", 12, 22, {"mesh.radial_nodes: 5000 is out of range; must be in [3, 1025]", "memory"}},
     {"thickness_in_metres", 5, 73, {"geometry.washer.thickness: '0.635 m' is out of range; must be in [1e-05, 0.2] m"}},
-    {"tilt_too_large", 6, 84, {"geometry.gear.tilt: '100 mrad' (= 0.1 rad) is out of range; must be in [0, 0.1) rad"}},
-    {"tilt_negative", 6, 84, {"geometry.gear.tilt: '-0.002' is out of range; must be in [0, 0.1) rad"}},
+    {"tilt_too_large", 6, 84, {"geometry.gear.tilt: '100 mrad' (= 0.1 rad) is out of range; must be in [0, 0.05] rad"}},
+    {"tilt_negative", 6, 84, {"geometry.gear.tilt: '-0.002' is out of range; must be in [0, 0.05] rad"}},
     {"ambient_below_roelands_limit", 11, 12, {"operating.ambient: '-140 degC'", "(= 133.15 K) is out of range; must be in (138.15, 573.15] K", "Roelands"}},
     {"sweep_end_not_above_start", 15, 13, {"study.load_end: '100 N' must be greater than load_start '2000 N'"}},
     {"sweep_steps_too_few", 12, 76, {"study.load_steps: 1 is out of range; must be in [2, 10000]"}},

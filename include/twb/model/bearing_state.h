@@ -18,6 +18,9 @@ struct BearingState {
   double washer_mean_temperature = 0;  // K, area-weighted
   double max_film_temperature = 0;     // K, hottest film node
   double hmin_over_sigma = 0;          // sliding film, exact minimum of its plane
+  // Each body's hottest face (K), its material's temperature (docs/physics.md section 8);
+  // the ambient without the thermal effect.
+  double carrier_max_temperature = 0, washer_max_temperature = 0, gear_max_temperature = 0;
   double gamma_x_ratio = 0, gamma_y_ratio = 0;
   double fluid_force = 0, contact_force = 0;  // sliding film, N
   double fluid_share = 0, contact_share = 0;

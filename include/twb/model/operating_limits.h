@@ -12,7 +12,15 @@
 //  - film_below_statistics: h_min/σ below 0.5, the smallest gap Patir and Cheng fitted
 //    their flow factors for and where most summits touch, against the statistical
 //    model's assumption of sparse, independent contacts (only with contact or flow
-//    factors on: classic Reynolds has no such limit).
+//    factors on: classic Reynolds has no such limit);
+//  - material_temperature:<body>: the body's hottest face above its material's limit
+//    (materials.<body>.max_temperature; none by default);
+//  - film_ratio: h_min/σ below the scene's least film parameter (limits.min_film_ratio;
+//    none by default).
+// oil_temperature, flash_temperature, material_temperature and film_ratio are failure
+// criteria (docs/physics.md section 8): the first load where one is crossed on the branch
+// is a failure load beside thermo-viscous distress. contact_pressure and
+// film_below_statistics say where the model stops holding.
 #pragma once
 
 #include <string>
@@ -21,7 +29,23 @@
 
 namespace twb {
 
-enum class LimitKind { oil_temperature, flash_temperature, contact_pressure, film_below_statistics };
+enum class LimitKind {
+  oil_temperature,
+  flash_temperature,
+  contact_pressure,
+  film_below_statistics,
+  carrier_temperature,  // material_temperature:carrier
+  washer_temperature,   // material_temperature:washer
+  gear_temperature,     // material_temperature:gear
+  film_ratio,
+};
+
+// The limits whose crossing is a failure of the bearing (a failure criterion).
+bool is_failure_criterion(LimitKind kind);
+// The failure criteria in the order distress.csv lists their loads.
+inline constexpr LimitKind kFailureCriteria[] = {LimitKind::oil_temperature, LimitKind::flash_temperature,
+                                                 LimitKind::carrier_temperature, LimitKind::washer_temperature,
+                                                 LimitKind::gear_temperature, LimitKind::film_ratio};
 
 struct LimitExcess {
   LimitKind kind;
@@ -35,5 +59,9 @@ std::string_view limit_name(LimitKind kind);
 std::string describe_limit(const LimitExcess& excess);
 // The names of a state's limits joined by ';' (empty for none): states.csv's column.
 std::string limit_names(const std::vector<LimitExcess>& limits);
+// The same for the failure criteria among them only: states.csv's fails_by column.
+std::string failure_names(const std::vector<LimitExcess>& limits);
+// "the flash temperature", "the washer's material temperature": for sentences.
+std::string_view criterion_phrase(LimitKind kind);
 
 }  // namespace twb

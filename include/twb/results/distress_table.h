@@ -1,14 +1,21 @@
 // distress.csv: one row per distress search :
-//   speed_rad_s, <param>, sliding, W_d_N, bracket_low_N, bracket_high_N, fold_N,
-//   W_d_fine_N, W_d_extrapolated_N, W_d_error_N, method
+//   speed_rad_s, <param>, sliding, W_fail_N, criterion, W_d_N, bracket_low_N, bracket_high_N,
+//   fold_N, W_d_fine_N, W_d_extrapolated_N, W_d_error_N, W_oil_temperature_N,
+//   W_flash_temperature_N, W_material_temperature_carrier_N, ..._washer_N, ..._gear_N,
+//   W_film_ratio_N, failure, method
+// W_fail is where the bearing fails: the least of W_d and the loads where the branch
+// continued from the start first crosses a failure criterion (docs/physics.md section 8);
+// criterion names the one that sets it.
 // <param> is the study's second axis (e.g. friction_coefficient), sliding the film that
 // slides (sliding_choice); each column is left out when the study has none. A value that does not exist (no fold on the branch,
 // no distress below the highest load searched) is an empty cell, never NaN.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
+#include "twb/model/operating_limits.h"
 #include "twb/results/result_table.h"
 
 namespace twb {
@@ -27,7 +34,19 @@ struct DistressRow {
   std::optional<double> fine_fold_load;      // N
   std::optional<double> extrapolated_load;   // N
   std::optional<double> discretization_error;  // N
+  // Where the bearing fails: W_fail, the least of W_d and the criteria's loads, and the
+  // criterion that sets it ("distress", or a failure criterion's limit_name).
+  std::optional<double> failure_load;  // N
+  std::string criterion;
+  // Each failure criterion's first crossing on the branch (kFailureCriteria order), N;
+  // empty where it is not crossed up to the branch's end or does not apply.
+  std::array<std::optional<double>, std::size(kFailureCriteria)> criterion_loads;
+  // "fails at 307.6 N by the flash temperature (no thermo-viscous distress up to 4000 N)".
+  std::string failure;
 };
+
+// The load where the criterion is crossed (kFailureCriteria order), if it is.
+std::optional<double> criterion_load(const DistressRow& row, LimitKind kind);
 
 // The table distress.csv is written from (result_table.h).
 ResultTable distress_table(const std::vector<DistressRow>& rows, const std::string& parameter_column,

@@ -81,6 +81,9 @@ struct Material {
   double density = 7850.0;          // kg/m^3
   double specific_heat = 470.0;     // J/(kg K)
   double thermal_expansion = 1.2e-5;  // 1/K (Table 1), used by thermal_deformation
+  // The hottest the material may run (bronze, polymer, a coating): a failure criterion
+  // of the body's hottest face (docs/physics.md section 8). None by default (steel).
+  std::optional<double> max_temperature;  // K
 };
 
 // Roughness of one component's face(s) touching a film.
@@ -117,6 +120,16 @@ struct AsperityParameters {
   std::optional<ProfileEstimate> profile;  // when measured profiles gave the three above
 };
 
+// Where the oil's Roelands constants came from when the scene gave its data sheet or a
+// table (docs/physics.md section 5): the given points and the fit's error there.
+struct ViscositySource {
+  std::string kind;                 // "data_sheet" or "table"
+  std::vector<double> temperatures;  // K
+  std::vector<double> viscosities;   // Pa s, dynamic (a data sheet's: ρ(T)·ν)
+  std::vector<double> relative_errors;  // (μ_fit − μ)/μ at each
+  double largest_error = 0.0;           // over every fitted temperature
+};
+
 struct Lubricant {
   double conductivity = 0.145;  // W/(m K)
   ViscosityModel viscosity_model = ViscosityModel::roelands;
@@ -124,11 +137,18 @@ struct Lubricant {
   double g0 = 3.545;             // Roelands
   double s0 = 1.053;             // Roelands
   double constant_viscosity = 0.06081;  // Pa s, when viscosity_model == constant
+  std::optional<ViscositySource> viscosity_source;  // roelands fitted to a data sheet or table
   // Where the oil stops being trusted (twb/model/operating_limits.h): an automatic
   // transmission fluid's maximum working temperature, which its oxidation life halves
   // about every 10 K beyond, and its flash point (ASTM D92, about 180 degC).
   double max_temperature = 423.15;    // K, 150 degC
   double flash_temperature = 453.15;  // K, 180 degC
+};
+
+// Failure criteria a scene may add besides the oil's and the materials' temperatures
+// (docs/physics.md section 8).
+struct Limits {
+  std::optional<double> min_film_ratio;  // the least h_min/σ the bearing may run at
 };
 
 struct Operating {
@@ -201,6 +221,7 @@ struct Scene {
   Component carrier, washer, gear;
   AsperityParameters asperities;
   Lubricant lubricant;
+  Limits limits;
   Operating operating;
   Friction friction;
   MeshSettings mesh;

@@ -61,6 +61,11 @@ struct NamedTable {
 };
 std::vector<NamedTable> study_tables(const StudyOutcome& outcome, StudyType type);
 
+// The lines a run ends with, as twb run prints them: each search's distress and failure
+// line ("distress at 545 rad/s: W_d = ...", "failure at 545 rad/s: fails at ... by ..."),
+// then StudyOutcome::summary (the limits' notes follow them: limit_notes.h).
+std::vector<std::string> summary_lines(const StudyOutcome& outcome);
+
 // Whether a study is made of independent distress searches (load_sweep, distress_map,
 // sliding_choice): what threads, MPI ranks and the slices of a job array share out, and
 // what RunOptions::stop can stop between.

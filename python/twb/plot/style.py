@@ -87,6 +87,7 @@ SVG_RC = {"svg.fonttype": "none", "svg.hashsalt": "twb_plot"}
 def save(fig, out_dir, stem, formats, written):
     # Two-line axis labels (the Stribeck number's units) would otherwise be cut off.
     fig.tight_layout()
+    os.makedirs(out_dir, exist_ok=True)
     with plt.rc_context(SVG_RC):
         for fmt in formats:
             path = os.path.join(out_dir, f"{stem}.{fmt}")

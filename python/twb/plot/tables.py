@@ -220,12 +220,45 @@ class DistressRow:
     sliding: object = None  # the sliding film of a sliding choice's row
     extrapolated: object = None  # mesh-converged W_d (Richardson), N
     error: object = None  # its error bar, N
+    failure: object = None  # W_fail: where the bearing fails by its first criterion, N
+    criterion: object = None  # the criterion that sets it ("distress", "flash_temperature", ...)
+
+
+# Written since every failure criterion is located (W_fail_N after the run's columns,
+# failure before the method): read by name.
+FAILURE_COLUMNS = ("W_fail_N", "criterion")
+
+
+def _read_distress_by_name(path, records, line, header):
+    start = header.index("W_fail_N")
+    middle = header[1:start]
+    sliding = bool(middle) and middle[-1] == "sliding"
+    if sliding:
+        middle = middle[:-1]
+    if (len(middle) > 1 or header[0] != "speed_rad_s" or tuple(header[-2:]) != ("failure", "method")
+            or any(c not in header for c in DISTRESS_TAIL + FAILURE_COLUMNS)):
+        raise InputError(f"{path}: line {line}: expected the header speed_rad_s[,<parameter>][,sliding],"
+                         f"W_fail_N,criterion,W_d_N,...,failure,method, got {','.join(header)}")
+    column = {c: k for k, c in enumerate(header)}
+    rows = []
+    for line, fields in records:
+        _check_width(path, line, fields, header)
+        number = lambda c: (_number(path, line, c, fields[column[c]], optional=True)  # noqa: E731
+                            if c in column else None)
+        parameter, film = _run_tags(path, line, fields, header)
+        rows.append(DistressRow(_number(path, line, "speed_rad_s", fields[0]), parameter, number("W_d_N"),
+                                number("bracket_low_N"), number("bracket_high_N"), number("fold_N"),
+                                fields[-1].strip(), film, number("W_d_extrapolated_N"), number("W_d_error_N"),
+                                number("W_fail_N"), fields[column["criterion"]].strip() or None))
+    return rows
 
 
 def read_distress(path):
     records = _records(path)
     line, header = _header_line(path, records,
                                 f"speed_rad_s[,<parameter>][,sliding],{','.join(DISTRESS_TAIL)}")
+    if "W_fail_N" in header:
+        return _read_distress_by_name(path, records, line, header)
     tail = DISTRESS_TAIL
     if tuple(header[-4:-1]) == DISTRESS_ERROR_COLUMNS:
         tail = DISTRESS_TAIL[:4] + DISTRESS_ERROR_COLUMNS + DISTRESS_TAIL[4:]

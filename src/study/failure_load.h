@@ -1,0 +1,36 @@
+// Where the bearing fails (docs/physics.md section 8, "Failure load"): the first of
+// thermo-viscous distress (the fold, located and proven by the distress search) and the
+// first load where the branch continued from the start crosses a failure criterion (the
+// oil's maximum temperature, its flash point, a material's temperature limit, the least
+// film ratio). Each crossing is the root of the criterion's margin along the branch,
+// bracketed by two of its states and located by TOMS 748 on the load, each trial state
+// continued from the nearest state below it; the root is located to the search's
+// bracket width, and reported where the margin's secant through the final bracket
+// vanishes.
+#pragma once
+
+#include <string>
+
+#include "fold_proof.h"
+#include "model/bearing_model.h"
+#include "twb/results/distress_table.h"
+
+namespace twb {
+
+struct FailureSettings {
+  double load_start = 0.0, load_end = 0.0;  // N: the searched range
+  double bracket_width = 0.002;             // relative: how closely a crossing is located
+};
+
+// Fills row.criterion_loads, failure_load, criterion and failure from the branch's states
+// (load, state) in rising load, its end at the fold included where there is one, and
+// row.distress_load. Steady solves it made are counted in `solves`. The model's load is
+// left wherever the last trial state was.
+void locate_failure(BearingModel& model, const BranchStates& branch, const FailureSettings& settings,
+                    DistressRow& row, long& solves);
+
+// "fails at 307.6 N by the flash temperature (no thermo-viscous distress up to 4000 N)":
+// the sentence of a row whose failure fields are set.
+std::string failure_sentence(const DistressRow& row, double load_end);
+
+}  // namespace twb
