@@ -260,7 +260,7 @@ Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<c
     if (o.settled()) {
       if (!proven && trial == high_parameter) {
         system.set_parameter(b.low);
-        b.message = fmt::format("the step to the high parameter {:.6g} settles: no runaway to bracket", trial);
+        b.message = fmt::format("the step to {:.6g}, the bracket's upper end, settles: no runaway to bracket", trial);
         return b;
       }
       b.low = trial;
