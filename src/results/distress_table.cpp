@@ -13,6 +13,7 @@ ResultTable distress_table(const std::vector<DistressRow>& rows, const std::stri
   const cells::RunColumns run(t, parameter_column, sliding_column);
   const auto w_fail = t.number("W_fail_N");
   const auto criterion = t.text("criterion");
+  const auto fail_extrapolated = t.number("W_fail_extrapolated_N"), fail_error = t.number("W_fail_error_N");
   const auto w_d = t.number("W_d_N"), low = t.number("bracket_low_N"), high = t.number("bracket_high_N"),
              fold = t.number("fold_N"), fine = t.number("W_d_fine_N"), extrapolated = t.number("W_d_extrapolated_N"),
              error = t.number("W_d_error_N");
@@ -22,12 +23,20 @@ ResultTable distress_table(const std::vector<DistressRow>& rows, const std::stri
     std::replace(name.begin(), name.end(), ':', '_');
     criteria.push_back(t.number("W_" + name + "_N"));
   }
+  std::vector<ResultTable::Column> criterion_errors;
+  for (LimitKind kind : kFailureCriteria) {
+    std::string name(limit_name(kind));
+    std::replace(name.begin(), name.end(), ':', '_');
+    criterion_errors.push_back(t.number("W_" + name + "_error_N"));
+  }
   const auto failure = t.text("failure"), method = t.text("method");
   for (const DistressRow& r : rows) {
     t.put_number(speed, r.speed);
     run.put(t, r.parameter, r.sliding);
     t.put_number(w_fail, r.failure_load);
     t.put_text(criterion, r.criterion);
+    t.put_number(fail_extrapolated, r.failure_extrapolated);
+    t.put_number(fail_error, r.failure_error);
     t.put_number(w_d, r.distress_load);
     t.put_number(low, r.bracket_low);
     t.put_number(high, r.bracket_high);
@@ -36,6 +45,7 @@ ResultTable distress_table(const std::vector<DistressRow>& rows, const std::stri
     t.put_number(extrapolated, r.extrapolated_load);
     t.put_number(error, r.discretization_error);
     for (std::size_t k = 0; k < criteria.size(); ++k) t.put_number(criteria[k], r.criterion_loads[k]);
+    for (std::size_t k = 0; k < criteria.size(); ++k) t.put_number(criterion_errors[k], r.criterion_errors[k]);
     t.put_text(failure, r.failure);
     t.put_text(method, r.method);
   }

@@ -1,5 +1,7 @@
 #include "twb/results/states_table.h"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "result_cells.h"
@@ -22,6 +24,13 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::string
              residual = t.number("residual", Style::scientific),
              energy = t.number("energy_error", Style::scientific), wall = t.number("wall_ms", Style::fixed),
              branch = t.text("branch"), fails_by = t.text("fails_by"), limits = t.text("limits");
+  // The error bars' columns only where some state has them.
+  std::vector<ResultTable::Column> errors;
+  if (std::any_of(rows.begin(), rows.end(), [](const SolvedState& r) { return !r.mesh_errors.empty(); }))
+    for (const char* q : kMeshErrorQuantities) {
+      errors.push_back(t.number(std::string(q) + "_extrapolated"));
+      errors.push_back(t.number(std::string(q) + "_error"));
+    }
   for (const SolvedState& r : rows) {
     const BearingState& s = r.state;
     t.put_number(load, s.load);
@@ -50,8 +59,15 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::string
     // never a verdict of safety.
     t.put_text(fails_by, failure_names(s.limits));
     t.put_text(limits, limit_names(s.limits));
+    for (std::size_t k = 0; k < errors.size(); ++k)
+      t.put_number(errors[k], k < r.mesh_errors.size() ? std::optional<double>(r.mesh_errors[k]) : std::nullopt);
   }
   return t;
+}
+
+std::vector<double> mesh_error_quantities(const BearingState& s) {
+  return {s.washer_mean_temperature - kelvin_offset, s.max_film_temperature - kelvin_offset, s.hmin_over_sigma,
+          s.torque, s.f_eff};
 }
 
 std::string states_csv(const std::vector<SolvedState>& rows, const std::string& parameter_column,

@@ -193,7 +193,8 @@ void read_study(const MapReader& scene, Scene& out) {
   s.type = read_choice(study, "type", kStudyTypes, s.type);
   switch (s.type) {
     case StudyType::point:
-      study.restrict_to({"type"}, "with type: point");
+      study.restrict_to({"type", "error_estimate"}, "with type: point");
+      s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
       break;
     case StudyType::transient:
       study.restrict_to({"type", "load_start", "load_end", "duration", "bracket_width"}, "with type: transient");

@@ -1,6 +1,8 @@
 #include "distress_curve.h"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 
 #include <fmt/format.h>
@@ -9,6 +11,8 @@
 #include "solver/fold_curve.h"
 #include "study/distress_search.h"
 #include "study/richardson.h"
+#include "study/limit_curve.h"
+#include "model/limit_thresholds.h"
 
 namespace twb {
 
@@ -57,6 +61,64 @@ std::string shown(CurveParameter p, double v) {
 
 }  // namespace
 
+namespace {
+
+// Every failure criterion's crossing continued across the range (limit_curve.h): from
+// the first end searched that crosses it, to the other end. Its rows in fold_curve.csv
+// carry the criterion's name in the fold column.
+void add_limit_curves(BearingModel& model, CurveParameter which,
+                      const std::vector<std::pair<double, std::vector<std::pair<double, std::vector<double>>>>>& ends,
+                      std::optional<double> member, const std::string& label, StudyOutcome& out,
+                      const std::function<void(const std::string&)>& say) {
+  const Study& st = model.scene().study;
+  LimitCurveSettings settings;
+  settings.bracket_width = st.bracket_width;
+  settings.load_end = st.load_end;
+  // W_d along this curve's distress fold (rows of this member, sorted in the parameter),
+  // interpolated linearly between its points; none outside the fold's range.
+  std::vector<std::pair<double, double>> folds;
+  for (const FoldCurveRow& r : out.fold_curve)
+    if (r.member == member && (r.fold == "distress" || r.fold == "cusp")) folds.emplace_back(r.parameter, r.state.load);
+  std::sort(folds.begin(), folds.end());
+  settings.fold_load = [folds](double p) -> std::optional<double> {
+    if (folds.size() < 2 || p < folds.front().first || p > folds.back().first) return std::nullopt;
+    const auto hi = std::lower_bound(folds.begin(), folds.end(), std::pair{p, -1e300});
+    if (hi == folds.begin()) return hi->second;
+    const auto lo = hi - 1;
+    return lo->second + (hi->second - lo->second) * (p - lo->first) / (hi->first - lo->first);
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
+    const LimitKind kind = kFailureCriteria[c];
+    const auto start = std::find_if(ends.begin(), ends.end(), [&](const auto& e) { return !e.second[c].second.empty(); });
+    if (start == ends.end()) continue;
+    const double from = start->first, to = from == st.from ? st.to : st.from;
+    LimitCurve curve;
+    try {
+      curve = trace_limit_curve(model, which, kind, from, to, start->second[c], settings);
+    } catch (const std::exception& e) {
+      curve.ended = std::string("the curve could not be continued: ") + e.what();
+    }
+    for (const LimitCurvePoint& pt : curve.points) {
+      FoldCurveRow& row = out.fold_curve.emplace_back();
+      row.parameter = pt.p;
+      row.fold = std::string(limit_name(kind));
+      row.state = pt.state;
+      row.member = member;
+    }
+    const std::string line = fmt::format(
+        "limit curve{}: {} crossed from {:.2f} N at {} to {:.2f} N at {} ({} points){}", label, limit_name(kind),
+        curve.points.front().state.load, shown(which, curve.points.front().p), curve.points.back().state.load,
+        shown(which, curve.points.back().p), curve.points.size(),
+        curve.ended.empty() ? std::string() : "; ended " + curve.ended);
+    say(fmt::format("[curve{}] {} [{} steady solves, {:.1f} s]", label, line.substr(line.find(':') + 2), curve.solves,
+                    elapsed_ms(t0) / 1000.0));
+    out.summary.push_back(line);
+  }
+}
+
+}  // namespace
+
 void run_fold_curve(BearingModel& model, std::optional<double> member, const std::string& label, StudyOutcome& out,
                     const ProgressReport& progress) {
   const Study& st = model.scene().study;
@@ -73,7 +135,9 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   settings.march_past_distress = false;
   std::optional<DistressSearch> first;
   double start = st.from, other = st.to;
-  for (const double end : {st.from, st.to}) {
+  // Each end searched, with its criteria's crossings: where the limit curves start.
+  std::vector<std::pair<double, std::vector<std::pair<double, std::vector<double>>>>> ends;
+  auto search_end = [&](double end) {
     model.set_curve_parameter(which, end);
     say(fmt::format("[curve{}] the first fold at {}", label, shown(which, end)));
     DistressSearch found = search_distress(model, settings, progress);
@@ -86,6 +150,11 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
       out.states.back().parameter = member;
       out.states.back().branch = "cool";
     }
+    ends.emplace_back(end, found.crossing_states);
+    return found;
+  };
+  for (const double end : {st.from, st.to}) {
+    DistressSearch found = search_end(end);
     if (found.fold && found.row.distress_load) {
       first = std::move(found);
       start = end;
@@ -93,10 +162,22 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
       break;
     }
   }
+  // A criterion the searched end does not cross may be crossed at the other: search it too.
+  if (ends.size() == 1) {
+    const auto& crossed = ends.front().second;
+    const OperatingLimits limits = OperatingLimits::of(model.scene());
+    const LimitValues values{.thermal = model.scene().effects.thermal};
+    bool missing = false;
+    for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
+      missing = missing || (failure_margin(kFailureCriteria[c], values, limits) && crossed[c].second.empty());
+    if (missing) search_end(other);
+  }
+  auto limit_curves = [&] { add_limit_curves(model, which, ends, member, label, out, say); };
   if (!first) {
     out.summary.push_back(fmt::format("fold curve{}: no fold between {:.6g} and {:.6g} N at either end ({} and {}): "
                                       "no sudden distress to follow",
                                       label, st.load_start, st.load_end, shown(which, st.from), shown(which, st.to)));
+    limit_curves();
     return;
   }
 
@@ -148,6 +229,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   }
   if (curve.points.empty()) {
     out.summary.push_back(fmt::format("fold curve{}: not traced from {}: {}", label, shown(which, start), curve.message));
+    limit_curves();
     return;
   }
   const auto n = std::size_t(model.size());
@@ -219,6 +301,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   else if (curve.turns.empty())
     out.summary.push_back(fmt::format("fold curve{}: {} points from {} to {}, no cusp in range", label,
                                       curve.points.size(), shown(which, curve.points.front().p), shown(which, last)));
+  limit_curves();
 }
 
 }  // namespace twb

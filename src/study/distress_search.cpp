@@ -624,7 +624,8 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
     const double start = out.states.empty() ? settings.load_start : out.states.front().state.load;
     const auto t0 = std::chrono::steady_clock::now();
     long solves = 0;
-    locate_failure(model, branch, {start, settings.load_end, settings.bracket_width}, out.row, solves);
+    locate_failure(model, branch, {start, settings.load_end, settings.bracket_width}, out.row, solves,
+                   &out.crossing_states);
     if (progress && out.row.failure_load)
       progress(fmt::format("  {:.6g} rad/s: {} [{} steady solves, {:.1f} s]", model.speed(), out.row.failure, solves,
                            elapsed_ms(t0) / 1000.0));

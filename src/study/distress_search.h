@@ -100,6 +100,9 @@ struct DistressSearch {
   // The solvers' own words where a search went on regardless (e.g. why natural
   // continuation stopped at the fold): for --verbose, not for the progress lines.
   std::vector<std::string> diagnostics;
+  // Each failure criterion's crossing on the branch (load, state), in kFailureCriteria
+  // order, empty where it is not crossed: where a limit curve starts (not journaled).
+  std::vector<std::pair<double, std::vector<double>>> crossing_states;
 };
 
 // The runaway detector the search brackets W_d with: the scene's Newton tolerances, the

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "model/limit_thresholds.h"
+#include "solver/kinsol_newton.h"
 #include "solver/natural_continuation.h"
 #include "study_support.h"
 
@@ -23,36 +24,39 @@ struct LostBranch : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The branch between two of its states, continued to any load between them.
+// The branch near one of its states, continued to any load nearby.
 class BranchSegment {
  public:
-  BranchSegment(BearingModel& model, const BranchStates& branch, std::size_t below, long& solves)
+  BranchSegment(BearingModel& model, std::pair<double, std::vector<double>> state, long& solves)
       : model_(model), solves_(solves) {
-    known_.push_back(branch[below]);
+    known_.push_back(std::move(state));
     natural_.newton = newton_settings(model.scene());
     natural_.newton.max_iterations = 12;
     natural_.newton.line_search = false;
   }
 
-  // The state at `load`, continued from the nearest known state below it.
-  std::vector<double> at(double load) {
-    const auto from = std::max_element(known_.begin(), known_.end(), [&](const auto& a, const auto& b) {
-      return (a.first <= load ? a.first : -1e300) < (b.first <= load ? b.first : -1e300);
-    });
-    std::vector<double> u = from->second;
-    const double span = load - from->first;
-    if (span > 0.0) {
-      model_.set_load(from->first);
-      natural_.initial_step = natural_.max_step = span;
-      natural_.min_step = 1e-3 * span;
-      ++solves_;
-      const NaturalReport rep = continue_in_parameter(model_, u, load, natural_);
-      if (!rep.reached_target)
-        throw LostBranch(fmt::format("the branch was not continued to {:.6g} N: {}", load, rep.message));
-      known_.emplace_back(load, u);
+  // The state at `load`, continued from the nearest known state (below it where there
+  // is one: the branch is followed up in load as the search followed it).
+  const std::vector<double>& at(double load) {
+    auto distance = [&](const auto& k) { return (k.first <= load ? 0.0 : 1e300) + std::abs(load - k.first); };
+    const auto from = std::min_element(known_.begin(), known_.end(),
+                                       [&](const auto& a, const auto& b) { return distance(a) < distance(b); });
+    if (from->first == load) {
+      model_.set_load(load);
+      return from->second;
     }
+    std::vector<double> u = from->second;
+    const double span = std::abs(load - from->first);
+    model_.set_load(from->first);
+    natural_.initial_step = natural_.max_step = span;
+    natural_.min_step = 1e-3 * span;
+    ++solves_;
+    const NaturalReport rep = continue_in_parameter(model_, u, load, natural_);
+    if (!rep.reached_target)
+      throw LostBranch(fmt::format("the branch was not continued to {:.6g} N: {}", load, rep.message));
     model_.set_load(load);
-    return u;
+    known_.emplace_back(load, std::move(u));
+    return known_.back().second;
   }
 
  private:
@@ -67,15 +71,11 @@ std::optional<double> margin_of(const BearingModel& model, std::span<const doubl
   return failure_margin(kind, LimitValues::of(model.describe(u), model.scene().effects.thermal), limits);
 }
 
-// Where the margin crosses zero between branch[k - 1] (within) and branch[k] (past).
-double locate_crossing(BearingModel& model, const BranchStates& branch, std::size_t k, LimitKind kind,
-                       const OperatingLimits& limits, double width, double within, double past, long& solves) {
-  BranchSegment segment(model, branch, k - 1, solves);
-  double a = branch[k - 1].first, b = branch[k].first, fa = within, fb = past;
-  auto margin = [&](double load) {
-    const std::vector<double> u = segment.at(load);
-    return *margin_of(model, u, kind, limits);
-  };
+// Where the margin crosses zero between loads a (within, margin fa > 0) and b (past,
+// fb <= 0), the branch continued from `segment`'s states.
+double locate_crossing(BearingModel& model, BranchSegment& segment, LimitKind kind, const OperatingLimits& limits,
+                       double width, double a, double fa, double b, double fb) {
+  auto margin = [&](double load) { return *margin_of(model, segment.at(load), kind, limits); };
   // The bracket [a, b] is narrowed until its relative width is the search's; TOMS 748
   // converges superlinearly on the smooth pieces of a margin (a maximum over nodes is
   // piecewise smooth), so that takes a few solves.
@@ -97,9 +97,68 @@ double locate_crossing(BearingModel& model, const BranchStates& branch, std::siz
 
 }  // namespace
 
+std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pair<double, std::vector<double>>& state,
+                                    double& slope, double width, double load_end, long& solves, std::string& why) {
+  const OperatingLimits limits = OperatingLimits::of(model.scene());
+  NewtonSettings newton = newton_settings(model.scene());
+  newton.max_iterations = 12;
+  newton.line_search = false;
+  KinsolNewton corrector(model);
+  BranchSegment segment(model, state, solves);
+  // The state at `load` from the last one: Newton from it (a constant predictor, a few
+  // iterations for the secant's short steps), else continuation along the branch.
+  std::vector<double> u = state.second;
+  auto state_at = [&](double load) -> const std::vector<double>& {
+    model.set_load(load);
+    std::vector<double> trial = u;
+    ++solves;
+    if (corrector.solve(trial, newton).converged) {
+      u = std::move(trial);
+      return u;
+    }
+    u = segment.at(load);
+    return u;
+  };
+  try {
+    double w0 = state.first;
+    model.set_load(w0);
+    double m0 = *margin_of(model, u, kind, limits);
+    // The secant on the margin along the branch, its first step with the caller's slope
+    // (the crossing's at a nearby parameter), each step at most 30 % of the load, until a
+    // step is a tenth of the width: superlinear convergence leaves the root far closer
+    // than the width then.
+    double s = slope < 0.0 ? slope : -std::max(std::abs(m0), 1e-3) / (0.1 * w0);
+    for (int step = 0; step < 16; ++step) {
+      double w1 = std::clamp(w0 - m0 / s, 0.7 * w0, 1.3 * w0);
+      if (w1 > load_end) {
+        if (w0 >= load_end) {
+          why = fmt::format("not crossed up to {:.6g} N", load_end);
+          return std::nullopt;
+        }
+        w1 = load_end;
+      }
+      const double m1 = *margin_of(model, state_at(w1), kind, limits);
+      if (m1 != m0) s = (m1 - m0) / (w1 - w0);
+      if (!(s < 0.0)) s = -std::max(std::abs(m1), 1e-3) / (0.1 * w1);  // keep walking towards the crossing
+      if (std::abs(w1 - w0) <= 0.1 * width * w1) {
+        slope = s;
+        state = {w1, u};
+        return w1;
+      }
+      w0 = w1;
+      m0 = m1;
+    }
+    why = "the secant on the margin did not converge in 16 steps";
+  } catch (const LostBranch& e) {
+    why = e.what();
+  }
+  return std::nullopt;
+}
+
 void locate_failure(BearingModel& model, const BranchStates& branch, const FailureSettings& settings,
-                    DistressRow& row, long& solves) {
+                    DistressRow& row, long& solves, BranchStates* crossings) {
   row.criterion_loads.fill(std::nullopt);
+  if (crossings) crossings->assign(std::size(kFailureCriteria), {});
   if (branch.empty()) return;
   const OperatingLimits limits = OperatingLimits::of(model.scene());
   for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
@@ -111,9 +170,22 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
       if (!m) break;  // the scene does not apply this criterion
       if (*m <= 0.0) {
         // Past it already at the start: the crossing lies at or below the searched range.
-        row.criterion_loads[c] = k == 0 ? branch[0].first
-                                        : locate_crossing(model, branch, k, kind, limits, settings.bracket_width,
-                                                          *previous, *m, solves);
+        if (k == 0) {
+          row.criterion_loads[c] = branch[0].first;
+          if (crossings) (*crossings)[c] = branch[0];
+          break;
+        }
+        BranchSegment segment(model, branch[k - 1], solves);
+        const double w = locate_crossing(model, segment, kind, limits, settings.bracket_width, branch[k - 1].first,
+                                         *previous, branch[k].first, *m);
+        row.criterion_loads[c] = w;
+        if (crossings) {
+          try {
+            (*crossings)[c] = {w, segment.at(w)};
+          } catch (const LostBranch&) {
+            (*crossings)[c] = branch[k - 1];  // next to the fold: the state below it
+          }
+        }
         break;
       }
       previous = m;

@@ -9,7 +9,9 @@
 // vanishes.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "fold_proof.h"
 #include "model/bearing_model.h"
@@ -26,8 +28,18 @@ struct FailureSettings {
 // (load, state) in rising load, its end at the fold included where there is one, and
 // row.distress_load. Steady solves it made are counted in `solves`. The model's load is
 // left wherever the last trial state was.
+// crossings, if given, receives each criterion's crossing (load, state), empty where none.
 void locate_failure(BearingModel& model, const BranchStates& branch, const FailureSettings& settings,
-                    DistressRow& row, long& solves);
+                    DistressRow& row, long& solves, BranchStates* crossings = nullptr);
+
+// The crossing of `kind` near `state` (a state of the cool branch at its load, e.g. the
+// crossing at a nearby parameter value): the secant on the margin in load from there
+// (the first step with `slope`, dmargin/dW, where negative), each state by Newton from
+// the last, until a step is a tenth of `width`. On success `state` becomes the
+// crossing's (load, state) and `slope` the last secant's; none, with `why`, where the
+// crossing lies above load_end or the branch cannot be continued to it (it folds first).
+std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pair<double, std::vector<double>>& state,
+                                    double& slope, double width, double load_end, long& solves, std::string& why);
 
 // "fails at 307.6 N by the flash temperature (no thermo-viscous distress up to 4000 N)":
 // the sentence of a row whose failure fields are set.

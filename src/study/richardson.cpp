@@ -7,22 +7,23 @@
 #include <fmt/format.h>
 
 #include "study/study_support.h"
+#include "failure_load.h"
+#include "solver/kinsol_newton.h"
 
 namespace twb {
 
 namespace {
 
 constexpr double formal_order = 2.0;
-constexpr double safety_factor = 1.25;  // Roache's F_s
 
 }  // namespace
 
-MeshErrorEstimate richardson_extrapolation(double coarse, double fine) {
+MeshErrorEstimate richardson_extrapolation(double coarse, double fine, double safety) {
   MeshErrorEstimate e;
   e.fine_fold = fine;
   const double change = (fine - coarse) / (std::pow(2.0, formal_order) - 1.0);
   e.extrapolated = fine + change;
-  e.error = safety_factor * std::abs(change);
+  e.error = safety * std::abs(change);
   return e;
 }
 
@@ -177,6 +178,28 @@ std::optional<MeshErrorEstimate> RefinedFoldCurve::at(double p, double load, std
   last_null_ = fold->null_vector;
   last_fine_load_ = fold->lambda;
   return extrapolated(load, fold->lambda, mesh_);
+}
+
+std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, BearingModel& fine, LimitKind kind,
+                                                   double load, std::span<const double> u, double width,
+                                                   double load_end, std::string& why) {
+  std::vector<double> v = fine.interpolated_from(coarse, u);
+  fine.set_load(load);
+  NewtonSettings newton = newton_settings(fine.scene());
+  newton.max_iterations = 20;
+  KinsolNewton polish(fine);
+  const NewtonReport rep = polish.solve(v, newton);
+  if (!rep.converged) {
+    why = "Newton on the refined mesh did not converge at the coarse crossing: " + rep.message;
+    return std::nullopt;
+  }
+  std::pair<double, std::vector<double>> state{load, std::move(v)};
+  double slope = 0.0;
+  long solves = 0;
+  const std::optional<double> w = crossing_near(fine, kind, state, slope, width, load_end, solves, why);
+  if (!w) return std::nullopt;
+  return extrapolated(load, *w, fmt::format("{} x {}", fine.scene().mesh.radial_nodes,
+                                            fine.scene().mesh.circumferential_nodes));
 }
 
 }  // namespace twb

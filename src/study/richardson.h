@@ -42,8 +42,12 @@ struct MeshErrorEstimate {
 Scene refined_mesh(const Scene& scene);
 
 // The extrapolation and its error bar from a value on a mesh and on the mesh refined by
-// two (the formula above); fine_mesh left empty.
-MeshErrorEstimate richardson_extrapolation(double coarse, double fine);
+// two (the formula above, with F_s = safety); fine_mesh left empty.
+MeshErrorEstimate richardson_extrapolation(double coarse, double fine, double safety = 1.25);
+// Roache's factor for two grids alone, whose order no third grid confirms: the states'
+// quantities (a maximum over nodes, a least gap) converge less regularly than W_d, whose
+// order three grids confirm (richardson_test.cpp). With it the bar is |fine − coarse|.
+inline constexpr double kTwoGridSafety = 3.0;
 
 // The fold on the scene's mesh, as its search found it.
 struct CoarseFold {
@@ -68,6 +72,15 @@ struct CoarseFold {
 std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double speed, const CoarseFold& coarse,
                                                      DistressSearchSettings settings, std::string& why,
                                                      const SearchProgress& progress = {});
+
+// A failure criterion's crossing (failure_load.h) again on the refined mesh: the coarse
+// crossing's state interpolated onto the refined mesh, Newton there at the coarse load,
+// then the secant on the margin to the crossing (crossing_near). `fine` is the coarse
+// model on the refined mesh (BearingModel::on_mesh), shared by a search's criteria. Empty,
+// with `why`, where Newton or the secant fails there.
+std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, BearingModel& fine, LimitKind kind,
+                                                   double load, std::span<const double> u, double width,
+                                                   double load_end, std::string& why);
 
 // The folds of a fold curve (study type distress_curve) again on the refined mesh, point
 // after point along the curve: each from the last refined fold moved by the coarse

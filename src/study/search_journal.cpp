@@ -25,7 +25,7 @@ static_assert(sizeof(BearingState) == 8 * 30 + sizeof(std::vector<LimitExcess>),
 
 // The format, the program's version and the journaled structs' layout: an entry written
 // by another build is not read (its search runs again) rather than misread.
-const std::string kMagic = fmt::format("twb-search-journal 3 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
+const std::string kMagic = fmt::format("twb-search-journal 4 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
                                        sizeof(SolvedState), sizeof(DistressRow), sizeof(TrajectorySample),
                                        sizeof(SearchCounts));
 
@@ -63,7 +63,7 @@ void fields_of_film(A& a, S& f) {
 template <class A, class S>
 void fields_of_solved(A& a, S& s) {
   a(s.state), a(s.converged), a(s.iterations), a(s.residual), a(s.wall_ms), a(s.parameter), a(s.sliding);
-  a(s.branch), a(s.fields);
+  a(s.branch), a(s.mesh_errors), a(s.fields);
 }
 template <class A, class S>
 void fields_of_sample(A& a, S& t) {
@@ -75,6 +75,8 @@ void fields_of_row(A& a, S& r) {
   a(r.fine_fold_load), a(r.extrapolated_load), a(r.discretization_error), a(r.method), a(r.sliding);
   a(r.failure_load), a(r.criterion), a(r.failure);
   for (auto& load : r.criterion_loads) a(load);
+  for (auto& error : r.criterion_errors) a(error);
+  a(r.failure_extrapolated), a(r.failure_error);
 }
 template <class A, class S>
 void fields_of_search(A& a, S& j) {

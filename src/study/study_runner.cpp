@@ -39,6 +39,62 @@ SolvedState record(const BearingModel& model, const std::vector<double>& u, cons
   return row;
 }
 
+// A point's error bars (study.error_estimate: richardson): the state again on the mesh
+// refined by two, from the scene mesh's state interpolated there (Newton, the steady
+// solver's fallbacks where Newton fails), and each reported quantity extrapolated
+// (richardson.h). Where a quantity's estimated error exceeds 5 % the run says so and
+// names the mesh that would meet it (the error falling as h², the formal order).
+void estimate_point_error(BearingModel& model, std::span<const double> u, SolvedState& state, StudyOutcome& out) {
+  const Scene refined = refined_mesh(model.scene());
+  // The largest mesh twb refines a point from: beyond, the refined system outgrows a
+  // workstation's memory and minutes (the stability suite's 65 x 528 point is not refined).
+  if (refined.mesh.radial_nodes > 65 || refined.mesh.circumferential_nodes > 528) {
+    out.summary.push_back(fmt::format("no error bar: the refined {} x {} mesh is beyond the 65 x 528 twb refines a "
+                                      "point on (study.error_estimate: none leaves it out)",
+                                      refined.mesh.radial_nodes, refined.mesh.circumferential_nodes));
+    return;
+  }
+  const std::unique_ptr<BearingModel> fine = model.on_mesh(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
+  std::vector<double> v = fine->interpolated_from(model, u);
+  SteadySolver solver(*fine, newton_settings(model.scene()));
+  const SteadyReport rep = solver.solve(v);
+  out.timings.newton_iterations += rep.iterations;
+  out.timings.jacobian_evaluations += rep.jacobian_evaluations;
+  const std::string mesh = fmt::format("{} x {}", refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
+  if (!rep.converged) {
+    out.summary.push_back(fmt::format("no error bar: no steady state on the refined {} mesh: {}", mesh, rep.message));
+    return;
+  }
+  const std::vector<double> coarse = mesh_error_quantities(state.state);
+  const std::vector<double> fine_values = mesh_error_quantities(fine->describe(v));
+  // Temperatures count from the ambient: their error relative to the rise.
+  const double ambient = model.scene().operating.ambient - 273.15;
+  std::string beyond;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < coarse.size(); ++k) {
+    const MeshErrorEstimate e = richardson_extrapolation(coarse[k], fine_values[k], kTwoGridSafety);
+    state.mesh_errors.push_back(e.extrapolated);
+    state.mesh_errors.push_back(e.error);
+    const double zero = k < 2 ? ambient : 0.0;
+    const double off = std::abs(coarse[k] - e.extrapolated) / std::max(std::abs(e.extrapolated - zero), 1e-300);
+    if (off > 0.05) {
+      beyond += fmt::format("{}{} {:.4g} ({:.1f} % from its mesh-converged {:.4g} ± {:.2g})", beyond.empty() ? "" : ", ",
+                            kMeshErrorQuantities[k], coarse[k], 100.0 * off, e.extrapolated, e.error);
+      worst = std::max(worst, off);
+    }
+  }
+  out.summary.push_back(fmt::format("error bars from the {} mesh: states.csv's *_extrapolated and *_error columns", mesh));
+  if (!beyond.empty()) {
+    // The error falls as h^2: refining by r divides it by r^2.
+    const double r = std::ceil(std::sqrt(worst / 0.05));
+    const MeshSettings& m = model.scene().mesh;
+    out.summary.push_back(fmt::format(
+        "warning: the scene's {} x {} mesh is more than 5 % off: {}; a mesh of about {} x {} would meet 5 %",
+        m.radial_nodes, m.circumferential_nodes, beyond, int(r) * (m.radial_nodes - 1) + 1,
+        int(r) * m.circumferential_nodes));
+  }
+}
+
 void run_point(BearingModel& model, StudyOutcome& out) {
   SteadySolver solver(model, newton_settings(model.scene()));
   std::vector<double> u;
@@ -51,6 +107,13 @@ void run_point(BearingModel& model, StudyOutcome& out) {
     return;
   }
   out.states.push_back(record(model, u, rep));
+  if (model.scene().study.error_estimate == ErrorEstimate::richardson) {
+    try {
+      estimate_point_error(model, u, out.states.back(), out);
+    } catch (const std::exception& e) {
+      out.summary.push_back(std::string("no error bar: ") + e.what());
+    }
+  }
 }
 
 // The name of a parameter's column in the results, with its unit.
@@ -187,6 +250,56 @@ void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings
                          e->fine_fold, e->fine_mesh, e->extrapolated, e->error, elapsed_ms(t0) / 1000.0));
 }
 
+// Each failure criterion's crossing again on the refined mesh (study.error_estimate:
+// richardson), and W_fail's mesh-converged value and error bar: W_d's where distress
+// sets it, else its criterion's.
+void estimate_crossing_errors(const BearingModel& model, const DistressSearchSettings& settings, DistressSearch& found,
+                              const ProgressReport& progress) {
+  const Study& st = model.scene().study;
+  const bool searches = st.type == StudyType::load_sweep || st.type == StudyType::distress_map;
+  DistressRow& row = found.row;
+  if (!searches || st.error_estimate != ErrorEstimate::richardson) return;
+  std::unique_ptr<BearingModel> fine;
+  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
+    if (!row.criterion_loads[c] || found.crossing_states.size() <= c || found.crossing_states[c].second.empty())
+      continue;
+    // A crossing at the start lies below the searched range: no crossing to refine.
+    if (*row.criterion_loads[c] <= settings.load_start) continue;
+    const auto t0 = Clock::now();
+    std::string why;
+    std::optional<MeshErrorEstimate> e;
+    try {
+      if (!fine) {
+        const Scene refined = refined_mesh(model.scene());
+        fine = model.on_mesh(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
+      }
+      e = crossing_estimate(model, *fine, kFailureCriteria[c], found.crossing_states[c].first,
+                            found.crossing_states[c].second, settings.bracket_width, settings.load_end, why);
+    } catch (const std::exception& failure) {
+      why = failure.what();
+    }
+    if (!e) {
+      row.method += fmt::format("; no error bar for {}: {}", limit_name(kFailureCriteria[c]), why);
+      continue;
+    }
+    row.criterion_errors[c] = e->error;
+    if (row.criterion == limit_name(kFailureCriteria[c])) {
+      row.failure_extrapolated = e->extrapolated;
+      row.failure_error = e->error;
+    }
+    if (progress)
+      progress(fmt::format("  error bar: {} crossed at {:.2f} N on {}; extrapolated {:.2f} ± {:.2f} N [{:.1f} s]",
+                           limit_name(kFailureCriteria[c]), e->fine_fold, e->fine_mesh, e->extrapolated, e->error,
+                           elapsed_ms(t0) / 1000.0));
+  }
+  if (row.criterion == "distress") {
+    row.failure_extrapolated = row.extrapolated_load;
+    row.failure_error = row.discretization_error;
+  }
+  if (row.failure_load && row.failure_error)
+    row.failure += fmt::format("; mesh-converged {:.1f} ± {:.1f} N", *row.failure_extrapolated, *row.failure_error);
+}
+
 // How a study's searches run: on how many threads here, journaled where, spread how.
 struct Running {
   int threads = 1;
@@ -228,7 +341,10 @@ SearchDone search_one(const BearingModel& base, const SearchTask& task, const Di
     found.row.method = std::string("solver failure: ") + e.what();
     found.message = found.row.method;
   }
-  if (done.model) estimate_mesh_error(*done.model, settings, found, progress);
+  if (done.model) {
+    estimate_mesh_error(*done.model, settings, found, progress);
+    estimate_crossing_errors(*done.model, settings, found, progress);
+  }
   done.klu_factorizations = SparseLu::thread_counts().factored_since(before) + found.counts.ida_factorizations;
   found.row.parameter = variant.parameter;
   found.row.sliding = variant.sliding;

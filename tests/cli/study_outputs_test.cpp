@@ -44,16 +44,20 @@ TEST(StudyOutputs, DistressMapWritesOneRowPerSpeed) {
   const auto rows = lines_of(dir / "distress.csv");
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0],
-            "speed_rad_s,W_fail_N,criterion,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
-            "W_d_error_N,W_oil_temperature_N,W_flash_temperature_N,W_material_temperature_carrier_N,"
-            "W_material_temperature_washer_N,W_material_temperature_gear_N,W_film_ratio_N,failure,method");
+            "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,bracket_high_N,"
+            "fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,W_oil_temperature_N,W_flash_temperature_N,"
+            "W_material_temperature_carrier_N,W_material_temperature_washer_N,W_material_temperature_gear_N,"
+            "W_film_ratio_N,W_oil_temperature_error_N,W_flash_temperature_error_N,"
+            "W_material_temperature_carrier_error_N,W_material_temperature_washer_error_N,"
+            "W_material_temperature_gear_error_N,W_film_ratio_error_N,failure,method");
   EXPECT_EQ(rows[1].rfind("136,", 0), 0u);
   EXPECT_EQ(rows[2].rfind("545,", 0), 0u);
   EXPECT_EQ(rows[2].find("nan"), std::string::npos);
-  // The error bar is on by default: at 545 rad/s the failure load, its criterion and every
-  // number of W_d up to its error bar are there (the first ten cells), and W_d fails first.
+  // The error bar is on by default: at 545 rad/s the failure load, its criterion, its
+  // error bar and every number of W_d up to its error bar are there (the first twelve
+  // cells), and W_d fails first.
   std::size_t at = 0;
-  for (int cell = 0; cell < 10; ++cell) {
+  for (int cell = 0; cell < 12; ++cell) {
     const std::size_t comma = rows[2].find(',', at);
     ASSERT_NE(comma, std::string::npos) << rows[2];
     EXPECT_GT(comma, at) << "cell " << cell << " is empty: " << rows[2];
@@ -155,7 +159,7 @@ TEST(StudyOutputs, FrictionCoefficientSweepNamesTheCoefficient) {
   EXPECT_EQ(header(dir / "states.csv").rfind("load_N,speed_rad_s,friction_coefficient,T_mean_C,", 0), 0u);
   const auto distress = lines_of(dir / "distress.csv");
   ASSERT_EQ(distress.size(), 4u);  // three coefficients
-  EXPECT_EQ(distress[0].rfind("speed_rad_s,friction_coefficient,W_fail_N,criterion,W_d_N,", 0), 0u);
+  EXPECT_EQ(distress[0].rfind("speed_rad_s,friction_coefficient,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,", 0), 0u);
   EXPECT_EQ(distress[1].rfind("136,0.05,", 0), 0u);
   EXPECT_EQ(distress[3].rfind("136,0.2,", 0), 0u);
   for (const std::string& row : lines_of(dir / "states.csv")) EXPECT_EQ(row.find("nan"), std::string::npos);

@@ -253,6 +253,68 @@ class TwbPlotTest(unittest.TestCase):
         self.assertEqual([(r.extrapolated, r.error) for r in rows], [(201.98, 4.25), (None, None), (None, None)])
         self.assertEqual(rows[0].method, "runaway; fold at 188.381 N, proven")
 
+    def test_failure_load_on_the_map_and_load_axes(self):
+        """distress.csv with W_fail and its criterion (a limit crossed before any distress):
+        the map draws W_fail named by its criterion, the load figures mark it, and --rpm
+        gives the legends' speeds in rpm too."""
+        fail = ("speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,"
+                "bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,W_oil_temperature_N,"
+                "W_flash_temperature_N,W_material_temperature_carrier_N,W_material_temperature_washer_N,"
+                "W_material_temperature_gear_N,W_film_ratio_N,W_oil_temperature_error_N,"
+                "W_flash_temperature_error_N,W_material_temperature_carrier_error_N,"
+                "W_material_temperature_washer_error_N,W_material_temperature_gear_error_N,W_film_ratio_error_N,"
+                "failure,method")
+        d = self.results_dir(
+            "failure",
+            distress=[fail,
+                      "136,650,flash_temperature,655,3,,,,,,,,,650,,,,,,3,,,,,"
+                      "\"fails at 650.00 N by the flash temperature (no thermo-viscous distress up to 1300 N)\","
+                      "no fold up to 1300 N (gradual heating)",
+                      "545,188.4,distress,202,4.3,188.4,188.2,188.6,188.4,198.6,202,4.3,,,,,,,,,,,,,"
+                      "fails at 188.40 N by thermo-viscous distress,runaway; fold at 188.4 N"])
+        rows = tp.read_distress(os.path.join(d, "distress.csv"))
+        self.assertEqual([(r.failure, r.criterion) for r in rows], [(650.0, "flash_temperature"), (188.4, "distress")])
+        out_dir = os.path.join(self.tmp, "figs_failure")
+        result = plot(d, "--out", out_dir, "--rpm")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        text = self.svg_text(os.path.join(out_dir, "distress_map.svg"))
+        self.assertIn("flash temperature", text)
+        self.assertIn("a limit crossed first", text)
+        text = self.svg_text(os.path.join(out_dir, "fig07_mean_temperature_vs_load.svg"))
+        self.assertIn("failure load", text)
+        self.assertIn(f"{545 * 60 / (2 * math.pi):.4g} rpm", text)
+        self.assertNotIn("545 rad/s", text)
+
+    def test_limit_curves_beside_the_fold(self):
+        """fold_curve.csv with failure criteria's crossings (their name in the fold column):
+        each curve is drawn and labelled by its criterion, and the safe region is below the
+        lowest curve, also where no fold exists (gradual heating is not read as safe)."""
+        tail = "T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff"
+        d = self.results_dir(
+            "limits",
+            distress=["speed_rad_s,W_d_N,bracket_low_N,bracket_high_N,fold_N,method",
+                      "100,,,,,no fold up to 4000 N (gradual heating)",
+                      "600,424.3,424,424.7,424.3,runaway; fold at 424.3 N"])
+        curve = [f"speed_rad_s,W_fold_N,fold,{tail}",
+                 "600,424.3,distress,90,180,2.7,0.014,0.028",
+                 "433,348.5,cusp,95,190,2.5,0.02,0.03",
+                 "100,296.8,flash_temperature,85,180,4.2,0.0,0.02",
+                 "430,346.5,flash_temperature,95,180,2.6,0.02,0.03",
+                 "100,683.9,material_temperature:washer,110,300,1.5,0.1,0.05",
+                 "430,348.7,material_temperature:washer,96,195,2.5,0.02,0.03"]
+        with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
+            f.write("\n".join(curve) + "\n")
+        out_dir = os.path.join(self.tmp, "figs_limits")
+        result = plot(d, "--out", out_dir)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        text = self.svg_text(os.path.join(out_dir, "fold_curve.svg"))
+        for label in ("flash temperature crossed", "washer's material temperature crossed",
+                      "safe: below every criterion", "fails: past the lowest curve"):
+            self.assertIn(label, text)
+        column, rows = tp.read_fold_curve(os.path.join(d, "fold_curve.csv"))
+        self.assertEqual(sorted({r["fold"] for r in rows}),
+                         ["cusp", "distress", "flash_temperature", "material_temperature:washer"])
+
     def test_fold_curve_as_safe_operating_region(self):
         """fold_curve.csv of a distress_curve study: the figure shades the safe region,
         marks the cusp (in rpm with --rpm) and keeps the search without W_d as '> load_end'

@@ -2,7 +2,7 @@
 //   speed_rad_s, <param>, sliding, W_fail_N, criterion, W_d_N, bracket_low_N, bracket_high_N,
 //   fold_N, W_d_fine_N, W_d_extrapolated_N, W_d_error_N, W_oil_temperature_N,
 //   W_flash_temperature_N, W_material_temperature_carrier_N, ..._washer_N, ..._gear_N,
-//   W_film_ratio_N, failure, method
+//   W_film_ratio_N, the same six as W_<criterion>_error_N, failure, method
 // W_fail is where the bearing fails: the least of W_d and the loads where the branch
 // continued from the start first crosses a failure criterion (docs/physics.md section 8);
 // criterion names the one that sets it.
@@ -43,6 +43,11 @@ struct DistressRow {
   std::array<std::optional<double>, std::size(kFailureCriteria)> criterion_loads;
   // "fails at 307.6 N by the flash temperature (no thermo-viscous distress up to 4000 N)".
   std::string failure;
+  // study.error_estimate: richardson: each crossing's error bar (the crossing again on the
+  // mesh refined by two, as W_d's), and W_fail's mesh-converged value and error bar (W_d's
+  // or its criterion's), N.
+  std::array<std::optional<double>, std::size(kFailureCriteria)> criterion_errors;
+  std::optional<double> failure_extrapolated, failure_error;
 };
 
 // The load where the criterion is crossed (kFailureCriteria order), if it is.

@@ -25,10 +25,22 @@ struct SolvedState {
   // lightest load, before distress) or "hot" (past distress: where the runaway settled
   // and continued from there). Empty where a study follows no branch (point, transient).
   std::string branch;
+  // The discretization error of the reported quantities (a point study with
+  // study.error_estimate: richardson): the state again on the mesh refined by two, each
+  // quantity's Richardson extrapolation and its error bar (richardson.h), in the order of
+  // kMeshErrorQuantities: (extrapolated, error) pairs; empty without the estimate.
+  std::vector<double> mesh_errors;
   // Film 1 and film 2 on their polar grids when the scene asks for them
   // (output.fields); empty otherwise. Written by fields_table.h.
   std::vector<FilmFields> fields;
 };
+
+// The quantities a state's error bar covers, as states.csv names them (their columns
+// <name>_extrapolated and <name>_error follow the state's own where a state has them).
+inline constexpr const char* kMeshErrorQuantities[] = {"T_mean_C", "T_max_C", "hmin_over_sigma", "torque_Nm",
+                                                       "f_eff"};
+// Those quantities of a state, in that order (temperatures in degC).
+std::vector<double> mesh_error_quantities(const BearingState& state);
 
 // The table states.csv is written from (result_table.h).
 ResultTable states_table(const std::vector<SolvedState>& rows, const std::string& parameter_column = {},

@@ -33,6 +33,49 @@ def searched_up_to(method):
     return float(m.group(1)) if m else None
 
 
+LIMIT_LABELS = {
+    "oil_temperature": "oil's maximum temperature",
+    "flash_temperature": "flash temperature",
+    "material_temperature:carrier": "carrier's material temperature",
+    "material_temperature:washer": "washer's material temperature",
+    "material_temperature:gear": "gear's material temperature",
+    "film_ratio": "least film ratio",
+}
+LIMIT_STYLES = {"oil_temperature": "tab:purple", "flash_temperature": "tab:orange",
+                "material_temperature:carrier": "tab:brown", "material_temperature:washer": "tab:olive",
+                "material_temperature:gear": "tab:cyan", "film_ratio": "tab:pink"}
+
+
+def draw_limit_curves(ax, rows, scale, distress, single, color, tag, ends):
+    """Each failure criterion's crossing along the curve, labelled by its criterion; with
+    one curve the safe region: below the lowest of W_d and the limits, wherever one is
+    known (a limit ends where the fold comes first)."""
+    curves = {}
+    for r in rows:
+        if r["fold"] in LIMIT_LABELS:
+            curves.setdefault(r["fold"], []).append((scale * r["p"], r["load"]))
+    lines = [distress] if len(distress) else []
+    for kind, points in curves.items():
+        points = np.array(sorted(points), dtype=float).reshape(-1, 2)
+        ax.plot(points[:, 0], points[:, 1], color=LIMIT_STYLES[kind] if single else color, linestyle="-."
+                if not single else "-", linewidth=1.5, label=f"{LIMIT_LABELS[kind]} crossed" + tag)
+        lines.append(points)
+    if not single or not curves:
+        return
+    xs = np.concatenate([line[:, 0] for line in lines] + ([np.array(ends)] if ends else []))
+    x = np.linspace(xs.min(), xs.max(), 400)
+    lowest = np.full_like(x, np.inf)
+    for line in lines:
+        inside = (x >= line[:, 0].min()) & (x <= line[:, 0].max())
+        lowest[inside] = np.minimum(lowest[inside], np.interp(x[inside], line[:, 0], line[:, 1]))
+    known = np.isfinite(lowest)
+    ax.fill_between(x, 0, np.where(known, lowest, np.nan), color="tab:green", alpha=0.12, linewidth=0,
+                    label="safe: below every criterion")
+    top = max(float(np.nanmax(np.where(known, lowest, np.nan))) * 1.15, ax.get_ylim()[1])
+    ax.fill_between(x, np.where(known, lowest, np.nan), top, color="tab:red", alpha=0.06, linewidth=0,
+                    label="fails: past the lowest curve")
+
+
 def figure_fold_curve(data, name, column, rows):
     """The fold curve of a distress_curve study as the safe operating region: W_d against
     the parameter (solid), its mesh-converged value with the error bar where the study has
@@ -40,7 +83,9 @@ def figure_fold_curve(data, name, column, rows):
     meet and sudden distress ends; below W_d no sudden distress, between the two folds a
     bearing that once passed W_d stays hot. A family of curves (one per value of a second
     parameter) gets a colour per curve."""
-    fig, ax = new_figure("Safe operating region: distress load along the curve")
+    fig, ax = new_figure("Safe operating region: distress load along the curve"
+                         if not any(r["fold"] in LIMIT_LABELS for r in rows)
+                         else "Safe operating region: below distress and every limit")
     scale, xlabel = (speed_axis(data) if column == "speed_rad_s" else (1.0, FOLD_CURVE_PARAMETERS[column]))
     # The whole range the study searched: its end searches are distress.csv's rows.
     ends = [scale * d.speed for d in data.distress] if column == "speed_rad_s" else []
@@ -65,9 +110,10 @@ def figure_fold_curve(data, name, column, rows):
         if len(distress):
             ax.plot(distress[:, 0], distress[:, 1], color=color, linewidth=1.8,
                     label=r"distress load $W_d$ (fold)" + tag)
-            ax.fill_between(distress[:, 0], 0, distress[:, 1], color="tab:green" if single else color,
-                            alpha=0.15 if single else 0.06, linewidth=0,
-                            label="below $W_d$: no sudden distress" if single else None)
+            if not (single and any(r["fold"] in LIMIT_LABELS for r in mine)):
+                ax.fill_between(distress[:, 0], 0, distress[:, 1], color="tab:green" if single else color,
+                                alpha=0.15 if single else 0.06, linewidth=0,
+                                label="below $W_d$: no sudden distress" if single else None)
         # The mesh-converged W_d (Richardson) with its error bar, where the study has it.
         # A fold without its bar (refused, or the estimate off there) breaks the line (NaN).
         converged = np.array(sorted((scale * r["p"],
@@ -105,20 +151,21 @@ def figure_fold_curve(data, name, column, rows):
                 ax.annotate(f"cusp {x:.4g}{unit}, {r['load']:.4g} N", (x, r["load"]), textcoords="offset points",
                             xytext=(8, -14), fontsize="small", color="black" if single else color)
             if r["fold"] == "cusp" and single and len(distress):
-                # The side of the cusp the curve does not reach has no fold: gradual heating.
+                # The side of the cusp the curve does not reach has no fold: gradual heating,
+                # which is safe only below the limits' curves (drawn below).
                 left = distress[:, 0].mean() > x
-                xmin, xmax = ax.get_xlim()
-                if ends:
-                    xmin, xmax = min(xmin, min(ends)), max(xmax, max(ends))
-                ax.axvspan(xmin if left else x, x if left else xmax, color="0.85", alpha=0.5, linewidth=0,
-                           label="no fold: gradual heating")
-                ax.set_xlim(xmin, xmax)
+                ax.annotate("no fold: gradual heating", (x, r["load"]), textcoords="offset points",
+                            xytext=(-110 if left else 12, 14), fontsize="small", color="0.35")
+        draw_limit_curves(ax, mine, scale, distress, single, color, tag, ends)
     if not single:
         ax.plot([], [], color="0.3", linestyle="--", label="recovery folds (dashed)")
     ax.set_xlabel(xlabel)
     ax.set_ylabel("load (N)")
     ax.set_ylim(bottom=0)
-    ax.legend(fontsize="small", framealpha=0.85, loc="lower right")
+    limits = any(r["fold"] in LIMIT_LABELS for r in rows)
+    # With the limits' curves the region's low loads are the answer: the legend goes up.
+    ax.legend(fontsize="x-small" if limits else "small", framealpha=0.85,
+              loc="upper right" if limits else "lower right")
     return fig
 
 
@@ -127,14 +174,16 @@ def figure_distress_map(data):
     for d in data.distress:
         series.setdefault((d.parameter, d.sliding), []).append(d)
     plottable = [k for k, rows in series.items()
-                 if any(r.w_d is not None or r.fold is not None for r in rows)]
+                 if any(r.w_d is not None or r.fold is not None or r.failure is not None for r in rows)]
     if not plottable:
         return None
+    limited = any(r.failure is not None and r.criterion not in (None, "distress") for r in data.distress)
     plottable.sort(key=lambda k: (k[0] is not None, "" if k[0] is None else k[0][0],
                                   -math.inf if k[0] is None or k[0][1] is None else k[0][1],
                                   k[1] or ""))
     style = Style(range(len(plottable)))
-    fig, ax = new_figure(r"Distress load $W_d$ vs speed: below it, no sudden distress")
+    fig, ax = new_figure(r"Distress load $W_d$ vs speed: below it, no sudden distress" if not limited
+                         else r"Where the washer fails: $W_{fail}$ (first criterion) and $W_d$ vs speed")
     scale, xlabel = speed_axis(data)
     any_fold = any_estimate = any_beyond = False
     for i, key in enumerate(plottable):
@@ -169,6 +218,14 @@ def figure_distress_map(data):
             ax.errorbar([scale * r.speed for r in converged], [r.extrapolated for r in converged],
                         yerr=[r.error for r in converged], color=color, marker="s", markersize=5,
                         markerfacecolor="none", linestyle="--", linewidth=1.0, capsize=4)
+        # Where a limit, not distress, sets the failure load: drawn with its criterion.
+        failing = [r for r in rows if r.failure is not None and r.criterion not in (None, "distress")]
+        if failing:
+            ax.plot([scale * r.speed for r in failing], [r.failure for r in failing], color=color, marker="X",
+                    markersize=8, linestyle="-." if len(failing) > 1 else "none", linewidth=1.0)
+            for r in failing:
+                ax.annotate(LIMIT_LABELS.get(r.criterion, r.criterion), (scale * r.speed, r.failure),
+                            textcoords="offset points", xytext=(7, 5), fontsize="x-small", color=color)
         folds = [r for r in rows if r.fold is not None]
         if folds:
             any_fold = True
@@ -191,5 +248,10 @@ def figure_distress_map(data):
     if any_estimate:
         handles.append(Line2D([], [], color="black", linestyle="--", marker="s", markerfacecolor="none"))
         labels.append("mesh-converged W_d (Richardson) ± error")
-    ax.legend(handles, labels, fontsize="small", framealpha=0.85)
+    if limited:
+        handles.append(Line2D([], [], color="black", linestyle="none", marker="X"))
+        labels.append("$W_{fail}$: a limit crossed first (criterion named)")
+    # "best": the markers of searches without W_d sit at the top, where a fixed corner
+    # would cover them.
+    ax.legend(handles, labels, fontsize="small", framealpha=0.85, loc="best")
     return fig

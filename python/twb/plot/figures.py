@@ -8,7 +8,7 @@ from .distress import figure_distress_map, figure_fold_curve
 from .sliding import figure_sliding
 from .states import (LOAD_FIGURES, figure_contact_vs_hmin, figure_stribeck, figure_stribeck_by_friction,
                      figure_vs_load)
-from .style import parameter_label, save, speed_key, speed_label
+from .style import parameter_label, save, show_speeds_in_rpm, speed_key, speed_label
 from .tables import SLIDING_LABELS
 from .transient import figure_trajectory
 
@@ -17,6 +17,7 @@ def make_figures(data, out_dir, formats):
     """Every figure the merged results allow, as files FIGDIR/<stem>.<format>; returns
     their paths in the order written (the field maps are make_field_maps's)."""
     written = []
+    show_speeds_in_rpm(getattr(data, "rpm", False))
     if data.states["load_N"].size:
         for stem, column, ylabel, title, number, logy in LOAD_FIGURES:
             save(figure_vs_load(data, column, ylabel, title, number, logy), out_dir, stem,

@@ -103,15 +103,25 @@ def distress_lines(data):
             if d.sliding is None and d.w_d is not None]
 
 
+def failure_lines(data):
+    """(speed, W_fail) where a limit, not distress, sets the failure load: the washer
+    fails there although the branch goes on."""
+    return [(speed_key(d.speed), d.failure) for d in data.distress
+            if d.sliding is None and d.failure is not None and d.criterion not in (None, "distress")]
+
+
 def figure_vs_load(data, column, ylabel, title, paper_figure, logy=False):
     fig, ax = new_figure(title, paper_figure)
     unconverged = draw_by_speed(ax, data, "load_N", column, logy=logy)
     marks = distress_lines(data)
     for key, _, w_d in marks:
         ax.axvline(w_d, color=data.speed_style.colors[key], linestyle=":", linewidth=1.2)
+    fails = failure_lines(data)
+    for key, w_fail in fails:
+        ax.axvline(w_fail, color=data.speed_style.colors[key], linestyle="-.", linewidth=1.2)
     ax.set_xlabel(LOAD_LABEL)
     ax.set_ylabel(ylabel)
-    finish_legend(ax, unconverged, distress=bool(marks))
+    finish_legend(ax, unconverged, distress=bool(marks), failure=bool(fails))
     return fig
 
 

@@ -4,6 +4,7 @@ A speed keeps its colour and marker in every figure, and the same results give t
 files, so these are decided in one place.
 """
 
+import math
 import os
 
 import matplotlib.pyplot as plt
@@ -32,7 +33,18 @@ def speed_key(speed):
     return float(f"{speed:.6g}")
 
 
+# Whether legends give speeds in rpm (twb_plot.py --rpm), set by make_figures for the
+# figures it draws, as the speed axes are.
+_speeds = {"rpm": False}
+
+
+def show_speeds_in_rpm(on):
+    _speeds["rpm"] = bool(on)
+
+
 def speed_label(speed):
+    if _speeds["rpm"]:
+        return f"{speed * 60.0 / (2.0 * math.pi):.4g} rpm"
     return f"{speed:g} rad/s"
 
 
@@ -57,11 +69,14 @@ def parameter_label(parameter):
     return PARAMETER_FORMATS.get(name, name + " = {:g}").format(value)
 
 
-def finish_legend(ax, unconverged=False, distress=False):
+def finish_legend(ax, unconverged=False, distress=False, failure=False):
     handles, labels = ax.get_legend_handles_labels()
     if distress:
         handles.append(Line2D([], [], color="black", linestyle=":", linewidth=1.2))
         labels.append(r"distress load $W_d$")
+    if failure:
+        handles.append(Line2D([], [], color="black", linestyle="-.", linewidth=1.2))
+        labels.append(r"failure load $W_{fail}$ (a limit crossed)")
     if unconverged:
         handles.append(Line2D([], [], color="black", linestyle="none", marker="o",
                               markerfacecolor="none"))

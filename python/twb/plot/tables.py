@@ -154,7 +154,11 @@ FOLD_CURVE_TAIL = ("W_fold_N", "fold", "T_mean_C", "T_max_C", "hmin_over_sigma",
 # W_d's error bar along the curve (study.error_estimate: richardson): after the tail in
 # files written since it exists, empty cells where a fold has none.
 FOLD_CURVE_ERROR = ("W_fold_fine_N", "W_fold_extrapolated_N", "W_fold_error_N")
-FOLD_KINDS = ("distress", "recovery", "cusp", "turn")
+# The failure criteria whose crossing a distress curve continues beside its fold (the row's
+# load is where the criterion is crossed on the cool branch).
+LIMIT_KINDS = ("oil_temperature", "flash_temperature", "material_temperature:carrier",
+               "material_temperature:washer", "material_temperature:gear", "film_ratio")
+FOLD_KINDS = ("distress", "recovery", "cusp", "turn") + LIMIT_KINDS
 
 
 def read_fold_curve(path):

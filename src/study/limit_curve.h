@@ -1,0 +1,51 @@
+// A failure criterion's crossing continued in a second parameter (study type
+// distress_curve, docs/physics.md section 8): beside the fold curve, the load where the
+// cool branch crosses the oil's, the flash or a material's temperature limit, or the least
+// film ratio, as the curve parameter goes across its range. From the crossing at one end,
+// each step sets the parameter a step further and corrects the crossing's state by
+// Newton at its load (a constant predictor; the step is halved where Newton needs more
+// than a dozen iterations), then moves the load to the crossing there by secant steps and
+// the bracket narrowed to the search's width (failure_load.h: crossing_near). The curve
+// ends at the range's end, where the crossing passes load_end, or where the branch folds
+// before reaching it (there the fold curve is the boundary).
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/bearing_model.h"
+#include "twb/model/bearing_state.h"
+
+namespace twb {
+
+struct LimitCurveSettings {
+  int steps = 24;               // equal steps across the range, each halved up to 6 times where needed
+  double bracket_width = 0.002;  // relative: how closely each crossing is located
+  double load_end = 0.0;        // N: above it a crossing is not followed
+  // W_d at a parameter value where the cool branch folds, none where it does not (past a
+  // cusp): a crossing at or above it would lie on the hot branch, and the curve ends
+  // there (the fold comes first).
+  std::function<std::optional<double>(double)> fold_load;
+};
+
+struct LimitCurvePoint {
+  double p = 0.0;  // the curve parameter (SI)
+  BearingState state;  // at the crossing; state.load is the crossing's load
+};
+
+struct LimitCurve {
+  LimitKind kind = LimitKind::oil_temperature;
+  std::vector<LimitCurvePoint> points;  // from the start, the first point the start's crossing
+  std::string ended;                    // why it ended before the range's end, if it did
+  long solves = 0;                      // steady solves (Newton corrections, continuations)
+};
+
+// From `crossing` (load, state) at parameter `from` to `to`. The model is left at the
+// last point's parameter and load.
+LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKind kind, double from, double to,
+                             std::pair<double, std::vector<double>> crossing, const LimitCurveSettings& settings);
+
+}  // namespace twb
