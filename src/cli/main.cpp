@@ -65,6 +65,22 @@ std::string profile_table(const twb::AsperityParameters& a) {
   return out;
 }
 
+// The oil's Roelands constants fitted to its data sheet or table, and the fit's error at
+// every given point (docs/physics.md section 5).
+std::string viscosity_fit_table(const twb::Lubricant& l) {
+  if (!l.viscosity_source) return {};
+  const twb::ViscositySource& src = *l.viscosity_source;
+  std::string out = fmt::format("viscosity fitted to the scene's {}: mu_infinity = {:.6g} Pa s, G0 = {:.6g}, S0 = "
+                                "{:.6g}; largest error over the fit {:.3g} %\n",
+                                src.kind == "data_sheet" ? "data sheet" : "table", l.mu_infinity, l.g0, l.s0,
+                                100.0 * src.largest_error);
+  for (std::size_t k = 0; k < src.temperatures.size(); ++k)
+    out += fmt::format("  {:7.2f} degC: given {:.6g} Pa s, fitted {:.6g} Pa s ({:+.3f} %)\n",
+                       src.temperatures[k] - 273.15, src.viscosities[k],
+                       src.viscosities[k] * (1.0 + src.relative_errors[k]), 100.0 * src.relative_errors[k]);
+  return out;
+}
+
 void print_warnings(const twb::Scene& scene, std::ostream& out) {
   for (const std::string& w : scene.warnings) out << "twb: warning: " << w << "\n";
 }
@@ -72,7 +88,8 @@ void print_warnings(const twb::Scene& scene, std::ostream& out) {
 int check(const std::string& path, const std::vector<std::string>& overrides) {
   const twb::Scene scene = twb::load_scene(path, overrides);
   const twb::BearingModel model(scene);
-  std::cout << twb::describe_scene(scene) << "\n" << profile_table(scene.asperities) << unknowns_table(model.layout())
+  std::cout << twb::describe_scene(scene) << "\n" << profile_table(scene.asperities)
+            << viscosity_fit_table(scene.lubricant) << unknowns_table(model.layout())
             << fmt::format("jacobian nonzeros: {}\n", model.pattern().nnz());
   // A scene that extends others: where each value was written.
   const std::vector<twb::ValueSource> sources = twb::scene_value_sources(path, overrides);

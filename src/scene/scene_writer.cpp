@@ -129,13 +129,6 @@ void write_operation(Writer& w, const Scene& s) {
     w.entry(2, "mu_infinity", quantity(l.mu_infinity, "Pa s"));
     w.entry(2, "G0", quantity(l.g0, "1"));
     w.entry(2, "S0", quantity(l.s0, "1"));
-    if (const auto& src = l.viscosity_source) {
-      w.line(2, fmt::format("# fitted at load time to the scene's {} (largest error {:.3g} % over the fit):",
-                            src->kind == "data_sheet" ? "data sheet" : "table", 100.0 * src->largest_error));
-      for (std::size_t k = 0; k < src->temperatures.size(); ++k)
-        w.line(2, fmt::format("#   {:.2f} degC: given {:.6g} Pa s, fitted {:+.3f} %", src->temperatures[k] - 273.15,
-                              src->viscosities[k], 100.0 * src->relative_errors[k]));
-    }
   } else {
     w.entry(2, "value", quantity(l.constant_viscosity, "Pa s"));
   }

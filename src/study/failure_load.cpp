@@ -161,12 +161,23 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
   if (crossings) crossings->assign(std::size(kFailureCriteria), {});
   if (branch.empty()) return;
   const OperatingLimits limits = OperatingLimits::of(model.scene());
+  const bool thermal = model.scene().effects.thermal;
+  // Each branch state described once (an assembly each), for every criterion; only the
+  // criteria the scene applies.
+  std::vector<LimitValues> values;
+  auto values_at = [&](std::size_t k) -> const LimitValues& {
+    while (values.size() <= k) {
+      model.set_load(branch[values.size()].first);
+      values.push_back(LimitValues::of(model.describe(branch[values.size()].second), thermal));
+    }
+    return values[k];
+  };
   for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
     const LimitKind kind = kFailureCriteria[c];
+    if (!failure_margin(kind, LimitValues{.thermal = thermal}, limits)) continue;  // not applied
     std::optional<double> previous;
     for (std::size_t k = 0; k < branch.size(); ++k) {
-      model.set_load(branch[k].first);
-      const std::optional<double> m = margin_of(model, branch[k].second, kind, limits);
+      const std::optional<double> m = failure_margin(kind, values_at(k), limits);
       if (!m) break;  // the scene does not apply this criterion
       if (*m <= 0.0) {
         // Past it already at the start: the crossing lies at or below the searched range.
