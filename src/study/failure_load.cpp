@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -75,7 +76,13 @@ std::optional<double> margin_of(const BearingModel& model, std::span<const doubl
 // fb <= 0), the branch continued from `segment`'s states.
 double locate_crossing(BearingModel& model, BranchSegment& segment, LimitKind kind, const OperatingLimits& limits,
                        double width, double a, double fa, double b, double fb) {
-  auto margin = [&](double load) { return *margin_of(model, segment.at(load), kind, limits); };
+  // Each load's margin kept: the bracket's ends are read back without another solve.
+  std::map<double, double> known{{a, fa}, {b, fb}};
+  auto margin = [&](double load) {
+    const auto [it, fresh] = known.try_emplace(load, 0.0);
+    if (fresh) it->second = *margin_of(model, segment.at(load), kind, limits);
+    return it->second;
+  };
   // The bracket [a, b] is narrowed until its relative width is the search's; TOMS 748
   // converges superlinearly on the smooth pieces of a margin (a maximum over nodes is
   // piecewise smooth), so that takes a few solves.

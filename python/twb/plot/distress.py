@@ -198,9 +198,11 @@ def figure_distress_map(data):
             any_beyond = True
             ax.plot([scale * b[0] for b in beyond], [b[1] for b in beyond], linestyle="none", marker="^",
                     markersize=9, markerfacecolor="none", markeredgecolor=color)
-            for speed, load in beyond:
-                ax.annotate(f"> {load:g} N", (scale * speed, load), textcoords="offset points", xytext=(7, -4),
-                            fontsize="small", color=color)
+            # Neighbouring speeds' labels alternate above and below their markers, and each
+            # series' a little further down, so that labels at one load do not overprint.
+            for j, (speed, load) in enumerate(beyond):
+                ax.annotate(f"> {load:g} N", (scale * speed, load), textcoords="offset points",
+                            xytext=(7, (6 if j % 2 else -12) - 9 * i), fontsize="x-small", color=color)
         if found:
             x = [scale * r.speed for r in found]
             y = [r.w_d for r in found]
