@@ -162,10 +162,6 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
   }
 }
 
-}  // namespace twb
-
-namespace twb {
-
 // A body's hottest face (docs/physics.md section 8, material temperature): the face
 // temperature at a film node lies on the heat path between the film node and the body's
 // own node, body_resistance/R of the way from the body's; the carrier's and gear's faces

@@ -614,7 +614,7 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
   if (!settings.fold_only && !out.failed) {
     // The branch from the start up to where it ends: the states continuation accepted,
     // those arclength passed before the turn, and the fold.
-    BranchStates branch = cool;
+    BranchStates branch = std::move(cool);
     for (auto& state : approach)
       if (branch.empty() || state.first > branch.back().first) branch.push_back(std::move(state));
     if (out.fold && out.fold->u.size() >= std::size_t(model.size()) &&
