@@ -65,7 +65,8 @@ bool augmented_newton(SteadySystem& system, const ContinuationMetric& metric, st
       return false;
     }
     if (accept && !accept(x)) return false;
-    std::vector<double> null_vector = augmented.null_vector(x);
+    auto [null_vector, curvature] = with_curvature ? augmented.null_vector_and_curvature(x)
+                                                   : std::pair{augmented.null_vector(x), fold.curvature};
     if (null_vector.size() != n) {
       fold.message = "minimally augmented Newton: the bordered matrix is singular at its root";
       return false;
@@ -75,7 +76,7 @@ bool augmented_newton(SteadySystem& system, const ContinuationMetric& metric, st
     fold.null_vector = std::move(null_vector);
     fold.residual_norm = rep.residual_norm;
     fold.method = FoldMethod::minimally_augmented;
-    if (with_curvature) fold.curvature = augmented.fold_curvature(x);
+    fold.curvature = curvature;
     return true;
   } catch (const std::exception& e) {
     fold.message = std::string("minimally augmented Newton failed: ") + e.what();
@@ -146,7 +147,7 @@ bool arclength_bracket(SteadySystem& system, const ContinuationMetric& metric, c
 }  // namespace
 
 FoldPoint locate_fold_near(SteadySystem& system, std::span<const double> u, double lambda,
-                           std::span<const double> null_guess, const NewtonSettings& newton) {
+                           std::span<const double> null_guess, NewtonSettings newton, double load_accuracy) {
   FoldPoint fold;
   if (null_guess.size() != u.size() || Index(u.size()) != system.size()) {
     fold.message = "locate_fold_near: the guess and its null vector must have one entry per unknown";
@@ -156,6 +157,10 @@ FoldPoint locate_fold_near(SteadySystem& system, std::span<const double> u, doub
   const ContinuationMetric metric = ContinuationMetric::of(system, std::abs(lambda));
   std::vector<double> x(u.begin(), u.end());
   x.push_back(lambda / metric.parameter_scale());
+  if (load_accuracy > 0.0) {
+    newton.watched = Index(u.size());
+    newton.watched_step = load_accuracy / metric.parameter_scale();
+  }
   if (!augmented_newton(system, metric, x, null_guess, newton, true, {}, fold)) {
     FoldPoint failed;
     failed.message = fold.message;

@@ -66,8 +66,10 @@ FoldPoint locate_fold(SteadySystem& system, const ContinuationMetric& metric, co
 // interpolated (5 % off in load on the paper's bearing). Converged: u non-empty, method
 // minimally_augmented, curvature set (the caller decides whether the fold is of the
 // kind it wanted). Otherwise u empty and message says why. Leaves the system's
-// parameter at the returned λ, or at `lambda`.
+// parameter at the returned λ, or at `lambda`. With load_accuracy > 0 (in λ's units)
+// Newton stops once λ is settled to about that (NewtonSettings::watched), before F and
+// g meet the residual tolerance: for a caller that needs the fold's load alone.
 FoldPoint locate_fold_near(SteadySystem& system, std::span<const double> u, double lambda,
-                           std::span<const double> null_guess, const NewtonSettings& newton);
+                           std::span<const double> null_guess, NewtonSettings newton, double load_accuracy = 0.0);
 
 }  // namespace twb

@@ -94,10 +94,12 @@ void FoldSystem::evaluate(std::span<const double> x, std::span<double> residual,
   matrix().assemble(base_jac, column, gradient, -parameter_part * scale, jacobian);
 }
 
-double FoldSystem::fold_curvature(std::span<const double> x) const {
+double FoldSystem::fold_curvature(std::span<const double> x) const { return null_vector_and_curvature(x).second; }
+
+std::pair<std::vector<double>, double> FoldSystem::null_vector_and_curvature(std::span<const double> x) const {
   const auto n = std::size_t(base().size());
   std::vector<double> f(n), base_jac(std::size_t(base().pattern().nnz())), vg;
-  if (!solve_bordered(x, f, base_jac, vg)) return std::numeric_limits<double>::quiet_NaN();
+  if (!solve_bordered(x, f, base_jac, vg)) return {{}, std::numeric_limits<double>::quiet_NaN()};
   std::vector<double> w(n + 1, 0.0);
   w[n] = 1.0;
   lu_->solve_transposed(w);
@@ -111,7 +113,10 @@ double FoldSystem::fold_curvature(std::span<const double> x) const {
     bend += gradient[k] * v[k];
     push += w[k] * f_lambda[k];
   }
-  return bend / push;
+  vg.resize(n);
+  const double size = metric().state_norm(vg);
+  for (double& c : vg) c /= size;
+  return {std::move(vg), bend / push};
 }
 
 std::vector<double> FoldSystem::null_vector(std::span<const double> x) const {

@@ -29,6 +29,7 @@
 
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "solver/bordered_system.h"
@@ -51,6 +52,9 @@ class FoldSystem final : public BorderedSystem {
   // branch's turning point back to the cool one); κ changes sign at a cusp. NaN where
   // the bordered matrix is singular.
   double fold_curvature(std::span<const double> x) const;
+  // Both at once (one bordered factorization): the null vector, empty where the
+  // bordered matrix is singular, and κ.
+  std::pair<std::vector<double>, double> null_vector_and_curvature(std::span<const double> x) const;
 
   // A singular bordered matrix (far from the fold) gives a non-finite residual, which
   // KINSOL's line search treats as a step too long.

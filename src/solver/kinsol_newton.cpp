@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -48,6 +49,14 @@ struct KinsolNewton::Callbacks {
   // point gets the residual alone (if the guess was wrong, KINSOL's Jacobian request
   // assembles the point again: slower, never wrong).
   std::vector<double> step_norms;  // ‖F‖∞ at the points assembled for a Jacobian
+  // NewtonSettings::watched: the last Newton point's value of that unknown, and whether a
+  // point met the watched criterion (KINSOL is then stopped by a failed residual call,
+  // and `point` holds that point).
+  Index watched = -1;
+  double watched_step = 0.0, watched_residual = 0.0;
+  std::optional<double> last_watched;
+  bool watched_settled = false;
+  bool full_steps = false;  // KINSOL runs without a line search
   double tolerance = 0.0;
   bool expects_convergence() const {
     const std::size_t k = step_norms.size();
@@ -71,6 +80,19 @@ struct KinsolNewton::Callbacks {
     point.clear();
     step_norms.clear();
     next_with_jacobian = true;
+    last_watched.reset();
+    watched_settled = false;
+  }
+  // At a new Newton point u: true when the step to it settled the watched unknown.
+  bool settles_watched(std::span<const double> u) {
+    if (watched < 0) return false;
+    const double value = u[std::size_t(watched)];
+    const bool small_step = last_watched && std::abs(value - *last_watched) <= watched_step;
+    last_watched = value;
+    if (!small_step) return false;
+    assemble_at(u, false);
+    watched_settled = max_norm(point_residual) <= watched_residual;
+    return watched_settled;
   }
 };
 
@@ -86,6 +108,9 @@ int residual_fn(N_Vector y, N_Vector f, void* data) {
     std::span<const double> u(N_VGetArrayPointer(y), n);
     std::span<double> r(N_VGetArrayPointer(f), n);
     const bool newton_point = cb->next_with_jacobian;
+    // Every call of a full-step run is at a new iterate (a line search's are trials); a
+    // failed call stops KINSOL, and solve() takes the point from the cache.
+    if ((newton_point || cb->full_steps) && cb->settles_watched(u)) return -1;
     cb->assemble_at(u, newton_point && !cb->expects_convergence());
     cb->next_with_jacobian = false;
     std::copy(cb->point_residual.begin(), cb->point_residual.end(), r.begin());
@@ -253,12 +278,17 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
         throw std::invalid_argument(fmt::format("pseudo-time shift on row {}, which has no diagonal entry", k));
   callbacks_->shift = shift;
   callbacks_->tolerance = tolerance;
+  callbacks_->watched = s.watched;
+  callbacks_->watched_step = s.watched_step;
+  callbacks_->watched_residual = s.watched_residual;
   callbacks_->forget();
 
   auto run = [&](int strategy, int max_iterations) {
     check_flag(KINSetNumMaxIters(kin_, max_iterations), "KINSetNumMaxIters");
     callbacks_->next_with_jacobian = true;  // KINSOL's first request is a Jacobian's point
     callbacks_->step_norms.clear();
+    callbacks_->last_watched.reset();
+    callbacks_->full_steps = strategy == KIN_NONE;
     const int result = KINSol(kin_, y_.get(), strategy, scale_.get(), residual_scale_.get());
     long count = 0;
     KINGetNumNonlinSolvIters(kin_, &count);
@@ -275,6 +305,12 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   // meets the tolerance. KIN_STEP_LT_STPTOL may be a stall: only the residual says.
   std::vector<double> r(n);
   auto settled = [&](int result) {
+    if (callbacks_->watched_settled) {
+      std::copy(callbacks_->point.begin(), callbacks_->point.end(), N_VGetArrayPointer(y_.get()));
+      rep.watched_settled = true;
+      rep.residual_norm = max_norm(callbacks_->point_residual);
+      return true;
+    }
     const std::span<const double> y(N_VGetArrayPointer(y_.get()), n);
     try {
       if (callbacks_->holds(y))

@@ -32,6 +32,17 @@ struct NewtonSettings {
   // worth one assembly and KLU refactorization per iteration on this system
   // (benchmarks/jacobian_reuse).
   int jacobian_reuse = 1;
+  // A caller that needs one unknown only, and to a known accuracy (a fold's load on the
+  // refined mesh, for an error bar): Newton stops at the first point that its step moved
+  // by at most `watched_step` in unknown `watched` and whose residual is within
+  // `watched_residual`, although the residual is not yet within residual_tolerance.
+  // Past the first steps Newton's error contracts at least by half a step here (its
+  // linear stretches, across the kinks of contact and cavitation, contract by a factor
+  // of 2 to 3; otherwise it is quadratic), so that unknown is then within about one
+  // step of the root. -1: off.
+  Index watched = -1;
+  double watched_step = 0.0;
+  double watched_residual = 1e-3;
 };
 
 struct NewtonReport {
@@ -42,6 +53,7 @@ struct NewtonReport {
   long jacobian_evaluations = 0;
   long backtracks = 0;
   double residual_norm = 0.0;  // max-norm of the scaled residual at the returned state
+  bool watched_settled = false;  // converged by the watched unknown's step (NewtonSettings::watched)
   std::string worst_block;     // where the residual is largest, when not converged
   Index worst_row = -1;
   std::string message;

@@ -10,6 +10,7 @@
 #include "../support/branch_start.h"
 #include "../support/model_problems.h"
 #include "solver/arclength_continuation.h"
+#include "solver/fold_location.h"
 
 namespace twb {
 namespace {
@@ -166,6 +167,35 @@ TEST(FoldContinuation, BratuFoldConvergesAtSecondOrder) {
   EXPECT_LT(std::abs(e_u[1]), 5e-3 * exact.u_max);
   // The null vector is the principal eigenfunction of the linearization: one sign.
   for (double v : fine.fold.null_vector) EXPECT_GT(v * fine.fold.null_vector[99], 0.0);
+}
+
+// A caller that needs the fold's load alone (an error bar's refined fold): Newton from a
+// guess 30 % off in u and 10 % in λ stops once λ is settled to the accuracy asked, with
+// λ then within it of the fully converged fold (Newton's error past its first steps is
+// below its last step: NewtonSettings::watched), and in fewer iterations.
+TEST(FoldContinuation, FoldLoadAloneStopsOnceTheLoadIsSettled) {
+  const DiscreteFold exact = bratu_fold(99);
+  ASSERT_FALSE(exact.fold.u.empty());
+  testing::BratuProblem bratu(99, 1.0);
+  std::vector<double> guess = exact.fold.u;
+  for (double& v : guess) v *= 0.7;
+  NewtonSettings newton = settings_for_tests().newton;
+  // One Jacobian for several iterations: Newton's convergence becomes linear, as it is
+  // across the bearing's kinks, where settling λ early saves iterations (quadratic
+  // convergence settles λ and the residual together).
+  newton.jacobian_reuse = 4;
+  const double guess_lambda = 0.9 * exact.fold.lambda;
+  const FoldPoint full = locate_fold_near(bratu, guess, guess_lambda, exact.fold.null_vector, newton);
+  const double accuracy = 1e-4 * exact.fold.lambda;
+  const FoldPoint quick = locate_fold_near(bratu, guess, guess_lambda, exact.fold.null_vector, newton, accuracy);
+  ASSERT_FALSE(full.u.empty()) << full.message;
+  ASSERT_FALSE(quick.u.empty()) << quick.message;
+  std::cout << "full: " << full.iterations << " iterations, lambda " << full.lambda << "; load alone: "
+            << quick.iterations << " iterations, lambda " << quick.lambda << "\n";
+  EXPECT_NEAR(full.lambda, exact.fold.lambda, 1e-8 * exact.fold.lambda);  // the same fold
+  EXPECT_NEAR(quick.lambda, full.lambda, accuracy);
+  EXPECT_LT(quick.iterations, full.iterations);
+  EXPECT_GT(quick.curvature, 0.0);  // still told the kind of fold: λ's largest
 }
 
 }  // namespace
