@@ -106,11 +106,14 @@ void add_limit_curves(BearingModel& model, CurveParameter which,
       row.state = pt.state;
       row.member = member;
     }
-    const std::string line = fmt::format(
-        "limit curve{}: {} crossed from {:.2f} N at {} to {:.2f} N at {} ({} points){}", label, limit_name(kind),
-        curve.points.front().state.load, shown(which, curve.points.front().p), curve.points.back().state.load,
-        shown(which, curve.points.back().p), curve.points.size(),
-        curve.ended.empty() ? std::string() : "; ended " + curve.ended);
+    const std::string line =
+        curve.points.empty()
+            ? fmt::format("limit curve{}: {} not traced from {}: {}", label, limit_name(kind), shown(which, from),
+                          curve.ended)
+            : fmt::format("limit curve{}: {} crossed from {:.2f} N at {} to {:.2f} N at {} ({} points){}", label,
+                          limit_name(kind), curve.points.front().state.load, shown(which, curve.points.front().p),
+                          curve.points.back().state.load, shown(which, curve.points.back().p), curve.points.size(),
+                          curve.ended.empty() ? std::string() : "; ended " + curve.ended);
     say(fmt::format("[curve{}] {} [{} steady solves, {:.1f} s]", label, line.substr(line.find(':') + 2), curve.solves,
                     elapsed_ms(t0) / 1000.0));
     out.summary.push_back(line);

@@ -105,12 +105,15 @@ double locate_crossing(BearingModel& model, BranchSegment& segment, LimitKind ki
 }  // namespace
 
 std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pair<double, std::vector<double>>& state,
-                                    double& slope, double width, double load_end, long& solves, std::string& why) {
+                                    double& slope, double width, double load_end, long& solves, std::string& why,
+                                    KinsolNewton* corrector, BearingState* described) {
   const OperatingLimits limits = OperatingLimits::of(model.scene());
+  const bool thermal = model.scene().effects.thermal;
   NewtonSettings newton = newton_settings(model.scene());
   newton.max_iterations = 12;
   newton.line_search = false;
-  KinsolNewton corrector(model);
+  std::optional<KinsolNewton> own;
+  if (!corrector) corrector = &own.emplace(model);
   BranchSegment segment(model, state, solves);
   // The state at `load` from the last one: Newton from it (a constant predictor, a few
   // iterations for the secant's short steps), else continuation along the branch.
@@ -119,39 +122,44 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
     model.set_load(load);
     std::vector<double> trial = u;
     ++solves;
-    if (corrector.solve(trial, newton).converged) {
+    if (corrector->solve(trial, newton).converged) {
       u = std::move(trial);
       return u;
     }
     u = segment.at(load);
     return u;
   };
+  BearingState here;
+  auto margin_at = [&](std::span<const double> v) {
+    here = model.describe(v);
+    return *failure_margin(kind, LimitValues::of(here, thermal), limits);
+  };
   try {
     double w0 = state.first;
     model.set_load(w0);
-    double m0 = *margin_of(model, u, kind, limits);
+    double m0 = margin_at(u);
     // The secant on the margin along the branch, its first step with the caller's slope
-    // (the crossing's at a nearby parameter), each step at most 30 % of the load, until a
-    // step is a tenth of the width: superlinear convergence leaves the root far closer
-    // than the width then.
+    // (the crossing's at a nearby parameter), each step at most 30 % of the load.
     double s = slope < 0.0 ? slope : -std::max(std::abs(m0), 1e-3) / (0.1 * w0);
     for (int step = 0; step < 16; ++step) {
       double w1 = std::clamp(w0 - m0 / s, 0.7 * w0, 1.3 * w0);
-      if (w1 > load_end) {
-        if (w0 >= load_end) {
-          why = fmt::format("not crossed up to {:.6g} N", load_end);
-          return std::nullopt;
-        }
-        w1 = load_end;
+      if (w1 > load_end && w0 >= load_end) {
+        why = fmt::format("not crossed up to {:.6g} N", load_end);
+        return std::nullopt;
       }
-      const double m1 = *margin_of(model, state_at(w1), kind, limits);
+      // The next step a tenth of the width: the root lies within it of w0 (superlinear
+      // convergence). Only on a secant through w0: the caller's slope, a nearby
+      // crossing's, may be far off where the margin bends sharply (contact setting in).
+      if (step > 0 && w1 <= load_end && std::abs(w1 - w0) <= 0.1 * width * w0) {
+        slope = s;
+        state = {w0, u};
+        if (described) *described = std::move(here);
+        return w0;
+      }
+      w1 = std::min(w1, load_end);
+      const double m1 = margin_at(state_at(w1));
       if (m1 != m0) s = (m1 - m0) / (w1 - w0);
       if (!(s < 0.0)) s = -std::max(std::abs(m1), 1e-3) / (0.1 * w1);  // keep walking towards the crossing
-      if (std::abs(w1 - w0) <= 0.1 * width * w1) {
-        slope = s;
-        state = {w1, u};
-        return w1;
-      }
       w0 = w1;
       m0 = m1;
     }

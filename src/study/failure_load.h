@@ -15,6 +15,7 @@
 
 #include "fold_proof.h"
 #include "model/bearing_model.h"
+#include "solver/kinsol_newton.h"
 #include "twb/results/distress_table.h"
 
 namespace twb {
@@ -33,13 +34,17 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
                     DistressRow& row, long& solves, BranchStates* crossings = nullptr);
 
 // The crossing of `kind` near `state` (a state of the cool branch at its load, e.g. the
-// crossing at a nearby parameter value): the secant on the margin in load from there
-// (the first step with `slope`, dmargin/dW, where negative), each state by Newton from
-// the last, until a step is a tenth of `width`. On success `state` becomes the
-// crossing's (load, state) and `slope` the last secant's; none, with `why`, where the
-// crossing lies above load_end or the branch cannot be continued to it (it folds first).
+// crossing at a nearby parameter value, predicted): the secant on the margin in load
+// from there (the first step with `slope`, dmargin/dW, where negative), each state by
+// Newton from the last, until the next step would be a tenth of `width`: the state in
+// hand is then the crossing's to that, the secant converging superlinearly. On success
+// `state` becomes the crossing's (load, state), `slope` the last secant's and
+// `described`, if given, its description; none, with `why`, where the crossing lies
+// above load_end or the branch cannot be continued to it (it folds first). `corrector`,
+// if given, is a Newton solver of `model` (one per curve: its analysis is reused).
 std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pair<double, std::vector<double>>& state,
-                                    double& slope, double width, double load_end, long& solves, std::string& why);
+                                    double& slope, double width, double load_end, long& solves, std::string& why,
+                                    KinsolNewton* corrector = nullptr, BearingState* described = nullptr);
 
 // "fails at 307.6 N by the flash temperature (no thermo-viscous distress up to 4000 N)":
 // the sentence of a row whose failure fields are set.

@@ -2,12 +2,14 @@
 // distress_curve, docs/physics.md section 8): beside the fold curve, the load where the
 // cool branch crosses the oil's, the flash or a material's temperature limit, or the least
 // film ratio, as the curve parameter goes across its range. From the crossing at one end,
-// each step sets the parameter a step further and corrects the crossing's state by
-// Newton at its load (a constant predictor; the step is halved where Newton needs more
-// than a dozen iterations), then moves the load to the crossing there by secant steps and
-// the bracket narrowed to the search's width (failure_load.h: crossing_near). The curve
-// ends at the range's end, where the crossing passes load_end, or where the branch folds
-// before reaching it (there the fold curve is the boundary).
+// each step sets the parameter a step further, predicts the crossing's load and state
+// through the last three crossings (a parabola in the parameter), corrects the state by
+// Newton at the predicted load (the last crossing's where Newton cannot start from the
+// prediction; the step is halved where neither converges), then moves the load to the
+// crossing by secant steps on the margin to the search's width (failure_load.h:
+// crossing_near); one Newton solver serves the whole curve. The curve ends at the range's
+// end, where the crossing passes load_end, or where the branch folds before reaching it
+// (there the fold curve is the boundary).
 #pragma once
 
 #include <functional>
