@@ -7,8 +7,11 @@
 //   BM_BronzeFailureMap  W_fail at 3000 rpm, every criterion located, with error bars
 //   BM_BronzeSafeRegion  the safe region over 1000-6000 rpm: the fold curve and every
 //                        criterion's limit curve, error bars off
-//   BM_BronzeSafeRegionWithErrorBars  the same with every fold's error bar    (issue: < 5 s)
-// Counters: states, transients, KLU factorizations.
+//   BM_BronzeSafeRegionWithErrorBars  the same with every fold's error bar, on one thread
+//   BM_BronzeSafeRegionOnTwoThreads   the same on both cores (the ends searched at once,
+//                        the fold's bars in two chains and the limit curves spread)  (issue: < 5 s)
+// Counters: states, transients, KLU factorizations. Times are CPU time on one thread and
+// wall time (UseRealTime) on two.
 //
 //   ./build/benchmarks/failure_benchmark --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -22,13 +25,13 @@
 
 namespace {
 
-void run_bronze(benchmark::State& state, const std::vector<std::string>& overrides) {
+void run_bronze(benchmark::State& state, const std::vector<std::string>& overrides, int threads = 1) {
   const twb::Scene s =
       twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/washers/bronze_cusn8.yaml", overrides);
   twb::RunTimings last;
   for (auto _ : state) {
     twb::BearingModel model(s);
-    const twb::StudyOutcome out = twb::run_study(model, {}, twb::RunOptions{.threads = 1});
+    const twb::StudyOutcome out = twb::run_study(model, {}, twb::RunOptions{.threads = threads});
     last = out.timings;
   }
   state.counters["states"] = double(last.states);
@@ -49,6 +52,7 @@ void BM_BronzePointWithErrorBar(benchmark::State& state) {
 void BM_BronzeFailureMap(benchmark::State& state) { run_bronze(state, {}); }
 void BM_BronzeSafeRegion(benchmark::State& state) { run_bronze(state, {kCurve + ", error_estimate: none}"}); }
 void BM_BronzeSafeRegionWithErrorBars(benchmark::State& state) { run_bronze(state, {kCurve + "}"}); }
+void BM_BronzeSafeRegionOnTwoThreads(benchmark::State& state) { run_bronze(state, {kCurve + "}"}, 2); }
 
 }  // namespace
 
@@ -57,5 +61,6 @@ BENCHMARK(BM_BronzePointWithErrorBar)->Unit(benchmark::kMillisecond)->Iterations
 BENCHMARK(BM_BronzeFailureMap)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_BronzeSafeRegion)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_BronzeSafeRegionWithErrorBars)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_BronzeSafeRegionOnTwoThreads)->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
 
 BENCHMARK_MAIN();

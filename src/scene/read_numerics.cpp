@@ -185,6 +185,16 @@ void read_fold_curve(const MapReader& study, Scene& out) {
   s.bracket_width = read_bracket_width(study, s.bracket_width);
 }
 
+// every_state refines each state of a sweep; a point's one state has its bar with
+// richardson, and a distress curve reports folds and crossings, not a sweep's states.
+void refuse_every_state(const MapReader& study, const Study& s, const char* type) {
+  if (s.error_estimate != ErrorEstimate::every_state) return;
+  const Node node = study.get("error_estimate", "");
+  node.fail(fmt::format("{}: every_state (an error bar on every state of a sweep) is for load_sweep and "
+                        "distress_map; with type: {} use richardson or none",
+                        node.path(), type));
+}
+
 void read_study(const MapReader& scene, Scene& out) {
   const MapReader study = scene.map("study", {"type", "load_start", "load_end", "load_steps", "speeds",
                                               "parameter", "bracket_width", "duration", "error_estimate",
@@ -195,6 +205,7 @@ void read_study(const MapReader& scene, Scene& out) {
     case StudyType::point:
       study.restrict_to({"type", "error_estimate"}, "with type: point");
       s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
+      refuse_every_state(study, s, "point");
       break;
     case StudyType::transient:
       study.restrict_to({"type", "load_start", "load_end", "duration", "bracket_width"}, "with type: transient");
@@ -227,6 +238,7 @@ void read_study(const MapReader& scene, Scene& out) {
                         "with type: distress_curve");
       read_fold_curve(study, out);
       s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
+      refuse_every_state(study, s, "distress_curve");
       read_map_parameter(study, s, out, "family");
       break;
     case StudyType::distress_map: {

@@ -44,8 +44,9 @@ inline constexpr EnumNames<CurveParameter, 6> kCurveParameters{
 inline constexpr EnumNames<SolverMethod, 2> kSolverMethods{{"newton", "paper"},
                                                            {SolverMethod::newton, SolverMethod::paper}};
 
-inline constexpr EnumNames<ErrorEstimate, 2> kErrorEstimates{
-    {"none", "richardson"}, {ErrorEstimate::none, ErrorEstimate::richardson}};
+inline constexpr EnumNames<ErrorEstimate, 3> kErrorEstimates{
+    {"none", "richardson", "every_state"},
+    {ErrorEstimate::none, ErrorEstimate::richardson, ErrorEstimate::every_state}};
 
 inline constexpr EnumNames<MapParameter, 3> kMapParameters{
     {"friction_coefficient", "gear_tilt", "roughness"},

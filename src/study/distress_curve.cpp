@@ -4,6 +4,9 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <exception>
+#include <mutex>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -12,6 +15,7 @@
 #include "study/distress_search.h"
 #include "study/richardson.h"
 #include "study/limit_curve.h"
+#include "study/parallel.h"
 #include "model/limit_thresholds.h"
 
 namespace twb {
@@ -63,67 +67,120 @@ std::string shown(CurveParameter p, double v) {
 
 namespace {
 
-// Every failure criterion's crossing continued across the range (limit_curve.h): from
-// the first end searched that crosses it, to the other end. Its rows in fold_curve.csv
-// carry the criterion's name in the fold column.
-void add_limit_curves(BearingModel& model, CurveParameter which,
-                      const std::vector<std::pair<double, std::vector<std::pair<double, std::vector<double>>>>>& ends,
-                      std::optional<double> member, const std::string& label, StudyOutcome& out,
-                      const std::function<void(const std::string&)>& say) {
-  const Study& st = model.scene().study;
-  LimitCurveSettings settings;
-  settings.bracket_width = st.bracket_width;
-  settings.load_end = st.load_end;
-  // W_d along this curve's distress fold (rows of this member, sorted in the parameter),
-  // interpolated linearly between its points; none outside the fold's range.
+using Crossings = std::vector<std::pair<double, std::vector<double>>>;
+
+// One criterion's limit curve (limit_curve.h), from the first end searched that crosses
+// it to the other end, on a model of its own.
+struct LimitCurveJob {
+  LimitKind kind = LimitKind::oil_temperature;
+  double from = 0.0, to = 0.0;
+  std::pair<double, std::vector<double>> start;
+  LimitCurve curve;
+  double seconds = 0.0;
+};
+
+std::vector<LimitCurveJob> limit_curve_jobs(const Study& st, const std::vector<std::pair<double, Crossings>>& ends) {
+  std::vector<LimitCurveJob> jobs;
+  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
+    const auto start = std::find_if(ends.begin(), ends.end(), [&](const auto& e) { return !e.second[c].second.empty(); });
+    if (start == ends.end()) continue;
+    LimitCurveJob& job = jobs.emplace_back();
+    job.kind = kFailureCriteria[c];
+    job.from = start->first;
+    job.to = job.from == st.from ? st.to : st.from;
+    job.start = start->second[c];
+  }
+  return jobs;
+}
+
+// W_d along this curve's distress fold (the member's rows so far, sorted in the
+// parameter), interpolated linearly between its points; none outside the fold's range.
+std::function<std::optional<double>(double)> distress_fold_of(const StudyOutcome& out, std::optional<double> member) {
   std::vector<std::pair<double, double>> folds;
   for (const FoldCurveRow& r : out.fold_curve)
     if (r.member == member && (r.fold == "distress" || r.fold == "cusp")) folds.emplace_back(r.parameter, r.state.load);
   std::sort(folds.begin(), folds.end());
-  settings.fold_load = [folds](double p) -> std::optional<double> {
+  return [folds](double p) -> std::optional<double> {
     if (folds.size() < 2 || p < folds.front().first || p > folds.back().first) return std::nullopt;
     const auto hi = std::lower_bound(folds.begin(), folds.end(), std::pair{p, -1e300});
     if (hi == folds.begin()) return hi->second;
     const auto lo = hi - 1;
     return lo->second + (hi->second - lo->second) * (p - lo->first) / (hi->first - lo->first);
   };
-  const auto t0 = std::chrono::steady_clock::now();
-  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
-    const LimitKind kind = kFailureCriteria[c];
-    const auto start = std::find_if(ends.begin(), ends.end(), [&](const auto& e) { return !e.second[c].second.empty(); });
-    if (start == ends.end()) continue;
-    const double from = start->first, to = from == st.from ? st.to : st.from;
-    LimitCurve curve;
-    try {
-      curve = trace_limit_curve(model, which, kind, from, to, start->second[c], settings);
-    } catch (const std::exception& e) {
-      curve.ended = std::string("the curve could not be continued: ") + e.what();
-    }
-    for (const LimitCurvePoint& pt : curve.points) {
-      FoldCurveRow& row = out.fold_curve.emplace_back();
-      row.parameter = pt.p;
-      row.fold = std::string(limit_name(kind));
-      row.state = pt.state;
-      row.member = member;
-    }
-    const std::string line =
-        curve.points.empty()
-            ? fmt::format("limit curve{}: {} not traced from {}: {}", label, limit_name(kind), shown(which, from),
-                          curve.ended)
-            : fmt::format("limit curve{}: {} crossed from {:.2f} N at {} to {:.2f} N at {} ({} points){}", label,
-                          limit_name(kind), curve.points.front().state.load, shown(which, curve.points.front().p),
-                          curve.points.back().state.load, shown(which, curve.points.back().p), curve.points.size(),
-                          curve.ended.empty() ? std::string() : "; ended " + curve.ended);
-    say(fmt::format("[curve{}] {} [{} steady solves, {:.1f} s]", label, line.substr(line.find(':') + 2), curve.solves,
-                    elapsed_ms(t0) / 1000.0));
-    out.summary.push_back(line);
-  }
 }
+
+void trace_job(const Scene& scene, CurveParameter which, const LimitCurveSettings& settings, LimitCurveJob& job) {
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    BearingModel model(scene);
+    job.curve = trace_limit_curve(model, which, job.kind, job.from, job.to, job.start, settings);
+  } catch (const std::exception& e) {
+    job.curve.ended = std::string("the curve could not be continued: ") + e.what();
+  }
+  job.seconds = elapsed_ms(t0) / 1000.0;
+}
+
+// A traced limit curve's rows in fold_curve.csv (the criterion's name in the fold
+// column) and its summary line.
+void add_limit_curve(const LimitCurveJob& job, CurveParameter which, std::optional<double> member,
+                     const std::string& label, StudyOutcome& out, const std::function<void(const std::string&)>& say) {
+  const LimitCurve& curve = job.curve;
+  for (const LimitCurvePoint& pt : curve.points) {
+    FoldCurveRow& row = out.fold_curve.emplace_back();
+    row.parameter = pt.p;
+    row.fold = std::string(limit_name(job.kind));
+    row.state = pt.state;
+    row.member = member;
+  }
+  const std::string line =
+      curve.points.empty()
+          ? fmt::format("limit curve{}: {} not traced from {}: {}", label, limit_name(job.kind), shown(which, job.from),
+                        curve.ended)
+          : fmt::format("limit curve{}: {} crossed from {:.2f} N at {} to {:.2f} N at {} ({} points){}", label,
+                        limit_name(job.kind), curve.points.front().state.load, shown(which, curve.points.front().p),
+                        curve.points.back().state.load, shown(which, curve.points.back().p), curve.points.size(),
+                        curve.ended.empty() ? std::string() : "; ended " + curve.ended);
+  say(fmt::format("[curve{}] {} [{} steady solves, {:.1f} s]", label, line.substr(line.find(':') + 2), curve.solves,
+                  job.seconds));
+  out.summary.push_back(line);
+}
+
+// Runs every piece on up to `threads` threads; the first exception (in the pieces'
+// order) is thrown again once all are done. The KLU factorizations of pieces run on
+// other threads than the caller's are added to `timings` (the caller counts its own
+// thread's).
+template <class Piece>
+void run_pieces(std::size_t count, int threads, RunTimings& timings, const Piece& piece) {
+  std::vector<std::exception_ptr> failed(count);
+  std::vector<long> factorizations(count, 0);
+  const std::thread::id caller = std::this_thread::get_id();
+  run_in_parallel(count, threads, [&](std::size_t i) {
+    const SparseLu::Counts before = SparseLu::thread_counts();
+    try {
+      piece(i);
+    } catch (...) {
+      failed[i] = std::current_exception();
+    }
+    if (std::this_thread::get_id() != caller) factorizations[i] = SparseLu::thread_counts().factored_since(before);
+  });
+  for (long f : factorizations) timings.klu_factorizations += f;
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+}
+
+// The fold's error bar at each curve point: chains of RefinedFoldCurve (each point from
+// the last refined fold of its chain), the curve cut into two chains of consecutive
+// points where it has four or more, each chain on models of its own. The cut is the
+// same for any thread count (the results do not depend on it).
+struct FoldBar {
+  std::optional<MeshErrorEstimate> estimate;
+  std::string why;
+};
 
 }  // namespace
 
 void run_fold_curve(BearingModel& model, std::optional<double> member, const std::string& label, StudyOutcome& out,
-                    const ProgressReport& progress) {
+                    const ProgressReport& progress, int threads) {
   const Study& st = model.scene().study;
   const CurveParameter which = st.curve_parameter;
   auto say = [&](const std::string& s) {
@@ -136,14 +193,37 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   settings.load_end = st.load_end;
   settings.bracket_width = st.bracket_width;
   settings.march_past_distress = false;
-  std::optional<DistressSearch> first;
-  double start = st.from, other = st.to;
-  // Each end searched, with its criteria's crossings: where the limit curves start.
-  std::vector<std::pair<double, std::vector<std::pair<double, std::vector<double>>>>> ends;
-  auto search_end = [&](double end) {
-    model.set_curve_parameter(which, end);
+  // Each end searched on a model of its own: `from` always, `to` where `from` has no
+  // proven fold or does not cross every criterion the scene applies (a limit curve
+  // starts from the end that crosses it). With a thread to spare both are searched at
+  // once and `to`'s search is dropped where it is not needed: the same results either way.
+  const OperatingLimits limits = OperatingLimits::of(model.scene());
+  auto needs_other_end = [&](const DistressSearch& found) {
+    if (!(found.fold && found.row.distress_load)) return true;
+    const LimitValues values{.thermal = model.scene().effects.thermal};
+    for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
+      if (failure_margin(kFailureCriteria[c], values, limits) && found.crossing_states[c].second.empty()) return true;
+    return false;
+  };
+  BearingModel other_model(model.scene());
+  std::optional<DistressSearch> at_from, at_to;
+  auto search_end = [&](std::size_t i) {
+    BearingModel& m = i == 0 ? model : other_model;
+    const double end = i == 0 ? st.from : st.to;
+    m.set_curve_parameter(which, end);
     say(fmt::format("[curve{}] the first fold at {}", label, shown(which, end)));
-    DistressSearch found = search_distress(model, settings, progress);
+    (i == 0 ? at_from : at_to) = search_distress(m, settings, progress);
+  };
+  if (threads > 1) {
+    run_pieces(2, threads, out.timings, search_end);
+    if (!needs_other_end(*at_from)) at_to.reset();
+  } else {
+    search_end(0);
+    if (needs_other_end(*at_from)) search_end(1);
+  }
+  // Each end searched, with its criteria's crossings: where the limit curves start.
+  std::vector<std::pair<double, Crossings>> ends;
+  auto take = [&](DistressSearch& found, double end) {
     add_search_work(out.timings, found.counts);
     found.row.parameter = member;
     if (which != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown(which, end), found.row.method);
@@ -154,33 +234,37 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
       out.states.back().branch = "cool";
     }
     ends.emplace_back(end, found.crossing_states);
-    return found;
   };
-  for (const double end : {st.from, st.to}) {
-    DistressSearch found = search_end(end);
-    if (found.fold && found.row.distress_load) {
-      first = std::move(found);
-      start = end;
-      other = end == st.from ? st.to : st.from;
-      break;
+  const DistressSearch* first = nullptr;
+  double start = st.from, other = st.to;
+  take(*at_from, st.from);
+  if (at_from->fold && at_from->row.distress_load) first = &*at_from;
+  if (at_to) {
+    take(*at_to, st.to);
+    if (!first && at_to->fold && at_to->row.distress_load) {
+      first = &*at_to;
+      start = st.to;
+      other = st.from;
     }
   }
-  // A criterion the searched end does not cross may be crossed at the other: search it too.
-  if (ends.size() == 1) {
-    const auto& crossed = ends.front().second;
-    const OperatingLimits limits = OperatingLimits::of(model.scene());
-    const LimitValues values{.thermal = model.scene().effects.thermal};
-    bool missing = false;
-    for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
-      missing = missing || (failure_margin(kFailureCriteria[c], values, limits) && crossed[c].second.empty());
-    if (missing) search_end(other);
-  }
-  auto limit_curves = [&] { add_limit_curves(model, which, ends, member, label, out, say); };
+
+  std::vector<LimitCurveJob> jobs = limit_curve_jobs(st, ends);
+  LimitCurveSettings limit_settings;
+  limit_settings.bracket_width = st.bracket_width;
+  limit_settings.load_end = st.load_end;
+  auto add_limit_curves = [&] {
+    for (const LimitCurveJob& job : jobs) add_limit_curve(job, which, member, label, out, say);
+  };
+  auto limit_curves_alone = [&] {
+    limit_settings.fold_load = distress_fold_of(out, member);
+    run_pieces(jobs.size(), threads, out.timings, [&](std::size_t i) { trace_job(model.scene(), which, limit_settings, jobs[i]); });
+    add_limit_curves();
+  };
   if (!first) {
     out.summary.push_back(fmt::format("fold curve{}: no fold between {:.6g} and {:.6g} N at either end ({} and {}): "
                                       "no sudden distress to follow",
                                       label, st.load_start, st.load_end, shown(which, st.from), shown(which, st.to)));
-    limit_curves();
+    limit_curves_alone();
     return;
   }
 
@@ -208,17 +292,6 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     model.set_load(load);
     return model.describe(u);
   };
-  // W_d's error bar all along the curve: each fold again on the refined mesh
-  // (study/richardson.h), from the curve's model as it stands at the first fold.
-  std::optional<RefinedFoldCurve> refined;
-  std::string no_bars;
-  if (st.error_estimate == ErrorEstimate::richardson) {
-    try {
-      refined.emplace(model, which, *first->fold);
-    } catch (const std::exception& e) {
-      no_bars = fmt::format("fold curve{}: no error bars: the refined mesh could not be built: {}", label, e.what());
-    }
-  }
   FoldCurve curve;
   try {
     curve = trace_fold_curve(model, parameter, *first->fold, fs, [&](const FoldCurvePoint& pt) {
@@ -232,47 +305,30 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   }
   if (curve.points.empty()) {
     out.summary.push_back(fmt::format("fold curve{}: not traced from {}: {}", label, shown(which, start), curve.message));
-    limit_curves();
+    limit_curves_alone();
     return;
   }
   const auto n = std::size_t(model.size());
-  auto add_row = [&](double p, const std::string& fold, const BearingState& state) -> FoldCurveRow& {
+  auto add_row = [&](double p, const std::string& fold, const BearingState& state) {
     FoldCurveRow& row = out.fold_curve.emplace_back();
     row.parameter = p;
     row.fold = fold;
     row.state = state;
     row.member = member;
-    return row;
+    return out.fold_curve.size() - 1;
   };
-  const auto t_bars = std::chrono::steady_clock::now();
-  int with_bar = 0, folds = 0;
-  std::string last_why;
+  // The curve's rows, each fold's kind, the turns.
+  std::vector<std::size_t> row_of(curve.points.size());
+  std::vector<int> kind_of(curve.points.size());
   std::size_t next_turn = 0;
-  std::string kind = "distress";  // the start's: W_d, proven
+  int kind = +1;  // the start's: W_d, proven
   for (std::size_t k = 0; k < curve.points.size(); ++k) {
     const FoldCurvePoint& pt = curve.points[k];
     // (a curvature that could not be computed, NaN, keeps the previous point's kind)
-    if (pt.curvature > 0) kind = "distress";
-    if (pt.curvature < 0) kind = "recovery";
-    FoldCurveRow& row = add_row(pt.p, kind, describe_at(pt.p, pt.lambda, pt.u));
-    if (refined) {
-      ++folds;
-      std::string why;
-      std::optional<MeshErrorEstimate> e;
-      try {
-        e = refined->at(pt.p, pt.lambda, pt.u, kind == "distress" ? +1 : -1, why);
-      } catch (const std::exception& failure) {
-        why = failure.what();
-      }
-      if (e) {
-        row.fine_load = e->fine_fold;
-        row.extrapolated_load = e->extrapolated;
-        row.discretization_error = e->error;
-        ++with_bar;
-      } else {
-        last_why = why;
-      }
-    }
+    if (pt.curvature > 0) kind = +1;
+    if (pt.curvature < 0) kind = -1;
+    kind_of[k] = kind;
+    row_of[k] = add_row(pt.p, kind > 0 ? "distress" : "recovery", describe_at(pt.p, pt.lambda, pt.u));
     const bool turns = k + 1 < curve.points.size() && pt.tangent_p * curve.points[k + 1].tangent_p < 0.0;
     if (turns && next_turn < curve.turns.size()) {
       const CurveTurn& t = curve.turns[next_turn++];
@@ -285,12 +341,72 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
                                t.lambda));
     }
   }
-  if (!no_bars.empty()) out.summary.push_back(no_bars);
-  if (refined) {
+
+  // Then, on `threads` threads: W_d's error bar all along the curve (each fold again on
+  // the refined mesh, study/richardson.h) and every limit curve, each piece on models of
+  // its own.
+  const bool bars = st.error_estimate != ErrorEstimate::none;
+  const std::size_t points = curve.points.size();
+  const std::size_t chains = !bars ? 0 : points >= 4 ? 2 : 1;
+  std::vector<FoldBar> bar_of(points);
+  std::string mesh;
+  std::mutex mesh_lock;
+  auto bar_chain = [&](std::size_t chain) {
+    const std::size_t a = chain * points / chains, b = (chain + 1) * points / chains;
+    BearingModel coarse(model.scene());
+    coarse.set_curve_parameter(which, curve.points[a].p);
+    coarse.set_load(curve.points[a].lambda);
+    std::optional<RefinedFoldCurve> refined;
+    try {
+      if (chain == 0)
+        refined.emplace(coarse, which, *first->fold);
+      else
+        refined.emplace(coarse, which, curve.points[a].u, first->fold->null_vector);
+      const std::lock_guard<std::mutex> hold(mesh_lock);
+      mesh = refined->mesh();
+    } catch (const std::exception& e) {
+      for (std::size_t k = a; k < b; ++k) bar_of[k].why = std::string("the refined mesh could not be built: ") + e.what();
+      return;
+    }
+    for (std::size_t k = a; k < b; ++k) {
+      const FoldCurvePoint& pt = curve.points[k];
+      coarse.set_curve_parameter(which, pt.p);
+      coarse.set_load(pt.lambda);
+      try {
+        bar_of[k].estimate = refined->at(pt.p, pt.lambda, pt.u, kind_of[k], bar_of[k].why);
+      } catch (const std::exception& failure) {
+        bar_of[k].why = failure.what();
+      }
+    }
+  };
+  limit_settings.fold_load = distress_fold_of(out, member);
+  const auto t_pieces = std::chrono::steady_clock::now();
+  run_pieces(chains + jobs.size(), threads, out.timings, [&](std::size_t i) {
+    if (i < chains)
+      bar_chain(i);
+    else
+      trace_job(model.scene(), which, limit_settings, jobs[i - chains]);
+  });
+  if (bars) {
+    int with_bar = 0;
+    std::string last_why;
+    for (std::size_t k = 0; k < points; ++k) {
+      FoldCurveRow& row = out.fold_curve[row_of[k]];
+      if (const auto& e = bar_of[k].estimate) {
+        row.fine_load = e->fine_fold;
+        row.extrapolated_load = e->extrapolated;
+        row.discretization_error = e->error;
+        ++with_bar;
+      } else {
+        last_why = bar_of[k].why;
+      }
+    }
     const std::string line =
-        fmt::format("fold curve{}: error bars from the {} mesh at {} of {} folds{}", label, refined->mesh(), with_bar,
-                    folds, with_bar < folds ? " (the last missing: " + last_why + ")" : std::string());
-    say(fmt::format("[curve{}] {} [{:.1f} s]", label, line.substr(line.find(':') + 2), elapsed_ms(t_bars) / 1000.0));
+        mesh.empty() ? fmt::format("fold curve{}: no error bars: {}", label, last_why)
+                     : fmt::format("fold curve{}: error bars from the {} mesh at {} of {} folds{}", label, mesh,
+                                   with_bar, points,
+                                   with_bar < int(points) ? " (the last missing: " + last_why + ")" : std::string());
+    say(fmt::format("[curve{}] {} [{:.1f} s]", label, line.substr(line.find(':') + 2), elapsed_ms(t_pieces) / 1000.0));
     out.summary.push_back(line);
   }
   // Where the curve ended: past the range's end, or inside it where continuation could
@@ -304,7 +420,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   else if (curve.turns.empty())
     out.summary.push_back(fmt::format("fold curve{}: {} points from {} to {}, no cusp in range", label,
                                       curve.points.size(), shown(which, curve.points.front().p), shown(which, last)));
-  limit_curves();
+  add_limit_curves();
 }
 
 }  // namespace twb

@@ -136,8 +136,13 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   auto say = [&](const std::string& s) {
     if (progress) progress(fmt::format("{} [{:.1f} s]", s, elapsed_ms(started) / 1000.0));
   };
+  // Each state recorded as solved, its unknowns kept where every state gets an error bar.
+  auto keep = [&](std::span<const double> v, long iterations, double wall_ms) {
+    out.states.push_back(record(model, v, iterations, wall_ms));
+    if (settings.keep_state_vectors) out.state_vectors.emplace_back(v.begin(), v.end());
+  };
   model.set_load(settings.load_start);
-  out.states.push_back(record(model, u, first.iterations, first.wall_ms));
+  keep(u, first.iterations, first.wall_ms);
 
   // Without the thermal effect nothing has a heat capacity: there is no transient to
   // check states or bracket W_d with (thermo-viscous distress needs heat), and only the
@@ -289,7 +294,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
       low_state = p.u;
       cool.emplace_back(low, low_state);
       model.set_load(low);
-      out.states.push_back(record(model, low_state, p.iterations, p.wall_ms));
+      keep(low_state, p.iterations, p.wall_ms);
       const double done = (low - settings.load_start) / (settings.load_end - settings.load_start);
       say(fmt::format("  {:.6g} rad/s: {:.2f} N on the cool branch ({:.2f} C mean; {:.0f} % of the load range)",
                       model.speed(), low, out.states.back().state.washer_mean_temperature - 273.15, 100 * done));
@@ -412,7 +417,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
         low = high;
         low_state = step.final_state;
         model.set_load(low);
-        out.states.push_back(record(model, low_state, step.newton_attempts, 0.0));
+        keep(low_state, step.newton_attempts, 0.0);
         cool.emplace_back(low, low_state);
         ++out.cool_states;
         say(fmt::format("  the step to {:.2f} N settles", low));
@@ -495,7 +500,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
       out.message = "past distress: " + hot.message;
       return out;
     }
-    out.states.push_back(record(model, hot.state, hot.newton_iterations, hot.wall_ms));
+    keep(hot.state, hot.newton_iterations, hot.wall_ms);
     u = hot.state;
   } catch (const std::exception& e) {
     // A singular Jacobian under the detector or the march, at the fold itself: what
@@ -513,7 +518,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
     natural.initial_step = natural.max_step = target - model.load();
     const NaturalReport rep = continue_in_parameter(model, u, target, natural, [&](const BranchPoint& p) {
       if (p.index == 0) return true;
-      out.states.push_back(record(model, p.u, p.corrector_iterations, elapsed_ms(t0)));
+      keep(p.u, p.corrector_iterations, elapsed_ms(t0));
       t0 = std::chrono::steady_clock::now();
       say(fmt::format("  {:.6g} rad/s: {:.1f} N past distress ({:.2f} C mean)", model.speed(), p.lambda,
                       out.states.back().state.washer_mean_temperature - 273.15));

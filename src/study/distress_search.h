@@ -58,6 +58,9 @@ struct DistressSearchSettings {
   StabilitySettings stability;
   // load_sweep: after distress, go on from the hot state the runaway reached.
   bool continue_past_distress = false;
+  // Keep each state's unknowns (DistressSearch::state_vectors), for an error bar on
+  // every state (study.error_estimate: every_state).
+  bool keep_state_vectors = false;
 };
 
 // What a search cost: the work behind one W_d.
@@ -103,6 +106,9 @@ struct DistressSearch {
   // Each failure criterion's crossing on the branch (load, state), in kFailureCriteria
   // order, empty where it is not crossed: where a limit curve starts (not journaled).
   std::vector<std::pair<double, std::vector<double>>> crossing_states;
+  // Each state's unknowns, beside `states`, where settings.keep_state_vectors asks for
+  // them (not journaled).
+  std::vector<std::vector<double>> state_vectors;
 };
 
 // The runaway detector the search brackets W_d with: the scene's Newton tolerances, the

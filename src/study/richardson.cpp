@@ -142,11 +142,15 @@ std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double 
 }
 
 RefinedFoldCurve::RefinedFoldCurve(const BearingModel& coarse, CurveParameter which, const FoldPoint& first)
+    : RefinedFoldCurve(coarse, which, first.u, first.null_vector) {}
+
+RefinedFoldCurve::RefinedFoldCurve(const BearingModel& coarse, CurveParameter which, std::span<const double> u,
+                                   std::span<const double> null_guess)
     : coarse_(coarse), which_(which) {
   const Scene fine = refined_mesh(coarse.scene());
   fine_ = coarse.on_mesh(fine.mesh.radial_nodes, fine.mesh.circumferential_nodes);
   mesh_ = mesh_name(fine);
-  first_null_ = moved_direction(*fine_, coarse_, first.u, first.null_vector);
+  first_null_ = moved_direction(*fine_, coarse_, u, null_guess);
 }
 
 std::optional<MeshErrorEstimate> RefinedFoldCurve::at(double p, double load, std::span<const double> u, int kind,

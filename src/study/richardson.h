@@ -91,6 +91,11 @@ class RefinedFoldCurve {
   // coarse: the curve's model (its curve parameter and every other setting as the
   // curve's); first: the curve's first fold on it.
   RefinedFoldCurve(const BearingModel& coarse, CurveParameter which, const FoldPoint& first);
+  // A chain that starts inside the curve: at its first fold's coarse state u, with a
+  // null vector guess (any vector not orthogonal to the null vector there, e.g. another
+  // fold's of the curve), coarse.
+  RefinedFoldCurve(const BearingModel& coarse, CurveParameter which, std::span<const double> u,
+                   std::span<const double> null_guess);
 
   // The estimate at the curve point (p, coarse load, coarse state u) whose fold is a
   // largest load (kind > 0, distress) or a smallest (kind < 0, recovery); empty, with the

@@ -18,6 +18,7 @@
 #include "study/search_journal.h"
 #include "study/search_scheduler.h"
 #include "richardson.h"
+#include "state_error.h"
 #include "study_support.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/sparse_lu.h"
@@ -39,62 +40,6 @@ SolvedState record(const BearingModel& model, const std::vector<double>& u, cons
   return row;
 }
 
-// A point's error bars (study.error_estimate: richardson): the state again on the mesh
-// refined by two, from the scene mesh's state interpolated there (Newton, the steady
-// solver's fallbacks where Newton fails), and each reported quantity extrapolated
-// (richardson.h). Where a quantity's estimated error exceeds 5 % the run says so and
-// names the mesh that would meet it (the error falling as h², the formal order).
-void estimate_point_error(BearingModel& model, std::span<const double> u, SolvedState& state, StudyOutcome& out) {
-  const Scene refined = refined_mesh(model.scene());
-  // The largest mesh twb refines a point from: beyond, the refined system outgrows a
-  // workstation's memory and minutes (the stability suite's 65 x 528 point is not refined).
-  if (refined.mesh.radial_nodes > 65 || refined.mesh.circumferential_nodes > 528) {
-    out.summary.push_back(fmt::format("no error bar: the refined {} x {} mesh is beyond the 65 x 528 twb refines a "
-                                      "point on (study.error_estimate: none leaves it out)",
-                                      refined.mesh.radial_nodes, refined.mesh.circumferential_nodes));
-    return;
-  }
-  const std::unique_ptr<BearingModel> fine = model.on_mesh(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
-  std::vector<double> v = fine->interpolated_from(model, u);
-  SteadySolver solver(*fine, newton_settings(model.scene()));
-  const SteadyReport rep = solver.solve(v);
-  out.timings.newton_iterations += rep.iterations;
-  out.timings.jacobian_evaluations += rep.jacobian_evaluations;
-  const std::string mesh = fmt::format("{} x {}", refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
-  if (!rep.converged) {
-    out.summary.push_back(fmt::format("no error bar: no steady state on the refined {} mesh: {}", mesh, rep.message));
-    return;
-  }
-  const std::vector<double> coarse = mesh_error_quantities(state.state);
-  const std::vector<double> fine_values = mesh_error_quantities(fine->describe(v));
-  // Temperatures count from the ambient: their error relative to the rise.
-  const double ambient = model.scene().operating.ambient - 273.15;
-  std::string beyond;
-  double worst = 0.0;
-  for (std::size_t k = 0; k < coarse.size(); ++k) {
-    const MeshErrorEstimate e = richardson_extrapolation(coarse[k], fine_values[k], kTwoGridSafety);
-    state.mesh_errors.push_back(e.extrapolated);
-    state.mesh_errors.push_back(e.error);
-    const double zero = k < 2 ? ambient : 0.0;
-    const double off = std::abs(coarse[k] - e.extrapolated) / std::max(std::abs(e.extrapolated - zero), 1e-300);
-    if (off > 0.05) {
-      beyond += fmt::format("{}{} {:.4g} ({:.1f} % from its mesh-converged {:.4g} ± {:.2g})", beyond.empty() ? "" : ", ",
-                            kMeshErrorQuantities[k], coarse[k], 100.0 * off, e.extrapolated, e.error);
-      worst = std::max(worst, off);
-    }
-  }
-  out.summary.push_back(fmt::format("error bars from the {} mesh: states.csv's *_extrapolated and *_error columns", mesh));
-  if (!beyond.empty()) {
-    // The error falls as h^2: refining by r divides it by r^2.
-    const double r = std::ceil(std::sqrt(worst / 0.05));
-    const MeshSettings& m = model.scene().mesh;
-    out.summary.push_back(fmt::format(
-        "warning: the scene's {} x {} mesh is more than 5 % off: {}; a mesh of about {} x {} would meet 5 %",
-        m.radial_nodes, m.circumferential_nodes, beyond, int(r) * (m.radial_nodes - 1) + 1,
-        int(r) * m.circumferential_nodes));
-  }
-}
-
 void run_point(BearingModel& model, StudyOutcome& out) {
   SteadySolver solver(model, newton_settings(model.scene()));
   std::vector<double> u;
@@ -107,13 +52,55 @@ void run_point(BearingModel& model, StudyOutcome& out) {
     return;
   }
   out.states.push_back(record(model, u, rep));
-  if (model.scene().study.error_estimate == ErrorEstimate::richardson) {
-    try {
-      estimate_point_error(model, u, out.states.back(), out);
-    } catch (const std::exception& e) {
-      out.summary.push_back(std::string("no error bar: ") + e.what());
+  if (model.scene().study.error_estimate == ErrorEstimate::none) return;
+  // Its error bars (state_error.h), with the warning where the mesh is more than 5 % off.
+  std::string why;
+  try {
+    const std::unique_ptr<BearingModel> fine = refined_model(model, why);
+    if (fine && refine_state(model, *fine, u, out.states.back(), why, &out.timings.newton_iterations,
+                             &out.timings.jacobian_evaluations)) {
+      const std::vector<std::string> lines = state_error_lines(model.scene(), out.states);
+      out.summary.insert(out.summary.end(), lines.begin(), lines.end());
+      return;
     }
+  } catch (const std::exception& e) {
+    why = e.what();
   }
+  out.summary.push_back("no error bar: " + why);
+}
+
+// Every state of a search again on the refined mesh (study.error_estimate: every_state),
+// on the search's thread; a state without one says why in the search's row.
+void estimate_state_errors(const BearingModel& model, DistressSearch& found, const ProgressReport& progress) {
+  if (model.scene().study.error_estimate != ErrorEstimate::every_state || found.states.empty() ||
+      found.state_vectors.size() != found.states.size())
+    return;
+  const auto t0 = Clock::now();
+  std::string why;
+  std::size_t refined = 0;
+  try {
+    const std::unique_ptr<BearingModel> fine = refined_model(model, why);
+    BearingModel at(model.scene());  // the search's model, at each state's load in turn
+    at.set_speed(model.speed());
+    for (std::size_t i = 0; fine && i < found.states.size(); ++i) {
+      at.set_load(found.states[i].state.load);
+      fine->set_speed(model.speed());
+      std::string missing;
+      if (refine_state(at, *fine, found.state_vectors[i], found.states[i], missing))
+        ++refined;
+      else
+        why = missing;
+    }
+  } catch (const std::exception& e) {
+    why = e.what();
+  }
+  if (refined < found.states.size())
+    found.row.method += fmt::format("; error bars at {} of {} states (the last missing: {})", refined,
+                                    found.states.size(), why);
+  if (progress)
+    progress(fmt::format("  error bars: {} of {} states on the refined mesh [{:.1f} s]", refined, found.states.size(),
+                         elapsed_ms(t0) / 1000.0));
+  found.state_vectors.clear();
 }
 
 // The name of a parameter's column in the results, with its unit.
@@ -184,11 +171,13 @@ void run_distress_curve(BearingModel& base, StudyOutcome& out, const ProgressRep
     StudyOutcome& part = parts[i];
     try {
       BearingModel model(variants[i].scene ? *variants[i].scene : base.scene());
-      run_fold_curve(model, variants[i].parameter, variants[i].label, part, say);
+      // Threads the family's members leave over serve each curve's own pieces.
+      run_fold_curve(model, variants[i].parameter, variants[i].label, part, say,
+                     std::max(1, threads / int(variants.size())));
     } catch (const std::exception& e) {
       part.summary.push_back(fmt::format("fold curve{}: failed: {}", variants[i].label, e.what()));
     }
-    part.timings.klu_factorizations =
+    part.timings.klu_factorizations +=
         SparseLu::thread_counts().factored_since(before) + part.timings.ida_factorizations;
   });
   for (StudyOutcome& part : parts) {
@@ -220,7 +209,7 @@ void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings
                          const ProgressReport& progress) {
   const Study& st = model.scene().study;
   const bool searches_distress = st.type == StudyType::load_sweep || st.type == StudyType::distress_map;
-  if (!searches_distress || st.error_estimate != ErrorEstimate::richardson || !found.row.distress_load ||
+  if (!searches_distress || st.error_estimate == ErrorEstimate::none || !found.row.distress_load ||
       !found.row.fold_load || found.states.empty())
     return;
   const Scene fine = refined_mesh(model.scene());
@@ -258,7 +247,7 @@ void estimate_crossing_errors(const BearingModel& model, const DistressSearchSet
   const Study& st = model.scene().study;
   const bool searches = st.type == StudyType::load_sweep || st.type == StudyType::distress_map;
   DistressRow& row = found.row;
-  if (!searches || st.error_estimate != ErrorEstimate::richardson) return;
+  if (!searches || st.error_estimate == ErrorEstimate::none) return;
   std::unique_ptr<BearingModel> fine;
   for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
     if (!row.criterion_loads[c] || found.crossing_states.size() <= c || found.crossing_states[c].second.empty())
@@ -344,6 +333,7 @@ SearchDone search_one(const BearingModel& base, const SearchTask& task, const Di
   if (done.model) {
     estimate_mesh_error(*done.model, settings, found, progress);
     estimate_crossing_errors(*done.model, settings, found, progress);
+    estimate_state_errors(*done.model, found, progress);
   }
   done.klu_factorizations = SparseLu::thread_counts().factored_since(before) + found.counts.ida_factorizations;
   found.row.parameter = variant.parameter;
@@ -492,6 +482,7 @@ DistressSearchSettings range_settings(const Study& st) {
   s.load_start = st.load_start;
   s.load_end = st.load_end;
   s.bracket_width = st.bracket_width;
+  s.keep_state_vectors = st.error_estimate == ErrorEstimate::every_state;
   return s;
 }
 
@@ -649,6 +640,10 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
   if (options.stop && options.stop->load() && has_independent_searches(type)) {
     out.stopped = true;
     out.message += (out.message.empty() ? "" : "; ") + std::string("stopped before the study's end: searches are missing");
+  }
+  if (model.scene().study.error_estimate == ErrorEstimate::every_state) {
+    const std::vector<std::string> lines = state_error_lines(model.scene(), out.states);
+    out.summary.insert(out.summary.end(), lines.begin(), lines.end());
   }
   out.timings.states = int(out.states.size());
   // Continuation and distress searches count their work in states, transients and

@@ -15,6 +15,8 @@
 #include "solver/steady_solver.h"
 #include "study/study_runner.h"
 #include "study/study_support.h"
+#include "twb/results/distress_table.h"
+#include "twb/results/fold_curve_table.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {
@@ -115,6 +117,25 @@ TEST(LimitCurve, NoPointLiesAboveTheDistressFold) {
                                                      (hi->first - lo->first);
       EXPECT_LT(r->state.load, w_d) << name << " at " << r->parameter;
     }
+}
+
+// The curve's pieces (both ends' searches, the fold's error bars in two chains, each
+// limit curve) run on two threads as on one: the same files to the last bit.
+TEST(LimitCurve, TheSameCurvesOnOneThreadAndOnTwo) {
+  Scene scene = bronze_curve();
+  scene.study.error_estimate = ErrorEstimate::richardson;
+  BearingModel one(scene), two(scene);
+  const StudyOutcome serial = run_study(one, {}, RunOptions{.threads = 1});
+  const StudyOutcome parallel = run_study(two, {}, RunOptions{.threads = 2});
+  ASSERT_TRUE(std::any_of(serial.fold_curve.begin(), serial.fold_curve.end(),
+                          [](const FoldCurveRow& r) { return r.fine_load.has_value(); }))
+      << "the fold's error bars are computed";
+  EXPECT_EQ(limit_rows(serial).size(), 4u);
+  EXPECT_EQ(fold_curve_csv(parallel.fold_curve, parallel.fold_curve_column, parallel.parameter_column),
+            fold_curve_csv(serial.fold_curve, serial.fold_curve_column, serial.parameter_column));
+  EXPECT_EQ(distress_csv(parallel.distress, parallel.parameter_column),
+            distress_csv(serial.distress, serial.parameter_column));
+  EXPECT_EQ(parallel.summary, serial.summary);
 }
 
 }  // namespace

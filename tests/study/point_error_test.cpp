@@ -7,6 +7,7 @@
 // more than 5 % off and name a mesh that would meet it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -59,6 +60,41 @@ TEST(PointError, NoneLeavesTheColumnsOut) {
   ASSERT_EQ(out.states.size(), 1u);
   EXPECT_TRUE(out.states[0].mesh_errors.empty());
   EXPECT_EQ(states_csv(out.states).find("_extrapolated"), std::string::npos);
+}
+
+// A sweep with error_estimate: every_state: every state of the cool branch carries the
+// bars a point study at its load gives (the same refined solve from the same coarse
+// state: equal to the solver's tolerance, far below the bars), and the run's warning
+// names the states' worst quantity and a mesh.
+TEST(PointError, EveryStateOfASweepHasAPointsBar) {
+  const Scene scene = load_scene(std::string(TWB_SOURCE_DIR) + "/configs/washers/bronze_cusn8.yaml",
+                                 {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24",
+                                  "study={type: load_sweep, load_start: 100 N, load_end: 300 N, load_steps: 3, "
+                                  "error_estimate: every_state}"});
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.states.empty());
+  for (const SolvedState& s : out.states) EXPECT_EQ(s.mesh_errors.size(), 2 * std::size(kMeshErrorQuantities));
+  const auto at_300 = std::find_if(out.states.begin(), out.states.end(),
+                                   [](const SolvedState& s) { return std::abs(s.state.load - 300.0) < 1e-9; });
+  ASSERT_NE(at_300, out.states.end());
+  const StudyOutcome point = point_on(5, 24);
+  for (std::size_t k = 0; k < std::size(kMeshErrorQuantities); ++k) {
+    // Both coarse states solved to the residual tolerance 1e-10 from different starts,
+    // both refined ones too: they agree to far better than a millionth of the bar.
+    EXPECT_NEAR(at_300->mesh_errors[2 * k], point.states[0].mesh_errors[2 * k], 1e-6 * point.states[0].mesh_errors[2 * k + 1])
+        << kMeshErrorQuantities[k];
+    EXPECT_NEAR(at_300->mesh_errors[2 * k + 1], point.states[0].mesh_errors[2 * k + 1],
+                1e-6 * point.states[0].mesh_errors[2 * k + 1])
+        << kMeshErrorQuantities[k];
+  }
+  std::string warning;
+  for (const std::string& line : out.summary)
+    if (line.rfind("warning: the scene's 5 x 24 mesh is more than 5 % off at ", 0) == 0) warning = line;
+  ASSERT_FALSE(warning.empty());
+  EXPECT_NE(warning.find("torque_Nm"), std::string::npos) << warning;
+  EXPECT_NE(warning.find(" N, "), std::string::npos) << warning;  // where: a state's load and speed
+  EXPECT_NE(warning.find(" rad/s"), std::string::npos) << warning;
 }
 
 }  // namespace

@@ -53,7 +53,8 @@ enum class CurveParameter { speed, friction_coefficient, gear_tilt, ambient_temp
 // How a distress search estimates the discretization error of W_d.
 enum class ErrorEstimate {
   none,
-  richardson,  // the fold again on the mesh refined by two in each direction, extrapolated
+  richardson,   // the fold again on the mesh refined by two in each direction, extrapolated
+  every_state,  // that, and every state of a sweep too (load_sweep, distress_map)
 };
 
 struct Effects {

@@ -1,0 +1,122 @@
+#include "study/state_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "solver/steady_solver.h"
+#include "study/richardson.h"
+#include "study_support.h"
+
+namespace twb {
+
+namespace {
+
+std::string mesh_name(int radial, int circumferential) { return fmt::format("{} x {}", radial, circumferential); }
+
+// How far a state's quantity k is from its extrapolation, relative: temperatures count
+// from the ambient (their error relative to the rise).
+double relative_offset(const Scene& scene, std::size_t k, double coarse, double extrapolated) {
+  const double zero = k < 2 ? scene.operating.ambient - 273.15 : 0.0;
+  return std::abs(coarse - extrapolated) / std::max(std::abs(extrapolated - zero), 1e-300);
+}
+
+}  // namespace
+
+std::unique_ptr<BearingModel> refined_model(const BearingModel& model, std::string& why) {
+  const Scene refined = refined_mesh(model.scene());
+  if (refined.mesh.radial_nodes > 65 || refined.mesh.circumferential_nodes > 528) {
+    why = fmt::format("the refined {} mesh is beyond the 65 x 528 twb refines a state on (study.error_estimate: "
+                      "none leaves it out)",
+                      mesh_name(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes));
+    return nullptr;
+  }
+  return model.on_mesh(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
+}
+
+bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const double> u, SolvedState& state,
+                  std::string& why, long* newton_iterations, long* jacobians) {
+  fine.set_load(model.load());
+  std::vector<double> v = fine.interpolated_from(model, u);
+  SteadySolver solver(fine, newton_settings(model.scene()));
+  const SteadyReport rep = solver.solve(v);
+  if (newton_iterations) *newton_iterations += rep.iterations;
+  if (jacobians) *jacobians += rep.jacobian_evaluations;
+  if (!rep.converged) {
+    why = fmt::format("no steady state on the refined {} mesh at {:.6g} N: {}",
+                      mesh_name(fine.scene().mesh.radial_nodes, fine.scene().mesh.circumferential_nodes), model.load(),
+                      rep.message);
+    return false;
+  }
+  const std::vector<double> coarse = mesh_error_quantities(state.state);
+  const std::vector<double> fine_values = mesh_error_quantities(fine.describe(v));
+  state.mesh_errors.clear();
+  for (std::size_t k = 0; k < coarse.size(); ++k) {
+    const MeshErrorEstimate e = richardson_extrapolation(coarse[k], fine_values[k], kTwoGridSafety);
+    state.mesh_errors.push_back(e.extrapolated);
+    state.mesh_errors.push_back(e.error);
+  }
+  return true;
+}
+
+std::vector<std::string> state_error_lines(const Scene& scene, const std::vector<SolvedState>& states) {
+  std::vector<const SolvedState*> with;
+  for (const SolvedState& s : states)
+    if (!s.mesh_errors.empty()) with.push_back(&s);
+  if (with.empty()) return {};
+  const Scene refined = refined_mesh(scene);
+  const std::string fine = mesh_name(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
+  std::vector<std::string> lines;
+  lines.push_back(
+      with.size() == 1 && states.size() == 1
+          ? fmt::format("error bars from the {} mesh: states.csv's *_extrapolated and *_error columns", fine)
+          : fmt::format("error bars from the {} mesh at {} of {} states: states.csv's *_extrapolated and *_error "
+                        "columns",
+                        fine, with.size(), states.size()));
+  // The worst offset of each quantity over the states, and where.
+  constexpr std::size_t quantities = std::size(kMeshErrorQuantities);
+  std::vector<double> worst(quantities, 0.0);
+  std::vector<const SolvedState*> where(quantities, nullptr);
+  std::size_t states_beyond = 0;
+  for (const SolvedState* s : with) {
+    const std::vector<double> coarse = mesh_error_quantities(s->state);
+    bool beyond = false;
+    for (std::size_t k = 0; k < quantities; ++k) {
+      const double off = relative_offset(scene, k, coarse[k], s->mesh_errors[2 * k]);
+      if (off > 0.05) beyond = true;
+      if (off > worst[k]) {
+        worst[k] = off;
+        where[k] = s;
+      }
+    }
+    if (beyond) ++states_beyond;
+  }
+  std::string listed;
+  double largest = 0.0;
+  for (std::size_t k = 0; k < quantities; ++k) {
+    if (!(worst[k] > 0.05)) continue;
+    largest = std::max(largest, worst[k]);
+    const SolvedState& s = *where[k];
+    const double value = mesh_error_quantities(s.state)[k];
+    listed += fmt::format("{}{} {:.4g} ({:.1f} % from its mesh-converged {:.4g} ± {:.2g}{})", listed.empty() ? "" : ", ",
+                          kMeshErrorQuantities[k], value, 100.0 * worst[k], s.mesh_errors[2 * k],
+                          s.mesh_errors[2 * k + 1],
+                          with.size() == 1 ? std::string()
+                                           : fmt::format(" at {:.6g} N, {:.6g} rad/s", s.state.load, s.state.speed));
+  }
+  if (listed.empty()) return lines;
+  // The error falls as h^2: refining by r divides it by r^2.
+  const double r = std::ceil(std::sqrt(largest / 0.05));
+  const MeshSettings& m = scene.mesh;
+  lines.push_back(fmt::format("warning: the scene's {} x {} mesh is more than 5 % off{}: {}; a mesh of about {} x {} "
+                              "would meet 5 %",
+                              m.radial_nodes, m.circumferential_nodes,
+                              with.size() == 1 ? std::string()
+                                               : fmt::format(" at {} of {} states (the worst of each quantity)",
+                                                             states_beyond, with.size()),
+                              listed, int(r) * (m.radial_nodes - 1) + 1, int(r) * m.circumferential_nodes));
+  return lines;
+}
+
+}  // namespace twb

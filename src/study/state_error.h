@@ -1,0 +1,36 @@
+// A state's discretization error (study.error_estimate: richardson for a point,
+// every_state for each state of a sweep): the state again on the mesh refined by two,
+// from the scene mesh's state interpolated there, and each reported quantity
+// (kMeshErrorQuantities) extrapolated with its error bar (richardson.h; two grids alone,
+// F_s = 3). Where a quantity's estimated error exceeds 5 % the run says so and names the
+// mesh that would meet it (the error falling as h², the formal order).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "model/bearing_model.h"
+#include "twb/results/states_table.h"
+
+namespace twb {
+
+// The refined model states are solved on, or none with the reason in `why` (beyond the
+// 65 x 528 twb refines a state on: the refined system outgrows a workstation's memory
+// and minutes).
+std::unique_ptr<BearingModel> refined_model(const BearingModel& model, std::string& why);
+
+// `state` (solved at u on `model`, at the model's load and speed) again on `fine` at the
+// same load: its mesh_errors filled, or false with the reason in `why`. Newton iterations
+// and Jacobians are added to the counters given.
+bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const double> u, SolvedState& state,
+                  std::string& why, long* newton_iterations = nullptr, long* jacobians = nullptr);
+
+// The run's lines on the states' error bars: which mesh gave them, and a warning where a
+// quantity of a state is more than 5 % off its extrapolation, with the mesh that would
+// meet 5 %. None where no state has a bar.
+std::vector<std::string> state_error_lines(const Scene& scene, const std::vector<SolvedState>& states);
+
+}  // namespace twb
