@@ -285,6 +285,28 @@ class TwbPlotTest(unittest.TestCase):
         self.assertIn(f"{545 * 60 / (2 * math.pi):.4g} rpm", text)
         self.assertNotIn("545 rad/s", text)
 
+    def test_states_error_bars_on_the_load_figures(self):
+        """states.csv with the states' error bars (error_estimate: every_state): read as
+        columns, NaN where a state has none, and drawn on the load figures of the quantities
+        that have them, with their legend entry; a figure of a quantity without bars has
+        neither."""
+        d = os.path.join(self.tmp, "state_bars")
+        os.makedirs(d)
+        quantities = ("T_mean_C", "T_max_C", "hmin_over_sigma", "torque_Nm", "f_eff")
+        header = STATES_HEADER + "," + ",".join(f"{q}_{p}" for q in quantities for p in ("extrapolated", "error"))
+        rows = state_rows(545, [100, 300, 500])
+        # The first state without a bar (empty cells), the others with one.
+        bars = ["," * 9] + [",".join(["40", "2", "50", "3", "3.5", "0.2", "0.1", "0.01", "0.03", "0.002"])] * 2
+        write(os.path.join(d, "states.csv"), [header] + [r + "," + b for r, b in zip(rows, bars)])
+        states, _ = tp.read_states(os.path.join(d, "states.csv"))
+        self.assertTrue(math.isnan(states["T_mean_C_error"][0]))
+        self.assertEqual(list(states["T_mean_C_error"][1:]), [2.0, 2.0])
+        out_dir = os.path.join(self.tmp, "figs_state_bars")
+        result = plot(d, "--out", out_dir)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("its error bar", self.svg_text(os.path.join(out_dir, "fig07_mean_temperature_vs_load.svg")))
+        self.assertNotIn("its error bar", self.svg_text(os.path.join(out_dir, "fig11_fluid_share_vs_load.svg")))
+
     def test_limit_curves_beside_the_fold(self):
         """fold_curve.csv with failure criteria's crossings (their name in the fold column):
         each curve is drawn and labelled by its criterion, and the safe region is below the

@@ -12,7 +12,7 @@ import numpy as np
 
 from .style import Style, parameter_label, speed_key, speed_label
 from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_distress, read_fold_curve,
-                     read_sliding, read_states, read_trajectory)
+                     read_sliding, read_states, read_trajectory, STATE_ERROR_COLUMNS)
 
 
 def friction_setting(path):
@@ -106,6 +106,10 @@ def _split_trajectory(columns, tags):
 
 def merge(runs):
     states = {c: np.concatenate([r.states[c] for r in runs]) for c in STATE_COLUMNS}
+    # A state's error bar where its run has one, NaN elsewhere.
+    for c in STATE_ERROR_COLUMNS:
+        if any(c in r.states for r in runs):
+            states[c] = np.concatenate([r.states.get(c, np.full(len(r.states["load_N"]), np.nan)) for r in runs])
     parameters = [tag[0] for r in runs for tag in r.tags]
     # A state of a friction coefficient sweep has its own coefficient; otherwise the
     # run's friction law (run.json) labels it.

@@ -41,16 +41,31 @@ def _positive(values):
     return out
 
 
+def draw_error_bars(ax, data, xcol, ycol, idx, color):
+    """The states' mesh-converged values with their error bars (states.csv's
+    <ycol>_extrapolated and <ycol>_error), where the states have them; whether any."""
+    s = data.states
+    if f"{ycol}_error" not in s:
+        return False
+    value, bar = s[f"{ycol}_extrapolated"][idx], s[f"{ycol}_error"][idx]
+    has = np.isfinite(value) & np.isfinite(bar)
+    if not has.any():
+        return False
+    ax.errorbar(s[xcol][idx][has], value[has], yerr=bar[has], fmt="none", ecolor=color, elinewidth=0.8,
+                capsize=2.5, alpha=0.8)
+    return True
+
+
 def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
     """One curve per speed (and per value of a study's second parameter, in its own
-    line style), points joined in order of load; returns whether any point had not
-    converged."""
+    line style), points joined in order of load, and the states' error bars where they
+    have them; returns (whether any point had not converged, whether any bar was drawn)."""
     s = data.states
     speeds = np.array([speed_key(v) for v in s["speed_rad_s"]])
     runs = parameter_order(data.parameters)
     styles = {p: LINESTYLES[i % len(LINESTYLES)] for i, p in enumerate(runs)}
     jumps = {(speed, parameter): w_d for speed, parameter, w_d in distress_lines(data)}
-    any_unconverged = False
+    any_unconverged = any_bar = False
     for key in data.speed_style.keys:
         for run in [None] + runs:
             idx = np.flatnonzero((speeds == key) & np.array([p == run for p in data.parameters],
@@ -83,6 +98,8 @@ def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
                 xs, ys = np.insert(xs, k, np.nan), np.insert(ys, k, np.nan)
             ax.plot(xs, ys, color=color, marker=marker, markersize=4, linewidth=1.2,
                     linestyle=styles.get(run, "-"), label=label)
+            if not logx and not logy:
+                any_bar = draw_error_bars(ax, data, xcol, ycol, idx, color) or any_bar
             if not ok.all():
                 any_unconverged = True
                 ax.plot(x[~ok], y[~ok], linestyle="none", marker=marker, markersize=6,
@@ -91,7 +108,7 @@ def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
         ax.set_xscale("log")
     if logy:
         ax.set_yscale("log")
-    return any_unconverged
+    return any_unconverged, any_bar
 
 
 def distress_lines(data):
@@ -112,7 +129,7 @@ def failure_lines(data):
 
 def figure_vs_load(data, column, ylabel, title, paper_figure, logy=False):
     fig, ax = new_figure(title, paper_figure)
-    unconverged = draw_by_speed(ax, data, "load_N", column, logy=logy)
+    unconverged, bars = draw_by_speed(ax, data, "load_N", column, logy=logy)
     marks = distress_lines(data)
     for key, _, w_d in marks:
         ax.axvline(w_d, color=data.speed_style.colors[key], linestyle=":", linewidth=1.2)
@@ -121,13 +138,13 @@ def figure_vs_load(data, column, ylabel, title, paper_figure, logy=False):
         ax.axvline(w_fail, color=data.speed_style.colors[key], linestyle="-.", linewidth=1.2)
     ax.set_xlabel(LOAD_LABEL)
     ax.set_ylabel(ylabel)
-    finish_legend(ax, unconverged, distress=bool(marks), failure=bool(fails))
+    finish_legend(ax, unconverged, distress=bool(marks), failure=bool(fails), error_bars=bars)
     return fig
 
 
 def figure_contact_vs_hmin(data):
     fig, ax = new_figure("Contact share vs minimum film thickness", 13)
-    unconverged = draw_by_speed(ax, data, "hmin_over_sigma", "contact_share")
+    unconverged, _ = draw_by_speed(ax, data, "hmin_over_sigma", "contact_share")
     # The paper reads its figure against this customary threshold of significant contact.
     ax.axvline(3.0, color="grey", linestyle="--", linewidth=0.8)
     ax.set_xlabel(HMIN_LABEL)
@@ -144,7 +161,7 @@ PAPER_STRIBECK_OPTIMA = ((2.0e-6, "paper, numerical: optimum near 2.0e-6", "--")
 
 def figure_stribeck(data):
     fig, ax = new_figure("Stribeck curve", 14)
-    unconverged = draw_by_speed(ax, data, "stribeck", "f_eff", logx=True)
+    unconverged, _ = draw_by_speed(ax, data, "stribeck", "f_eff", logx=True)
     for x, label, style in PAPER_STRIBECK_OPTIMA:
         ax.axvline(x, color="0.4", linestyle=style, linewidth=1.0, label=label)
     ax.set_xlabel(STRIBECK_LABEL)

@@ -69,8 +69,11 @@ def parameter_label(parameter):
     return PARAMETER_FORMATS.get(name, name + " = {:g}").format(value)
 
 
-def finish_legend(ax, unconverged=False, distress=False, failure=False):
+def finish_legend(ax, unconverged=False, distress=False, failure=False, error_bars=False):
     handles, labels = ax.get_legend_handles_labels()
+    if error_bars:
+        handles.append(Line2D([], [], color="black", linestyle="none", marker="|", markersize=8))
+        labels.append("mesh-converged value ± its error bar")
     if distress:
         handles.append(Line2D([], [], color="black", linestyle=":", linewidth=1.2))
         labels.append(r"distress load $W_d$")

@@ -17,6 +17,11 @@ STATE_COLUMNS = (
     "load_N", "speed_rad_s", "T_mean_C", "T_max_C", "hmin_over_sigma", "gamma_x_ratio",
     "gamma_y_ratio", "fluid_share", "contact_share", "torque_Nm", "f_eff", "stribeck",
     "converged", "iterations", "residual", "energy_error", "wall_ms")
+# A state's error bar (study.error_estimate: richardson on a point, every_state on a
+# sweep): the mesh-converged value and its bar, after the state's own columns; empty
+# cells in a state without one.
+STATE_ERROR_COLUMNS = tuple(f"{q}_{part}" for q in ("T_mean_C", "T_max_C", "hmin_over_sigma", "torque_Nm", "f_eff")
+                            for part in ("extrapolated", "error"))
 TRAJECTORY_COLUMNS = (
     "t_s", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff", "load_N")
 DISTRESS_TAIL = ("W_d_N", "bracket_low_N", "bracket_high_N", "fold_N", "method")
@@ -115,9 +120,10 @@ def _run_tags(path, line, fields, header):
     return tag, sliding
 
 
-def _read_table(path, required, what, optional=()):
+def _read_table(path, required, what, optional=(), blank_ok=()):
     """Columns of a twb table as float arrays (optional ones when present), in file
-    order, and each row's run tags."""
+    order, and each row's run tags. Columns in blank_ok (optional ones) may have empty
+    cells, read as NaN."""
     records = _records(path)
     header = _header(path, records, required, what)
     names = list(required) + [c for c in optional if c in header]
@@ -127,7 +133,8 @@ def _read_table(path, required, what, optional=()):
     for line, fields in records:
         _check_width(path, line, fields, header)
         for c in names:
-            columns[c].append(_number(path, line, c, fields[index[c]]))
+            value = _number(path, line, c, fields[index[c]], optional=c in blank_ok)
+            columns[c].append(math.nan if value is None else value)
         tags.append(_run_tags(path, line, fields, header))
         if "converged" in columns and columns["converged"][-1] not in (0.0, 1.0):
             raise InputError(f"{path}: line {line}: column 'converged': expected 0 or 1, "
@@ -137,7 +144,8 @@ def _read_table(path, required, what, optional=()):
 
 def read_states(path):
     """Columns of states.csv as float arrays, in file order, and each state's run tags."""
-    return _read_table(path, STATE_COLUMNS, "states.csv")
+    return _read_table(path, STATE_COLUMNS, "states.csv", optional=STATE_ERROR_COLUMNS,
+                       blank_ok=STATE_ERROR_COLUMNS)
 
 
 def read_trajectory(path):
