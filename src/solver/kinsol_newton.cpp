@@ -155,18 +155,18 @@ int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vecto
 // (SparseLu::refactor). The matrix KINSOL hands over is the CSR matrix of that pattern
 // (fill_sparse_matrix), in the pattern's order.
 struct PatternKlu {
-  explicit PatternKlu(const SparsePattern& pattern) : lu(pattern) {}
+  PatternKlu(const SparsePattern& pattern, SparseLu::Ordering ordering) : lu(pattern, ordering) {}
   SparseLu lu;
   int last_flag = SUNLS_SUCCESS;
 };
 
 PatternKlu& pattern_klu(SUNLinearSolver s) { return *static_cast<PatternKlu*>(s->content); }
 
-SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern) {
+SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern, SparseLu::Ordering ordering) {
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
   if (!s) return nullptr;
   try {
-    s->content = new PatternKlu(pattern);
+    s->content = new PatternKlu(pattern, ordering);
   } catch (...) {
     SUNLinSolFreeEmpty(s);
     throw;
@@ -209,7 +209,7 @@ constexpr int full_step_budget = 8;
 
 }  // namespace
 
-KinsolNewton::KinsolNewton(const SteadySystem& model)
+KinsolNewton::KinsolNewton(const SteadySystem& model, SparseLu::Ordering ordering)
     : model_(model), ctx_(make_context()), callbacks_(std::make_unique<Callbacks>()) {
   callbacks_->model = &model_;
   for (Index k = 0; k < model_.size(); ++k) callbacks_->diagonal.push_back(model_.pattern().find(k, k));
@@ -221,7 +221,7 @@ KinsolNewton::KinsolNewton(const SteadySystem& model)
   residual_scale_.reset(N_VNew_Serial(n, ctx_.get()));
   N_VConst(1.0, residual_scale_.get());
   jac_.reset(SUNSparseMatrix(n, n, model_.pattern().nnz(), CSR_MAT, ctx_.get()));
-  klu_.reset(make_pattern_klu(ctx_.get(), model_.pattern()));
+  klu_.reset(make_pattern_klu(ctx_.get(), model_.pattern(), ordering));
   if (!y_ || !scale_ || !jac_ || !klu_) throw SolverFailure("could not allocate the Newton solver", -1);
   kin_ = KINCreate(ctx_.get());
   if (!kin_) throw SolverFailure("KINCreate failed", -1);

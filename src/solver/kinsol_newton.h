@@ -74,7 +74,9 @@ struct PseudoTimeShift {
 
 class KinsolNewton {
  public:
-  explicit KinsolNewton(const SteadySystem& system);
+  // ordering: the linear solver's (sparse_lu.h); by size unless the solver factors a few
+  // times only.
+  explicit KinsolNewton(const SteadySystem& system, SparseLu::Ordering ordering = SparseLu::Ordering::by_size);
   ~KinsolNewton();
   KinsolNewton(const KinsolNewton&) = delete;
   KinsolNewton& operator=(const KinsolNewton&) = delete;

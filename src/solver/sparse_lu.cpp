@@ -47,10 +47,10 @@ struct SparseLu::Klu {
   }
 };
 
-SparseLu::SparseLu(const SparsePattern& p) : klu_(std::make_unique<Klu>()) {
+SparseLu::SparseLu(const SparsePattern& p, Ordering ordering) : klu_(std::make_unique<Klu>()) {
   if (p.rows != p.cols) throw std::invalid_argument("SparseLu: the matrix must be square");
   klu_l_defaults(&klu_->common);
-  if (p.rows > kNestedDissectionAbove) {
+  if (ordering == Ordering::by_size && p.rows > kNestedDissectionAbove) {
     klu_->common.ordering = 3;
     klu_->common.user_order = nested_dissection_order;
   } else {

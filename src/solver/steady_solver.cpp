@@ -81,8 +81,8 @@ class PseudoTimeStepper {
 
 }  // namespace
 
-SteadySolver::SteadySolver(BearingModel& model, NewtonSettings settings)
-    : model_(model), settings_(settings), newton_(model) {}
+SteadySolver::SteadySolver(BearingModel& model, NewtonSettings settings, SparseLu::Ordering ordering)
+    : model_(model), settings_(settings), newton_(model, ordering) {}
 
 void SteadySolver::account(SteadyReport& rep, const NewtonReport& n) const {
   ++rep.newton_solves;

@@ -28,7 +28,8 @@ struct SteadyReport {
 
 class SteadySolver {
  public:
-  SteadySolver(BearingModel& model, NewtonSettings settings);
+  SteadySolver(BearingModel& model, NewtonSettings settings,
+               SparseLu::Ordering ordering = SparseLu::Ordering::by_size);
 
   // From u (a warm start), falling back to a speed ramp, then a load ramp, from the cold start.
   SteadyReport solve(std::vector<double>& u);

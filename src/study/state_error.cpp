@@ -36,10 +36,10 @@ std::unique_ptr<BearingModel> refined_model(const BearingModel& model, std::stri
 }
 
 bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const double> u, SolvedState& state,
-                  std::string& why, long* newton_iterations, long* jacobians) {
+                  std::string& why, SparseLu::Ordering ordering, long* newton_iterations, long* jacobians) {
   fine.set_load(model.load());
   std::vector<double> v = fine.interpolated_from(model, u);
-  SteadySolver solver(fine, newton_settings(model.scene()));
+  SteadySolver solver(fine, newton_settings(model.scene()), ordering);
   const SteadyReport rep = solver.solve(v);
   if (newton_iterations) *newton_iterations += rep.iterations;
   if (jacobians) *jacobians += rep.jacobian_evaluations;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/bearing_model.h"
+#include "solver/sparse_lu.h"
 #include "twb/results/states_table.h"
 
 namespace twb {
@@ -24,9 +25,12 @@ std::unique_ptr<BearingModel> refined_model(const BearingModel& model, std::stri
 
 // `state` (solved at u on `model`, at the model's load and speed) again on `fine` at the
 // same load: its mesh_errors filled, or false with the reason in `why`. Newton iterations
-// and Jacobians are added to the counters given.
+// and Jacobians are added to the counters given. `ordering`: the refined solver's
+// (sparse_lu.h): minimum_degree for a state refined alone (a point), by_size where a run
+// refines many on one mesh (nested dissection's order is found once for them all).
 bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const double> u, SolvedState& state,
-                  std::string& why, long* newton_iterations = nullptr, long* jacobians = nullptr);
+                  std::string& why, SparseLu::Ordering ordering, long* newton_iterations = nullptr,
+                  long* jacobians = nullptr);
 
 // The run's lines on the states' error bars: which mesh gave them, and a warning where a
 // quantity of a state is more than 5 % off its extrapolation, with the mesh that would

@@ -57,8 +57,8 @@ void run_point(BearingModel& model, StudyOutcome& out) {
   std::string why;
   try {
     const std::unique_ptr<BearingModel> fine = refined_model(model, why);
-    if (fine && refine_state(model, *fine, u, out.states.back(), why, &out.timings.newton_iterations,
-                             &out.timings.jacobian_evaluations)) {
+    if (fine && refine_state(model, *fine, u, out.states.back(), why, SparseLu::Ordering::minimum_degree,
+                             &out.timings.newton_iterations, &out.timings.jacobian_evaluations)) {
       const std::vector<std::string> lines = state_error_lines(model.scene(), out.states);
       out.summary.insert(out.summary.end(), lines.begin(), lines.end());
       return;
@@ -86,7 +86,7 @@ void estimate_state_errors(const BearingModel& model, DistressSearch& found, con
       at.set_load(found.states[i].state.load);
       fine->set_speed(model.speed());
       std::string missing;
-      if (refine_state(at, *fine, found.state_vectors[i], found.states[i], missing))
+      if (refine_state(at, *fine, found.state_vectors[i], found.states[i], missing, SparseLu::Ordering::by_size))
         ++refined;
       else
         why = missing;
