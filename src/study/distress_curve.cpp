@@ -82,7 +82,9 @@ struct LimitCurveJob {
 std::vector<LimitCurveJob> limit_curve_jobs(const Study& st, const std::vector<std::pair<double, Crossings>>& ends) {
   std::vector<LimitCurveJob> jobs;
   for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
-    const auto start = std::find_if(ends.begin(), ends.end(), [&](const auto& e) { return !e.second[c].second.empty(); });
+    // (a search that failed at its light load has no crossings at all)
+    const auto start = std::find_if(ends.begin(), ends.end(),
+                                    [&](const auto& e) { return c < e.second.size() && !e.second[c].second.empty(); });
     if (start == ends.end()) continue;
     LimitCurveJob& job = jobs.emplace_back();
     job.kind = kFailureCriteria[c];
@@ -202,7 +204,9 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     if (!(found.fold && found.row.distress_load)) return true;
     const LimitValues values{.thermal = model.scene().effects.thermal};
     for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
-      if (failure_margin(kFailureCriteria[c], values, limits) && found.crossing_states[c].second.empty()) return true;
+      if (failure_margin(kFailureCriteria[c], values, limits) &&
+          (c >= found.crossing_states.size() || found.crossing_states[c].second.empty()))
+        return true;
     return false;
   };
   BearingModel other_model(model.scene());
