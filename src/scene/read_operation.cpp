@@ -86,6 +86,21 @@ void read_fitted_viscosity(const MapReader& viscosity, bool data_sheet, Lubrican
     fit = points.size() == 2 ? fit_roelands(points, 6.31e-5) : fit_roelands(points);
 
   }
+  // The fitted law must be one the scene accepts as given (it is described so, and loads
+  // back): a fit outside Roelands' ranges means points no oil follows (units, a typo).
+  const struct {
+    const char* name;
+    double value;
+    const Range& range;
+  } fitted[] = {{"mu_infinity", fit.law.mu_infinity, bounds::mu_infinity},
+                {"G0", fit.law.g0, bounds::roelands_g0},
+                {"S0", fit.law.s0, bounds::roelands_s0}};
+  for (const auto& f : fitted)
+    if (!f.range.contains(f.value))
+      viscosity.node().fail(fmt::format("{}: the {} fit Roelands' law only with {} = {:.4g}, which must be {} ({}); no "
+                                        "oil follows such points: check their values and units",
+                                        viscosity.node().path(), data_sheet ? "data sheet's viscosities" : "points",
+                                        f.name, f.value, f.range.describe(), f.range.reason));
   l.mu_infinity = fit.law.mu_infinity;
   l.g0 = fit.law.g0;
   l.s0 = fit.law.s0;

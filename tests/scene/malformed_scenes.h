@@ -32,6 +32,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"tilt_beyond_small_angle", 6, 84, {"geometry.gear.tilt", "at most 50 mrad", "small-angle gap"}},
     {"data_sheet_viscosity_rising", 8, 54, {"lubricant.viscosity.kv100", "is not below kv40", "an oil thins as it warms"}},
     {"viscosity_table_one_point", 10, 13, {"lubricant.viscosity.points: 1 point", "needs at least two"}},
+    {"viscosity_table_no_oil_follows", 9, 5, {"lubricant.viscosity: the points fit Roelands' law only with G0 = 677.6", "must be in (0, 50]", "check their values and units"}},
     {"data_sheet_without_density", 8, 14, {"'lubricant.viscosity': needs density"}},
     {"unknown_key", 5, 62, {"unknown key 'thicknes' in 'geometry.washer'", "did you mean 'thickness'?", "Allowed: inner_diameter, outer_diameter, thickness"}},
     {"unknown_top_level_key", 12, 1, {"unknown key 'meshes' at the top level", "did you mean 'mesh'?", "Allowed: effects, geometry"}},
