@@ -27,6 +27,10 @@ MeshErrorEstimate richardson_extrapolation(double coarse, double fine, double sa
   return e;
 }
 
+std::string mesh_name(const Scene& scene) {
+  return fmt::format("{} x {}", scene.mesh.radial_nodes, scene.mesh.circumferential_nodes);
+}
+
 Scene refined_mesh(const Scene& scene) {
   Scene fine = scene;
   fine.mesh.radial_nodes = 2 * (scene.mesh.radial_nodes - 1) + 1;
@@ -42,9 +46,6 @@ MeshErrorEstimate extrapolated(double coarse, double fine, const std::string& me
   return e;
 }
 
-std::string mesh_name(const Scene& scene) {
-  return fmt::format("{} x {}", scene.mesh.radial_nodes, scene.mesh.circumferential_nodes);
-}
 
 // A difference of two states carried onto the refined mesh (the interpolation is affine
 // in the state: the edge values and the ambient shift cancel).
@@ -208,8 +209,7 @@ std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, B
   long solves = 0;
   const std::optional<double> w = crossing_near(fine, kind, state, slope, width, load_end, solves, why);
   if (!w) return std::nullopt;
-  return extrapolated(load, *w, fmt::format("{} x {}", fine.scene().mesh.radial_nodes,
-                                            fine.scene().mesh.circumferential_nodes));
+  return extrapolated(load, *w, mesh_name(fine.scene()));
 }
 
 }  // namespace twb

@@ -40,6 +40,8 @@ struct MeshErrorEstimate {
 
 // The scene with its mesh refined by two in each direction.
 Scene refined_mesh(const Scene& scene);
+// Its mesh as the run names it, e.g. "17 x 132".
+std::string mesh_name(const Scene& scene);
 
 // The extrapolation and its error bar from a value on a mesh and on the mesh refined by
 // two (the formula above, with F_s = safety); fine_mesh left empty.

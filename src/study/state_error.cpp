@@ -13,8 +13,6 @@ namespace twb {
 
 namespace {
 
-std::string mesh_name(int radial, int circumferential) { return fmt::format("{} x {}", radial, circumferential); }
-
 // How far a state's quantity k is from its extrapolation, relative: temperatures count
 // from the ambient (their error relative to the rise).
 double relative_offset(const Scene& scene, std::size_t k, double coarse, double extrapolated) {
@@ -29,7 +27,7 @@ std::unique_ptr<BearingModel> refined_model(const BearingModel& model, std::stri
   if (refined.mesh.radial_nodes > 65 || refined.mesh.circumferential_nodes > 528) {
     why = fmt::format("the refined {} mesh is beyond the 65 x 528 twb refines a state on (study.error_estimate: "
                       "none leaves it out)",
-                      mesh_name(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes));
+                      mesh_name(refined));
     return nullptr;
   }
   return model.on_mesh(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
@@ -45,7 +43,7 @@ bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const
   if (jacobians) *jacobians += rep.jacobian_evaluations;
   if (!rep.converged) {
     why = fmt::format("no steady state on the refined {} mesh at {:.6g} N: {}",
-                      mesh_name(fine.scene().mesh.radial_nodes, fine.scene().mesh.circumferential_nodes), model.load(),
+                      mesh_name(fine.scene()), model.load(),
                       rep.message);
     return false;
   }
@@ -66,7 +64,7 @@ std::vector<std::string> state_error_lines(const Scene& scene, const std::vector
     if (!s.mesh_errors.empty()) with.push_back(&s);
   if (with.empty()) return {};
   const Scene refined = refined_mesh(scene);
-  const std::string fine = mesh_name(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
+  const std::string fine = mesh_name(refined);
   std::vector<std::string> lines;
   lines.push_back(
       with.size() == 1 && states.size() == 1
