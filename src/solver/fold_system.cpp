@@ -113,20 +113,21 @@ std::pair<std::vector<double>, double> FoldSystem::null_vector_and_curvature(std
     bend += gradient[k] * v[k];
     push += w[k] * f_lambda[k];
   }
-  vg.resize(n);
+  return {unit_null_vector(std::move(vg)), bend / push};
+}
+
+std::vector<double> FoldSystem::unit_null_vector(std::vector<double> vg) const {
+  vg.resize(std::size_t(base().size()));
   const double size = metric().state_norm(vg);
   for (double& c : vg) c /= size;
-  return {std::move(vg), bend / push};
+  return vg;
 }
 
 std::vector<double> FoldSystem::null_vector(std::span<const double> x) const {
   const auto n = std::size_t(base().size());
   std::vector<double> f(n), base_jac(std::size_t(base().pattern().nnz())), vg;
   if (!solve_bordered(x, f, base_jac, vg)) return {};
-  vg.resize(n);
-  const double size = metric().state_norm(vg);
-  for (double& c : vg) c /= size;
-  return vg;
+  return unit_null_vector(std::move(vg));
 }
 
 }  // namespace twb

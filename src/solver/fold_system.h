@@ -65,6 +65,8 @@ class FoldSystem final : public BorderedSystem {
   // false when it is singular.
   bool solve_bordered(std::span<const double> x, std::span<double> f, std::span<double> base_jac,
                       std::vector<double>& vg) const;
+  // The bordered solve's (v, g) as v alone, unit in the metric's state norm.
+  std::vector<double> unit_null_vector(std::vector<double> vg) const;
   // ∇_u(wᵀ J v) and ∂(wᵀ J v)/∂λ by central differences along v.
   void second_derivatives(std::span<const double> u, std::span<const double> v, std::span<const double> w,
                           std::span<double> gradient, double& parameter_part) const;
