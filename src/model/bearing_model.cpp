@@ -60,17 +60,16 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   rigid_offset_ = layout_.add("rigid body (z_w, gamma_x, gamma_y, z_g)", "mechanics", 4);
   for (auto& f : films_) {
     if (fx.hydrodynamics && f.sliding)
-      f.pressure_offset = layout_.add(fmt_film_block(f.number, "pressure"), "hydrodynamics",
-                                      Index(nr - 2) * nt);
+      f.pressure_offset = layout_.add(fmt_film_block(f.number, "pressure"), "hydrodynamics", f.mesh.interior_count());
     // The mass-conserving model's second field (docs/physics.md section 12).
     if (f.pressure_offset >= 0 && fx.cavitation == CavitationModel::jfo)
       f.content_offset = layout_.add(fmt_film_block(f.number, "film content"), "hydrodynamics",
-                                     Index(nr - 2) * nt);
+                                     f.mesh.interior_count());
   }
   if (fx.thermal) {
     for (auto& f : films_)
       f.temperature_offset = layout_.add(fmt_film_block(f.number, "film-node temperature"), "thermal",
-                                         Index(nr) * nt);
+                                         f.mesh.node_count());
     auto add_component = [&](ComponentId id, const Component& c, const FilmMesh& grid, bool axisymmetric,
                              bool ambient, const char* name) {
       ComponentHeat h{id, grid, axisymmetric, c.thickness, c.material.conductivity,
@@ -102,6 +101,11 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   // Reference scales.
   sigma_ref_ = films_[0].sigma;
   gamma_ref_ = scene_.gear.tilt > 0 ? scene_.gear.tilt : sigma_ref_ / scene_.washer.outer_radius;
+  for (Film& f : films_) {
+    f.rigid_offset = rigid_offset_;
+    f.clearance_scale = sigma_ref_;
+    f.tilt_scale = gamma_ref_;
+  }
   const Film& sf = sliding_film();
   p_ref_ = scene_.operating.load / sf.mesh.area();
   h_ref_ = scene_.solver.cold_start_film * sf.sigma;
@@ -123,7 +127,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
     // set by the geometry. A σ-based one (3σ) makes smooth surfaces' flux terms 1e8
     // times the scale, so rounding alone would exceed the solver tolerance.
     const std::vector<double> start = cold_start();
-    const double h_flow = start[rigid_offset_ + sf.clearance_unknown] * sigma_ref_;
+    const double h_flow = start[std::size_t(sf.rigid_columns()[0])] * sigma_ref_;
     const double g = std::pow(h_flow, 3) / (12.0 * mu_ref_);
     flow_scale_.resize(op.interior_count());
     for (int i = 1; i < nr - 1; ++i) {
@@ -316,25 +320,14 @@ RigidPosition BearingModel::position(std::span<const double> u) const {
   return {q[0] * sigma_ref_, q[1] * gamma_ref_, q[2] * gamma_ref_, q[3] * sigma_ref_};
 }
 
-double BearingModel::film_gap(const Film& film, const RigidPosition& q, double r, double theta) const {
-  return gap_at(film, q, r * std::cos(theta), r * std::sin(theta));
-}
-
-double BearingModel::gap_at(const Film& film, const RigidPosition& q, double x, double y) const {
-  const double c = film.clearance_unknown == 0 ? q.c1 : q.c2;
-  return c + film.sign * (q.gamma_x * y - q.gamma_y * x) - film.imposed_tilt * x;
-}
-
 double BearingModel::pressure_at(std::span<const double> u, const Film& film, int i, int j) const {
-  if (film.pressure_offset < 0 || i <= 0 || i >= film.mesh.radial_nodes() - 1) return 0.0;
-  const int nt = film.mesh.circumferential_nodes();
-  return p_ref_ * u[film.pressure_offset + Index(i - 1) * nt + film.mesh.wrap(j)];
+  const Index k = film.pressure_column(i, j);
+  return k >= 0 ? p_ref_ * u[k] : 0.0;
 }
 
 double BearingModel::content_at(std::span<const double> u, const Film& film, int i, int j) const {
-  if (film.content_offset < 0 || i <= 0 || i >= film.mesh.radial_nodes() - 1) return 1.0;
-  const int nt = film.mesh.circumferential_nodes();
-  return u[film.content_offset + Index(i - 1) * nt + film.mesh.wrap(j)];
+  const Index k = film.content_column(i, j);
+  return k >= 0 ? u[k] : 1.0;
 }
 
 double BearingModel::temperature_of(std::span<const double> u, Index k) const {
@@ -366,7 +359,7 @@ double BearingModel::viscosity_temperature(std::span<const double> u, const Film
                                            LinearForm* form) const {
   if (!scene_.effects.thermal) return scene_.operating.ambient;
   if (scene_.effects.viscosity_temperature == ViscosityTemperature::film_node) {
-    const Index k = film.temperature_offset + film.mesh.node(i, j);
+    const Index k = film.temperature_row(film.mesh.node(i, j));
     if (form) form->add(k, 1.0);
     return temperature_of(u, k);
   }
@@ -410,7 +403,7 @@ std::vector<double> BearingModel::cold_start() const {
   for (const Film& f : films_)
     if (f.content_offset >= 0)
       std::fill(u.begin() + f.content_offset,
-                u.begin() + f.content_offset + Index(f.mesh.radial_nodes() - 2) * f.mesh.circumferential_nodes(), 1.0);
+                u.begin() + f.content_offset + f.mesh.interior_count(), 1.0);
   return u;
 }
 

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "model/film.h"
 #include "twb/model/bearing_state.h"
 #include "twb/model/film_fields.h"
 #include "twb/model/film_mesh.h"
@@ -31,39 +32,7 @@ namespace twb {
 
 struct FilmTotals;
 
-enum class ComponentId { carrier = 0, washer = 1, gear = 2 };
-
-// How a pressure node's row states the cavitation condition p̂ ≥ 0, ŵ ≥ 0, p̂·ŵ = 0
-// (docs/physics.md section 3). Both rows vanish at the same states.
-//  - fischer_burmeister: p̂ + ŵ − √(p̂² + ŵ²), whose slopes turn continuously except at
-//    (0, 0): what pseudo-time and the transient march, and what the fold and
-//    arclength systems differentiate. The model's own form.
-//  - minimum: min(p̂, ŵ), a row equal to p̂ or to ŵ. Once Newton has found which nodes
-//    are cavitated it converges as on a smooth system, where with Fischer–Burmeister
-//    the slopes at nodes on the cavitation boundary turn within |(p̂, ŵ)| of the
-//    solution and Newton's last steps converge only superlinearly (a 2 % warm start on
-//    the hot branch: 3 iterations instead of 4). Newton's form (SteadySystem::
-//    set_newton_form): the steady solver's Newton and natural continuation's corrector.
 enum class CavitationRow { fischer_burmeister, minimum };
-
-// A film between two components. Its gap is a plane in the unknowns (docs/physics.md section 1):
-//   h = c + s·(γx·y − γy·x) − tilt·x
-// film 1 (carrier–washer): c = c1 = z_w,              s = +1, tilt = 0
-// film 2 (washer–gear):    c = c2 = z_g − z_w − t_w,  s = −1, tilt = γ_tilt
-struct Film {
-  int number = 1;
-  FilmMesh mesh;
-  ComponentId lower, upper;
-  int clearance_unknown = 0;  // 0 for c1, 3 for c2 within the rigid block
-  double sign = 1.0;
-  double imposed_tilt = 0.0;
-  bool sliding = false;
-  double sigma = 0.0;             // combined RMS roughness
-  double shear_weight = 0.0;      // [(σ_moving/σ)² − (σ_fixed/σ)²], eq [3]
-  Index pressure_offset = -1;     // interior nodes (radial 1..Nr-2), -1 without hydrodynamics
-  Index content_offset = -1;      // film content θ at the same nodes, cavitation: jfo only (docs/physics.md 12)
-  Index temperature_offset = -1;  // film-node temperatures, -1 without thermal
-};
 
 // A component's temperature field: T(r, θ) on a polar grid, or T(r) when it rotates
 // relative to the load frame (docs/physics.md section 7).
@@ -158,12 +127,6 @@ class BearingModel final : public SegregatedSystem {
 
   RigidPosition position(std::span<const double> u) const;
 
-  // Film-node gap h at node (i, j) of a film, physical.
-  double film_gap(const Film& film, const RigidPosition& q, double r, double theta) const;
-  // ∂h/∂(ĉ, γ̂x, γ̂y) at (x, y): the plane of physics §1 in the scaled unknowns.
-  std::array<double, 3> gap_gradient(const Film& film, double x, double y) const {
-    return {sigma_ref_, film.sign * y * gamma_ref_, -film.sign * x * gamma_ref_};
-  }
 
   // Thermal deformation (docs/physics.md section 11; film_shape.cpp): the change δ of a film's
   // gap at a node from its plane, δ = form · u (m), from the carrier's and gear's face
@@ -282,8 +245,6 @@ class BearingModel final : public SegregatedSystem {
   double dishing_row_weight(const Film& film) const;
   // The unknowns' own terms of the dishing and contact-force rows.
   void assemble_shape_rows(std::span<const double> u, Assembler& a) const;
-  // film_gap() at a point (x, y) of the load frame.
-  double gap_at(const Film& film, const RigidPosition& q, double x, double y) const;
 
 };
 

@@ -54,7 +54,7 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   if (scene_.effects.thermal) {
     for (const Film& f : films_)
       for (int n = 0; n < f.mesh.node_count(); ++n)
-        s.max_film_temperature = std::max(s.max_film_temperature, temperature_of(u, f.temperature_offset + n));
+        s.max_film_temperature = std::max(s.max_film_temperature, temperature_of(u, f.temperature_row(n)));
     for (const ComponentHeat& comp : components_) {
       double sum = 0, area = 0, loss = 0;
       const int nt = comp.axisymmetric ? 1 : comp.grid.circumferential_nodes();

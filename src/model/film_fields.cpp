@@ -23,7 +23,7 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
       const double r = m.radius(i);
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const std::size_t k = std::size_t(m.node(i, j));
-        const double h = film_gap(film, q, r, m.angle(j)) + (deforms() ? shape_at(u, film, int(k)) : 0.0);
+        const double h = film.node_gap_polar(q, r, m.angle(j)) + (deforms() ? shape_at(u, film, int(k)) : 0.0);
         f.gap[k] = h;
         f.pressure[k] = pressure_at(u, film, i, j);
         // The contact law's value at the node's gap, for a map. The reported contact
@@ -33,7 +33,7 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
         // counts no contact, and neither does the map.
         if (contact_ && h <= contact_cutoff_) f.contact_pressure[k] = contact_->pressure(h).value;
         f.film_temperature[k] =
-            thermal ? temperature_of(u, film.temperature_offset + Index(k)) : ambient;
+            thermal ? temperature_of(u, film.temperature_row(int(k))) : ambient;
         f.surface_temperature[k] = 0.5 * (face_temperature(u, film.lower, r, j, nullptr) +
                                           face_temperature(u, film.upper, r, j, nullptr));
         f.viscosity[k] = viscosity(viscosity_temperature(u, film, i, j, nullptr)).value;

@@ -74,21 +74,17 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
   const bool jac = a.wants_jacobian();
   const FilmMesh& m = film.mesh;
   const int nr = m.radial_nodes(), nt = m.circumferential_nodes();
-  const RigidPosition q = position(u);
-  const double c = film.clearance_unknown == 0 ? q.c1 : q.c2;
-  const double pa = -film.sign * q.gamma_y - film.imposed_tilt;  // h = c + pa·x + pb·y
-  const double pb = film.sign * q.gamma_x;
-  const std::array<Index, 3> rigid_cols{rigid_offset_ + film.clearance_unknown, rigid_offset_ + 1,
-                                        rigid_offset_ + 2};
-  // gap_gradient(film, x, y) = g ⊙ (1, y, −x): the gap's slopes per unit moment arm.
-  const std::array<double, 3> g{gap_gradient(film, 0.0, 1.0)[0], gap_gradient(film, 0.0, 1.0)[1],
-                                gap_gradient(film, -1.0, 0.0)[2]};
+  const GapPlane gap_plane = film.plane(position(u));
+  const std::array<Index, 3> rigid_cols = film.rigid_columns();
+  // film.gap_gradient(x, y) = g ⊙ (1, y, −x): the gap's slopes per unit moment arm.
+  const std::array<double, 3> g{film.gap_gradient(0.0, 1.0)[0], film.gap_gradient(0.0, 1.0)[1],
+                                film.gap_gradient(-1.0, 0.0)[2]};
   const bool hydro = film.pressure_offset >= 0;
   const bool heat = film.sliding && scene_.effects.thermal;
   const bool contact = contact_ != nullptr;
   const double omega = film.sliding ? scene_.operating.speed : 0.0;
   const double cutoff = contact_cutoff_;
-  const PlaneOverCells plane(c, pa, pb);
+  const PlaneOverCells plane(gap_plane.c, gap_plane.a, gap_plane.b);
   // Angles of nodes and of the rule's points within a cell: every Gauss point's
   // cos/sin follows by the addition theorem, without calling sincos per point.
   std::vector<double> cos_node(nt + 1), sin_node(nt + 1);
@@ -166,10 +162,8 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
         node[k] = m.node(ci[k], cj[k]);
         t_node[k] = node_t[node[k]];
         if (deformed) d_node[k] = node_delta[std::size_t(node[k])];
-        if (hydro && ci[k] > 0 && ci[k] < nr - 1) {
-          p_col[k] = film.pressure_offset + Index(ci[k] - 1) * nt + m.wrap(cj[k]);
-          p_node[k] = p_ref_ * u[p_col[k]];
-        }
+        p_col[k] = film.pressure_column(ci[k], cj[k]);
+        if (p_col[k] >= 0) p_node[k] = p_ref_ * u[p_col[k]];
       }
       const double r0 = m.radius(i), r1 = m.radius(i + 1);
       const double t0 = m.angle(j), t1 = t0 + m.dtheta();
@@ -233,7 +227,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
         for (std::size_t gs = 0; gs < rule.points.size(); ++gs) {
           for (std::size_t gt = 0; gt < rule.points.size(); ++gt) {
             const Point pt = point(rule, cos_r, sin_r, i, j, gs, gt);
-            double h = c + pa * pt.x + pb * pt.y;
+            double h = gap_plane.at(pt.x, pt.y);
             if (deformed)
               h += (1 - pt.s) * (1 - pt.t) * d_node[0] + pt.s * (1 - pt.t) * d_node[1] +
                    (1 - pt.s) * pt.t * d_node[2] + pt.s * pt.t * d_node[3];
@@ -328,7 +322,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
             const std::array<double, 4> N{(1 - s) * (1 - tt), s * (1 - tt), (1 - s) * tt, s * tt};
             point_t[q] = 0;
             for (int k = 0; k < 4; ++k) point_t[q] += N[k] * t_node[k];
-            point_h[q] = c + pa * x + pb * y;
+            point_h[q] = gap_plane.at(x, y);
             if (deformed)
               for (int k = 0; k < 4; ++k) point_h[q] += N[k] * d_node[k];
           }
@@ -409,7 +403,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
       // Viscous heat into the film-node rows (friction heat is added once f is known).
       if (heat) {
         for (int k = 0; k < 4; ++k) {
-          const Index row = film.temperature_offset + node[k];
+          const Index row = film.temperature_row(node[k]);
           const double sc = film_row_scale_[film.number - 1][node[k]];
           a.add_residual(row, sc * vheat[k]);
           if (!jac) continue;
@@ -440,7 +434,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
   for (double cp : tot.contact_power) tot.friction_heat += tot.friction_coefficient * cp;
   if (!heat) return;
   for (int n = 0; n < m.node_count(); ++n) {
-    const Index row = film.temperature_offset + n;
+    const Index row = film.temperature_row(n);
     const double sc = film_row_scale_[film.number - 1][n];
     a.add_residual(row, sc * tot.friction_coefficient * tot.contact_power[n]);
     if (!jac) continue;
@@ -454,7 +448,7 @@ void BearingModel::assemble_film_loads(std::span<const double> u, const Film& fi
   }
   if (!jac) return;
   for (const ShapeTerm& term : tot.contact_power_shape)
-    a.add_form(film.temperature_offset + term.node,
+    a.add_form(film.temperature_row(term.node),
                film_row_scale_[film.number - 1][term.node] * tot.friction_coefficient * term.coefficient,
                shape_form(film, term.corner));
 }

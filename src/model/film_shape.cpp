@@ -73,17 +73,16 @@ std::vector<double> BearingModel::node_shapes(std::span<const double> u, const F
 double BearingModel::least_gap(std::span<const double> u, const Film& film) const {
   const RigidPosition q = position(u);
   const FilmMesh& m = film.mesh;
-  const double c = film.clearance_unknown == 0 ? q.c1 : q.c2;
-  const double a = -film.sign * q.gamma_y - film.imposed_tilt, b = film.sign * q.gamma_x;
-  if (!deforms()) return c - std::hypot(a, b) * m.outer_radius();
+  const GapPlane plane = film.plane(q);
+  if (!deforms()) return plane.least_within(m.outer_radius());
   const std::vector<double> delta = node_shapes(u, film);
   double least = INFINITY;
   for (int i = 0; i < m.radial_nodes(); ++i)
     for (int j = 0; j < m.circumferential_nodes(); ++j)
-      least = std::min(least, film_gap(film, q, m.radius(i), m.angle(j)) + delta[std::size_t(m.node(i, j))]);
-  if (a == 0.0 && b == 0.0) return least;
+      least = std::min(least, film.node_gap_polar(q, m.radius(i), m.angle(j)) + delta[std::size_t(m.node(i, j))]);
+  if (plane.a == 0.0 && plane.b == 0.0) return least;
   const double two_pi = 2 * std::numbers::pi;
-  double theta = std::atan2(-b, -a);
+  double theta = std::atan2(-plane.b, -plane.a);
   if (theta < 0) theta += two_pi;
   const double cell = theta / m.dtheta();
   const int j = std::min(int(cell), m.circumferential_nodes() - 1);
@@ -91,7 +90,7 @@ double BearingModel::least_gap(std::span<const double> u, const Film& film) cons
   const int rim = m.radial_nodes() - 1;
   const double rim_delta =
       (1 - t) * delta[std::size_t(m.node(rim, j))] + t * delta[std::size_t(m.node(rim, m.wrap(j + 1)))];
-  return std::min(least, film_gap(film, q, m.outer_radius(), theta) + rim_delta);
+  return std::min(least, film.node_gap_polar(q, m.outer_radius(), theta) + rim_delta);
 }
 
 double BearingModel::dishing_curvature(std::span<const double> u) const {

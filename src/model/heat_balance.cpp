@@ -60,19 +60,18 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
   // Film nodes and their exchange with the bounding components.
   for (const Film& film : films_) {
     const FilmMesh& m = film.mesh;
-    const std::array<Index, 3> rigid_cols{rigid_offset_ + film.clearance_unknown, rigid_offset_ + 1,
-                                          rigid_offset_ + 2};
+    const std::array<Index, 3> rigid_cols = film.rigid_columns();
     const std::array<ComponentId, 2> sides{film.lower, film.upper};
     for (int i = 0; i < m.radial_nodes(); ++i) {
       const double area = m.node_area(i);
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const int n = m.node(i, j);
         const HeatNode& node = heat_nodes_[std::size_t(film.number - 1)][std::size_t(n)];
-        const Index row = film.temperature_offset + n;
+        const Index row = film.temperature_row(n);
         const double scale = film_row_scale_[film.number - 1][n];
         const double x = node.x, y = node.y;
-        const double h = gap_at(film, q, x, y) + (deforms() ? shape_at(u, film, n) : 0.0);
-        const std::array<double, 3> dh = gap_gradient(film, x, y);
+        const double h = film.node_gap(q, x, y) + (deforms() ? shape_at(u, film, n) : 0.0);
+        const std::array<double, 3> dh = film.gap_gradient(x, y);
         const LinearForm& shape = shape_form(film, n);
         const ValueSlope gap = average_gap(h, film.sigma);
         const double tf = temperature_of(u, row);
@@ -184,10 +183,10 @@ double BearingModel::hottest_face_temperature(std::span<const double> u, Compone
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const int n = m.node(i, j);
         const HeatNode& node = heat_nodes_[std::size_t(film.number - 1)][std::size_t(n)];
-        const double h = gap_at(film, q, node.x, node.y) + (deforms() ? shape_at(u, film, n) : 0.0);
+        const double h = film.node_gap(q, node.x, node.y) + (deforms() ? shape_at(u, film, n) : 0.0);
         const double path = average_gap(h, film.sigma).value / (2.0 * k_oil) + own;
         const double body = face_temperature(u, id, m.radius(i), j, nullptr);
-        const double tf = temperature_of(u, film.temperature_offset + n);
+        const double tf = temperature_of(u, film.temperature_row(n));
         hottest = std::max(hottest, body + (tf - body) * own / path);
       }
   }

@@ -63,22 +63,23 @@ std::vector<double> BearingModel::interpolated_from(const BearingModel& source, 
     const Film& src = source.films_[f];
     const GridMap map{src.mesh.radial_nodes(), src.mesh.circumferential_nodes(), dst.mesh.radial_nodes(),
                       dst.mesh.circumferential_nodes()};
-    // A field on the interior nodes (pressure, film content) with its edge value and scale.
-    auto carry_interior = [&](Index src_offset, Index dst_offset, double edge, double scale) {
-      const int snr = map.src_nr, snt = map.src_nt;
+    // A field on the interior nodes (pressure, film content) with its edge value and
+    // scale; `column` is the film's (Film::pressure_column, content_column).
+    auto carry_interior = [&](Index (Film::*column)(int, int) const, double edge, double scale) {
       auto value = [&](int i, int j) {
-        return (i <= 0 || i >= snr - 1) ? edge : scale * u[src_offset + Index(i - 1) * snt + j];
+        const Index k = (src.*column)(i, j);
+        return k < 0 ? edge : scale * u[k];
       };
       for (int i = 1; i < map.dst_nr - 1; ++i)
-        for (int j = 0; j < map.dst_nt; ++j) out[dst_offset + Index(i - 1) * map.dst_nt + j] = map.at(i, j, value);
+        for (int j = 0; j < map.dst_nt; ++j) out[(dst.*column)(i, j)] = map.at(i, j, value);
     };
-    if (dst.pressure_offset >= 0) carry_interior(src.pressure_offset, dst.pressure_offset, 0.0, pressure);
+    if (dst.pressure_offset >= 0) carry_interior(&Film::pressure_column, 0.0, pressure);
     // The edges are flooded: full film there.
-    if (dst.content_offset >= 0) carry_interior(src.content_offset, dst.content_offset, 1.0, 1.0);
+    if (dst.content_offset >= 0) carry_interior(&Film::content_column, 1.0, 1.0);
     if (dst.temperature_offset >= 0) {
-      auto t = [&](int i, int j) { return u[src.temperature_offset + Index(i) * map.src_nt + j] + ambient_shift; };
+      auto t = [&](int i, int j) { return u[src.temperature_row(src.mesh.node(i, j))] + ambient_shift; };
       for (int i = 0; i < map.dst_nr; ++i)
-        for (int j = 0; j < map.dst_nt; ++j) out[dst.temperature_offset + Index(i) * map.dst_nt + j] = map.at(i, j, t);
+        for (int j = 0; j < map.dst_nt; ++j) out[dst.temperature_row(dst.mesh.node(i, j))] = map.at(i, j, t);
     }
   }
 

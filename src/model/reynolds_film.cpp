@@ -42,12 +42,8 @@ Complementarity complementarity(CavitationRow row, double a, double b) {
 void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film, Assembler& a) const {
   const bool jac = a.wants_jacobian();
   const FilmMesh& m = film.mesh;
-  const RigidPosition q = position(u);
-  const double c = film.clearance_unknown == 0 ? q.c1 : q.c2;
-  const double pa = -film.sign * q.gamma_y - film.imposed_tilt;
-  const double pb = film.sign * q.gamma_x;
-  const std::array<Index, 3> rigid_cols{rigid_offset_ + film.clearance_unknown, rigid_offset_ + 1,
-                                        rigid_offset_ + 2};
+  const GapPlane plane = film.plane(position(u));
+  const std::array<Index, 3> rigid_cols = film.rigid_columns();
   const double omega = scene_.operating.speed;
   const bool factors = scene_.effects.flow_factors;
   const double sigma = film.sigma;
@@ -102,8 +98,8 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
     const double x = f.r * std::cos(f.theta), y = f.r * std::sin(f.theta);
     const Index na = m.node(f.ia, f.ja), nb = m.node(f.ib, f.jb);
     // A face lies midway between its two nodes: the shape is their mean there.
-    const double h = c + pa * x + pb * y + (deformed ? 0.5 * (delta[na] + delta[nb]) : 0.0);
-    const std::array<double, 3> dh = gap_gradient(film, x, y);
+    const double h = plane.at(x, y) + (deformed ? 0.5 * (delta[na] + delta[nb]) : 0.0);
+    const std::array<double, 3> dh = film.gap_gradient(x, y);
     const Conductance g = conductance(h, 0.5 * (node_t[na] + node_t[nb]));
     const ValueSlope carried = circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
     const int upwind = ReynoldsOperator::upwind_node(f, omega);

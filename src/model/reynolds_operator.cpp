@@ -4,14 +4,9 @@
 
 namespace twb {
 
-int ReynoldsOperator::interior_count() const {
-  return mesh_.radial_nodes() > 2 ? (mesh_.radial_nodes() - 2) * mesh_.circumferential_nodes() : 0;
-}
+int ReynoldsOperator::interior_count() const { return mesh_.interior_count(); }
 
-int ReynoldsOperator::interior_index(int i, int j) const {
-  const int nr = mesh_.radial_nodes();
-  return (i > 0 && i < nr - 1) ? (i - 1) * mesh_.circumferential_nodes() + mesh_.wrap(j) : -1;
-}
+int ReynoldsOperator::interior_index(int i, int j) const { return mesh_.interior_node(i, j); }
 
 ReynoldsOperator::ControlVolume ReynoldsOperator::control_volume(int i, int j) const {
   const double r = mesh_.radius(i), th = mesh_.angle(mesh_.wrap(j));

@@ -36,14 +36,14 @@ std::string BearingModel::describe_row(Index k) const {
   }
   for (const Film& f : films_) {
     const int nt = f.mesh.circumferential_nodes();
-    if (f.pressure_offset >= 0 && k >= f.pressure_offset && k < f.pressure_offset + Index(f.mesh.radial_nodes() - 2) * nt) {
+    if (f.pressure_offset >= 0 && k >= f.pressure_offset && k < f.pressure_offset + f.mesh.interior_count()) {
       const Index n = k - f.pressure_offset;
       return fmt::format("the {} of film {} at {}",
                          f.content_offset >= 0 ? "cavitation condition (p >= 0, content <= 1)"
                                                : "flow balance (Reynolds, with cavitation)",
                          f.number, place(f.mesh, int(n / nt) + 1, int(n % nt)));
     }
-    if (f.content_offset >= 0 && k >= f.content_offset && k < f.content_offset + Index(f.mesh.radial_nodes() - 2) * nt) {
+    if (f.content_offset >= 0 && k >= f.content_offset && k < f.content_offset + f.mesh.interior_count()) {
       const Index n = k - f.content_offset;
       return fmt::format("the mass-conserving flow balance of film {} at {}", f.number,
                          place(f.mesh, int(n / nt) + 1, int(n % nt)));

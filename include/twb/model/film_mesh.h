@@ -17,6 +17,10 @@ class FilmMesh {
   int node_count() const { return nr_ * nt_; }
   int node(int i, int j) const { return i * nt_ + wrap(j); }
   int wrap(int j) const { return ((j % nt_) + nt_) % nt_; }
+  // Interior nodes (radial 1 … Nr−2), which carry a film's pressures: ordinal
+  // (i − 1)·Nθ + j, −1 on the edges.
+  int interior_count() const { return nr_ > 2 ? (nr_ - 2) * nt_ : 0; }
+  int interior_node(int i, int j) const { return i > 0 && i < nr_ - 1 ? (i - 1) * nt_ + wrap(j) : -1; }
 
   double inner_radius() const { return r_in_; }
   double outer_radius() const { return r_out_; }
