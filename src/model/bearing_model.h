@@ -163,6 +163,7 @@ class BearingModel final : public SegregatedSystem {
 
  private:
   struct Totals;  // per-film integrals gathered during assembly
+  struct FilmLoadPass;  // one evaluation of a film's loads, cell by cell (film_load_pass.h)
   void assemble(std::span<const double> u, Assembler& a, Totals* totals) const;
   void assemble_film_loads(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const;
   void assemble_reynolds(std::span<const double> u, const Film& film, Assembler& a) const;

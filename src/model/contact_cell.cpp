@@ -1,0 +1,118 @@
+// Asperity contact on one cell of a film (docs/physics.md sections 4, 6): the contact
+// force and its moments on the high-order rule at the points within the cutoff, and on
+// the sliding film the friction power per corner node (friction heat is f times it,
+// added once the film's total contact force sets f: FilmLoadPass::friction).
+#include <cmath>
+
+#include "model/film_load_pass.h"
+
+namespace twb {
+
+void BearingModel::FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals& tot) {
+  const StatisticalContact& asperities = *model.contact_;
+  // Σ w p_c a, Σ w p_c' a aᵀ (symmetric: 00 01 02 11 12 22), and the friction power
+  // per corner node with its gradient against the arms, added to the film once.
+  std::array<double, 3> force{};
+  std::array<double, 6> stiffness{};
+  double torque = 0;
+  std::array<double, 4> power{};
+  std::array<std::array<double, 3>, 4> power_rigid{};
+  // Where the pressure varies across the cell by less than a factor e^½ the
+  // integrand is nearly polynomial and the flat rule (6 × 6 by default,
+  // mesh.flat_contact_quadrature) integrates it to rounding: the n-point rule's
+  // error is (n!)⁴/((2n+1)((2n)!)³) times the 2n-th derivative, and with ln p
+  // changing by λ ≤ ½ across the cell and the cubic weights (r, moment arms,
+  // hats) the 12th derivative is below 3, so the error is below 1e-15 of the
+  // cell's contact force. On the paper's mesh below distress the film that
+  // carries the load by contact (film 2) is nearly parallel, and all its cells are
+  // flat: 36 points each instead of 64. (p(least) > 0 within the cutoff, so a
+  // greatest gap where p underflows to 0 is never flat.)
+  const bool flat = !structural && flat_rule_is_cheaper &&
+                    asperities.pressure(cell.gap_range.least).value <=
+                        std::exp(0.5) * asperities.pressure(cell.gap_range.greatest).value;
+  const CellRule& rule = flat ? flat_rule : contact_rule;
+  // The cell's rule at the points within the cutoff (beyond it p < 1e-20 p(0),
+  // above), their pressures as one batch (vectorized).
+  contact_points.clear();
+  contact_h.clear();
+  for (std::size_t gs = 0; gs < rule.size(); ++gs) {
+    for (std::size_t gt = 0; gt < rule.size(); ++gt) {
+      const CellPoint pt = rule.point(cell.i, cell.j, gs, gt);
+      double h = gap_plane.at(pt.x, pt.y);
+      if (deformed)
+        h += (1 - pt.s) * (1 - pt.t) * cell.d_node[0] + pt.s * (1 - pt.t) * cell.d_node[1] +
+             (1 - pt.s) * pt.t * cell.d_node[2] + pt.s * pt.t * cell.d_node[3];
+      if (h > cutoff) continue;
+      contact_points.push_back(pt);
+      contact_h.push_back(h);
+    }
+  }
+  contact_p.resize(contact_h.size());
+  asperities.pressure(contact_h, contact_p);
+  // The same sums with and without the gradients (a residual alone, as IDA's
+  // Newton iterations ask for most of the time, needs none of them).
+  auto integrate = [&]<bool gradients>(std::bool_constant<gradients>) {
+    for (std::size_t q = 0; q < contact_points.size(); ++q) {
+      const auto [s, tt, r, x, y, w] = contact_points[q];
+      const ValueSlope v = contact_p[q];
+      const double f = w * v.value, k = w * v.slope;
+      force[0] += f;
+      force[1] += f * y;
+      force[2] -= f * x;
+      if constexpr (gradients) {
+        stiffness[0] += k;
+        stiffness[1] += k * y;
+        stiffness[2] -= k * x;
+        stiffness[3] += k * y * y;
+        stiffness[4] -= k * x * y;
+        stiffness[5] += k * x * x;
+        if (deformed) {
+          const std::array<double, 4> N = corner_hats(s, tt);
+          for (int m = 0; m < 4; ++m) {
+            l.load_shape[0][m] += k * N[m];
+            l.load_shape[1][m] += k * N[m] * y;
+            l.load_shape[2][m] -= k * N[m] * x;
+          }
+        }
+      }
+      if (!film.sliding) continue;
+      // Friction opposes the sliding whichever way it goes: its power and torque
+      // take the speed's magnitude (the sign of ω only turns the Couette flow).
+      const double v_slide = std::abs(omega) * r;
+      torque += f * r;
+      const std::array<double, 4> N = corner_hats(s, tt);
+      for (int n = 0; n < 4; ++n) {
+        const double nv = N[n] * v_slide;
+        power[n] += f * nv;
+        if constexpr (gradients) {
+          const double kn = k * nv;
+          power_rigid[n][0] += kn;
+          power_rigid[n][1] += kn * y;
+          power_rigid[n][2] -= kn * x;
+          if (deformed)
+            for (int m = 0; m < 4; ++m) l.power_shape[n][m] += kn * N[m];
+        }
+      }
+    }
+  };
+  with_gradients(jac || structural, integrate);
+  const std::array<std::array<double, 3>, 3> arms{{{stiffness[0], stiffness[1], stiffness[2]},
+                                                   {stiffness[1], stiffness[3], stiffness[4]},
+                                                   {stiffness[2], stiffness[4], stiffness[5]}}};
+  for (int qd = 0; qd < 3; ++qd) {
+    l.load_val[qd] += force[qd];
+    for (int d = 0; d < 3; ++d) l.load_rigid[qd][d] += arms[qd][d];
+  }
+  l.contact_force = force[0];
+  l.contact_rigid = arms[0];
+  tot.contact_force += force[0];
+  for (int d = 0; d < 3; ++d) tot.contact_force_rigid[d] += g[d] * arms[0][d];
+  if (!film.sliding) return;
+  tot.contact_torque_per_f += torque;
+  for (int n = 0; n < 4; ++n) {
+    tot.contact_power[cell.node[n]] += power[n];
+    for (int d = 0; d < 3; ++d) tot.contact_power_rigid[cell.node[n]][d] += g[d] * power_rigid[n][d];
+  }
+}
+
+}  // namespace twb

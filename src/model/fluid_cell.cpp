@@ -1,0 +1,78 @@
+// The fluid film on one cell (docs/physics.md sections 3, 6): the pressure's force and
+// moments (bilinear between the nodes) and, on the sliding film, viscous shear over the
+// average gap: its torque and its heat spread onto the corner nodes with the hats. One
+// fixed rule on every cell, so the residual stays smooth as contact comes and goes.
+#include <cmath>
+
+#include "model/film_load_pass.h"
+#include "physics/average_gap.h"
+
+namespace twb {
+
+void BearingModel::FilmLoadPass::fluid_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals& tot) {
+  const std::size_t smooth_points = smooth_rule.size();
+  // Viscosity and average gap at the cell's points first, as one batch each (vectorized).
+  if (film.sliding) {
+    for (std::size_t gs = 0, q = 0; gs < smooth_points; ++gs) {
+      for (std::size_t gt = 0; gt < smooth_points; ++gt, ++q) {
+        const auto [s, tt, r, x, y, w] = smooth_rule.point(cell.i, cell.j, gs, gt);
+        const std::array<double, 4> N = corner_hats(s, tt);
+        point_t[q] = 0;
+        for (int k = 0; k < 4; ++k) point_t[q] += N[k] * cell.t_node[k];
+        point_h[q] = gap_plane.at(x, y);
+        if (deformed)
+          for (int k = 0; k < 4; ++k) point_h[q] += N[k] * cell.d_node[k];
+      }
+    }
+    model.viscosity(point_t, point_mu);
+    average_gap(point_h, film.sigma, point_gap);
+  }
+  const double p_ref = model.p_ref_;
+  auto integrate = [&]<bool gradients>(std::bool_constant<gradients>) {
+    for (std::size_t gs = 0; (hydro || film.sliding) && gs < smooth_points; ++gs) {
+      for (std::size_t gt = 0; gt < smooth_points; ++gt) {
+        const std::size_t q = gs * smooth_points + gt;
+        const auto [s, tt, r, x, y, w] = smooth_rule.point(cell.i, cell.j, gs, gt);
+        const std::array<double, 4> N = corner_hats(s, tt);
+        if (hydro) {
+          double p = 0;
+          for (int k = 0; k < 4; ++k) p += N[k] * cell.p_node[k];
+          const std::array<double, 3> arm{1.0, y, -x};
+          for (int qd = 0; qd < 3; ++qd) {
+            l.load_val[qd] += w * p * arm[qd];
+            if constexpr (gradients)
+              for (int k = 0; k < 4; ++k) l.load_p[qd][k] += w * N[k] * p_ref * arm[qd];
+          }
+          tot.fluid_force += w * p;
+        }
+        if (!film.sliding) continue;
+        const double v_slide = std::abs(omega) * r;
+        const ValueSlope mu = point_mu[q];
+        // Shear acts over the average gap, which stays positive where h closes (docs/physics.md 3, 6).
+        const ValueSlope gap = point_gap[q];
+        const double tau = mu.value * v_slide / gap.value;
+        tot.viscous_torque += w * tau * r;
+        const double qv = tau * v_slide;  // μ V² / h̄T
+        tot.viscous_heat += w * qv;
+        const double dqv_dh = -qv / gap.value * gap.slope;
+        const double dqv_dt = mu.slope * v_slide * v_slide / gap.value;
+        for (int k = 0; k < 4; ++k) {
+          const double wn = w * N[k];
+          l.vheat[k] += wn * qv;
+          if constexpr (gradients) {
+            const double qn = wn * dqv_dh;
+            l.vheat_rigid[k][0] += qn;
+            l.vheat_rigid[k][1] += qn * y;
+            l.vheat_rigid[k][2] -= qn * x;
+            for (int m = 0; m < 4; ++m) l.vheat_t[k][m] += wn * dqv_dt * N[m];
+            if (deformed)
+              for (int m = 0; m < 4; ++m) l.vheat_shape[k][m] += qn * N[m];
+          }
+        }
+      }
+    }
+  };
+  with_gradients(jac || structural, integrate);
+}
+
+}  // namespace twb
