@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
     twb::Bearing bearing(scene);
     std::printf("twb %s: %ld unknowns\n", twb::version(), bearing.unknown_count());
     for (const twb::UnknownBlock& b : bearing.unknowns())
-      std::printf("  %-40s %6lld  (%s)\n", b.name.c_str(), static_cast<long long>(b.size), b.effect.c_str());
+      std::printf("  %-40s %6lld  (%s)\n", b.name.c_str(), static_cast<long long>(b.size),
+                  twb::effect_name(b.effect));
 
     const double speed = scene.operating.speed;
     std::printf("%8s %10s %10s %10s %8s %6s\n", "load N", "torque Nm", "T_mean C", "hmin/sig", "fluid", "iter");

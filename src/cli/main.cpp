@@ -43,7 +43,7 @@ constexpr int exit_internal_error = 4;
 std::string unknowns_table(const twb::UnknownLayout& layout) {
   std::string out = "unknowns:\n";
   for (const auto& b : layout.blocks())
-    out += fmt::format("  {:<44} {:>6}   ({})\n", b.name, b.size, b.effect);
+    out += fmt::format("  {:<44} {:>6}   ({})\n", b.name, b.size, twb::effect_name(b.effect));
   out += fmt::format("  {:<44} {:>6}\n", "total", layout.size());
   return out;
 }

@@ -55,7 +55,7 @@ std::vector<double> BearingModel::capacities() const {
 std::vector<double> BearingModel::step_weights() const {
   std::vector<double> d(std::size_t(size()), 1e-3);
   for (const auto& b : layout_.blocks())
-    if (b.effect == "mechanics")
+    if (b.effect == BlockEffect::mechanics)
       for (Index k = b.offset; k < b.offset + b.size; ++k) d[std::size_t(k)] = 1.0;
   return d;
 }

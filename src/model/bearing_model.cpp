@@ -57,25 +57,25 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   f2.shear_weight = weight(scene_.gear.roughness.rq, scene_.washer.roughness.rq);
   films_ = {f1, f2};
 
-  rigid_offset_ = layout_.add("rigid body (z_w, gamma_x, gamma_y, z_g)", "mechanics", 4);
+  rigid_offset_ = layout_.add("rigid body (z_w, gamma_x, gamma_y, z_g)", BlockEffect::mechanics, 4);
   for (auto& f : films_) {
     if (fx.hydrodynamics && f.sliding)
-      f.pressure_offset = layout_.add(fmt_film_block(f.number, "pressure"), "hydrodynamics", f.mesh.interior_count());
+      f.pressure_offset = layout_.add(fmt_film_block(f.number, "pressure"), BlockEffect::hydrodynamics, f.mesh.interior_count());
     // The mass-conserving model's second field (docs/physics.md section 12).
     if (f.pressure_offset >= 0 && fx.cavitation == CavitationModel::jfo)
-      f.content_offset = layout_.add(fmt_film_block(f.number, "film content"), "hydrodynamics",
+      f.content_offset = layout_.add(fmt_film_block(f.number, "film content"), BlockEffect::hydrodynamics,
                                      f.mesh.interior_count());
   }
   if (fx.thermal) {
     for (auto& f : films_)
-      f.temperature_offset = layout_.add(fmt_film_block(f.number, "film-node temperature"), "thermal",
+      f.temperature_offset = layout_.add(fmt_film_block(f.number, "film-node temperature"), BlockEffect::thermal,
                                          f.mesh.node_count());
     auto add_component = [&](ComponentId id, const Component& c, const FilmMesh& grid, bool axisymmetric,
                              bool ambient, const char* name) {
       ComponentHeat h{id, grid, axisymmetric, c.thickness, c.material.conductivity,
                       c.material.density * c.material.specific_heat * c.thickness, ambient};
       h.offset = layout_.add(std::string(name) + (axisymmetric ? " temperature T(r)" : " temperature T(r, theta)"),
-                             "thermal", h.node_count(), true);
+                             BlockEffect::thermal, h.node_count(), true);
       components_.push_back(h);
     };
     // The carrier is fixed in the load frame (unless the scene averages it, a modelling
@@ -89,10 +89,10 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   }
   if (fx.thermal_deformation) {
     if (!fx.thermal) throw std::invalid_argument("thermal_deformation needs the thermal effect");
-    dishing_offset_ = layout_.add("washer dishing curvature", "thermal_deformation", 1);
+    dishing_offset_ = layout_.add("washer dishing curvature", BlockEffect::thermal_deformation, 1);
     // Every δ moves the sliding film's contact force, which sets f in every heat row.
     if (fx.asperity_contact && scene_.friction.law == FrictionLaw::empirical)
-      contact_force_offset_ = layout_.add("sliding film contact force", "thermal_deformation", 1);
+      contact_force_offset_ = layout_.add("sliding film contact force", BlockEffect::thermal_deformation, 1);
   }
 
   build_contact();
@@ -377,12 +377,12 @@ double BearingModel::viscosity_temperature(std::span<const double> u, const Film
 SegregatedSystem::Blocks BearingModel::segregated_blocks() const {
   Blocks b;
   for (const UnknownBlock& block : layout_.blocks()) {
-    std::vector<Index>* into = block.effect == "mechanics"       ? &b.rigid
-                               : block.effect == "hydrodynamics" ? &b.pressure
-                               : block.effect == "thermal" || block.effect == "thermal_deformation"
+    std::vector<Index>* into = block.effect == BlockEffect::mechanics       ? &b.rigid
+                               : block.effect == BlockEffect::hydrodynamics ? &b.pressure
+                               : block.effect == BlockEffect::thermal || block.effect == BlockEffect::thermal_deformation
                                    ? &b.temperature
                                                                  : nullptr;
-    if (!into) throw std::logic_error("segregated_blocks: unknown block of effect " + block.effect);
+    if (!into) throw std::logic_error(std::string("segregated_blocks: unknown block of effect ") + effect_name(block.effect));
     for (Index k = 0; k < block.size; ++k) into->push_back(block.offset + k);
   }
   return b;
@@ -435,7 +435,7 @@ void BearingModel::assemble(std::span<const double> u, Assembler& a, Totals* tot
 void BearingModel::orient_rows(Assembler& a) const {
   if (a.mode() != Assembler::Mode::values) return;
   for (const UnknownBlock& b : layout_.blocks()) {
-    if (b.effect == "hydrodynamics") continue;  // complementarity rows already rise with p̂
+    if (b.effect == BlockEffect::hydrodynamics) continue;  // complementarity rows already rise with p̂
     for (Index k = b.offset; k < b.offset + b.size; ++k) {
       a.set_residual(k, -a.residual_value(k));
       a.scale_row(k, -1.0);

@@ -4,9 +4,9 @@
 
 namespace twb {
 
-Index UnknownLayout::add(std::string name, std::string effect, Index size, bool differential) {
+Index UnknownLayout::add(std::string name, BlockEffect effect, Index size, bool differential) {
   const Index offset = size_;
-  blocks_.push_back({std::move(name), std::move(effect), offset, size, differential});
+  blocks_.push_back({std::move(name), effect, offset, size, differential});
   size_ += size;
   return offset;
 }

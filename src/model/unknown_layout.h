@@ -12,7 +12,7 @@ namespace twb {
 
 class UnknownLayout {
  public:
-  Index add(std::string name, std::string effect, Index size, bool differential = false);
+  Index add(std::string name, BlockEffect effect, Index size, bool differential = false);
   Index size() const { return size_; }
   const std::vector<UnknownBlock>& blocks() const { return blocks_; }
   // Block holding unknown k (for messages).

@@ -97,7 +97,7 @@ py::list unknowns_list(const twb::Scene& scene) {
   for (const twb::UnknownBlock& b : blocks) {
     py::dict d;
     d["name"] = b.name;
-    d["effect"] = b.effect;
+    d["effect"] = twb::effect_name(b.effect);
     d["size"] = b.size;
     out.append(d);
   }

@@ -76,13 +76,13 @@ TEST(BearingTest, UnknownsAreTheEffectsBlocks) {
   const long total = std::accumulate(blocks.begin(), blocks.end(), 0L,
                                      [](long n, const UnknownBlock& b) { return n + long(b.size); });
   EXPECT_EQ(total, full.unknown_count());
-  EXPECT_TRUE(std::any_of(blocks.begin(), blocks.end(), [](const UnknownBlock& b) { return b.effect == "thermal"; }));
+  EXPECT_TRUE(std::any_of(blocks.begin(), blocks.end(), [](const UnknownBlock& b) { return b.effect == BlockEffect::thermal; }));
   EXPECT_GT(full.jacobian_nonzeros(), full.unknown_count());
 
   Scene isothermal = coarse_point(120.0);
   isothermal.effects.thermal = false;
   const Bearing cold_oil(isothermal);
-  for (const UnknownBlock& b : cold_oil.unknowns()) EXPECT_NE(b.effect, "thermal") << b.name;
+  for (const UnknownBlock& b : cold_oil.unknowns()) EXPECT_NE(b.effect, BlockEffect::thermal) << b.name;
   EXPECT_LT(cold_oil.unknown_count(), full.unknown_count());
 }
 

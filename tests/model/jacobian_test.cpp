@@ -42,16 +42,16 @@ std::vector<double> random_state(const BearingModel& m, std::mt19937& rng) {
   std::vector<double> u = m.cold_start();
   for (const UnknownBlock& b : m.layout().blocks()) {
     for (Index k = b.offset; k < b.offset + b.size; ++k) {
-      if (b.effect == "mechanics") u[k] += 0.6 * (unit(rng) - 0.5);
-      else if (b.effect == "thermal") u[k] = 80.0 * unit(rng);
+      if (b.effect == BlockEffect::mechanics) u[k] += 0.6 * (unit(rng) - 0.5);
+      else if (b.effect == BlockEffect::thermal) u[k] = 80.0 * unit(rng);
       // Pressures away from the Fischer–Burmeister kink at (0, 0), where the residual
       // is not differentiable. (The minimum row's kink p̂ = ŵ may fall between two
       // differenced states: the spread of the step sizes then marks that entry
       // unresolved rather than wrong.)
-      else if (b.effect == "hydrodynamics" && b.name.find("content") != std::string::npos) u[k] = 0.05 + 0.9 * unit(rng);
-      else if (b.effect == "hydrodynamics") u[k] = 0.05 + 3.0 * unit(rng);
+      else if (b.effect == BlockEffect::hydrodynamics && b.name.find("content") != std::string::npos) u[k] = 0.05 + 0.9 * unit(rng);
+      else if (b.effect == BlockEffect::hydrodynamics) u[k] = 0.05 + 3.0 * unit(rng);
       // Dishing κ̂ (rim lift in σ) and the contact force over the scene's load.
-      else if (b.effect == "thermal_deformation") u[k] = b.name == "washer dishing curvature" ? 2.0 * unit(rng) - 1.0 : 0.2 + unit(rng);
+      else if (b.effect == BlockEffect::thermal_deformation) u[k] = b.name == "washer dishing curvature" ? 2.0 * unit(rng) - 1.0 : 0.2 + unit(rng);
     }
   }
   return u;

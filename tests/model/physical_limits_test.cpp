@@ -145,7 +145,7 @@ const UnknownBlock* find_block(const UnknownLayout& layout, const std::string& n
   return found;
 }
 
-Index block_total(const UnknownLayout& layout, const std::string& effect) {
+Index block_total(const UnknownLayout& layout, BlockEffect effect) {
   Index n = 0;
   for (const UnknownBlock& b : layout.blocks())
     if (b.effect == effect) n += b.size;
@@ -183,12 +183,12 @@ TEST(UnknownCounts, MatchModelForEveryEffectCombination) {
         EXPECT_EQ(next, m.size());
         EXPECT_EQ(m.size(), e.total());
 
-        EXPECT_EQ(block_total(layout, "mechanics"), e.rigid);
-        EXPECT_EQ(block_total(layout, "hydrodynamics"), e.pressure);
-        EXPECT_EQ(block_total(layout, "thermal"), e.film_temperature + e.carrier + e.washer + e.gear);
+        EXPECT_EQ(block_total(layout, BlockEffect::mechanics), e.rigid);
+        EXPECT_EQ(block_total(layout, BlockEffect::hydrodynamics), e.pressure);
+        EXPECT_EQ(block_total(layout, BlockEffect::thermal), e.film_temperature + e.carrier + e.washer + e.gear);
         for (const UnknownBlock& b : layout.blocks())
-          EXPECT_TRUE(b.effect == "mechanics" || b.effect == "hydrodynamics" || b.effect == "thermal")
-              << "block '" << b.name << "' of unexpected effect '" << b.effect << "'";
+          EXPECT_TRUE(b.effect == BlockEffect::mechanics || b.effect == BlockEffect::hydrodynamics || b.effect == BlockEffect::thermal)
+              << "block '" << b.name << "' of unexpected effect '" << effect_name(b.effect) << "'";
 
         // Pressure on the sliding film only.
         const UnknownBlock* p_slide = find_block(layout, "film " + std::to_string(sliding_number) + " pressure");
@@ -352,7 +352,7 @@ TEST(ThermalDecoupledAtRest, NoSpeedNoHeatAmbientEverywhere) {
   const BearingState sa = a.describe(ua), sb = b.describe(ub);
   EXPECT_EQ(sb.heat_generated, 0.0);
   for (const UnknownBlock& blk : b.layout().blocks())
-    if (blk.effect == "thermal") {
+    if (blk.effect == BlockEffect::thermal) {
       for (Index k = blk.offset; k < blk.offset + blk.size; ++k) ASSERT_NEAR(ub[k], 0.0, 1e-8) << blk.name;
     }
   EXPECT_NEAR(sb.washer_mean_temperature, b.scene().operating.ambient, 1e-8);

@@ -7,9 +7,24 @@
 
 namespace twb {
 
+// The effect behind a block of unknowns: the scene's effect that creates it, or the
+// rigid body's mechanics, which every scene has.
+enum class BlockEffect { mechanics, hydrodynamics, thermal, thermal_deformation };
+
+// The effect's name as scenes and docs/model.md write it.
+inline const char* effect_name(BlockEffect e) {
+  switch (e) {
+    case BlockEffect::mechanics: return "mechanics";
+    case BlockEffect::hydrodynamics: return "hydrodynamics";
+    case BlockEffect::thermal: return "thermal";
+    case BlockEffect::thermal_deformation: return "thermal_deformation";
+  }
+  return "?";
+}
+
 struct UnknownBlock {
   std::string name;         // e.g. "film 1 pressure"
-  std::string effect;       // the effect that creates it
+  BlockEffect effect = BlockEffect::mechanics;  // the effect that creates it
   std::int64_t offset = 0;
   std::int64_t size = 0;
   bool differential = false;  // has a heat capacity in the pseudo-time transient
