@@ -27,8 +27,8 @@ std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, con
     if (!r.converged) continue;
     auto& kinds = first[Run{r.state.speed, r.parameter, r.sliding}];
     for (const LimitExcess& e : r.state.limits) {
-      auto [it, fresh] = kinds.try_emplace(e.kind, FirstExcess{r.state.load, e, r.branch == "cool"});
-      if (!fresh && r.state.load < it->second.load) it->second = FirstExcess{r.state.load, e, r.branch == "cool"};
+      auto [it, fresh] = kinds.try_emplace(e.kind, FirstExcess{r.state.load, e, r.branch == Branch::cool});
+      if (!fresh && r.state.load < it->second.load) it->second = FirstExcess{r.state.load, e, r.branch == Branch::cool};
     }
   }
   std::vector<std::string> lines;

@@ -54,7 +54,7 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::string
     t.put_number(residual, r.residual);
     t.put_number(energy, s.energy_error);
     t.put_number(wall, r.wall_ms);
-    t.put_text(branch, r.branch);
+    t.put_text(branch, branch_name(r.branch));
     // A state past a failure criterion says so beside its branch: "cool" alone is
     // never a verdict of safety.
     t.put_text(fails_by, failure_names(s.limits));

@@ -235,7 +235,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     for (std::size_t k = 0; k < found.cool_states; ++k) {
       out.states.push_back(found.states[k]);
       out.states.back().parameter = member;
-      out.states.back().branch = "cool";
+      out.states.back().branch = Branch::cool;
     }
     ends.emplace_back(end, found.crossing_states);
   };

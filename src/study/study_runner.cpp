@@ -342,7 +342,7 @@ SearchDone search_one(const BearingModel& base, const SearchTask& task, const Di
     SolvedState& state = found.states[i];
     state.parameter = variant.parameter;
     state.sliding = variant.sliding;
-    state.branch = i < found.cool_states ? "cool" : "hot";
+    state.branch = i < found.cool_states ? Branch::cool : Branch::hot;
   }
   for (TrajectorySample& sample : found.runaway) {
     sample.parameter = variant.parameter;

@@ -87,7 +87,7 @@ TEST(LimitNotes, SayWhenTheCoolBranchLeavesTheModelBeforeDistress) {
   SolvedState a, b;
   a.converged = b.converged = true;
   a.state.speed = b.state.speed = 545.0;
-  a.branch = b.branch = "cool";
+  a.branch = b.branch = Branch::cool;
   a.state.load = 150.0;
   b.state.load = 120.0;
   a.state.limits = b.state.limits = {{LimitKind::oil_temperature, 430.0, 423.15}};
@@ -98,7 +98,7 @@ TEST(LimitNotes, SayWhenTheCoolBranchLeavesTheModelBeforeDistress) {
   ASSERT_EQ(lines.size(), 1u);
   EXPECT_NE(lines[0].find("oil_temperature from 120 N"), std::string::npos) << lines[0];
   EXPECT_NE(lines[0].find("below W_d = 188.40 N"), std::string::npos) << lines[0];
-  a.branch = b.branch = "hot";
+  a.branch = b.branch = Branch::hot;
   EXPECT_EQ(limit_notes({a, b}, {d})[0].find("below W_d"), std::string::npos);
   EXPECT_TRUE(limit_notes({}, {d}).empty());
 }

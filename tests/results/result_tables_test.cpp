@@ -95,7 +95,7 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   EXPECT_NE(states.find(",wall_ms,branch,fails_by,limits\n"), std::string::npos) << states;
   EXPECT_EQ(states.back(), '\n');
   EXPECT_EQ(states.substr(states.size() - 4), ",,,\n") << "empty branch, fails_by and limits cells";
-  a.branch = "hot";
+  a.branch = Branch::hot;
   a.state.limits = {{LimitKind::oil_temperature, 500.0, 423.15}, {LimitKind::flash_temperature, 900.0, 453.15}};
   const std::string hot = states_csv({a});
   EXPECT_TRUE(hot.ends_with(",hot,oil_temperature;flash_temperature,oil_temperature;flash_temperature\n")) << hot;

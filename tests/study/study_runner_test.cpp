@@ -69,14 +69,14 @@ TEST(StudyRunner, LoadSweepOverSpeeds) {
   int hot = 0;
   for (const SolvedState& s : out.states) {
     if (s.state.speed == 136.0) {
-      EXPECT_EQ(s.branch, "cool") << s.state.load;
+      EXPECT_EQ(s.branch, Branch::cool) << s.state.load;
     }
     if (s.state.speed != 545.0) continue;
-    ASSERT_TRUE(s.branch == "cool" || s.branch == "hot") << s.branch;
-    if (s.branch == "cool") {
+    ASSERT_TRUE(s.branch == Branch::cool || s.branch == Branch::hot) << branch_name(s.branch);
+    if (s.branch == Branch::cool) {
       EXPECT_LT(s.state.load, w_d * (1 + scene_bracket_width()));
     }
-    if (s.branch == "hot") {
+    if (s.branch == Branch::hot) {
       ++hot;
       EXPECT_GT(s.state.load, w_d * (1 - scene_bracket_width()));
       EXPECT_GT(s.state.contact_share, 0.5);

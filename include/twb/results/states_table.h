@@ -11,6 +11,13 @@
 
 namespace twb {
 
+// The steady branch a state lies on: cool (continued from the lightest load, before
+// distress) or hot (past distress: where the runaway settled and continued from
+// there); none where a study follows no branch (point, transient).
+enum class Branch { none, cool, hot };
+// As states.csv writes it: "cool", "hot", or empty.
+inline const char* branch_name(Branch b) { return b == Branch::cool ? "cool" : b == Branch::hot ? "hot" : ""; }
+
 struct SolvedState {
   BearingState state;
   bool converged = false;
@@ -21,10 +28,8 @@ struct SolvedState {
   // of its parameter (SI) and the film that slides ("carrier_washer", "washer_gear").
   std::optional<double> parameter;
   std::string sliding;
-  // Which steady branch a load sweep found the state on: "cool" (continued from the
-  // lightest load, before distress) or "hot" (past distress: where the runaway settled
-  // and continued from there). Empty where a study follows no branch (point, transient).
-  std::string branch;
+  // Which steady branch a load sweep found the state on (states.csv's `branch`).
+  Branch branch = Branch::none;
   // The discretization error of the reported quantities (a point study with
   // study.error_estimate: richardson): the state again on the mesh refined by two, each
   // quantity's Richardson extrapolation and its error bar (richardson.h), in the order of
