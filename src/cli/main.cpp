@@ -27,6 +27,7 @@
 #include "twb/results/states_table.h"
 #include "study/search_journal.h"
 #include "study/search_scheduler.h"
+#include "twb/error_family.h"
 #include "twb/scene/input_error.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/sundials_context.h"
@@ -36,9 +37,8 @@
 
 namespace {
 
-constexpr int exit_invalid_input = 2;
-constexpr int exit_solver_failure = 3;
-constexpr int exit_internal_error = 4;
+constexpr int exit_invalid_input = int(twb::ErrorKind::input);
+constexpr int exit_solver_failure = int(twb::ErrorKind::solver);
 
 std::string unknowns_table(const twb::UnknownLayout& layout) {
   std::string out = "unknowns:\n";
@@ -312,15 +312,11 @@ int main(int argc, char** argv) {
     if (*check_cmd) return check(scene_path, overrides);
     if (*merge_cmd) return merge(slice_dirs, merge_out, merge_quiet, merge_verbose, merge_full_precision);
     return run(request, job);
-  } catch (const twb::InputError& e) {
-    return fail(exit_invalid_input, e.what());
   } catch (const twb::cli::ResultsDirectoryError& e) {
     return fail(exit_invalid_input, std::string("twb: error: ") + e.what());
-  } catch (const std::invalid_argument& e) {
-    return fail(exit_invalid_input, std::string("twb: error: ") + e.what());
-  } catch (const twb::SolverFailure& e) {
-    return fail(exit_solver_failure, std::string("twb: solver failure: ") + e.what());
-  } catch (const std::exception& e) {
-    return fail(exit_internal_error, std::string("twb: internal error: ") + e.what());
+  } catch (...) {
+    // The error family (twb/error_family.h): input 2, solver 3, internal 4.
+    const twb::ErrorReport report = twb::report_error(std::current_exception());
+    return fail(report.exit_status(), report.message);
   }
 }

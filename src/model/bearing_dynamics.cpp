@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "model/bearing_model.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -12,7 +13,7 @@ namespace twb {
 //   ∂F_k/∂W = S_k / (ref_k · W) = (δ_k3 − F_k) / W,
 // exact from the residual at u.
 void BearingModel::parameter_derivative(std::span<const double> u, std::span<double> derivative) const {
-  if (derivative.size() != u.size()) throw std::invalid_argument("parameter_derivative: size mismatch");
+  if (derivative.size() != u.size()) throw InternalError("parameter_derivative: size mismatch");
   std::vector<double> r(u.size());
   evaluate(u, r, {});
   parameter_derivative_given(u, r, derivative);
@@ -24,7 +25,7 @@ void BearingModel::parameter_derivative(std::span<const double> u, std::span<dou
 void BearingModel::parameter_derivative_given(std::span<const double> u, std::span<const double> r,
                                               std::span<double> derivative) const {
   if (derivative.size() != u.size() || r.size() != u.size())
-    throw std::invalid_argument("parameter_derivative: size mismatch");
+    throw InternalError("parameter_derivative: size mismatch");
   std::fill(derivative.begin(), derivative.end(), 0.0);
   for (Index k = 0; k < 4; ++k) {
     const std::size_t row = std::size_t(rigid_offset_ + k);

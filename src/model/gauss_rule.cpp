@@ -1,4 +1,5 @@
 #include "model/gauss_rule.h"
+#include "twb/error_family.h"
 
 #include <stdexcept>
 
@@ -43,7 +44,7 @@ GaussRule GaussRule::legendre(int n) {
     case 12: return gauss_rule<12>();
     case 16: return gauss_rule<16>();
     case 20: return gauss_rule<20>();
-    default: throw std::invalid_argument("Gauss-Legendre rule with this many points is not available");
+    default: throw InternalError("Gauss-Legendre rule with this many points is not available");
   }
 }
 

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "model/bearing_model.h"
+#include "twb/error_family.h"
 
 namespace twb {
 namespace {
@@ -44,7 +45,7 @@ std::vector<double> BearingModel::interpolated_from(const BearingModel& source, 
                      components_.size() == source.components_.size();
   for (std::size_t b = 0; same_blocks && b < mine.size(); ++b) same_blocks = mine[b].name == theirs[b].name;
   if (!same_blocks || Index(u.size()) != source.size())
-    throw std::invalid_argument("interpolated_from: the source model has other unknowns (not the same scene)");
+    throw InternalError("interpolated_from: the source model has other unknowns (not the same scene)");
 
   // The unknowns are scaled (bearing_model.h); a model built for another load, tilt or
   // roughness has other scales, so values go through physical units.

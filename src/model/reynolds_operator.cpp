@@ -1,4 +1,5 @@
 #include "model/reynolds_operator.h"
+#include "twb/error_family.h"
 
 #include <stdexcept>
 
@@ -57,7 +58,7 @@ std::vector<double> ReynoldsOperator::net_outflow(double omega, std::span<const 
                                                   std::span<const double> pressure) const {
   if (int(conductance.size()) != face_count() || int(carried.size()) != face_count() ||
       int(pressure.size()) != interior_count())
-    throw std::invalid_argument("ReynoldsOperator::net_outflow: array sizes do not match the mesh");
+    throw InternalError("ReynoldsOperator::net_outflow: array sizes do not match the mesh");
   std::vector<double> w(pressure.size(), 0.0);
   auto p = [&](int k) { return k >= 0 ? pressure[k] : 0.0; };  // ambient on the edges
   for_each_face([&](const ReynoldsFace& f) {
@@ -72,7 +73,7 @@ std::vector<double> ReynoldsOperator::net_outflow(double omega, std::span<const 
 std::vector<ReynoldsOperator::Coefficient> ReynoldsOperator::pressure_coefficients(
     std::span<const double> conductance) const {
   if (int(conductance.size()) != face_count())
-    throw std::invalid_argument("ReynoldsOperator::pressure_coefficients: array size does not match the mesh");
+    throw InternalError("ReynoldsOperator::pressure_coefficients: array size does not match the mesh");
   std::vector<Coefficient> m;
   m.reserve(std::size_t(face_count()) * 4);
   for_each_face([&](const ReynoldsFace& f) {

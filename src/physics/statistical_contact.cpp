@@ -10,6 +10,7 @@
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "physics/batch_math.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -82,10 +83,10 @@ StatisticalContact::StatisticalContact(const JacksonGreenAsperity& asperity,
                                        StatisticalContactTableOptions options)
     : asperity_(asperity), summit_density_(summit_density), summit_sigma_(summit_sigma) {
   if (!(summit_density_ > 0.0) || !(summit_sigma_ > 0.0))
-    throw std::invalid_argument("StatisticalContact: summit density and sigma must be > 0");
+    throw InternalError("StatisticalContact: summit density and sigma must be > 0");
   if (!(options.highest_separation_sigmas > options.lowest_separation_sigmas) ||
       options.nodes_per_sigma < 1 || options.error_check_stride < 1)
-    throw std::invalid_argument("StatisticalContact: bad table options");
+    throw InternalError("StatisticalContact: bad table options");
   // Eq [15]: offset between the mean planes of surface heights and of summits.
   mean_summit_offset_ = 0.045944 / (summit_density_ * asperity_.summit_radius());
   build_table(options);

@@ -1,4 +1,5 @@
 #include "physics/uniform_hermite_table.h"
+#include "twb/error_family.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,7 @@ UniformHermiteTable::UniformHermiteTable(double x_first, double spacing,
     : x_first_(x_first), spacing_(spacing), values_(std::move(values)),
       slopes_(std::move(slopes)) {
   if (values_.size() < 2 || values_.size() != slopes_.size() || !(spacing_ > 0.0))
-    throw std::invalid_argument("UniformHermiteTable: need >= 2 nodes, equal sizes, spacing > 0");
+    throw InternalError("UniformHermiteTable: need >= 2 nodes, equal sizes, spacing > 0");
 }
 
 }  // namespace twb

@@ -7,6 +7,7 @@
 
 #include "solver/arclength_system.h"
 #include "solver/step_control.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -33,6 +34,8 @@ ArclengthReport continue_by_arclength(SteadySystem& system, std::span<const doub
     along_lambda[n] = s.direction >= 0 ? 1.0 : -1.0;
     try {
       t = arc.tangent(x, along_lambda);
+    } catch (const InternalError&) {
+      throw;  // a bug: no fallback may hide it
     } catch (const std::exception& e) {
       rep.message = std::string("no tangent at the start: ") + e.what();
       return rep;
@@ -63,6 +66,8 @@ ArclengthReport continue_by_arclength(SteadySystem& system, std::span<const doub
       try {
         // The corrector's last factors hold the bordered Jacobian with t as its last row.
         next_t = arc.tangent(trial, t, iterations > 0 ? &newton.factorization() : nullptr);
+      } catch (const InternalError&) {
+        throw;  // a bug: no fallback may hide it
       } catch (const std::exception& e) {
         failure = e.what();
       }

@@ -1,4 +1,5 @@
 #include "solver/bordered_matrix.h"
+#include "twb/error_family.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -8,7 +9,7 @@ namespace twb {
 // Row i < n keeps A's columns and gains column n at its end (columns stay sorted);
 // row n holds every column. Base entry p of row i therefore moves to p + i.
 BorderedMatrix::BorderedMatrix(const SparsePattern& base) : n_(base.rows) {
-  if (base.rows != base.cols) throw std::invalid_argument("BorderedMatrix: the base matrix must be square");
+  if (base.rows != base.cols) throw InternalError("BorderedMatrix: the base matrix must be square");
   pattern_.rows = pattern_.cols = n_ + 1;
   pattern_.row_start.reserve(std::size_t(n_ + 2));
   pattern_.column.reserve(std::size_t(base.nnz() + 2 * n_ + 1));

@@ -1,4 +1,5 @@
 #include "solver/bordered_system.h"
+#include "twb/error_family.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -7,7 +8,7 @@ namespace twb {
 
 BorderedSystem::BorderedSystem(SteadySystem& base, ContinuationMetric metric, std::string last_equation)
     : base_(base), metric_(std::move(metric)), matrix_(base.pattern()), last_equation_(std::move(last_equation)) {
-  if (metric_.state_size() != base_.size()) throw std::invalid_argument("BorderedSystem: metric of another size");
+  if (metric_.state_size() != base_.size()) throw InternalError("BorderedSystem: metric of another size");
 }
 
 std::vector<double> BorderedSystem::extend(std::span<const double> u, double lambda) const {

@@ -1,4 +1,5 @@
 #include "solver/continuation_metric.h"
+#include "twb/error_family.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -8,10 +9,10 @@ namespace twb {
 ContinuationMetric::ContinuationMetric(std::vector<double> weights, double parameter_scale)
     : omega_(std::move(weights)), parameter_scale_(parameter_scale) {
   if (!(parameter_scale_ > 0) || !std::isfinite(parameter_scale_))
-    throw std::invalid_argument("ContinuationMetric: the parameter scale must be positive");
+    throw InternalError("ContinuationMetric: the parameter scale must be positive");
   double sum = 0.0;
   for (double& w : omega_) {
-    if (!(w > 0) || !std::isfinite(w)) throw std::invalid_argument("ContinuationMetric: weights must be positive");
+    if (!(w > 0) || !std::isfinite(w)) throw InternalError("ContinuationMetric: weights must be positive");
     w *= w;
     sum += w;
   }
@@ -22,7 +23,7 @@ ContinuationMetric ContinuationMetric::of(const SteadySystem& system, double par
                                           std::vector<double> weights) {
   if (weights.empty()) weights = system.step_weights();
   if (Index(weights.size()) != system.size())
-    throw std::invalid_argument("ContinuationMetric: one weight per unknown");
+    throw InternalError("ContinuationMetric: one weight per unknown");
   if (!(parameter_scale > 0)) parameter_scale = std::abs(system.parameter()) > 0 ? std::abs(system.parameter()) : 1.0;
   return ContinuationMetric(std::move(weights), parameter_scale);
 }

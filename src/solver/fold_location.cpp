@@ -7,6 +7,7 @@
 
 #include "solver/arclength_system.h"
 #include "solver/fold_system.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -78,6 +79,8 @@ bool augmented_newton(SteadySystem& system, const ContinuationMetric& metric, st
     fold.method = FoldMethod::minimally_augmented;
     fold.curvature = curvature;
     return true;
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception& e) {
     fold.message = std::string("minimally augmented Newton failed: ") + e.what();
     return false;
@@ -138,6 +141,8 @@ bool arclength_bracket(SteadySystem& system, const ContinuationMetric& metric, c
     fold.method = FoldMethod::arclength_bracket;
     if (hi - lo > width) fold.message += "; the bracket did not narrow to its tolerance";
     return true;
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception& e) {
     fold.message += std::string("; bracketing t_lambda = 0 failed: ") + e.what();
     return false;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "solver/kinsol_newton.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -14,10 +15,10 @@ FoldSystem::FoldSystem(SteadySystem& base, ContinuationMetric scaling, std::span
     : BorderedSystem(base, std::move(scaling), "fold test function") {
   const auto n = std::size_t(base.size());
   if (parameter_direction.size() != n || state_tangent.size() < n)
-    throw std::invalid_argument("FoldSystem: borders of another size");
+    throw InternalError("FoldSystem: borders of another size");
   const double b_size = max_norm(parameter_direction), t_size = metric().state_norm(state_tangent.first(n));
   if (!(b_size > 0) || !(t_size > 0) || !std::isfinite(b_size) || !std::isfinite(t_size))
-    throw std::invalid_argument("FoldSystem: zero or non-finite borders");
+    throw InternalError("FoldSystem: zero or non-finite borders");
   b_.resize(n);
   c_.resize(n);
   const std::span<const double> omega = metric().state_weights();

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <utility>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -11,6 +13,7 @@
 
 #include "solver/kinsol_newton.h"
 #include "solver/sparse_matrix_fill.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -25,6 +28,12 @@ struct IdaTransient::Callbacks {
   std::vector<double> system_values, values, scratch;
   std::string last_error;      // IDA's own message
   std::string callback_error;  // what a callback threw
+  // An internal error thrown inside a callback: carried across the C solver and thrown
+  // again once it returns (twb/error_family.h: a bug is never turned into a failed solve).
+  std::exception_ptr internal;
+  void rethrow_internal() {
+    if (internal) std::rethrow_exception(std::exchange(internal, nullptr));
+  }
 };
 
 namespace {
@@ -61,8 +70,15 @@ int residual_fn(double, N_Vector y, N_Vector yp, N_Vector g, void* data) {
     for (double v : r)
       if (!std::isfinite(v)) return 1;
     return 0;
+  } catch (const InternalError& e) {
+    cb->callback_error = e.what();
+    cb->internal = std::current_exception();
+    return -1;
   } catch (const std::exception& e) {
     cb->callback_error = e.what();
+    return -1;
+  } catch (...) {
+    cb->callback_error = "an exception of unknown type";
     return -1;
   }
 }
@@ -80,14 +96,25 @@ int jacobian_fn(double, double cj, N_Vector y, N_Vector, N_Vector, SUNMatrix J, 
     for (std::size_t k = 0; k < n; ++k)
       if (c[k] > 0.0) cb->values[std::size_t(cb->diagonal[k])] += cj * c[k];
     return fill_sparse_matrix(J, cb->pattern, cb->values) ? 0 : 1;
+  } catch (const InternalError& e) {
+    cb->callback_error = e.what();
+    cb->internal = std::current_exception();
+    return -1;
   } catch (const std::exception& e) {
     cb->callback_error = e.what();
+    return -1;
+  } catch (...) {
+    cb->callback_error = "an exception of unknown type";
     return -1;
   }
 }
 
 void error_handler(int, const char*, const char*, char* msg, void* data) {
-  static_cast<IdaTransient::Callbacks*>(data)->last_error = msg;
+  try {
+    static_cast<IdaTransient::Callbacks*>(data)->last_error = msg;
+  } catch (...) {
+    // The message is lost (no memory for it); the solver's flag still says what failed.
+  }
 }
 
 }  // namespace
@@ -99,13 +126,13 @@ IdaTransient::IdaTransient(const SteadySystem& system, TransientSettings setting
       ctx_(make_context()),
       callbacks_(std::make_unique<Callbacks>()) {
   const Index n = system_.size();
-  if (Index(capacities_.size()) != n) throw std::invalid_argument("IdaTransient: capacities() has the wrong size");
+  if (Index(capacities_.size()) != n) throw InternalError("IdaTransient: capacities() has the wrong size");
   for (double c : capacities_)
-    if (!(c >= 0.0)) throw std::invalid_argument("IdaTransient: a capacity is negative or not a number");
+    if (!(c >= 0.0)) throw InternalError("IdaTransient: a capacity is negative or not a number");
   absolute_ = settings_.absolute_tolerances.empty()
                   ? std::vector<double>(std::size_t(n), settings_.absolute_tolerance)
                   : settings_.absolute_tolerances;
-  if (Index(absolute_.size()) != n) throw std::invalid_argument("IdaTransient: one absolute tolerance per unknown");
+  if (Index(absolute_.size()) != n) throw InternalError("IdaTransient: one absolute tolerance per unknown");
 
   Callbacks& cb = *callbacks_;
   cb.system = &system_;
@@ -138,20 +165,21 @@ IdaTransient::IdaTransient(const SteadySystem& system, TransientSettings setting
   // dense rigid-body border).
   check_flag(SUNLinSol_KLUSetOrdering(klu_.get(), 0), "SUNLinSol_KLUSetOrdering");
 
-  ida_ = IDACreate(ctx_.get());
+  ida_.reset(IDACreate(ctx_.get()));
   if (!ida_) throw SolverFailure("IDACreate failed", -1);
-  check_flag(IDAInit(ida_, residual_fn, 0.0, y_.get(), yp_.get()), "IDAInit");
-  check_flag(IDASVtolerances(ida_, settings_.relative_tolerance, atol_.get()), "IDASVtolerances");
-  check_flag(IDASetUserData(ida_, callbacks_.get()), "IDASetUserData");
-  check_flag(IDASetErrHandlerFn(ida_, error_handler, callbacks_.get()), "IDASetErrHandlerFn");
-  check_flag(IDASetLinearSolver(ida_, klu_.get(), jac_.get()), "IDASetLinearSolver");
-  check_flag(IDASetJacFn(ida_, jacobian_fn), "IDASetJacFn");
-  check_flag(IDASetId(ida_, id_.get()), "IDASetId");
+  check_flag(IDAInit(ida_.get(), residual_fn, 0.0, y_.get(), yp_.get()), "IDAInit");
+  check_flag(IDASVtolerances(ida_.get(), settings_.relative_tolerance, atol_.get()), "IDASVtolerances");
+  check_flag(IDASetUserData(ida_.get(), callbacks_.get()), "IDASetUserData");
+  check_flag(IDASetErrHandlerFn(ida_.get(), error_handler, callbacks_.get()), "IDASetErrHandlerFn");
+  check_flag(IDASetLinearSolver(ida_.get(), klu_.get(), jac_.get()), "IDASetLinearSolver");
+  check_flag(IDASetJacFn(ida_.get(), jacobian_fn), "IDASetJacFn");
+  check_flag(IDASetId(ida_.get(), id_.get()), "IDASetId");
 }
 
-IdaTransient::~IdaTransient() { IDAFree(&ida_); }
+IdaTransient::~IdaTransient() = default;
 
 TransientStatus IdaTransient::status_from(int flag, const char* call) const {
+  callbacks_->rethrow_internal();
   TransientStatus s;
   s.flag = flag;
   s.ok = flag >= 0;
@@ -181,6 +209,8 @@ double IdaTransient::fastest_time(std::span<const double> u) const {
   Callbacks& cb = *callbacks_;
   try {
     system_.evaluate(u, cb.scratch, cb.system_values);
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception&) {
     return smallest_capacity;  // CalcIC will meet the same failure and report it
   }
@@ -201,15 +231,15 @@ TransientStatus IdaTransient::consistent_start(double t0, std::span<const double
   callbacks_->last_error.clear();
   callbacks_->callback_error.clear();
   time_ = t0;
-  int flag = IDAReInit(ida_, t0, y_.get(), yp_.get());
+  int flag = IDAReInit(ida_.get(), t0, y_.get(), yp_.get());
   if (flag < 0) return status_from(flag, "IDAReInit");
-  flag = IDACalcIC(ida_, IDA_YA_YDP_INIT, t0 + fastest);
+  flag = IDACalcIC(ida_.get(), IDA_YA_YDP_INIT, t0 + fastest);
   if (flag < 0) return status_from(flag, "IDACalcIC");
-  return status_from(IDAGetConsistentIC(ida_, y_.get(), yp_.get()), "IDAGetConsistentIC");
+  return status_from(IDAGetConsistentIC(ida_.get(), y_.get(), yp_.get()), "IDAGetConsistentIC");
 }
 
 TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
-  if (Index(u0.size()) != system_.size()) throw std::invalid_argument("IdaTransient::start: state has the wrong size");
+  if (Index(u0.size()) != system_.size()) throw InternalError("IdaTransient::start: state has the wrong size");
   const std::vector<double> held(u0.begin(), u0.end());  // u0 may be our own state()
   const double fastest = fastest_time(held);
   TransientStatus s = consistent_start(t0, held, fastest);
@@ -228,6 +258,8 @@ TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
     // whenever its algebraic part has a root at all; where it has none (the film's
     // equilibrium lost at an impasse of the DAE) more iterations only churn.
     rep = KinsolNewton(system_).solve(stepped, NewtonSettings{.max_iterations = 25}, &euler);
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception& e) {
     rep.message = e.what();  // e.g. a differential row without a diagonal entry
   }
@@ -241,13 +273,13 @@ TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
 }
 
 TransientStatus IdaTransient::step(double t_stop) {
-  if (!(t_stop > time_)) throw std::invalid_argument("IdaTransient::step: stop time not ahead of the current time");
+  if (!(t_stop > time_)) throw InternalError("IdaTransient::step: stop time not ahead of the current time");
   callbacks_->last_error.clear();
   callbacks_->callback_error.clear();
-  int flag = IDASetStopTime(ida_, t_stop);
+  int flag = IDASetStopTime(ida_.get(), t_stop);
   if (flag < 0) return status_from(flag, "IDASetStopTime");
   double reached = time_;
-  flag = IDASolve(ida_, t_stop, &reached, y_.get(), yp_.get(), IDA_ONE_STEP);
+  flag = IDASolve(ida_.get(), t_stop, &reached, y_.get(), yp_.get(), IDA_ONE_STEP);
   if (flag >= 0) time_ = reached;
   return status_from(flag, "IDASolve");
 }
@@ -284,14 +316,14 @@ double IdaTransient::differential_distance(std::span<const double> a, std::span<
 
 TransientStatistics IdaTransient::statistics() const {
   TransientStatistics s;
-  IDAGetNumSteps(ida_, &s.steps);
-  IDAGetNumResEvals(ida_, &s.residual_evaluations);
-  IDAGetNumJacEvals(ida_, &s.jacobian_evaluations);
-  IDAGetNumLinSolvSetups(ida_, &s.linear_setups);
-  IDAGetNumNonlinSolvIters(ida_, &s.nonlinear_iterations);
-  IDAGetNumErrTestFails(ida_, &s.error_test_failures);
-  IDAGetNumNonlinSolvConvFails(ida_, &s.convergence_failures);
-  IDAGetLastStep(ida_, &s.last_step);
+  IDAGetNumSteps(ida_.get(), &s.steps);
+  IDAGetNumResEvals(ida_.get(), &s.residual_evaluations);
+  IDAGetNumJacEvals(ida_.get(), &s.jacobian_evaluations);
+  IDAGetNumLinSolvSetups(ida_.get(), &s.linear_setups);
+  IDAGetNumNonlinSolvIters(ida_.get(), &s.nonlinear_iterations);
+  IDAGetNumErrTestFails(ida_.get(), &s.error_test_failures);
+  IDAGetNumNonlinSolvConvFails(ida_.get(), &s.convergence_failures);
+  IDAGetLastStep(ida_.get(), &s.last_step);
   return s;
 }
 

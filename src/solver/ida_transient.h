@@ -105,7 +105,7 @@ class IdaTransient {
   Vector y_, yp_, id_, atol_;
   Matrix jac_;
   LinearSolver klu_;
-  void* ida_ = nullptr;
+  IdaMemory ida_;
   std::unique_ptr<Callbacks> callbacks_;
   double time_ = 0.0;
 };

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <utility>
 #include <limits>
 #include <optional>
 #include <cstdlib>
@@ -14,6 +16,7 @@
 
 #include "solver/sparse_lu.h"
 #include "solver/sparse_matrix_fill.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -30,6 +33,12 @@ struct KinsolNewton::Callbacks {
   const SteadySystem* model;
   std::string last_error;      // KINSOL's own message
   std::string callback_error;  // what a callback threw
+  // An internal error thrown inside a callback: carried across the C solver and thrown
+  // again once it returns (twb/error_family.h: a bug is never turned into a failed solve).
+  std::exception_ptr internal;
+  void rethrow_internal() {
+    if (internal) std::rethrow_exception(std::exchange(internal, nullptr));
+  }
   const PseudoTimeShift* shift = nullptr;
   std::vector<Index> diagonal;  // position of (k, k) in the pattern
 
@@ -120,8 +129,15 @@ int residual_fn(N_Vector y, N_Vector f, void* data) {
     if (!std::isfinite(norm)) return 1;
     if (newton_point) cb->step_norms.push_back(norm);
     return 0;
+  } catch (const InternalError& e) {
+    cb->callback_error = e.what();
+    cb->internal = std::current_exception();
+    return -1;
   } catch (const std::exception& e) {
     cb->callback_error = e.what();
+    return -1;
+  } catch (...) {
+    cb->callback_error = "an exception of unknown type";
     return -1;
   }
 }
@@ -141,8 +157,15 @@ int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vecto
         if (cb->diagonal[k] >= 0) vals[cb->diagonal[k]] += cb->shift->coefficient(k);
     }
     return 0;
+  } catch (const InternalError& e) {
+    cb->callback_error = e.what();
+    cb->internal = std::current_exception();
+    return -1;
   } catch (const std::exception& e) {
     cb->callback_error = e.what();
+    return -1;
+  } catch (...) {
+    cb->callback_error = "an exception of unknown type";
     return -1;
   }
 }
@@ -177,17 +200,27 @@ SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern, S
   s->ops->initialize = [](SUNLinearSolver) { return SUNLS_SUCCESS; };
   // A singular matrix is recoverable: KINSOL reports it, the caller's globalization
   // (pseudo-time, ramps) moves on.
+  // Nothing may be thrown into KINSOL: anything that is (an allocation failing) ends
+  // the solve as unrecoverable.
   s->ops->setup = [](SUNLinearSolver ls, SUNMatrix a) {
     PatternKlu& k = pattern_klu(ls);
-    const std::span<const double> values(SUNSparseMatrix_Data(a), std::size_t(SUNSparseMatrix_NNZ(a)));
-    return k.last_flag = k.lu.refactor(values) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
+    try {
+      const std::span<const double> values(SUNSparseMatrix_Data(a), std::size_t(SUNSparseMatrix_NNZ(a)));
+      return k.last_flag = k.lu.refactor(values) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
+    } catch (...) {
+      return k.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
+    }
   };
   s->ops->solve = [](SUNLinearSolver ls, SUNMatrix, N_Vector x, N_Vector b, realtype) {
     PatternKlu& k = pattern_klu(ls);
     if (!k.lu.factored()) return k.last_flag = SUNLS_PACKAGE_FAIL_REC;
-    N_VScale(1.0, b, x);
-    k.lu.solve(std::span<double>(N_VGetArrayPointer(x), std::size_t(N_VGetLength(x))));
-    return k.last_flag = SUNLS_SUCCESS;
+    try {
+      N_VScale(1.0, b, x);
+      k.lu.solve(std::span<double>(N_VGetArrayPointer(x), std::size_t(N_VGetLength(x))));
+      return k.last_flag = SUNLS_SUCCESS;
+    } catch (...) {
+      return k.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
+    }
   };
   s->ops->lastflag = [](SUNLinearSolver ls) { return sunindextype(pattern_klu(ls).last_flag); };
   s->ops->free = [](SUNLinearSolver ls) {
@@ -201,7 +234,11 @@ SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern, S
 }
 
 void error_handler(int, const char*, const char*, char* msg, void* data) {
-  static_cast<KinsolNewton::Callbacks*>(data)->last_error = msg;
+  try {
+    static_cast<KinsolNewton::Callbacks*>(data)->last_error = msg;
+  } catch (...) {
+    // The message is lost (no memory for it); the solver's flag still says what failed.
+  }
 }
 
 // Undamped Newton steps tried before the line search (see solve()).
@@ -223,24 +260,26 @@ KinsolNewton::KinsolNewton(const SteadySystem& model, SparseLu::Ordering orderin
   jac_.reset(SUNSparseMatrix(n, n, model_.pattern().nnz(), CSR_MAT, ctx_.get()));
   klu_.reset(make_pattern_klu(ctx_.get(), model_.pattern(), ordering));
   if (!y_ || !scale_ || !jac_ || !klu_) throw SolverFailure("could not allocate the Newton solver", -1);
-  kin_ = KINCreate(ctx_.get());
+  kin_.reset(KINCreate(ctx_.get()));
   if (!kin_) throw SolverFailure("KINCreate failed", -1);
-  check_flag(KINInit(kin_, residual_fn, y_.get()), "KINInit");
-  check_flag(KINSetUserData(kin_, callbacks_.get()), "KINSetUserData");
-  check_flag(KINSetErrHandlerFn(kin_, error_handler, callbacks_.get()), "KINSetErrHandlerFn");
-  check_flag(KINSetLinearSolver(kin_, klu_.get(), jac_.get()), "KINSetLinearSolver");
-  check_flag(KINSetJacFn(kin_, jacobian_fn), "KINSetJacFn");
+  check_flag(KINInit(kin_.get(), residual_fn, y_.get()), "KINInit");
+  check_flag(KINSetUserData(kin_.get(), callbacks_.get()), "KINSetUserData");
+  check_flag(KINSetErrHandlerFn(kin_.get(), error_handler, callbacks_.get()), "KINSetErrHandlerFn");
+  check_flag(KINSetLinearSolver(kin_.get(), klu_.get(), jac_.get()), "KINSetLinearSolver");
+  check_flag(KINSetJacFn(kin_.get(), jacobian_fn), "KINSetJacFn");
   // TWB_KINSOL_PRINT=1..3 shows KINSOL's own iteration log on stdout (diagnostics).
-  if (const char* level = std::getenv("TWB_KINSOL_PRINT")) KINSetPrintLevel(kin_, std::atoi(level));
+  if (const char* level = std::getenv("TWB_KINSOL_PRINT")) KINSetPrintLevel(kin_.get(), std::atoi(level));
 }
 
-KinsolNewton::~KinsolNewton() { KINFree(&kin_); }
+KinsolNewton::~KinsolNewton() = default;
 
 bool KinsolNewton::within_rounding(std::span<const double> y, std::span<const double> r, double tolerance) const {
   const SparsePattern& p = model_.pattern();
   std::vector<double> residual(y.size()), jacobian(std::size_t(p.nnz()));
   try {
     model_.evaluate(y, residual, jacobian);
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception&) {
     return false;
   }
@@ -265,17 +304,17 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   // rows, in which later checks see the state, to meet s.residual_tolerance.
   const double tolerance =
       s.residual_tolerance * (model_.newton_form() ? model_.newton_form_tolerance_ratio() : 1.0);
-  check_flag(KINSetFuncNormTol(kin_, tolerance), "KINSetFuncNormTol");
-  check_flag(KINSetMaxSetupCalls(kin_, std::max(1, s.jacobian_reuse)), "KINSetMaxSetupCalls");
-  check_flag(KINSetScaledStepTol(kin_, s.step_tolerance), "KINSetScaledStepTol");
-  if (s.max_step > 0) check_flag(KINSetMaxNewtonStep(kin_, s.max_step), "KINSetMaxNewtonStep");
+  check_flag(KINSetFuncNormTol(kin_.get(), tolerance), "KINSetFuncNormTol");
+  check_flag(KINSetMaxSetupCalls(kin_.get(), std::max(1, s.jacobian_reuse)), "KINSetMaxSetupCalls");
+  check_flag(KINSetScaledStepTol(kin_.get(), s.step_tolerance), "KINSetScaledStepTol");
+  if (s.max_step > 0) check_flag(KINSetMaxNewtonStep(kin_.get(), s.max_step), "KINSetMaxNewtonStep");
   callbacks_->last_error.clear();
   callbacks_->callback_error.clear();
   // The shift adds to the diagonal: a row whose pattern lacks (k, k) cannot take it.
   if (shift)
     for (std::size_t k = 0; k < n; ++k)
       if (shift->coefficient(k) != 0.0 && callbacks_->diagonal[k] < 0)
-        throw std::invalid_argument(fmt::format("pseudo-time shift on row {}, which has no diagonal entry", k));
+        throw InternalError(fmt::format("pseudo-time shift on row {}, which has no diagonal entry", k));
   callbacks_->shift = shift;
   callbacks_->tolerance = tolerance;
   callbacks_->watched = s.watched;
@@ -284,20 +323,21 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   callbacks_->forget();
 
   auto run = [&](int strategy, int max_iterations) {
-    check_flag(KINSetNumMaxIters(kin_, max_iterations), "KINSetNumMaxIters");
+    check_flag(KINSetNumMaxIters(kin_.get(), max_iterations), "KINSetNumMaxIters");
     callbacks_->next_with_jacobian = true;  // KINSOL's first request is a Jacobian's point
     callbacks_->step_norms.clear();
     callbacks_->last_watched.reset();
     callbacks_->full_steps = strategy == KIN_NONE;
-    const int result = KINSol(kin_, y_.get(), strategy, scale_.get(), residual_scale_.get());
+    const int result = KINSol(kin_.get(), y_.get(), strategy, scale_.get(), residual_scale_.get());
+    callbacks_->rethrow_internal();
     long count = 0;
-    KINGetNumNonlinSolvIters(kin_, &count);
+    KINGetNumNonlinSolvIters(kin_.get(), &count);
     rep.iterations += count;
-    KINGetNumFuncEvals(kin_, &count);
+    KINGetNumFuncEvals(kin_.get(), &count);
     rep.residual_evaluations += count;
-    KINGetNumJacEvals(kin_, &count);
+    KINGetNumJacEvals(kin_.get(), &count);
     rep.jacobian_evaluations += count;
-    KINGetNumBacktrackOps(kin_, &count);
+    KINGetNumBacktrackOps(kin_.get(), &count);
     rep.backtracks += count;
     return result;
   };
@@ -320,6 +360,8 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
       if (shift)
         for (std::size_t k = 0; k < n; ++k) r[k] += shift->coefficient(k) * (y[k] - shift->anchor[k]);
       rep.residual_norm = max_norm(r);
+    } catch (const InternalError&) {
+      throw;  // a bug: no fallback may hide it
     } catch (const std::exception&) {
       rep.residual_norm = INFINITY;
     }

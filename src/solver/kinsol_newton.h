@@ -104,7 +104,7 @@ class KinsolNewton {
   Vector y_, scale_, residual_scale_;
   Matrix jac_;
   LinearSolver klu_;
-  void* kin_ = nullptr;
+  KinsolMemory kin_;
   std::unique_ptr<Callbacks> callbacks_;
 };
 

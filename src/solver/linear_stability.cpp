@@ -1,4 +1,5 @@
 #include "solver/linear_stability.h"
+#include "twb/error_family.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,7 +42,7 @@ StabilityReport linear_stability(const SteadySystem& system, const SparseLu& fac
   std::vector<std::size_t> differential;
   for (std::size_t k = 0; k < n; ++k)
     if (capacity[k] > 0.0) differential.push_back(k);
-  if (differential.empty()) throw std::invalid_argument("linear_stability: no unknown has a capacity");
+  if (differential.empty()) throw InternalError("linear_stability: no unknown has a capacity");
   const auto nd = Eigen::Index(differential.size());
   const Eigen::Index m = std::min<Eigen::Index>(settings.krylov_dimension, nd);
 

@@ -11,6 +11,7 @@
 
 #include "solver/kinsol_newton.h"
 #include "solver/sparse_lu.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -34,7 +35,7 @@ class PaperScheme {
     for (Index k : blocks_.pressure) role_[std::size_t(k)] = Role::pressure;
     for (Index k : blocks_.temperature) role_[std::size_t(k)] = Role::temperature;
     for (Index k = 0; k < system.size(); ++k) diagonal_[std::size_t(k)] = pattern_.find(k, k);
-    if (blocks_.rigid.empty()) throw std::invalid_argument("the paper's scheme needs rigid-body unknowns");
+    if (blocks_.rigid.empty()) throw InternalError("the paper's scheme needs rigid-body unknowns");
     if (s_.heat_solver == PaperHeatSolver::direct && !blocks_.temperature.empty()) build_heat_matrix();
   }
 
@@ -307,7 +308,7 @@ class PaperScheme {
 
 PaperSchemeReport solve_by_paper_scheme(SegregatedSystem& system, std::vector<double>& u,
                                         const PaperSchemeSettings& settings) {
-  if (Index(u.size()) != system.size()) throw std::invalid_argument("solve_by_paper_scheme: state has the wrong size");
+  if (Index(u.size()) != system.size()) throw InternalError("solve_by_paper_scheme: state has the wrong size");
   PaperSchemeReport report;
   const FlowBalanceRows flow_rows(system);
   PaperScheme(system, settings, report).solve(u);

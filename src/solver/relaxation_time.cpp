@@ -8,6 +8,7 @@
 
 #include "solver/sparse_lu.h"
 #include "solver/sundials_context.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -26,7 +27,7 @@ double slowest_relaxation_time(const SteadySystem& system, std::span<const doubl
   const auto n = std::size_t(system.size());
   const std::vector<double> capacities = system.capacities();
   if (std::none_of(capacities.begin(), capacities.end(), [](double c) { return c > 0.0; }))
-    throw std::invalid_argument("slowest_relaxation_time: no unknown has a capacity");
+    throw InternalError("slowest_relaxation_time: no unknown has a capacity");
   const SparsePattern& p = system.pattern();
   std::vector<double> residual(n), jacobian(std::size_t(p.nnz()));
   system.evaluate(u, residual, jacobian);

@@ -3,6 +3,7 @@
 #include <klu.h>
 
 #include "solver/nested_dissection.h"
+#include "twb/error_family.h"
 
 #include <stdexcept>
 #include <string>
@@ -48,7 +49,7 @@ struct SparseLu::Klu {
 };
 
 SparseLu::SparseLu(const SparsePattern& p, Ordering ordering) : klu_(std::make_unique<Klu>()) {
-  if (p.rows != p.cols) throw std::invalid_argument("SparseLu: the matrix must be square");
+  if (p.rows != p.cols) throw InternalError("SparseLu: the matrix must be square");
   klu_l_defaults(&klu_->common);
   if (ordering == Ordering::by_size && p.rows > kNestedDissectionAbove) {
     klu_->common.ordering = 3;

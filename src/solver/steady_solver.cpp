@@ -10,6 +10,7 @@
 #include "solver/natural_continuation.h"
 #include "solver/paper_scheme.h"
 #include "solver/sparse_lu.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -34,7 +35,7 @@ class PseudoTimeStepper {
     for (Index k = 0; k < pattern_.rows; ++k) {
       diagonal_.push_back(pattern_.find(k, k));
       if (diagonal_.back() < 0)
-        throw std::invalid_argument(fmt::format("pseudo-time step on row {}, which has no diagonal entry", k));
+        throw InternalError(fmt::format("pseudo-time step on row {}, which has no diagonal entry", k));
     }
   }
 
@@ -208,6 +209,7 @@ SteadyReport with_work_of(SteadyReport rep, const SteadyReport& failed) {
   rep.jacobian_evaluations += failed.jacobian_evaluations;
   rep.residual_evaluations += failed.residual_evaluations;
   rep.wall_ms += failed.wall_ms;
+  rep.attempts.insert(rep.attempts.begin(), failed.attempts.begin(), failed.attempts.end());
   return rep;
 }
 
@@ -218,6 +220,11 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
   if (model_.scene().solver.method == SolverMethod::paper) return solve_by_paper(u);
   const FilmMesh& mesh = model_.films().front().mesh;
   SteadyReport spent;  // by the strategies that failed
+  // A strategy that fails or throws leaves its reason; an internal error is a bug, which
+  // no other strategy may hide.
+  auto failed = [&](const char* strategy, const std::string& why) {
+    spent.attempts.push_back(fmt::format("{}: {}", strategy, why.empty() ? "did not converge" : why));
+  };
   // The coarser mesh must still be a legal one (docs/scenes.md, "Bounds"): at least
   // 5 × 24, so that it keeps interior pressure nodes and its wedge.
   if (mesh_sequence_ && mesh.node_count() > kSequenceAbove && (mesh.radial_nodes() + 1) / 2 >= 5 &&
@@ -226,8 +233,12 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
       SteadyReport rep = solve_by_mesh_sequence(u);
       if (rep.converged) return rep;
       spent = with_work_of(spent, rep);
-    } catch (const std::exception&) {
+      failed("mesh sequence", rep.message);
+    } catch (const InternalError&) {
+      throw;
+    } catch (const std::exception& e) {
       // The cold start on the mesh itself below says what is wrong, if anything.
+      failed("mesh sequence", e.what());
     }
     u = model_.cold_start();
   }
@@ -236,8 +247,12 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
       SteadyReport rep = solve_by_deformation_homotopy(u);
       if (rep.converged) return with_work_of(rep, spent);
       spent = with_work_of(spent, rep);
-    } catch (const std::exception&) {
+      failed("deformation homotopy", rep.message);
+    } catch (const InternalError&) {
+      throw;
+    } catch (const std::exception& e) {
       // As above: the deformed film's own cold start follows.
+      failed("deformation homotopy", e.what());
     }
     u = model_.cold_start();
   }
@@ -248,7 +263,13 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
   // started from the same cold state. Pseudo-time goes first: the same 36 states (to
   // 2e-16), 1468 iterations instead of 1870 (with the pseudo-time settings of then; now
   // 643, docs/model.md).
-  return with_work_of(settle(u, false), spent);
+  SteadyReport rep = with_work_of(settle(u, false), spent);
+  if (!rep.converged && !rep.attempts.empty()) {
+    std::string before;
+    for (const std::string& a : rep.attempts) before += (before.empty() ? "" : "; ") + a;
+    rep.message += " (before that: " + before + ")";
+  }
+  return rep;
 }
 
 SteadyReport SteadySolver::solve_by_mesh_sequence(std::vector<double>& u) {

@@ -24,6 +24,9 @@ struct SteadyReport {
   double residual_norm = 0.0;
   double wall_ms = 0.0;
   std::string message;
+  // What each strategy that failed before the reported one said (solve_cold), in order:
+  // kept, so that a cause is never lost; a failed cold start's message ends with them.
+  std::vector<std::string> attempts;
 };
 
 class SteadySolver {

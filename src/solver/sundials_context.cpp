@@ -1,8 +1,16 @@
 #include "solver/sundials_context.h"
 
+#include <fmt/format.h>
+#include <ida/ida.h>
+#include <kinsol/kinsol.h>
+
+#include "twb/error_family.h"
+
 namespace twb {
 
 void SundialsContextDeleter::operator()(SUNContext c) const { SUNContext_Free(&c); }
+void KinsolDeleter::operator()(void* memory) const { KINFree(&memory); }
+void IdaDeleter::operator()(void* memory) const { IDAFree(&memory); }
 
 SundialsContext make_context() {
   SUNContext ctx = nullptr;
@@ -11,7 +19,7 @@ SundialsContext make_context() {
 }
 
 void check_flag(int flag, const char* call) {
-  if (flag < 0) throw SolverFailure(std::string(call) + " failed", flag);
+  if (flag < 0) throw InternalError(fmt::format("{} failed (SUNDIALS flag {})", call, flag));
 }
 
 }  // namespace twb

@@ -22,11 +22,18 @@ using SundialsContext = std::unique_ptr<std::remove_pointer_t<SUNContext>, Sundi
 using Vector = std::unique_ptr<std::remove_pointer_t<N_Vector>, NVectorDeleter>;
 using Matrix = std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter>;
 using LinearSolver = std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, LinearSolverDeleter>;
+// A KINSOL or IDA solver's memory, owned from its creation: a set-up call that throws
+// in a constructor frees it too. Declared after the linear solver, matrix and vectors
+// it uses, so that it is freed before them.
+struct KinsolDeleter { void operator()(void* memory) const; };
+struct IdaDeleter { void operator()(void* memory) const; };
+using KinsolMemory = std::unique_ptr<void, KinsolDeleter>;
+using IdaMemory = std::unique_ptr<void, IdaDeleter>;
 
 SundialsContext make_context();
 
-// For set-up calls, which fail only on a programming error: throws SolverFailure
-// naming the call when flag < 0.
+// For set-up calls, which fail only on a programming error: throws InternalError
+// (twb/error_family.h) naming the call when flag < 0.
 void check_flag(int flag, const char* call);
 
 }  // namespace twb

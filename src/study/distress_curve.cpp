@@ -17,6 +17,7 @@
 #include "study/limit_curve.h"
 #include "study/parallel.h"
 #include "model/limit_thresholds.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -116,6 +117,8 @@ void trace_job(const Scene& scene, CurveParameter which, const LimitCurveSetting
   try {
     BearingModel model(scene);
     job.curve = trace_limit_curve(model, which, job.kind, job.from, job.to, job.start, settings);
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception& e) {
     job.curve.ended = std::string("the curve could not be continued: ") + e.what();
   }
@@ -304,6 +307,8 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
                       elapsed_ms(t0) / 1000.0));
       return true;
     });
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception& e) {
     curve.message = std::string("the curve could not be continued: ") + e.what();
   }
@@ -368,6 +373,8 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
         refined.emplace(coarse, which, curve.points[a].u, first->fold->null_vector);
       const std::lock_guard<std::mutex> hold(mesh_lock);
       mesh = refined->mesh();
+    } catch (const InternalError&) {
+      throw;  // a bug: no fallback may hide it
     } catch (const std::exception& e) {
       for (std::size_t k = a; k < b; ++k) bar_of[k].why = std::string("the refined mesh could not be built: ") + e.what();
       return;
@@ -378,6 +385,8 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
       coarse.set_load(pt.lambda);
       try {
         bar_of[k].estimate = refined->at(pt.p, pt.lambda, pt.u, kind_of[k], bar_of[k].why);
+      } catch (const InternalError&) {
+        throw;  // a bug: no fallback may hide it
       } catch (const std::exception& failure) {
         bar_of[k].why = failure.what();
       }

@@ -17,6 +17,7 @@
 #include "solver/natural_continuation.h"
 #include "solver/runaway.h"
 #include "solver/steady_solver.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -259,6 +260,8 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
         StepOutcome step;
         try {
           step = classify_step(model, low_state, p.load, runaway);
+        } catch (const InternalError&) {
+          throw;  // a bug: no fallback may hide it
         } catch (const std::exception& e) {
           // Near a fold the Jacobian may turn singular under the detector's relaxation
           // estimate: the branch ends here, and the bracket below takes over.
@@ -502,6 +505,8 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
     }
     keep(hot.state, hot.newton_iterations, hot.wall_ms);
     u = hot.state;
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception& e) {
     // A singular Jacobian under the detector or the march, at the fold itself: what
     // was found so far stays, and the row says why the search stopped.

@@ -9,6 +9,7 @@
 #include "solver/kinsol_newton.h"
 #include "solver/relaxation_time.h"
 #include "solver/steady_solver.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -37,6 +38,8 @@ StepMarch march_load_step(BearingModel& model, std::span<const double> start_sta
   if (!(duration > 0)) {
     try {
       tau = slowest_relaxation_time(model, start_state, 20);
+    } catch (const InternalError&) {
+      throw;  // a bug: no fallback may hide it
     } catch (const std::exception&) {
       tau = 0.0;
     }

@@ -24,6 +24,7 @@
 #include "solver/sparse_lu.h"
 #include "solver/steady_solver.h"
 #include "study/distress_search.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -63,6 +64,8 @@ void run_point(BearingModel& model, StudyOutcome& out) {
       out.summary.insert(out.summary.end(), lines.begin(), lines.end());
       return;
     }
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception& e) {
     why = e.what();
   }
@@ -91,6 +94,8 @@ void estimate_state_errors(const BearingModel& model, DistressSearch& found, con
       else
         why = missing;
     }
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception& e) {
     why = e.what();
   }
@@ -174,6 +179,8 @@ void run_distress_curve(BearingModel& base, StudyOutcome& out, const ProgressRep
       // Threads the family's members leave over serve each curve's own pieces.
       run_fold_curve(model, variants[i].parameter, variants[i].label, part, say,
                      std::max(1, threads / int(variants.size())));
+    } catch (const InternalError&) {
+      throw;  // a bug: no fallback may hide it
     } catch (const std::exception& e) {
       part.summary.push_back(fmt::format("fold curve{}: failed: {}", variants[i].label, e.what()));
     }
@@ -224,6 +231,8 @@ void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings
   try {
     const CoarseFold coarse{*found.row.fold_load, &model, found.fold ? &*found.fold : nullptr};
     e = richardson_estimate(model.scene(), model.speed(), coarse, from, why, progress);
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception& failure) {
     why = std::string("the refined mesh's search failed: ") + failure.what();
   }
@@ -264,6 +273,8 @@ void estimate_crossing_errors(const BearingModel& model, const DistressSearchSet
       }
       e = crossing_estimate(model, *fine, kFailureCriteria[c], found.crossing_states[c].first,
                             found.crossing_states[c].second, settings.bracket_width, settings.load_end, why);
+    } catch (const InternalError&) {
+      throw;  // a bug: no fallback may hide it
     } catch (const std::exception& failure) {
       why = failure.what();
     }
@@ -323,6 +334,8 @@ SearchDone search_one(const BearingModel& base, const SearchTask& task, const Di
     model->set_speed(task.speed);
     done.model = model;
     found = search_distress(*model, settings, progress);
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
   } catch (const std::exception& e) {
     found = DistressSearch{};
     found.failed = true;
@@ -416,6 +429,8 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
       std::shared_ptr<const BearingModel>& model = variant_models[std::size_t(&variant - variants.data())];
       if (!model) model = std::make_shared<const BearingModel>(variant.scene ? *variant.scene : base.scene());
       result.model = model;
+    } catch (const InternalError&) {
+      throw;  // a bug: no fallback may hide it
     } catch (const std::exception&) {
       return std::nullopt;
     }

@@ -8,6 +8,7 @@
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "solver/steady_solver.h"
+#include "twb/error_family.h"
 
 namespace twb {
 namespace {
@@ -64,7 +65,7 @@ TEST(MeshTransfer, RefusesAnotherSetOfUnknowns) {
   const BearingModel thermal(on_mesh(testing::table1_scene(true, true, true, true), 5, 24));
   const BearingModel isothermal(on_mesh(testing::table1_scene(true, true, true, false), 5, 24));
   const std::vector<double> u = isothermal.cold_start();
-  EXPECT_THROW((void)thermal.interpolated_from(isothermal, u), std::invalid_argument);
+  EXPECT_THROW((void)thermal.interpolated_from(isothermal, u), twb::InternalError);
 }
 
 // The cold start on a mesh above SteadySolver::kSequenceAbove nodes goes through the

@@ -13,6 +13,7 @@
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <gtest/gtest.h>
+#include "twb/error_family.h"
 
 namespace {
 
@@ -212,9 +213,8 @@ TEST(StatisticalContact, TableLookupIsFast) {
 }
 
 TEST(StatisticalContact, RejectsBadParameters) {
-  EXPECT_THROW(twb::StatisticalContact(table1_asperity(), 0.0, summit_sigma), std::invalid_argument);
-  EXPECT_THROW(twb::StatisticalContact(table1_asperity(), default_density(), -1.0),
-               std::invalid_argument);
+  EXPECT_THROW(twb::StatisticalContact(table1_asperity(), 0.0, summit_sigma), twb::InternalError);
+  EXPECT_THROW(twb::StatisticalContact(table1_asperity(), default_density(), -1.0), twb::InternalError);
 }
 
 TEST(StatisticalContact, BatchPressureEqualsScalarOnAndOffTheTable) {

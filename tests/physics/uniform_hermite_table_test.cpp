@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include "twb/error_family.h"
 
 namespace {
 
@@ -72,9 +73,9 @@ TEST(UniformHermiteTable, SlopeIsTheDerivativeOfTheInterpolant) {
 }
 
 TEST(UniformHermiteTable, RejectsBadInput) {
-  EXPECT_THROW(twb::UniformHermiteTable(0.0, 1.0, {1.0}, {0.0}), std::invalid_argument);
-  EXPECT_THROW(twb::UniformHermiteTable(0.0, 0.0, {1.0, 2.0}, {0.0, 0.0}), std::invalid_argument);
-  EXPECT_THROW(twb::UniformHermiteTable(0.0, 1.0, {1.0, 2.0}, {0.0}), std::invalid_argument);
+  EXPECT_THROW(twb::UniformHermiteTable(0.0, 1.0, {1.0}, {0.0}), twb::InternalError);
+  EXPECT_THROW(twb::UniformHermiteTable(0.0, 0.0, {1.0, 2.0}, {0.0, 0.0}), twb::InternalError);
+  EXPECT_THROW(twb::UniformHermiteTable(0.0, 1.0, {1.0, 2.0}, {0.0}), twb::InternalError);
 }
 
 }  // namespace

@@ -1,0 +1,25 @@
+#include "twb/error_family.h"
+
+#include "twb/scene/input_error.h"
+#include "twb/solver_failure.h"
+
+namespace twb {
+
+ErrorReport report_error(std::exception_ptr error) {
+  constexpr const char* report = " (a bug in twb: please report it with the scene and the command)";
+  try {
+    std::rethrow_exception(error);
+  } catch (const InputError& e) {
+    return {ErrorKind::input, e.what()};
+  } catch (const std::invalid_argument& e) {
+    return {ErrorKind::input, std::string("twb: error: ") + e.what()};
+  } catch (const SolverFailure& e) {
+    return {ErrorKind::solver, std::string("twb: solver failure: ") + e.what()};
+  } catch (const std::exception& e) {
+    return {ErrorKind::internal, std::string("twb: internal error: ") + e.what() + report};
+  } catch (...) {
+    return {ErrorKind::internal, std::string("twb: internal error: an exception of unknown type") + report};
+  }
+}
+
+}  // namespace twb
