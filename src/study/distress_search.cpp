@@ -343,11 +343,13 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   out.cool_states = out.states.size();
 
   if (!ran_away && !branch_ended && !transient) {
+    out.row.verdict = DistressVerdict::no_heating;
     out.row.method = fmt::format("no fold up to {:.6g} N (no thermal effect: no thermo-viscous distress)",
                                  settings.load_end);
     return out;
   }
   if (!ran_away && !branch_ended && model.scene().lubricant.viscosity_model == ViscosityModel::constant) {
+    out.row.verdict = DistressVerdict::no_heating;
     out.row.method = fmt::format("no fold up to {:.6g} N (the oil's viscosity does not depend on temperature: no "
                                  "thermo-viscous distress)",
                                  settings.load_end);
@@ -355,6 +357,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   }
   if (!ran_away && !branch_ended) {
     const double steepest = steepest_sensitivity(out.states);
+    out.row.verdict = DistressVerdict::gradual_heating;
     out.row.method = fmt::format("no fold up to {:.6g} N (gradual heating); steepest rise of T_mean at {:.6g} N",
                                  settings.load_end, steepest);
     return out;
@@ -369,9 +372,11 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
       out.fold = around.folds.front();
     }
     if (settings.fold_only) {
+      out.row.verdict = DistressVerdict::fold_only;
       out.row.method = out.row.fold_load ? "fold only" : "no fold located: " + around.message;
       return out;
     }
+    out.row.verdict = DistressVerdict::steady_fold;
     out.row.method = out.row.fold_load
                          ? fmt::format("no thermal effect, so no transient to bracket W_d: the steady branch folds at "
                                        "{:.6g} N",
@@ -427,6 +432,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
         high = std::min(low * (1.0 + widen), settings.load_end);
       }
       if (!ran_away && low >= settings.load_end) {
+        out.row.verdict = DistressVerdict::settled;
         out.row.method = fmt::format("no distress up to {:.6g} N: every load step settled on the branch",
                                      settings.load_end);
         return out;
@@ -440,6 +446,7 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
       out.counts.ida_steps += bracket.ida_steps;
       out.counts.ida_factorizations += bracket.ida_factorizations;
       if (!bracket.valid) {
+        out.row.verdict = DistressVerdict::no_bracket;
         out.row.method = "no distress bracket: " + bracket.message;
         out.message = out.row.method;
         return out;
@@ -462,11 +469,13 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
       // The bracket is centred on the fold: W_d is the fold, proven to the bracket's width.
       out.fold_proven = !ran_away;
       out.row.distress_load = fold->lambda;
+      out.row.verdict = DistressVerdict::fold_proven;
       out.row.method = fmt::format("runaway; fold at {:.6g} N ({}), proven by transients: the step to {:.6g} N "
                                    "settles, to {:.6g} N runs away",
                                    fold->lambda, to_string(fold->method), bracket.low, bracket.high);
     } else {
       out.row.distress_load = bracket.critical_estimate();
+      out.row.verdict = DistressVerdict::bisection;
       if (fold) {
         const double gap = (*out.row.distress_load - fold->lambda) / fold->lambda;
         out.row.method = fmt::format("runaway bracketed by bisection; fold at {:.6g} N ({}), {:+.2f} % from W_d ({})",

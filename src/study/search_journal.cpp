@@ -76,7 +76,7 @@ void fields_of_row(A& a, S& r) {
   a(r.failure_load), a(r.criterion), a(r.failure);
   for (auto& load : r.criterion_loads) a(load);
   for (auto& error : r.criterion_errors) a(error);
-  a(r.failure_extrapolated), a(r.failure_error);
+  a(r.failure_extrapolated), a(r.failure_error), a(r.verdict);
 }
 template <class A, class S>
 void fields_of_search(A& a, S& j) {

@@ -340,6 +340,7 @@ SearchDone search_one(const BearingModel& base, const SearchTask& task, const Di
     found = DistressSearch{};
     found.failed = true;
     found.row.speed = task.speed;
+    found.row.verdict = DistressVerdict::solver_failure;
     found.row.method = std::string("solver failure: ") + e.what();
     found.message = found.row.method;
   }

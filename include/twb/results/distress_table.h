@@ -20,6 +20,21 @@
 
 namespace twb {
 
+// How a distress search decided its row (docs/model.md, "Distress on the bearing").
+enum class DistressVerdict {
+  undecided,        // no verdict: the search failed first (its message says why)
+  fold_proven,      // "runaway; fold at …, proven by transients: …"
+  bisection,        // "runaway bracketed by bisection; …" (no fold, or the dynamics disagree)
+  gradual_heating,  // "no fold up to … (gradual heating)": the branch reaches load_end
+  no_heating,       // no fold up to load_end and nothing to produce thermo-viscous distress
+                    // (no thermal effect, or an oil whose viscosity does not depend on temperature)
+  steady_fold,      // no thermal effect: the steady branch's fold (or end) alone, no transient
+  fold_only,        // the fold alone, as the error estimate's refined meshes ask
+  settled,          // "no distress up to …: every load step settled on the branch"
+  no_bracket,       // the transients gave no bracket
+  solver_failure,   // a state the search needed could not be solved
+};
+
 struct DistressRow {
   double speed = 0.0;                     // rad/s
   std::optional<double> parameter;        // the second axis' value (SI), if any
@@ -48,6 +63,8 @@ struct DistressRow {
   // or its criterion's), N.
   std::array<std::optional<double>, std::size(kFailureCriteria)> criterion_errors;
   std::optional<double> failure_extrapolated, failure_error;
+  // The verdict `method` words (with its numbers): what studies and tests read.
+  DistressVerdict verdict = DistressVerdict::undecided;
 };
 
 // The load where the criterion is crossed (kFailureCriteria order), if it is.
