@@ -23,7 +23,8 @@ except ImportError as _error:  # the plotting part (twb.plot) works without it
     _twb = None
     _import_error = _error
 
-__all__ = ["Bearing", "Scene", "Results", "Table", "SceneError", "SolverFailure", "run", "override_texts"]
+__all__ = ["Bearing", "Scene", "Results", "Table", "SceneError", "SolverFailure", "InternalError", "run",
+           "override_texts"]
 
 
 def _core():
@@ -38,6 +39,7 @@ def _core():
 if _twb is not None:
     SceneError = _twb.SceneError
     SolverFailure = _twb.SolverFailure
+    InternalError = _twb.InternalError
     __version__ = _twb.__version__
 else:
     __version__ = None
@@ -47,6 +49,9 @@ else:
 
     class SolverFailure(RuntimeError):
         """A state a run needed could not be solved."""
+
+    class InternalError(RuntimeError):
+        """A broken precondition inside twb: a bug, to be reported."""
 
 
 # Text YAML reads as the same plain string inside a flow list or map: anything else

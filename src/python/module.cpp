@@ -189,6 +189,9 @@ PYBIND11_MODULE(_twb, m) {
   // twb.SceneError: the located message as str(e), and where: file, line, column.
   static py::exception<twb::InputError> scene_error(m, "SceneError", PyExc_ValueError);
   static py::exception<twb::SolverFailure> solver_failure(m, "SolverFailure", PyExc_RuntimeError);
+  // twb.InternalError: a broken precondition inside twb (twb/error_family.h), with the
+  // request to report it, as the command's exit status 4 says.
+  static py::exception<twb::InternalError> internal_error(m, "InternalError", PyExc_RuntimeError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -201,8 +204,12 @@ PYBIND11_MODULE(_twb, m) {
       PyErr_SetObject(scene_error.ptr(), error.ptr());
     } catch (const twb::SolverFailure& e) {
       PyErr_SetString(solver_failure.ptr(), e.what());
+    } catch (const twb::InternalError&) {
+      PyErr_SetString(internal_error.ptr(), twb::report_error(std::current_exception()).message.c_str());
     }
   });
+  // Only for the test of the translation above: no input reaches an internal error.
+  m.def("_raise_internal_error", [](const std::string& what) { throw twb::InternalError(what); });
 
   py::class_<twb::Scene>(m, "Scene")
       .def_readonly("source", &twb::Scene::source)

@@ -116,6 +116,16 @@ class Errors(unittest.TestCase):
             twb.Scene(os.path.join(ROOT, "configs", "no_such_scene.yaml"))
 
 
+    def test_internal_error_asks_for_a_report(self):
+        # No input reaches an internal error: the module's test hook raises one, to check
+        # that it arrives as twb.InternalError with the command's words.
+        with self.assertRaises(twb.InternalError) as caught:
+            twb._core()._raise_internal_error("FoldSystem: borders of another size")
+        self.assertIsInstance(caught.exception, RuntimeError)
+        self.assertIn("FoldSystem: borders of another size", str(caught.exception))
+        self.assertIn("please report", str(caught.exception))
+
+
 class Scenes(unittest.TestCase):
     def test_overrides_as_mapping_and_as_set_texts(self):
         self.assertEqual(twb.override_texts(POINT), ["operating.load=150 N", "study={type: point}"])
