@@ -151,7 +151,8 @@ void add_limit_curve(const LimitCurveJob& job, CurveParameter which, std::option
 }
 
 // Runs every piece on up to `threads` threads; the first exception (in the pieces'
-// order) is thrown again once all are done. The KLU factorizations of pieces run on
+// order) is thrown again once all are done, as run_in_parallel does, but only after
+// every piece's work is counted. The KLU factorizations of pieces run on
 // other threads than the caller's are added to `timings` (the caller counts its own
 // thread's).
 template <class Piece>

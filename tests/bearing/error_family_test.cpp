@@ -3,12 +3,15 @@
 // comes back out as itself, not as a failed solve.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <stdexcept>
 #include <vector>
 
 #include "solver/ida_transient.h"
 #include "solver/kinsol_newton.h"
+#include "study/parallel.h"
 #include "../support/model_problems.h"
 #include "twb/error_family.h"
 #include "twb/scene/input_error.h"
@@ -104,6 +107,23 @@ TEST(ErrorFamily, AnInternalErrorInATransientCallbackComesBackOutOfIda) {
         for (int k = 0; k < 100 && s.ok; ++k) s = transient.step(transient.time() + 1.0);
       },
       InternalError);
+}
+
+// A study's searches run on worker threads: an internal error one of them throws must
+// reach the caller (an exception leaving a thread ends the process), the lowest piece's
+// first, after every piece has run.
+TEST(ErrorFamily, AnInternalErrorOnAWorkerThreadReachesTheCaller) {
+  std::vector<int> ran(6, 0);
+  try {
+    run_in_parallel(ran.size(), 2, [&](std::size_t i) {
+      ran[i] = 1;
+      if (i == 3 || i == 5) throw InternalError("piece " + std::to_string(i));
+    });
+    ADD_FAILURE() << "no error came back";
+  } catch (const InternalError& e) {
+    EXPECT_STREQ(e.what(), "piece 3");
+  }
+  EXPECT_EQ(std::count(ran.begin(), ran.end(), 1), 6);
 }
 
 }  // namespace
