@@ -30,7 +30,7 @@ struct FilmTotals {
   double friction_heat = 0;
 };
 
-struct BearingModel::Totals {
+struct AssemblyTotals {
   std::vector<FilmTotals> film;
 };
 

@@ -38,12 +38,11 @@ void BearingModel::parameter_derivative_given(std::span<const double> u, std::sp
 // gains − losses then reads C_k dT̂/dt = −F_k with C_k = ρ c t A_k s_k, in seconds.
 std::vector<double> BearingModel::capacities() const {
   std::vector<double> c(std::size_t(size()), 0.0);
-  for (std::size_t n = 0; n < components_.size(); ++n) {
-    const ComponentHeat& comp = components_[n];
+  for (const ComponentHeat& comp : components_) {
     for (int local = 0; local < comp.node_count(); ++local) {
       const int ring = comp.axisymmetric ? local : local / comp.grid.circumferential_nodes();
       c[std::size_t(comp.offset + local)] =
-          comp.capacity_per_area * comp.node_area(ring) * component_row_scale_[n][std::size_t(local)];
+          comp.capacity_per_area * comp.node_area(ring) * layout_.row_scale(comp.offset + local);
     }
   }
   return c;

@@ -5,17 +5,13 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "assembly_totals.h"
+#include "model/assembly_totals.h"
 #include "model/reynolds_operator.h"
 #include "physics/asperity_contact.h"
 #include "physics/contact_table_cache.h"
 #include "physics/thermal_deformation.h"
 
 namespace twb {
-
-std::string fmt_film_block(int number, const char* what) {
-  return "film " + std::to_string(number) + " " + what;
-}
 
 namespace {
 
@@ -57,122 +53,23 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   f2.shear_weight = weight(scene_.gear.roughness.rq, scene_.washer.roughness.rq);
   films_ = {f1, f2};
 
-  rigid_offset_ = layout_.add("rigid body (z_w, gamma_x, gamma_y, z_g)", BlockEffect::mechanics, 4);
-  for (auto& f : films_) {
-    if (fx.hydrodynamics && f.sliding)
-      f.pressure_offset = layout_.add(fmt_film_block(f.number, "pressure"), BlockEffect::hydrodynamics, f.mesh.interior_count());
-    // The mass-conserving model's second field (docs/physics.md section 12).
-    if (f.pressure_offset >= 0 && fx.cavitation == CavitationModel::jfo)
-      f.content_offset = layout_.add(fmt_film_block(f.number, "film content"), BlockEffect::hydrodynamics,
-                                     f.mesh.interior_count());
-  }
-  if (fx.thermal) {
-    for (auto& f : films_)
-      f.temperature_offset = layout_.add(fmt_film_block(f.number, "film-node temperature"), BlockEffect::thermal,
-                                         f.mesh.node_count());
-    auto add_component = [&](ComponentId id, const Component& c, const FilmMesh& grid, bool axisymmetric,
-                             bool ambient, const char* name) {
-      ComponentHeat h{id, grid, axisymmetric, c.thickness, c.material.conductivity,
-                      c.material.density * c.material.specific_heat * c.thickness, ambient};
-      h.offset = layout_.add(std::string(name) + (axisymmetric ? " temperature T(r)" : " temperature T(r, theta)"),
-                             BlockEffect::thermal, h.node_count(), true);
-      components_.push_back(h);
-    };
-    // The carrier is fixed in the load frame (unless the scene averages it, a modelling
-    // alternative); the gear always rotates; the washer rotates with the gear when film 1
-    // slides (docs/physics.md section 7).
-    add_component(ComponentId::carrier, scene_.carrier, films_[0].mesh,
-                  fx.carrier_temperature == CarrierTemperature::axisymmetric, true, "carrier");
-    add_component(ComponentId::washer, scene_.washer, films_[0].mesh, film1_slides, false, "washer");
-    add_component(ComponentId::gear, scene_.gear,
-                  FilmMesh(scene_.gear.inner_radius, scene_.gear.outer_radius, nr, nt), true, true, "gear");
-  }
-  if (fx.thermal_deformation) {
-    if (!fx.thermal) throw std::invalid_argument("thermal_deformation needs the thermal effect");
-    dishing_offset_ = layout_.add("washer dishing curvature", BlockEffect::thermal_deformation, 1);
-    // Every δ moves the sliding film's contact force, which sets f in every heat row.
-    if (fx.asperity_contact && scene_.friction.law == FrictionLaw::empirical)
-      contact_force_offset_ = layout_.add("sliding film contact force", BlockEffect::thermal_deformation, 1);
-  }
-
+  // Reference scales (their values do not depend on the unknowns declared).
   build_contact();
   roelands_ = RoelandsViscosity{scene_.lubricant.mu_infinity, scene_.lubricant.g0, scene_.lubricant.s0};
-
-  // Reference scales.
   sigma_ref_ = films_[0].sigma;
   gamma_ref_ = scene_.gear.tilt > 0 ? scene_.gear.tilt : sigma_ref_ / scene_.washer.outer_radius;
+  rigid_offset_ = layout_.add("rigid body (z_w, gamma_x, gamma_y, z_g)", BlockEffect::mechanics, 4);
   for (Film& f : films_) {
     f.rigid_offset = rigid_offset_;
     f.clearance_scale = sigma_ref_;
     f.tilt_scale = gamma_ref_;
   }
-  const Film& sf = sliding_film();
-  p_ref_ = scene_.operating.load / sf.mesh.area();
-  h_ref_ = scene_.solver.cold_start_film * sf.sigma;
-  mu_ref_ = viscosity(scene_.operating.ambient).value;
-  // κ̂ = 1 lifts the washer's rim by σ_ref; F̂c = 1 is the scene's load (fixed, unlike
-  // the rigid rows' F_ext, so that the load enters no other row).
-  curvature_ref_ = sigma_ref_ / dishing_shape(scene_.washer.outer_radius, scene_.washer.inner_radius,
-                                              scene_.washer.outer_radius);
-  contact_force_ref_ = scene_.operating.load;
-  smooth_rule_ = GaussRule::legendre(4);
-  contact_rule_ = GaussRule::legendre(scene_.mesh.contact_quadrature);
-  flat_contact_rule_ =
-      GaussRule::legendre(std::min(scene_.mesh.flat_contact_quadrature, scene_.mesh.contact_quadrature));
+  p_ref_ = scene_.operating.load / sliding_film().mesh.area();
 
-  if (sf.pressure_offset >= 0) {
-    // The Poiseuille diagonal of a uniform reference film: ŵ then reads like p̂.
-    const ReynoldsOperator op(sf.mesh);
-    // Reference gap: the sliding film's mean cold-start gap (its clearance), a thickness
-    // set by the geometry. A σ-based one (3σ) makes smooth surfaces' flux terms 1e8
-    // times the scale, so rounding alone would exceed the solver tolerance.
-    const std::vector<double> start = cold_start();
-    const double h_flow = start[std::size_t(sf.rigid_columns()[0])] * sigma_ref_;
-    const double g = std::pow(h_flow, 3) / (12.0 * mu_ref_);
-    flow_scale_.resize(op.interior_count());
-    for (int i = 1; i < nr - 1; ++i) {
-      const double diag =
-          g * (op.radial_geometry(i - 1) + op.radial_geometry(i) + 2.0 * op.circumferential_geometry(i));
-      for (int j = 0; j < nt; ++j) flow_scale_[op.interior_index(i, j)] = p_ref_ * diag;
-    }
-  }
+  // The effects declare their unknowns in the order they are registered.
+  register_effects();
 
-  if (fx.thermal) {
-    const double k_oil = scene_.lubricant.conductivity;
-    film_row_scale_.resize(films_.size());
-    component_row_scale_.resize(components_.size());
-    std::vector<double> attached_conductance(components_.size(), 0.0);  // W/K/m² from films, reference
-    for (std::size_t f = 0; f < films_.size(); ++f) {
-      const Film& film = films_[f];
-      const double g_lo = 1.0 / (h_ref_ / (2 * k_oil) + body_resistance(film.lower));
-      const double g_up = 1.0 / (h_ref_ / (2 * k_oil) + body_resistance(film.upper));
-      film_row_scale_[f].resize(film.mesh.node_count());
-      for (int i = 0; i < nr; ++i)
-        for (int j = 0; j < nt; ++j)
-          film_row_scale_[f][film.mesh.node(i, j)] = 1.0 / (film.mesh.node_area(i) * (g_lo + g_up));
-      for (std::size_t c = 0; c < components_.size(); ++c) {
-        if (components_[c].id == film.lower) attached_conductance[c] += g_lo;
-        if (components_[c].id == film.upper) attached_conductance[c] += g_up;
-      }
-    }
-    for (std::size_t c = 0; c < components_.size(); ++c) {
-      const ComponentHeat& h = components_[c];
-      const FilmMesh& g = h.grid;
-      const double kt = h.conductivity * h.thickness;
-      component_row_scale_[c].resize(h.node_count());
-      for (int i = 0; i < g.radial_nodes(); ++i) {
-        double diag = 0.0;  // in-plane conduction to radial neighbours (full ring if axisymmetric)
-        const double ring = h.axisymmetric ? 2 * std::numbers::pi : g.dtheta();
-        if (i > 0) diag += kt * (g.radius(i) - 0.5 * g.dr()) * ring / g.dr();
-        if (i < g.radial_nodes() - 1) diag += kt * (g.radius(i) + 0.5 * g.dr()) * ring / g.dr();
-        const double area = h.node_area(i);
-        diag += area * (attached_conductance[c] + (h.loses_to_ambient ? h.conductivity / h.thickness : 0.0));
-        for (int j = 0; j < (h.axisymmetric ? 1 : g.circumferential_nodes()); ++j)
-          component_row_scale_[c][h.axisymmetric ? i : g.node(i, j)] = 1.0 / diag;
-      }
-    }
-  }
-
+  // The viscosity temperature's and the shapes' gradients: grids and unknowns only.
   viscosity_forms_.resize(films_.size());
   if (fx.thermal) {
     const std::vector<double> zero(layout_.size(), 0.0);
@@ -185,8 +82,6 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   } else {
     for (const Film& f : films_) viscosity_forms_[f.number - 1].resize(f.mesh.node_count());
   }
-
-  if (fx.thermal) build_heat_nodes();
   build_shape_forms();
 
   Assembler structure(layout_.size());
@@ -388,17 +283,19 @@ SegregatedSystem::Blocks BearingModel::segregated_blocks() const {
   return b;
 }
 
-std::vector<double> BearingModel::cold_start() const {
-  std::vector<double> u(layout_.size(), 0.0);
+std::array<double, 4> BearingModel::cold_start_rigid() const {
   const double h0 = scene_.solver.cold_start_film;
   const double gamma_y = 0.5 * scene_.gear.tilt;
   // Minimum of a plane c − a·x over an annulus is c − |a|·r_o.
   const double c1 = h0 * films_[0].sigma + std::abs(gamma_y) * films_[0].mesh.outer_radius();
   const double c2 = h0 * films_[1].sigma + std::abs(scene_.gear.tilt - gamma_y) * films_[1].mesh.outer_radius();
-  u[rigid_offset_ + 0] = c1 / sigma_ref_;
-  u[rigid_offset_ + 1] = 0.0;
-  u[rigid_offset_ + 2] = gamma_y / gamma_ref_;
-  u[rigid_offset_ + 3] = c2 / sigma_ref_;
+  return {c1 / sigma_ref_, 0.0, gamma_y / gamma_ref_, c2 / sigma_ref_};
+}
+
+std::vector<double> BearingModel::cold_start() const {
+  std::vector<double> u(layout_.size(), 0.0);
+  const std::array<double, 4> rigid = cold_start_rigid();
+  std::copy(rigid.begin(), rigid.end(), u.begin() + rigid_offset_);
   // A full film everywhere (the cold start has no pressure, so no cavitation yet).
   for (const Film& f : films_)
     if (f.content_offset >= 0)
@@ -413,17 +310,13 @@ void BearingModel::evaluate(std::span<const double> u, std::span<double> residua
   assemble(u, a, nullptr);
 }
 
-void BearingModel::assemble(std::span<const double> u, Assembler& a, Totals* totals) const {
-  Totals local;
-  Totals& t = totals ? *totals : local;
+void BearingModel::assemble(std::span<const double> u, Assembler& a, AssemblyTotals* totals) const {
+  AssemblyTotals local;
+  AssemblyTotals& t = totals ? *totals : local;
   t.film.assign(films_.size(), FilmTotals{});
-  for (std::size_t f = 0; f < films_.size(); ++f) {
-    if (films_[f].pressure_offset >= 0) assemble_reynolds(u, films_[f], a);
-    assemble_film_loads(u, films_[f], a, t.film[f]);
-  }
-  assemble_rigid_balance(a);
-  if (scene_.effects.thermal) assemble_heat(u, a, t);
-  assemble_shape_rows(u, a);
+  for (const auto& effect : effects_) effect->add_terms(u, a, t);
+  // The films' loads were added with their signs; only the external load remains: eq [37].
+  a.add_residual(rigid_offset_ + 3, -1.0);
   orient_rows(a);
 }
 
@@ -441,11 +334,6 @@ void BearingModel::orient_rows(Assembler& a) const {
       a.scale_row(k, -1.0);
     }
   }
-}
-
-void BearingModel::assemble_rigid_balance(Assembler& a) const {
-  // Film loads were added with their signs already; only the external load remains: eq [37].
-  a.add_residual(rigid_offset_ + 3, -1.0);
 }
 
 }  // namespace twb

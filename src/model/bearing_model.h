@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "model/effect_assembler.h"
 #include "model/film.h"
 #include "twb/model/bearing_state.h"
 #include "twb/model/film_fields.h"
@@ -31,6 +32,7 @@
 namespace twb {
 
 struct FilmTotals;
+struct AssemblyTotals;
 
 enum class CavitationRow { fischer_burmeister, minimum };
 
@@ -56,6 +58,9 @@ struct ComponentHeat {
 class BearingModel final : public SegregatedSystem {
  public:
   explicit BearingModel(const Scene& scene);
+  // The effects hold the model they read: a model is not copied (on_mesh builds another).
+  BearingModel(const BearingModel&) = delete;
+  BearingModel& operator=(const BearingModel&) = delete;
 
   const Scene& scene() const { return scene_; }
   const UnknownLayout& layout() const { return layout_; }
@@ -81,6 +86,8 @@ class BearingModel final : public SegregatedSystem {
   // The paper's cold start: both films at h_min/σ = cold_start_film, washer tilted half
   // way, ambient temperature, no pressure.
   std::vector<double> cold_start() const;
+  // Its rigid-body unknowns (ĉ1, γ̂x, γ̂y, ĉ2).
+  std::array<double, 4> cold_start_rigid() const;
   // State u of `source`, a model of the same scene on another mesh, carried to this
   // mesh by bilinear interpolation of every field in (r, θ) (mesh_transfer.cpp): the
   // start of a mesh sequence. std::invalid_argument when the unknowns differ.
@@ -97,6 +104,7 @@ class BearingModel final : public SegregatedSystem {
     cavitation_row_ = on ? CavitationRow::minimum : CavitationRow::fischer_burmeister;
   }
   bool newton_form() const override { return cavitation_row_ == CavitationRow::minimum; }
+  bool flow_balance_rows() const { return flow_balance_rows_; }
   // |φ_FB(a, b)| ≤ (2 + √2)|min(a, b)| (Tseng): a minimum row within tol/(2 + √2) is a
   // Fischer–Burmeister row within tol; the other rows are the same in both forms.
   double newton_form_tolerance_ratio() const override { return 1.0 / (2.0 + std::numbers::sqrt2); }
@@ -131,7 +139,7 @@ class BearingModel final : public SegregatedSystem {
   // Thermal deformation (docs/physics.md section 11; film_shape.cpp): the change δ of a film's
   // gap at a node from its plane, δ = form · u (m), from the carrier's and gear's face
   // expansion and the washer's dishing. Empty forms without the effect.
-  bool deforms() const { return dishing_offset_ >= 0; }
+  bool deforms() const { return shape_.dishing >= 0; }
   // The shapes δ scaled by s in [0, 1] (the cold start's homotopy, steady_solver.cpp): 0
   // is the rigid film with the deformation's own unknowns riding along, 1 the model.
   // The Jacobian's pattern is the same for every s.
@@ -140,6 +148,7 @@ class BearingModel final : public SegregatedSystem {
   const LinearForm& shape_form(const Film& film, int node) const {
     return shape_forms_[std::size_t(film.number - 1)][std::size_t(node)];
   }
+  const ShapeUnknowns& shape_unknowns() const { return shape_; }
   double shape_at(std::span<const double> u, const Film& film, int node) const;
   // δ at every node of a film, once per evaluation; empty without the effect.
   std::vector<double> node_shapes(std::span<const double> u, const Film& film) const;
@@ -149,6 +158,9 @@ class BearingModel final : public SegregatedSystem {
   double least_gap(std::span<const double> u, const Film& film) const;
   // The washer's area-mean dishing curvature κ̄ (1/m) of state u; 0 without the effect.
   double dishing_curvature(std::span<const double> u) const;
+  // The dishing row's weight of a heat flow (W) from a film node into the washer: the
+  // washer's mean through-thickness flux (film 1 in, film 2 out) in curvature units.
+  double dishing_row_weight(const Film& film) const;
 
   // Film content θ at node (i, j): 1 on the (flooded) edges, where the film is full,
   // and without the mass-conserving cavitation model.
@@ -161,34 +173,37 @@ class BearingModel final : public SegregatedSystem {
   // (heat_balance.cpp); the ambient without the thermal effect.
   double hottest_face_temperature(std::span<const double> u, ComponentId id) const;
 
- private:
-  struct Totals;  // per-film integrals gathered during assembly
-  struct FilmLoadPass;  // one evaluation of a film's loads, cell by cell (film_load_pass.h)
-  void assemble(std::span<const double> u, Assembler& a, Totals* totals) const;
-  void assemble_film_loads(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const;
-  void assemble_reynolds(std::span<const double> u, const Film& film, Assembler& a) const;
-  void assemble_heat(std::span<const double> u, Assembler& a, const Totals& totals) const;
-  void assemble_rigid_balance(Assembler& a) const;
-  void orient_rows(Assembler& a) const;
-
-  // Viscosity temperature (K) at film node (i, j) and its gradient in the unknowns.
-  double viscosity_temperature(std::span<const double> u, const Film& film, int i, int j, LinearForm* form) const;
-  // The same gradient, which depends only on the grids: built once, shared by every
-  // evaluation (the value is T_ambient + form · u).
+  // What the effects share (effect_assembler.h).
+  // The viscosity temperature's gradient at film node (i, j), which depends only on the
+  // grids: built once, shared by every evaluation (the value is T_ambient + form · u).
   const LinearForm& viscosity_temperature_form(const Film& film, int node) const {
     return viscosity_forms_[film.number - 1][node];
   }
+  // T_ambient + form · u (K).
   double apply(const LinearForm& form, std::span<const double> u) const;
-  // Temperature (K) of a component's face at radius r, circumferential node j, with gradient.
-  double face_temperature(std::span<const double> u, ComponentId id, double r, int j, LinearForm* form) const;
   ValueSlope viscosity(double temperature) const;
   // The same at every temperature of a batch (Gauss points), vectorized.
   void viscosity(std::span<const double> temperature, std::span<ValueSlope> out) const;
+  // Temperature (K) of a component's face at radius r, circumferential node j, with gradient.
+  double face_temperature(std::span<const double> u, ComponentId id, double r, int j, LinearForm* form) const;
   // Half the washer's thickness lies on the path from a film node to its mid-plane
   // (eqs [26], [27]); carrier and gear faces are their surfaces.
   double body_resistance(ComponentId id) const;
   const ComponentHeat* component(ComponentId id) const;
   const Film& sliding_film() const;
+  // The summit population of both films (docs/physics.md section 4), null without
+  // contact, and the gap above which its pressure is negligible (p < 1e-20 p(0)).
+  const StatisticalContact* contact() const { return contact_.get(); }
+  double contact_cutoff() const { return contact_cutoff_; }
+
+ private:
+  // The effects of the scene, in the order they add their terms (effect_registry.cpp).
+  void register_effects();
+  void assemble(std::span<const double> u, Assembler& a, AssemblyTotals* totals) const;
+  void orient_rows(Assembler& a) const;
+
+  // Viscosity temperature (K) at film node (i, j) and its gradient in the unknowns.
+  double viscosity_temperature(std::span<const double> u, const Film& film, int i, int j, LinearForm* form) const;
   void build_contact();  // the summit population of the scene (docs/physics.md section 4), if contact is on
 
   Scene scene_;
@@ -199,6 +214,7 @@ class BearingModel final : public SegregatedSystem {
   std::vector<ComponentHeat> components_;
   UnknownLayout layout_;
   Index rigid_offset_ = 0;
+  std::vector<std::unique_ptr<EffectAssembler>> effects_;
   // One summit population for both films (scene.asperities; docs/physics.md section 4).
   std::shared_ptr<const StatisticalContact> contact_;  // shared with models of the same surfaces
   double contact_cutoff_ = 0.0;  // gap above which contact is negligible (p < 1e-20 p(0))
@@ -207,46 +223,15 @@ class BearingModel final : public SegregatedSystem {
   double deformation_scale_ = 1.0;  // set_deformation_scale
   std::optional<double> uniform_roughness_;  // CurveParameter::roughness, once set
   std::tuple<Component, Component, Component, AsperityParameters> roughness_origin_;  // the scene's surfaces
-  double sigma_ref_ = 0, gamma_ref_ = 0, p_ref_ = 0, h_ref_ = 0, mu_ref_ = 0;
-  std::vector<double> flow_scale_;  // per interior pressure node: p_ref · reference conductance
-  std::vector<std::vector<double>> film_row_scale_;  // per film, per node: 1 / reference conductance
-  std::vector<std::vector<double>> component_row_scale_;
-  GaussRule smooth_rule_, contact_rule_;
-  GaussRule flat_contact_rule_;  // contact on cells where p varies little (film_loads.cpp)
+  double sigma_ref_ = 0, gamma_ref_ = 0, p_ref_ = 0;
   SparsePattern pattern_;
   std::vector<Index> slot_tape_;  // where each Jacobian entry of a pass lands (sparse_assembly.h)
   std::vector<std::vector<LinearForm>> viscosity_forms_;  // per film, per node
 
-  // A film node's heat path to the face of one bounding component (heat_balance.cpp):
-  // the face temperature interpolated from the component's nodes (at most two), those
-  // nodes' row scales, and the node's position. Grids only: built once per model.
-  struct FaceLink {
-    int terms = 0;
-    std::array<Index, 2> column{};
-    std::array<double, 2> weight{}, row_scale{};
-  };
-  struct HeatNode {
-    double x = 0, y = 0;
-    std::array<FaceLink, 2> face;  // lower, upper
-  };
-  std::vector<std::vector<HeatNode>> heat_nodes_;  // per film, per node
-  void build_heat_nodes();
-
-  // Thermal deformation (film_shape.cpp). κ̂ = κ̄/curvature_ref_ is one unknown with
-  // its own row (the washer's mean through-thickness flux), so the curvature couples
-  // the films through one column, not a dense block. With the empirical friction law the
-  // sliding film's total contact force, which every δ now moves, is one unknown too
-  // (F̂c = F_c/contact_force_ref_), for the same reason.
-  Index dishing_offset_ = -1, contact_force_offset_ = -1;
-  double curvature_ref_ = 0, contact_force_ref_ = 0;
-  std::vector<std::vector<LinearForm>> shape_forms_;  // per film, per node
+  // Thermal deformation's shapes (film_shape.cpp): δ = form · u per film, per node.
+  ShapeUnknowns shape_;
+  std::vector<std::vector<LinearForm>> shape_forms_;
   void build_shape_forms();
-  // The dishing row's weight of a heat flow (W) from a film node into the washer: the
-  // washer's mean through-thickness flux (film 1 in, film 2 out) in curvature units.
-  double dishing_row_weight(const Film& film) const;
-  // The unknowns' own terms of the dishing and contact-force rows.
-  void assemble_shape_rows(std::span<const double> u, Assembler& a) const;
-
 };
 
 }  // namespace twb

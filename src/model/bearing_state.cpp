@@ -4,14 +4,14 @@
 #include <numbers>
 
 #include "model/limit_thresholds.h"
-#include "assembly_totals.h"
+#include "model/assembly_totals.h"
 
 namespace twb {
 
 BearingState BearingModel::describe(std::span<const double> u) const {
   std::vector<double> residual(size());
   Assembler a(&pattern_, residual, {});
-  Totals t;
+  AssemblyTotals t;
   assemble(u, a, &t);
 
   BearingState s;
@@ -82,7 +82,7 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   s.force_balance_error = std::max(std::abs(residual[rigid_offset_ + 0]), std::abs(residual[rigid_offset_ + 3]));
   s.moment_balance_error = std::max(std::abs(residual[rigid_offset_ + 1]), std::abs(residual[rigid_offset_ + 2]));
   if (film.pressure_offset >= 0)
-    for (Index k = film.pressure_offset; k < film.pressure_offset + Index(flow_scale_.size()); ++k)
+    for (Index k = film.pressure_offset; k < film.pressure_offset + film.mesh.interior_count(); ++k)
       s.complementarity_error = std::max(s.complementarity_error, std::abs(residual[k]));
 
   // The contact pressure falls with the gap, so each film's largest is at its least gap.

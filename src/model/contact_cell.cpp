@@ -8,8 +8,8 @@
 
 namespace twb {
 
-void BearingModel::FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals& tot) {
-  const StatisticalContact& asperities = *model.contact_;
+void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals& tot) {
+  const StatisticalContact& asperities = *model.contact();
   // Σ w p_c a, Σ w p_c' a aᵀ (symmetric: 00 01 02 11 12 22), and the friction power
   // per corner node with its gradient against the arms, added to the film once.
   std::array<double, 3> force{};

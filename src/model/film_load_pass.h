@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "model/assembly_totals.h"
+#include "model/film_loads_effect.h"
 
 namespace twb {
 
@@ -105,8 +106,9 @@ struct CellLoads {
   std::array<double, 3> contact_rigid{};               // its gradient against the arms
 };
 
-struct BearingModel::FilmLoadPass {
-  FilmLoadPass(const BearingModel& model, std::span<const double> u, const Film& film, const Assembler& a);
+struct FilmLoadPass {
+  FilmLoadPass(const BearingModel& model, const FilmLoadRules& rules, std::span<const double> u, const Film& film,
+               const Assembler& a);
 
   // The cell's corners and the gap's range over it.
   FilmCell cell(int i, int j) const;

@@ -71,8 +71,8 @@ std::vector<double> at_node_angles(const FilmMesh& m, double (*f)(double)) {
 
 }  // namespace
 
-BearingModel::FilmLoadPass::FilmLoadPass(const BearingModel& model, std::span<const double> u, const Film& film,
-                                         const Assembler& a)
+FilmLoadPass::FilmLoadPass(const BearingModel& model, const FilmLoadRules& rules, std::span<const double> u,
+                           const Film& film, const Assembler& a)
     : model(model),
       u(u),
       film(film),
@@ -80,25 +80,25 @@ BearingModel::FilmLoadPass::FilmLoadPass(const BearingModel& model, std::span<co
       structural(a.mode() == Assembler::Mode::structure),
       jac(a.wants_jacobian()),
       hydro(film.pressure_offset >= 0),
-      heat(film.sliding && model.scene_.effects.thermal),
-      contact(model.contact_ != nullptr),
+      heat(film.sliding && model.scene().effects.thermal),
+      contact(model.contact() != nullptr),
       deformed(false),
-      omega(film.sliding ? model.scene_.operating.speed : 0.0),
-      cutoff(model.contact_cutoff_),
+      omega(film.sliding ? model.scene().operating.speed : 0.0),
+      cutoff(model.contact_cutoff()),
       gap_plane(film.plane(model.position(u))),
       plane(gap_plane),
       rigid_cols(film.rigid_columns()),
       g{film.gap_gradient(0.0, 1.0)[0], film.gap_gradient(0.0, 1.0)[1], film.gap_gradient(-1.0, 0.0)[2]},
       cos_node(at_node_angles(film.mesh, [](double t) { return std::cos(t); })),
       sin_node(at_node_angles(film.mesh, [](double t) { return std::sin(t); })),
-      contact_rule(model.contact_rule_, film.mesh, cos_node, sin_node),
-      smooth_rule(model.smooth_rule_, film.mesh, cos_node, sin_node),
-      flat_rule(model.flat_contact_rule_, film.mesh, cos_node, sin_node),
-      flat_rule_is_cheaper(model.flat_contact_rule_.points.size() < model.contact_rule_.points.size()),
-      force_row(film.sliding ? model.contact_force_offset_ : -1) {
+      contact_rule(rules.contact, film.mesh, cos_node, sin_node),
+      smooth_rule(rules.smooth, film.mesh, cos_node, sin_node),
+      flat_rule(rules.flat_contact, film.mesh, cos_node, sin_node),
+      flat_rule_is_cheaper(rules.flat_contact.points.size() < rules.contact.points.size()),
+      force_row(film.sliding ? model.shape_unknowns().contact_force : -1) {
   // The washer sees film 1 from below (+) and film 2 from above (−); the gear sees film 2 (+).
-  const Index r0 = model.rigid_offset_;
-  const double f_ref = model.load_, m_ref = model.load_ * model.scene_.washer.outer_radius;
+  const Index r0 = film.rigid_offset;
+  const double f_ref = model.load(), m_ref = model.load() * model.scene().washer.outer_radius;
   if (film.number == 1)
     rows = {{r0 + 0, 1.0 / f_ref, 0, 0}, {r0 + 1, 0, 1.0 / m_ref, 0}, {r0 + 2, 0, 0, 1.0 / m_ref}};
   else
@@ -119,7 +119,7 @@ BearingModel::FilmLoadPass::FilmLoadPass(const BearingModel& model, std::span<co
   deformed = !node_delta.empty();
 }
 
-FilmCell BearingModel::FilmLoadPass::cell(int i, int j) const {
+FilmCell FilmLoadPass::cell(int i, int j) const {
   FilmCell c;
   c.i = i;
   c.j = j;
@@ -130,7 +130,7 @@ FilmCell BearingModel::FilmLoadPass::cell(int i, int j) const {
     c.t_node[k] = node_t[std::size_t(c.node[k])];
     if (deformed) c.d_node[k] = node_delta[std::size_t(c.node[k])];
     c.p_col[k] = film.pressure_column(ci[k], cj[k]);
-    if (c.p_col[k] >= 0) c.p_node[k] = model.p_ref_ * u[std::size_t(c.p_col[k])];
+    if (c.p_col[k] >= 0) c.p_node[k] = model.pressure_scale() * u[std::size_t(c.p_col[k])];
   }
   const double r0 = mesh.radius(i), r1 = mesh.radius(i + 1);
   const double t0 = mesh.angle(j), t1 = t0 + mesh.dtheta();
@@ -143,11 +143,11 @@ FilmCell BearingModel::FilmLoadPass::cell(int i, int j) const {
   return c;
 }
 
-bool BearingModel::FilmLoadPass::near_contact(const FilmCell& cell) const {
+bool FilmLoadPass::near_contact(const FilmCell& cell) const {
   return contact && (structural || cell.gap_range.least < cutoff);
 }
 
-void BearingModel::FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& l, Assembler& a) const {
+void FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& l, Assembler& a) const {
   // The rigid-body rows.
   for (const RowSign& rs : rows) {
     const std::array<double, 3> coef{rs.force, rs.mx, rs.my};
@@ -164,7 +164,7 @@ void BearingModel::FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& 
   }
   // The sliding film's contact force into its own row (F_c/F_ref, film_shape.cpp).
   if (force_row >= 0) {
-    const double ref = model.contact_force_ref_;
+    const double ref = model.shape_unknowns().contact_force_ref;
     a.add_residual(force_row, l.contact_force / ref);
     if (jac) {
       for (int d = 0; d < 3; ++d) a.add_derivative(force_row, rigid_cols[d], g[d] * l.contact_rigid[d] / ref);
@@ -175,7 +175,7 @@ void BearingModel::FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& 
   if (!heat) return;
   for (int k = 0; k < 4; ++k) {
     const Index row = film.temperature_row(cell.node[k]);
-    const double sc = model.film_row_scale_[film.number - 1][cell.node[k]];
+    const double sc = model.layout().row_scale(film.temperature_row(cell.node[k]));
     a.add_residual(row, sc * l.vheat[k]);
     if (!jac) continue;
     for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], sc * g[d] * l.vheat_rigid[k][d]);
@@ -188,8 +188,8 @@ void BearingModel::FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& 
 
 // Boundary friction f·p_cont (docs/physics.md section 6). The empirical law [18] depends on
 // the film's total contact force, so f couples every heat row to the rigid body.
-void BearingModel::FilmLoadPass::friction(FilmTotals& tot, Assembler& a) const {
-  const Scene& scene = model.scene_;
+void FilmLoadPass::friction(FilmTotals& tot, Assembler& a) const {
+  const Scene& scene = model.scene();
   if (scene.friction.law == FrictionLaw::constant) {
     tot.friction_coefficient = scene.friction.coefficient;
     tot.friction_slope = 0.0;
@@ -197,7 +197,7 @@ void BearingModel::FilmLoadPass::friction(FilmTotals& tot, Assembler& a) const {
     // With thermal deformation the law reads the contact-force unknown (equal to the
     // integral at a solution), so that its slope is one column of every heat row.
     const double contact_force =
-        force_row >= 0 ? u[std::size_t(force_row)] * model.contact_force_ref_ : tot.contact_force;
+        force_row >= 0 ? u[std::size_t(force_row)] * model.shape_unknowns().contact_force_ref : tot.contact_force;
     const FrictionLawResult fr = empirical_friction(contact_force);
     tot.friction_coefficient = fr.coefficient;
     tot.friction_slope = fr.slope;
@@ -207,7 +207,7 @@ void BearingModel::FilmLoadPass::friction(FilmTotals& tot, Assembler& a) const {
   if (!heat) return;
   for (int n = 0; n < mesh.node_count(); ++n) {
     const Index row = film.temperature_row(n);
-    const double sc = model.film_row_scale_[film.number - 1][n];
+    const double sc = model.layout().row_scale(film.temperature_row(n));
     a.add_residual(row, sc * tot.friction_coefficient * tot.contact_power[n]);
     if (!jac) continue;
     const double slope_rigid = force_row >= 0 ? 0.0 : tot.friction_slope;
@@ -216,18 +216,27 @@ void BearingModel::FilmLoadPass::friction(FilmTotals& tot, Assembler& a) const {
                        sc * (tot.friction_coefficient * tot.contact_power_rigid[n][d] +
                              slope_rigid * tot.contact_power[n] * tot.contact_force_rigid[d]));
     if (force_row >= 0)
-      a.add_derivative(row, force_row, sc * tot.friction_slope * model.contact_force_ref_ * tot.contact_power[n]);
+      a.add_derivative(row, force_row, sc * tot.friction_slope * model.shape_unknowns().contact_force_ref * tot.contact_power[n]);
   }
   if (!jac) return;
   for (const ShapeTerm& term : tot.contact_power_shape)
     a.add_form(film.temperature_row(term.node),
-               model.film_row_scale_[film.number - 1][term.node] * tot.friction_coefficient * term.coefficient,
+               model.layout().row_scale(film.temperature_row(term.node)) * tot.friction_coefficient * term.coefficient,
                model.shape_form(film, term.corner));
 }
 
-void BearingModel::assemble_film_loads(std::span<const double> u, const Film& film, Assembler& a,
-                                       FilmTotals& tot) const {
-  FilmLoadPass pass(*this, u, film, a);
+FilmLoadsEffect::FilmLoadsEffect(ModelSetup& setup)
+    : model_(setup.model),
+      rules_{GaussRule::legendre(4), GaussRule::legendre(setup.model.scene().mesh.contact_quadrature),
+             GaussRule::legendre(std::min(setup.model.scene().mesh.flat_contact_quadrature,
+                                          setup.model.scene().mesh.contact_quadrature))} {}
+
+void FilmLoadsEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const {
+  for (std::size_t f = 0; f < model_.films().size(); ++f) add_film(u, model_.films()[f], a, totals.film[f]);
+}
+
+void FilmLoadsEffect::add_film(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& tot) const {
+  FilmLoadPass pass(model_, rules_, u, film, a);
   const FilmMesh& m = film.mesh;
   if (film.sliding) {
     tot.contact_power.assign(m.node_count(), 0.0);

@@ -10,10 +10,43 @@
 #include <cmath>
 #include <numbers>
 
-#include "physics/thermal_deformation.h"
+#include "model/deformation_effect.h"
+
 #include "model/bearing_model.h"
+#include "physics/thermal_deformation.h"
 
 namespace twb {
+
+// κ̂ = κ̄/curvature_ref is one unknown with its own row (the washer's mean through-
+// thickness flux), so the curvature couples the films through one column, not a dense
+// block. With the empirical friction law the sliding film's total contact force, which
+// every δ moves, is one unknown too (F̂c = F_c/contact_force_ref), for the same reason.
+DeformationEffect::DeformationEffect(ModelSetup& setup) {
+  const Scene& scene = setup.model.scene();
+  if (!scene.effects.thermal) throw std::invalid_argument("thermal_deformation needs the thermal effect");
+  shape_.dishing = setup.layout.add("washer dishing curvature", BlockEffect::thermal_deformation, 1);
+  // Every δ moves the sliding film's contact force, which sets f in every heat row.
+  if (scene.effects.asperity_contact && scene.friction.law == FrictionLaw::empirical)
+    shape_.contact_force = setup.layout.add("sliding film contact force", BlockEffect::thermal_deformation, 1);
+  // κ̂ = 1 lifts the washer's rim by σ_ref; F̂c = 1 is the scene's load (fixed, unlike
+  // the rigid rows' F_ext, so that the load enters no other row).
+  shape_.curvature_ref = setup.model.clearance_scale() /
+                         dishing_shape(scene.washer.outer_radius, scene.washer.inner_radius, scene.washer.outer_radius);
+  shape_.contact_force_ref = scene.operating.load;
+  setup.shape = shape_;
+}
+
+// Rows are assembled as (what the state implies − the unknown) and negated with the
+// others by orient_rows: κ̂ − κ(u)/κ_ref, F̂c − F_c(u)/F_ref, with +1 on the diagonal.
+// What the state implies is added by the heat balance (the flux crossing the washer)
+// and the film loads (the contact force).
+void DeformationEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTotals&) const {
+  a.add_residual(shape_.dishing, -u[std::size_t(shape_.dishing)]);
+  a.add_derivative(shape_.dishing, shape_.dishing, -1.0);
+  if (shape_.contact_force < 0) return;
+  a.add_residual(shape_.contact_force, -u[std::size_t(shape_.contact_force)]);
+  a.add_derivative(shape_.contact_force, shape_.contact_force, -1.0);
+}
 
 void BearingModel::build_shape_forms() {
   shape_forms_.assign(films_.size(), {});
@@ -42,7 +75,7 @@ void BearingModel::build_shape_forms() {
         // The dished washer's mid-surface rises by w(r) towards film 2: film 1 (washer
         // above) opens by w, film 2 (washer below) closes by w.
         const double towards = film.upper == ComponentId::washer ? 1.0 : -1.0;
-        form.add(dishing_offset_, deformation_scale_ * towards * curvature_ref_ * dishing_shape(r, ri, ro));
+        form.add(shape_.dishing, deformation_scale_ * towards * shape_.curvature_ref * dishing_shape(r, ri, ro));
       }
     }
   }
@@ -94,7 +127,7 @@ double BearingModel::least_gap(std::span<const double> u, const Film& film) cons
 }
 
 double BearingModel::dishing_curvature(std::span<const double> u) const {
-  return deforms() ? curvature_ref_ * u[std::size_t(dishing_offset_)] : 0.0;
+  return deforms() ? shape_.curvature_ref * u[std::size_t(shape_.dishing)] : 0.0;
 }
 
 // κ̄ = α/K_w · q̄_w with q̄_w the washer's area-mean flux from its film-1 face to its
@@ -107,18 +140,7 @@ double BearingModel::dishing_row_weight(const Film& film) const {
   const Material& steel = scene_.washer.material;
   const double from_film_1 = film.upper == ComponentId::washer ? 1.0 : -1.0;
   return from_film_1 * dishing_curvature_per_flux(steel.thermal_expansion, steel.conductivity) /
-         (2.0 * area * curvature_ref_);
-}
-
-// Rows are assembled as (what the state implies − the unknown) and negated with the
-// others by orient_rows: κ̂ − κ(u)/κ_ref, F̂c − F_c(u)/F_ref, with +1 on the diagonal.
-void BearingModel::assemble_shape_rows(std::span<const double> u, Assembler& a) const {
-  if (!deforms()) return;
-  a.add_residual(dishing_offset_, -u[std::size_t(dishing_offset_)]);
-  a.add_derivative(dishing_offset_, dishing_offset_, -1.0);
-  if (contact_force_offset_ < 0) return;
-  a.add_residual(contact_force_offset_, -u[std::size_t(contact_force_offset_)]);
-  a.add_derivative(contact_force_offset_, contact_force_offset_, -1.0);
+         (2.0 * area * shape_.curvature_ref);
 }
 
 }  // namespace twb

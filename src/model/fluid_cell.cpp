@@ -9,7 +9,7 @@
 
 namespace twb {
 
-void BearingModel::FilmLoadPass::fluid_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals& tot) {
+void FilmLoadPass::fluid_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals& tot) {
   const std::size_t smooth_points = smooth_rule.size();
   // Viscosity and average gap at the cell's points first, as one batch each (vectorized).
   if (film.sliding) {
@@ -27,7 +27,7 @@ void BearingModel::FilmLoadPass::fluid_on_cell(const FilmCell& cell, CellLoads& 
     model.viscosity(point_t, point_mu);
     average_gap(point_h, film.sigma, point_gap);
   }
-  const double p_ref = model.p_ref_;
+  const double p_ref = model.pressure_scale();
   auto integrate = [&]<bool gradients>(std::bool_constant<gradients>) {
     for (std::size_t gs = 0; (hydro || film.sliding) && gs < smooth_points; ++gs) {
       for (std::size_t gt = 0; gt < smooth_points; ++gt) {

@@ -12,15 +12,42 @@
 #include <cmath>
 #include <numbers>
 
-#include "assembly_totals.h"
+#include "model/heat_effect.h"
+
+#include "model/assembly_totals.h"
 #include "physics/average_gap.h"
 
 namespace twb {
 
-void BearingModel::build_heat_nodes() {
-  const std::vector<double> zero(std::size_t(layout_.size()), 0.0);
-  heat_nodes_.assign(films_.size(), {});
-  for (const Film& film : films_) {
+HeatEffect::HeatEffect(ModelSetup& setup) : model_(setup.model) {
+  const Scene& scene = model_.scene();
+  const int nr = scene.mesh.radial_nodes, nt = scene.mesh.circumferential_nodes;
+  for (Film& f : setup.films)
+    f.temperature_offset =
+        setup.layout.add(fmt_film_block(f.number, "film-node temperature"), BlockEffect::thermal, f.mesh.node_count());
+  auto add_component = [&](ComponentId id, const Component& c, const FilmMesh& grid, bool axisymmetric, bool ambient,
+                           const char* name) {
+    ComponentHeat h{id, grid, axisymmetric, c.thickness, c.material.conductivity,
+                    c.material.density * c.material.specific_heat * c.thickness, ambient};
+    h.offset = setup.layout.add(std::string(name) + (axisymmetric ? " temperature T(r)" : " temperature T(r, theta)"),
+                                BlockEffect::thermal, h.node_count(), true);
+    setup.components.push_back(h);
+  };
+  // The carrier is fixed in the load frame (unless the scene averages it, a modelling
+  // alternative); the gear always rotates; the washer rotates with the gear when film 1
+  // slides (docs/physics.md section 7).
+  const bool film1_slides = setup.films[0].sliding;
+  add_component(ComponentId::carrier, scene.carrier, setup.films[0].mesh,
+                scene.effects.carrier_temperature == CarrierTemperature::axisymmetric, true, "carrier");
+  add_component(ComponentId::washer, scene.washer, setup.films[0].mesh, film1_slides, false, "washer");
+  add_component(ComponentId::gear, scene.gear, FilmMesh(scene.gear.inner_radius, scene.gear.outer_radius, nr, nt),
+                true, true, "gear");
+  set_row_scales(setup);
+
+  // Each film node's links to the faces of its two bodies.
+  const std::vector<double> zero(std::size_t(setup.layout.size()), 0.0);
+  heat_nodes_.assign(setup.films.size(), {});
+  for (const Film& film : setup.films) {
     const FilmMesh& m = film.mesh;
     auto& nodes = heat_nodes_[std::size_t(film.number - 1)];
     nodes.resize(std::size_t(m.node_count()));
@@ -33,15 +60,14 @@ void BearingModel::build_heat_nodes() {
         const std::array<ComponentId, 2> sides{film.lower, film.upper};
         for (std::size_t side = 0; side < 2; ++side) {
           LinearForm face;
-          face_temperature(zero, sides[side], r, j, &face);
+          model_.face_temperature(zero, sides[side], r, j, &face);
           FaceLink& link = node.face[side];
           for (const auto& [k, w] : face.terms) {
-            for (std::size_t c = 0; c < components_.size(); ++c) {
-              const ComponentHeat& comp = components_[c];
+            for (const ComponentHeat& comp : setup.components) {
               if (k < comp.offset || k >= comp.offset + comp.node_count()) continue;
               link.column[std::size_t(link.terms)] = k;
               link.weight[std::size_t(link.terms)] = w;
-              link.row_scale[std::size_t(link.terms)] = component_row_scale_[c][std::size_t(k - comp.offset)];
+              link.row_scale[std::size_t(link.terms)] = setup.layout.row_scale(k);
               ++link.terms;
             }
           }
@@ -51,14 +77,57 @@ void BearingModel::build_heat_nodes() {
   }
 }
 
-void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const Totals&) const {
+// Every heat row is divided by a reference conductance of its node (W/K), so that its
+// value reads in kelvin: a film node's two paths through a reference film (the cold
+// start's least film, h_min/σ = cold_start_film), a body node's in-plane conduction
+// plus the films attached to it and its loss to ambient.
+void HeatEffect::set_row_scales(ModelSetup& setup) const {
+  const Scene& scene = model_.scene();
+  const double k_oil = scene.lubricant.conductivity;
+  const double h_ref = scene.solver.cold_start_film * model_.sliding_film().sigma;
+  const std::vector<ComponentHeat>& components = setup.components;
+  std::vector<double> attached_conductance(components.size(), 0.0);  // W/K/m² from films, reference
+  for (const Film& film : setup.films) {
+    const double g_lo = 1.0 / (h_ref / (2 * k_oil) + model_.body_resistance(film.lower));
+    const double g_up = 1.0 / (h_ref / (2 * k_oil) + model_.body_resistance(film.upper));
+    for (int i = 0; i < film.mesh.radial_nodes(); ++i)
+      for (int j = 0; j < film.mesh.circumferential_nodes(); ++j)
+        setup.layout.set_row_scale(film.temperature_row(film.mesh.node(i, j)),
+                                   1.0 / (film.mesh.node_area(i) * (g_lo + g_up)));
+    for (std::size_t c = 0; c < components.size(); ++c) {
+      if (components[c].id == film.lower) attached_conductance[c] += g_lo;
+      if (components[c].id == film.upper) attached_conductance[c] += g_up;
+    }
+  }
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    const ComponentHeat& h = components[c];
+    const FilmMesh& g = h.grid;
+    const double kt = h.conductivity * h.thickness;
+    for (int i = 0; i < g.radial_nodes(); ++i) {
+      double diag = 0.0;  // in-plane conduction to radial neighbours (full ring if axisymmetric)
+      const double ring = h.axisymmetric ? 2 * std::numbers::pi : g.dtheta();
+      if (i > 0) diag += kt * (g.radius(i) - 0.5 * g.dr()) * ring / g.dr();
+      if (i < g.radial_nodes() - 1) diag += kt * (g.radius(i) + 0.5 * g.dr()) * ring / g.dr();
+      const double area = h.node_area(i);
+      diag += area * (attached_conductance[c] + (h.loses_to_ambient ? h.conductivity / h.thickness : 0.0));
+      for (int j = 0; j < (h.axisymmetric ? 1 : g.circumferential_nodes()); ++j)
+        setup.layout.set_row_scale(h.offset + (h.axisymmetric ? i : g.node(i, j)), 1.0 / diag);
+    }
+  }
+}
+
+void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTotals&) const {
+  const BearingModel& model = model_;
   const bool jac = a.wants_jacobian();
-  const double k_oil = scene_.lubricant.conductivity;
-  const double ambient = scene_.operating.ambient;
-  const RigidPosition q = position(u);
+  const double k_oil = model.scene().lubricant.conductivity;
+  const double ambient = model.scene().operating.ambient;
+  const RigidPosition q = model.position(u);
+  const UnknownLayout& layout = model.layout();
+  const bool deforms = model.deforms();
+  const Index dishing_row = model.shape_unknowns().dishing;
 
   // Film nodes and their exchange with the bounding components.
-  for (const Film& film : films_) {
+  for (const Film& film : model.films()) {
     const FilmMesh& m = film.mesh;
     const std::array<Index, 3> rigid_cols = film.rigid_columns();
     const std::array<ComponentId, 2> sides{film.lower, film.upper};
@@ -68,19 +137,19 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
         const int n = m.node(i, j);
         const HeatNode& node = heat_nodes_[std::size_t(film.number - 1)][std::size_t(n)];
         const Index row = film.temperature_row(n);
-        const double scale = film_row_scale_[film.number - 1][n];
+        const double scale = layout.row_scale(row);
         const double x = node.x, y = node.y;
-        const double h = film.node_gap(q, x, y) + (deforms() ? shape_at(u, film, n) : 0.0);
+        const double h = film.node_gap(q, x, y) + (deforms ? model.shape_at(u, film, n) : 0.0);
         const std::array<double, 3> dh = film.gap_gradient(x, y);
-        const LinearForm& shape = shape_form(film, n);
+        const LinearForm& shape = model.shape_form(film, n);
         const ValueSlope gap = average_gap(h, film.sigma);
-        const double tf = temperature_of(u, row);
+        const double tf = model.temperature_of(u, row);
 
         for (std::size_t side = 0; side < 2; ++side) {
           const FaceLink& face = node.face[side];
           double ts = ambient;
           for (int t = 0; t < face.terms; ++t) ts += face.weight[std::size_t(t)] * u[face.column[std::size_t(t)]];
-          const double res = gap.value / (2.0 * k_oil) + body_resistance(sides[side]);
+          const double res = gap.value / (2.0 * k_oil) + model.body_resistance(sides[side]);
           const double flow = area * (tf - ts) / res;  // W from the film node into the component
           const double dflow_dh = -flow / res * gap.slope / (2.0 * k_oil);
           const double conductance = area / res;
@@ -93,16 +162,16 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
             a.add_form(row, -scale * dflow_dh, shape);
           }
           // The heat crossing the washer dishes it (docs/physics.md section 11, film_shape.cpp).
-          if (deforms() && sides[side] == ComponentId::washer) {
-            const double cw = dishing_row_weight(film);
-            a.add_residual(dishing_offset_, cw * flow);
+          if (deforms && sides[side] == ComponentId::washer) {
+            const double cw = model.dishing_row_weight(film);
+            a.add_residual(dishing_row, cw * flow);
             if (jac) {
-              a.add_derivative(dishing_offset_, row, cw * conductance);
+              a.add_derivative(dishing_row, row, cw * conductance);
               for (int t = 0; t < face.terms; ++t)
-                a.add_derivative(dishing_offset_, face.column[std::size_t(t)],
+                a.add_derivative(dishing_row, face.column[std::size_t(t)],
                                  -cw * conductance * face.weight[std::size_t(t)]);
-              for (int d = 0; d < 3; ++d) a.add_derivative(dishing_offset_, rigid_cols[d], cw * dflow_dh * dh[d]);
-              a.add_form(dishing_offset_, cw * dflow_dh, shape);
+              for (int d = 0; d < 3; ++d) a.add_derivative(dishing_row, rigid_cols[d], cw * dflow_dh * dh[d]);
+              a.add_form(dishing_row, cw * dflow_dh, shape);
             }
           }
           for (int t = 0; t < face.terms; ++t) {
@@ -123,8 +192,7 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
 
   // In-plane conduction of each component (eq [21]) and, for carrier and gear, 1-D
   // conduction across the thickness to the ambient (eqs [25], [28]).
-  for (std::size_t c = 0; c < components_.size(); ++c) {
-    const ComponentHeat& comp = components_[c];
+  for (const ComponentHeat& comp : model.components()) {
     const FilmMesh& g = comp.grid;
     const double kt = comp.conductivity * comp.thickness;
     const int nr = g.radial_nodes(), nt = comp.axisymmetric ? 1 : g.circumferential_nodes();
@@ -132,7 +200,7 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
     auto conduct = [&](Index la, Index lb, double conductance) {
       const Index ka = comp.offset + la, kb = comp.offset + lb;
       const double flow = conductance * (u[ka] - u[kb]);  // W from a to b
-      const double sa = component_row_scale_[c][la], sb = component_row_scale_[c][lb];
+      const double sa = layout.row_scale(ka), sb = layout.row_scale(kb);
       a.add_residual(ka, -sa * flow);
       a.add_residual(kb, sb * flow);
       if (!jac) return;
@@ -152,7 +220,7 @@ void BearingModel::assemble_heat(std::span<const double> u, Assembler& a, const 
         if (comp.loses_to_ambient) {
           const Index k = comp.offset + index(i, j);
           const double gamb = comp.node_area(i) * comp.conductivity / comp.thickness;
-          const double s = component_row_scale_[c][index(i, j)];
+          const double s = layout.row_scale(k);
           a.add_residual(k, -s * gamb * u[k]);
           if (jac) a.add_derivative(k, k, -s * gamb);
         }
@@ -182,8 +250,8 @@ double BearingModel::hottest_face_temperature(std::span<const double> u, Compone
     for (int i = 0; i < m.radial_nodes(); ++i)
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const int n = m.node(i, j);
-        const HeatNode& node = heat_nodes_[std::size_t(film.number - 1)][std::size_t(n)];
-        const double h = film.node_gap(q, node.x, node.y) + (deforms() ? shape_at(u, film, n) : 0.0);
+        const double r = m.radius(i), th = m.angle(j);
+        const double h = film.node_gap(q, r * std::cos(th), r * std::sin(th)) + (deforms() ? shape_at(u, film, n) : 0.0);
         const double path = average_gap(h, film.sigma).value / (2.0 * k_oil) + own;
         const double body = face_temperature(u, id, m.radius(i), j, nullptr);
         const double tf = temperature_of(u, film.temperature_row(n));

@@ -96,9 +96,10 @@ std::vector<double> BearingModel::interpolated_from(const BearingModel& source, 
   }
   // Thermal deformation's scalars, in physical units.
   if (deforms()) {
-    out[dishing_offset_] = source.dishing_curvature(u) / curvature_ref_;
-    if (contact_force_offset_ >= 0)
-      out[contact_force_offset_] = u[source.contact_force_offset_] * source.contact_force_ref_ / contact_force_ref_;
+    out[shape_.dishing] = source.dishing_curvature(u) / shape_.curvature_ref;
+    if (shape_.contact_force >= 0)
+      out[shape_.contact_force] =
+          u[source.shape_.contact_force] * source.shape_.contact_force_ref / shape_.contact_force_ref;
   }
   return out;
 }

@@ -2,7 +2,8 @@
 // volumes on the polar grid (second order), with the Reynolds cavitation condition as
 // the complementarity p ≥ 0, w ≥ 0, p·w = 0 solved inside Newton through a
 // semismooth function of the scaled pair (p̂, ŵ): Fischer–Burmeister or the minimum
-// (CavitationRow, bearing_model.h).
+// (CavitationRow, bearing_model.h). ReynoldsEffect (reynolds_effect.h) declares the
+// unknowns and assembles the rows.
 //
 // w is the net volumetric outflow of a node's control volume: Couette outflow minus
 // Poiseuille inflow. Where the film ruptures (p = 0, diverging gap) more oil leaves
@@ -15,7 +16,9 @@
 #include <array>
 #include <cmath>
 
-#include "model/bearing_model.h"
+#include "model/reynolds_effect.h"
+
+#include "model/assembly_totals.h"
 #include "model/reynolds_operator.h"
 #include "physics/average_gap.h"
 #include "physics/flow_factors.h"
@@ -39,18 +42,53 @@ Complementarity complementarity(CavitationRow row, double a, double b) {
 
 }  // namespace
 
-void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film, Assembler& a) const {
+ReynoldsEffect::ReynoldsEffect(ModelSetup& setup) : model_(setup.model) {
+  const Scene& scene = model_.scene();
+  for (Film& f : setup.films) {
+    if (!f.sliding) continue;
+    f.pressure_offset =
+        setup.layout.add(fmt_film_block(f.number, "pressure"), BlockEffect::hydrodynamics, f.mesh.interior_count());
+    // The mass-conserving model's second field (docs/physics.md section 12).
+    if (scene.effects.cavitation == CavitationModel::jfo)
+      f.content_offset = setup.layout.add(fmt_film_block(f.number, "film content"), BlockEffect::hydrodynamics,
+                                          f.mesh.interior_count());
+    // The Poiseuille diagonal of a uniform reference film: ŵ then reads like p̂.
+    // Reference gap: the film's cold-start clearance, a thickness set by the geometry.
+    // A σ-based one (3σ) makes smooth surfaces' flux terms 1e8 times the scale, so
+    // rounding alone would exceed the solver tolerance.
+    const ReynoldsOperator op(f.mesh);
+    const double h_flow = model_.cold_start_rigid()[std::size_t(f.clearance_unknown)] * model_.clearance_scale();
+    const double g = std::pow(h_flow, 3) / (12.0 * model_.viscosity(scene.operating.ambient).value);
+    const double p_ref = model_.pressure_scale();
+    flow_scale_.resize(std::size_t(op.interior_count()));
+    for (int i = 1; i < f.mesh.radial_nodes() - 1; ++i) {
+      const double diag =
+          g * (op.radial_geometry(i - 1) + op.radial_geometry(i) + 2.0 * op.circumferential_geometry(i));
+      for (int j = 0; j < f.mesh.circumferential_nodes(); ++j) flow_scale_[std::size_t(op.interior_index(i, j))] = p_ref * diag;
+    }
+  }
+}
+
+void ReynoldsEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTotals&) const {
+  for (const Film& film : model_.films())
+    if (film.pressure_offset >= 0) add_film(u, film, a);
+}
+
+void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assembler& a) const {
+  const BearingModel& model = model_;
+  const Scene& scene = model.scene();
   const bool jac = a.wants_jacobian();
   const FilmMesh& m = film.mesh;
-  const GapPlane plane = film.plane(position(u));
+  const GapPlane plane = film.plane(model.position(u));
   const std::array<Index, 3> rigid_cols = film.rigid_columns();
-  const double omega = scene_.operating.speed;
-  const bool factors = scene_.effects.flow_factors;
+  const double omega = scene.operating.speed;
+  const bool factors = scene.effects.flow_factors;
   const double sigma = film.sigma;
+  const double p_ref = model.pressure_scale();
 
   const ReynoldsOperator op(m);
   auto p_col = [&](int k) -> Index { return k >= 0 ? film.pressure_offset + k : -1; };
-  auto p_val = [&](int k) { return k >= 0 ? p_ref_ * u[p_col(k)] : 0.0; };
+  auto p_val = [&](int k) { return k >= 0 ? p_ref * u[p_col(k)] : 0.0; };
   // Mass-conserving cavitation (docs/physics.md section 12): the Couette flux carries the film
   // content θ of its upwind node (θ = 1 on the flooded edges), and the flow balances
   // are rows of their own, the content's; the pressure rows state p̂ ≥ 0, 1 − θ ≥ 0.
@@ -60,15 +98,15 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
   auto balance_row = [&](int k) -> Index { return jfo ? content_col(k) : p_col(k); };
 
   std::vector<double> node_t(m.node_count());
-  for (int n = 0; n < m.node_count(); ++n) node_t[n] = apply(viscosity_temperature_form(film, n), u);
-  const std::vector<double> delta = node_shapes(u, film);
+  for (int n = 0; n < m.node_count(); ++n) node_t[n] = model.apply(model.viscosity_temperature_form(film, n), u);
+  const std::vector<double> delta = model.node_shapes(u, film);
   const bool deformed = !delta.empty();
 
   // Poiseuille conductance φ·max(h, 0)³/(12 μ) at a face, and its slopes in h and T.
   struct Conductance { double g, dg_dh, dg_dt; };
   auto conductance = [&](double h, double t_face) {
     const double hp = std::max(h, 0.0);
-    const ValueSlope mu = viscosity(t_face);
+    const ValueSlope mu = model.viscosity(t_face);
     ValueSlope phi{1.0, 0.0};
     if (factors) {
       const ValueSlope f = pressure_flow_factor(h / sigma);
@@ -116,12 +154,12 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
       a.add_residual(row, sign * flow.q);
       if (!jac) continue;
       for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], sign * dq_dh * dh[d]);
-      a.add_derivative(row, ra, sign * flow.dq_dpa * p_ref_);
-      a.add_derivative(row, rb, sign * flow.dq_dpb * p_ref_);
-      a.add_form(row, sign * dq_dt, viscosity_temperature_form(film, na));
-      a.add_form(row, sign * dq_dt, viscosity_temperature_form(film, nb));
-      a.add_form(row, sign * dq_dh * 0.5, shape_form(film, na));
-      a.add_form(row, sign * dq_dh * 0.5, shape_form(film, nb));
+      a.add_derivative(row, ra, sign * flow.dq_dpa * p_ref);
+      a.add_derivative(row, rb, sign * flow.dq_dpb * p_ref);
+      a.add_form(row, sign * dq_dt, model.viscosity_temperature_form(film, na));
+      a.add_form(row, sign * dq_dt, model.viscosity_temperature_form(film, nb));
+      a.add_form(row, sign * dq_dh * 0.5, model.shape_form(film, na));
+      a.add_form(row, sign * dq_dh * 0.5, model.shape_form(film, nb));
       if (jfo && circumferential) a.add_derivative(row, content_col(upwind), sign * dq_dtheta);
     }
   });
@@ -137,7 +175,7 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
         if (jac) a.scale_row(theta_col, 1.0 / scale);
       }
       const Complementarity phi =
-          complementarity(cavitation_row_, u[row] - scene_.effects.cavity_pressure / p_ref_, 1.0 - u[theta_col]);
+          complementarity(model.cavitation_row(), u[row] - scene.effects.cavity_pressure / p_ref, 1.0 - u[theta_col]);
       a.add_residual(row, phi.value);
       if (!jac) continue;
       a.add_derivative(row, row, phi.da);
@@ -153,14 +191,14 @@ void BearingModel::assemble_reynolds(std::span<const double> u, const Film& film
     const Index row = p_col(k);
     const double scale = flow_scale_[k];
     const double w_hat = a.residual_value(row) / scale;
-    if (flow_balance_rows_) {
+    if (model.flow_balance_rows()) {
       a.set_residual(row, w_hat);
       if (!jac) continue;
       a.scale_row(row, 1.0 / scale);
       a.add_derivative(row, row, 0.0);  // the same entries in the same order: the slot tape holds
       continue;
     }
-    const Complementarity phi = complementarity(cavitation_row_, u[row], w_hat);
+    const Complementarity phi = complementarity(model.cavitation_row(), u[row], w_hat);
     a.set_residual(row, phi.value);
     if (!jac) continue;
     a.scale_row(row, phi.db / scale);

@@ -8,6 +8,7 @@ Index UnknownLayout::add(std::string name, BlockEffect effect, Index size, bool 
   const Index offset = size_;
   blocks_.push_back({std::move(name), effect, offset, size, differential});
   size_ += size;
+  row_scale_.resize(std::size_t(size_), 1.0);
   return offset;
 }
 

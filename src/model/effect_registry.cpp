@@ -1,0 +1,25 @@
+// The effects a scene turns on, in the order they declare their unknowns and add their
+// terms (effect_assembler.h). The order is part of the results: it fixes the unknowns'
+// numbering and the order in which terms are summed into a shared row.
+#include <memory>
+
+#include "model/bearing_model.h"
+#include "model/deformation_effect.h"
+#include "model/film_loads_effect.h"
+#include "model/heat_effect.h"
+#include "model/reynolds_effect.h"
+
+namespace twb {
+
+std::string fmt_film_block(int number, const char* what) { return "film " + std::to_string(number) + " " + what; }
+
+void BearingModel::register_effects() {
+  ModelSetup setup{*this, layout_, films_, components_, shape_};
+  const Effects& fx = scene_.effects;
+  if (fx.hydrodynamics) effects_.push_back(std::make_unique<ReynoldsEffect>(setup));
+  effects_.push_back(std::make_unique<FilmLoadsEffect>(setup));  // contact, fluid force, shear and friction heat
+  if (fx.thermal) effects_.push_back(std::make_unique<HeatEffect>(setup));
+  if (fx.thermal_deformation) effects_.push_back(std::make_unique<DeformationEffect>(setup));
+}
+
+}  // namespace twb
