@@ -14,6 +14,7 @@
 #include "solver/natural_continuation.h"
 #include "solver/runaway.h"
 #include "solver/steady_solver.h"
+#include "system/parameter_scope.h"
 
 namespace twb {
 
@@ -150,6 +151,7 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
 
 DistressSearch search_distress(BearingModel& model, const DistressSearchSettings& settings,
                                const SearchProgress& progress) {
+  const ParameterScope load_as_given(model);
   const SparseLu::Counts before = SparseLu::thread_counts();
   BranchStates cool, approach;
   DistressSearch out = search_from_start(model, settings, progress, cool, approach);

@@ -118,7 +118,7 @@ RunawaySettings distress_detector(const Scene& scene, double bracket_width);
 
 using SearchProgress = std::function<void(const std::string&)>;
 
-// The model is left at its speed; its load ends wherever the search ended.
+// The model is left as it was given: its speed, and its load (held by a ParameterScope).
 DistressSearch search_distress(BearingModel& model, const DistressSearchSettings& settings,
                                const SearchProgress& progress);
 
