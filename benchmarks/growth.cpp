@@ -30,7 +30,7 @@
 #include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/sparse_lu.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 #include "study/distress_search.h"
 
 namespace {

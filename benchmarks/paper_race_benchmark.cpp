@@ -32,7 +32,7 @@
 #include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/paper_scheme.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 #include "study/distress_search.h"
 #include "study/richardson.h"
 

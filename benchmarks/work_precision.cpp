@@ -24,7 +24,7 @@
 #include "mesh_option.h"
 #include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 #include "study/distress_search.h"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "model/bearing_model.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 #include "study/study_runner.h"
 #include "study/study_support.h"
 

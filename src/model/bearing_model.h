@@ -140,7 +140,7 @@ class BearingModel final : public SegregatedSystem {
   // gap at a node from its plane, δ = form · u (m), from the carrier's and gear's face
   // expansion and the washer's dishing. Empty forms without the effect.
   bool deforms() const { return shape_.dishing >= 0; }
-  // The shapes δ scaled by s in [0, 1] (the cold start's homotopy, steady_solver.cpp): 0
+  // The shapes δ scaled by s in [0, 1] (the cold start's homotopy, study/steady_solver.cpp): 0
   // is the rigid film with the deformation's own unknowns riding along, 1 the model.
   // The Jacobian's pattern is the same for every s.
   void set_deformation_scale(double s);

@@ -1,5 +1,5 @@
 // A state carried from one mesh to another of the same scene (the start of a mesh
-// sequence, steady_solver.cpp). Every field lives on an Nr × Nθ index grid spread
+// sequence, study/steady_solver.cpp). Every field lives on an Nr × Nθ index grid spread
 // uniformly over its annulus (docs/physics.md section 10), so a node of the target lies at the
 // same fractions of radius span and turn on the source grid, and bilinear interpolation
 // there is second-order accurate: the interpolated state differs from the target mesh's

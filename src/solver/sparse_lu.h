@@ -9,7 +9,7 @@
 //    pivot order may no longer be safe;
 //  - refactor() reuses the pivot sequence of the last full factorization while that is
 //    safe: for the Jacobians of successive Newton and pseudo-time steps (KINSOL's
-//    linear solver in kinsol_newton.cpp, the pseudo-time stepper in steady_solver.cpp)
+//    linear solver in kinsol_newton.cpp, the pseudo-time stepper in pseudo_transient.cpp)
 //    and the bordered matrix of the fold system, which stays regular at the fold
 //    (fold_system.h; refactoring it left the bearing's fold curve unchanged to 10 digits
 //    and cut its time by 12 %).

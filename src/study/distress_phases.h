@@ -24,7 +24,7 @@
 #include "solver/arclength_continuation.h"
 #include "solver/natural_continuation.h"
 #include "solver/runaway.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 
 namespace twb {
 

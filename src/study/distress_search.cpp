@@ -13,7 +13,7 @@
 #include "study_support.h"
 #include "solver/natural_continuation.h"
 #include "solver/runaway.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 #include "system/parameter_scope.h"
 
 namespace twb {

@@ -8,7 +8,7 @@
 
 #include "solver/kinsol_newton.h"
 #include "solver/relaxation_time.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 #include "twb/error_family.h"
 
 namespace twb {

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 #include "study/richardson.h"
 #include "study_support.h"
 

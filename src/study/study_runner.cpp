@@ -22,7 +22,7 @@
 #include "study_support.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/sparse_lu.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 #include "study/distress_search.h"
 #include "twb/error_family.h"
 

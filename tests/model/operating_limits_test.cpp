@@ -9,7 +9,7 @@
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "twb/results/limit_notes.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -1,4 +1,4 @@
-// The cold start goes to pseudo-time at once (steady_solver.cpp): it must reach the
+// The cold start goes to pseudo-time at once (study/steady_solver.cpp): it must reach the
 // state Newton converges to from a neighbouring steady state, and spend no Newton solve
 // before pseudo-time has brought it near (the one after it finishes).
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include "../support/state_difference.h"
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -13,7 +13,7 @@
 
 #include "model/limit_thresholds.h"
 #include "solver/natural_continuation.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 #include "study/distress_search.h"
 #include "study/study_support.h"
 #include "twb/scene/scene_loader.h"

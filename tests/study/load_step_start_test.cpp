@@ -7,7 +7,7 @@
 #include <string>
 
 #include "solver/ida_transient.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 #include "study/load_step_march.h"
 #include "study/study_support.h"
 #include "twb/scene/scene_loader.h"

@@ -28,7 +28,7 @@
 #include "twb/scene/scene_loader.h"
 #include "solver/arclength_continuation.h"
 #include "solver/natural_continuation.h"
-#include "solver/steady_solver.h"
+#include "study/steady_solver.h"
 #include "study/distress_search.h"
 
 namespace twb {

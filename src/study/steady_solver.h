@@ -2,7 +2,7 @@
 // from the paper's cold start, with globalization beyond KINSOL's line search
 // (Cantera's pattern: from a given start damped Newton first, pseudo-time steps when it
 // fails, then Newton again; from the cold start, where Newton never converges,
-// pseudo-time at once). When even that fails, the speed is ramped up from rest, then
+// pseudo-time at once; solver/pseudo_transient.h). When even that fails, the speed is ramped up from rest, then
 // the load from a fraction the cold start reaches, each step warm-started from the last
 // and halved on failure. Failure is reported, not hidden.
 #pragma once
@@ -13,21 +13,10 @@
 
 #include "model/bearing_model.h"
 #include "solver/kinsol_newton.h"
+#include "solver/pseudo_transient.h"
 
 namespace twb {
 
-struct SteadyReport {
-  bool converged = false;
-  std::string strategy;  // "newton", "pseudo-transient", "speed ramp", "load ramp"
-  int newton_solves = 0;
-  long iterations = 0, jacobian_evaluations = 0, residual_evaluations = 0;
-  double residual_norm = 0.0;
-  double wall_ms = 0.0;
-  std::string message;
-  // What each strategy that failed before the reported one said (solve_cold), in order:
-  // kept, so that a cause is never lost; a failed cold start's message ends with them.
-  std::vector<std::string> attempts;
-};
 
 class SteadySolver {
  public:
@@ -58,15 +47,14 @@ class SteadySolver {
   // Thermal deformation's cold start: the rigid film's (the shapes scaled by 0), then the
   // shapes brought in by walking their scale to 1, each step Newton from the last.
   SteadyReport solve_by_deformation_homotopy(std::vector<double>& u);
-  void account(SteadyReport& rep, const NewtonReport& n) const;
-  // KINSOL's Newton from u on the model's Newton form (SteadySystem::set_newton_form),
-  // its own form restored afterwards; counted into rep.
-  bool newton(std::vector<double>& u, const NewtonSettings& s, SteadyReport& rep);
+  bool newton(std::vector<double>& u, const NewtonSettings& s, SteadyReport& rep) {
+    return pseudo_transient_.newton(u, s, rep);
+  }
   SteadyReport ramp(std::vector<double>& u, SteadyReport rep);
   bool speed_ramp(std::vector<double>& u, SteadyReport& rep);
-  // Newton (if newton_first), then pseudo-transient continuation from u; true when u
-  // is now a steady state.
-  bool reach(std::vector<double>& u, SteadyReport& rep, bool newton_first = true);
+  bool reach(std::vector<double>& u, SteadyReport& rep, bool newton_first = true) {
+    return pseudo_transient_.reach(u, rep, newton_first);
+  }
   // reach(), then the ramps when it fails.
   SteadyReport settle(std::vector<double>& u, bool newton_first);
   // Walks a parameter (speed, load) from `from` up to `target`, each step warm-started
@@ -79,6 +67,7 @@ class SteadySolver {
   BearingModel& model_;
   NewtonSettings settings_;
   KinsolNewton newton_;
+  PseudoTransient pseudo_transient_;
   bool mesh_sequence_ = true;
   bool deformation_homotopy_ = true;
 };
