@@ -6,6 +6,10 @@
 
 namespace twb {
 
+std::string criterion_name(const FailureCriterion& criterion) {
+  return criterion.distress ? "distress" : std::string(limit_name(criterion.limit));
+}
+
 ResultTable distress_table(const std::vector<DistressRow>& rows, const std::string& parameter_column,
                            bool sliding_column) {
   ResultTable t;
@@ -34,7 +38,7 @@ ResultTable distress_table(const std::vector<DistressRow>& rows, const std::stri
     t.put_number(speed, r.speed);
     run.put(t, r.parameter, r.sliding);
     t.put_number(w_fail, r.failure_load);
-    t.put_text(criterion, r.criterion);
+    t.put_text(criterion, r.criterion ? criterion_name(*r.criterion) : std::string());
     t.put_number(fail_extrapolated, r.failure_extrapolated);
     t.put_number(fail_error, r.failure_error);
     t.put_number(w_d, r.distress_load);

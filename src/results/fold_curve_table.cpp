@@ -6,6 +6,17 @@ namespace twb {
 
 using cells::kelvin_offset;
 
+std::string fold_name(const FoldCurveRow& row) {
+  switch (row.fold) {
+    case FoldKind::distress: return "distress";
+    case FoldKind::recovery: return "recovery";
+    case FoldKind::cusp: return "cusp";
+    case FoldKind::turn: return "turn";
+    case FoldKind::limit: return std::string(limit_name(row.limit));
+  }
+  return "?";
+}
+
 ResultTable fold_curve_table(const std::vector<FoldCurveRow>& rows, const std::string& parameter_column,
                              const std::string& family_column) {
   ResultTable t;
@@ -20,7 +31,7 @@ ResultTable fold_curve_table(const std::vector<FoldCurveRow>& rows, const std::s
     family.put(t, r.member, {});
     t.put_number(parameter, r.parameter - offset);
     t.put_number(w_fold, s.load);
-    t.put_text(fold, r.fold);
+    t.put_text(fold, fold_name(r));
     t.put_number(t_mean, s.washer_mean_temperature - kelvin_offset);
     t.put_number(t_max, s.max_film_temperature - kelvin_offset);
     t.put_number(hmin, s.hmin_over_sigma);

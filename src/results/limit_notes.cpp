@@ -6,12 +6,14 @@
 
 #include <fmt/format.h>
 
+#include "twb/scene/scene_loader.h"
+
 namespace twb {
 
 namespace {
 
 // A run of a study: what tells its states apart besides the load.
-using Run = std::tuple<double, std::optional<double>, std::string>;
+using Run = std::tuple<double, std::optional<double>, std::optional<SlidingFilm>>;
 
 struct FirstExcess {
   double load;
@@ -39,7 +41,7 @@ std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, con
       if (d.speed == speed && d.parameter == parameter && d.sliding == sliding) w_d = d.distress_load;
     const std::string where = fmt::format("{:.6g} rad/s{}{}", speed,
                                           parameter ? fmt::format(", parameter {:.6g}", *parameter) : "",
-                                          sliding.empty() ? "" : ", sliding " + sliding);
+                                          sliding ? ", sliding " + std::string(scene_name(*sliding)) : "");
     for (const auto& [kind, f] : kinds) {
       const bool before_distress = w_d && f.cool_branch && f.load < *w_d;
       lines.push_back(fmt::format("limit at {}: {} from {:.6g} N: {}{}", where, limit_name(kind), f.load,

@@ -6,6 +6,8 @@
 #include <string>
 
 #include "twb/results/result_table.h"
+#include "twb/scene/scene.h"
+#include "twb/scene/scene_loader.h"
 
 namespace twb::cells {
 
@@ -20,9 +22,9 @@ struct RunColumns {
     if (!parameter_column.empty()) parameter = table.number(parameter_column);
     if (sliding_column) sliding = table.text("sliding");
   }
-  void put(ResultTable& table, const std::optional<double>& value, const std::string& film) const {
+  void put(ResultTable& table, const std::optional<double>& value, const std::optional<SlidingFilm>& film) const {
     if (parameter) table.put_number(*parameter, value);
-    if (sliding) table.put_text(*sliding, film);
+    if (sliding) table.put_text(*sliding, film ? std::string(scene_name(*film)) : std::string());
   }
 };
 

@@ -13,6 +13,7 @@
 
 #include "solver/kinsol_newton.h"
 #include "solver/sparse_matrix_fill.h"
+#include "solver/callback_guard.h"
 #include "twb/error_family.h"
 
 namespace twb {
@@ -27,12 +28,11 @@ struct IdaTransient::Callbacks {
   std::vector<Index> diagonal;     // position of (k, k) in `pattern`, -1 where C_k = 0 and absent
   std::vector<double> system_values, values, scratch;
   std::string last_error;      // IDA's own message
-  std::string callback_error;  // what a callback threw
-  // An internal error thrown inside a callback: carried across the C solver and thrown
-  // again once it returns (twb/error_family.h: a bug is never turned into a failed solve).
-  std::exception_ptr internal;
+  // What a callback threw (callback_guard.h): an internal error is carried across the
+  // C solver and thrown again once it returns.
+  CallbackFailure failure;
   void rethrow_internal() {
-    if (internal) std::rethrow_exception(std::exchange(internal, nullptr));
+    if (failure.internal) std::rethrow_exception(std::exchange(failure.internal, nullptr));
   }
 };
 
@@ -60,7 +60,7 @@ SparsePattern with_capacity_diagonal(const SparsePattern& p, const std::vector<d
 // caller reads); anything thrown is unrecoverable and its message kept.
 int residual_fn(double, N_Vector y, N_Vector yp, N_Vector g, void* data) {
   auto* cb = static_cast<IdaTransient::Callbacks*>(data);
-  try {
+  return guarded_callback(cb->failure, [&]() -> int {
     const auto n = std::size_t(N_VGetLength(y));
     const double* up = N_VGetArrayPointer(yp);
     std::span<double> r(N_VGetArrayPointer(g), n);
@@ -70,23 +70,13 @@ int residual_fn(double, N_Vector y, N_Vector yp, N_Vector g, void* data) {
     for (double v : r)
       if (!std::isfinite(v)) return 1;
     return 0;
-  } catch (const InternalError& e) {
-    cb->callback_error = e.what();
-    cb->internal = std::current_exception();
-    return -1;
-  } catch (const std::exception& e) {
-    cb->callback_error = e.what();
-    return -1;
-  } catch (...) {
-    cb->callback_error = "an exception of unknown type";
-    return -1;
-  }
+  });
 }
 
 int jacobian_fn(double, double cj, N_Vector y, N_Vector, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector,
                 N_Vector) {
   auto* cb = static_cast<IdaTransient::Callbacks*>(data);
-  try {
+  return guarded_callback(cb->failure, [&]() -> int {
     const auto n = std::size_t(N_VGetLength(y));
     cb->system->evaluate(std::span<const double>(N_VGetArrayPointer(y), n), cb->scratch, cb->system_values);
     std::fill(cb->values.begin(), cb->values.end(), 0.0);
@@ -96,17 +86,7 @@ int jacobian_fn(double, double cj, N_Vector y, N_Vector, N_Vector, SUNMatrix J, 
     for (std::size_t k = 0; k < n; ++k)
       if (c[k] > 0.0) cb->values[std::size_t(cb->diagonal[k])] += cj * c[k];
     return fill_sparse_matrix(J, cb->pattern, cb->values) ? 0 : 1;
-  } catch (const InternalError& e) {
-    cb->callback_error = e.what();
-    cb->internal = std::current_exception();
-    return -1;
-  } catch (const std::exception& e) {
-    cb->callback_error = e.what();
-    return -1;
-  } catch (...) {
-    cb->callback_error = "an exception of unknown type";
-    return -1;
-  }
+  });
 }
 
 void error_handler(int, const char*, const char*, char* msg, void* data) {
@@ -190,7 +170,7 @@ TransientStatus IdaTransient::status_from(int flag, const char* call) const {
     free(name);
     s.message = std::string(call) + ": " + s.flag_name +
                 (callbacks_->last_error.empty() ? "" : ": " + callbacks_->last_error) +
-                (callbacks_->callback_error.empty() ? "" : " (" + callbacks_->callback_error + ")");
+                (callbacks_->failure.message.empty() ? "" : " (" + callbacks_->failure.message + ")");
   }
   return s;
 }
@@ -229,7 +209,7 @@ TransientStatus IdaTransient::consistent_start(double t0, std::span<const double
   // u' = 0 is only a guess: CalcIC computes it for the differential unknowns.
   N_VConst(0.0, yp_.get());
   callbacks_->last_error.clear();
-  callbacks_->callback_error.clear();
+  callbacks_->failure.message.clear();
   time_ = t0;
   int flag = IDAReInit(ida_.get(), t0, y_.get(), yp_.get());
   if (flag < 0) return status_from(flag, "IDAReInit");
@@ -275,7 +255,7 @@ TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
 TransientStatus IdaTransient::step(double t_stop) {
   if (!(t_stop > time_)) throw InternalError("IdaTransient::step: stop time not ahead of the current time");
   callbacks_->last_error.clear();
-  callbacks_->callback_error.clear();
+  callbacks_->failure.message.clear();
   int flag = IDASetStopTime(ida_.get(), t_stop);
   if (flag < 0) return status_from(flag, "IDASetStopTime");
   double reached = time_;

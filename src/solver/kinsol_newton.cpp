@@ -14,8 +14,10 @@
 #include <kinsol/kinsol.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
+#include "solver/pattern_klu.h"
 #include "solver/sparse_lu.h"
 #include "solver/sparse_matrix_fill.h"
+#include "solver/callback_guard.h"
 #include "twb/error_family.h"
 
 namespace twb {
@@ -32,12 +34,11 @@ double max_norm(std::span<const double> v) {
 struct KinsolNewton::Callbacks {
   const SteadySystem* model;
   std::string last_error;      // KINSOL's own message
-  std::string callback_error;  // what a callback threw
-  // An internal error thrown inside a callback: carried across the C solver and thrown
-  // again once it returns (twb/error_family.h: a bug is never turned into a failed solve).
-  std::exception_ptr internal;
+  // What a callback threw (callback_guard.h): an internal error is carried across the
+  // C solver and thrown again once it returns.
+  CallbackFailure failure;
   void rethrow_internal() {
-    if (internal) std::rethrow_exception(std::exchange(internal, nullptr));
+    if (failure.internal) std::rethrow_exception(std::exchange(failure.internal, nullptr));
   }
   const PseudoTimeShift* shift = nullptr;
   std::vector<Index> diagonal;  // position of (k, k) in the pattern
@@ -112,7 +113,7 @@ namespace {
 // message is kept for the report.
 int residual_fn(N_Vector y, N_Vector f, void* data) {
   auto* cb = static_cast<KinsolNewton::Callbacks*>(data);
-  try {
+  return guarded_callback(cb->failure, [&]() -> int {
     const auto n = std::size_t(N_VGetLength(y));
     std::span<const double> u(N_VGetArrayPointer(y), n);
     std::span<double> r(N_VGetArrayPointer(f), n);
@@ -129,22 +130,12 @@ int residual_fn(N_Vector y, N_Vector f, void* data) {
     if (!std::isfinite(norm)) return 1;
     if (newton_point) cb->step_norms.push_back(norm);
     return 0;
-  } catch (const InternalError& e) {
-    cb->callback_error = e.what();
-    cb->internal = std::current_exception();
-    return -1;
-  } catch (const std::exception& e) {
-    cb->callback_error = e.what();
-    return -1;
-  } catch (...) {
-    cb->callback_error = "an exception of unknown type";
-    return -1;
-  }
+  });
 }
 
 int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector) {
   auto* cb = static_cast<KinsolNewton::Callbacks*>(data);
-  try {
+  return guarded_callback(cb->failure, [&]() -> int {
     const SparsePattern& p = cb->model->pattern();
     const auto n = std::size_t(N_VGetLength(y));
     cb->assemble_at(std::span<const double>(N_VGetArrayPointer(y), n), true);
@@ -157,80 +148,7 @@ int jacobian_fn(N_Vector y, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vecto
         if (cb->diagonal[k] >= 0) vals[cb->diagonal[k]] += cb->shift->coefficient(k);
     }
     return 0;
-  } catch (const InternalError& e) {
-    cb->callback_error = e.what();
-    cb->internal = std::current_exception();
-    return -1;
-  } catch (const std::exception& e) {
-    cb->callback_error = e.what();
-    return -1;
-  } catch (...) {
-    cb->callback_error = "an exception of unknown type";
-    return -1;
-  }
-}
-
-// KINSOL's linear solver: SparseLu on the system's pattern, which is fixed for the
-// system's life (SteadySystem::pattern()). SUNDIALS' own KLU module redoes the symbolic
-// analysis and a full pivoting factorization at the start of every KINSol call; here
-// the analysis is done once per solver, and every later Jacobian is refactored with the
-// pivot sequence of the last full factorization while that is safe
-// (SparseLu::refactor). The matrix KINSOL hands over is the CSR matrix of that pattern
-// (fill_sparse_matrix), in the pattern's order.
-struct PatternKlu {
-  PatternKlu(const SparsePattern& pattern, SparseLu::Ordering ordering) : lu(pattern, ordering) {}
-  SparseLu lu;
-  int last_flag = SUNLS_SUCCESS;
-};
-
-PatternKlu& pattern_klu(SUNLinearSolver s) { return *static_cast<PatternKlu*>(s->content); }
-
-SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern, SparseLu::Ordering ordering) {
-  SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
-  if (!s) return nullptr;
-  try {
-    s->content = new PatternKlu(pattern, ordering);
-  } catch (...) {
-    SUNLinSolFreeEmpty(s);
-    throw;
-  }
-  s->ops->gettype = [](SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; };
-  s->ops->getid = [](SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; };
-  // KINSol initializes its linear solver at every call: the analysis stays valid.
-  s->ops->initialize = [](SUNLinearSolver) { return SUNLS_SUCCESS; };
-  // A singular matrix is recoverable: KINSOL reports it, the caller's globalization
-  // (pseudo-time, ramps) moves on.
-  // Nothing may be thrown into KINSOL: anything that is (an allocation failing) ends
-  // the solve as unrecoverable.
-  s->ops->setup = [](SUNLinearSolver ls, SUNMatrix a) {
-    PatternKlu& k = pattern_klu(ls);
-    try {
-      const std::span<const double> values(SUNSparseMatrix_Data(a), std::size_t(SUNSparseMatrix_NNZ(a)));
-      return k.last_flag = k.lu.refactor(values) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
-    } catch (...) {
-      return k.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
-    }
-  };
-  s->ops->solve = [](SUNLinearSolver ls, SUNMatrix, N_Vector x, N_Vector b, realtype) {
-    PatternKlu& k = pattern_klu(ls);
-    if (!k.lu.factored()) return k.last_flag = SUNLS_PACKAGE_FAIL_REC;
-    try {
-      N_VScale(1.0, b, x);
-      k.lu.solve(std::span<double>(N_VGetArrayPointer(x), std::size_t(N_VGetLength(x))));
-      return k.last_flag = SUNLS_SUCCESS;
-    } catch (...) {
-      return k.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
-    }
-  };
-  s->ops->lastflag = [](SUNLinearSolver ls) { return sunindextype(pattern_klu(ls).last_flag); };
-  s->ops->free = [](SUNLinearSolver ls) {
-    if (!ls) return SUNLS_SUCCESS;
-    delete static_cast<PatternKlu*>(ls->content);
-    ls->content = nullptr;
-    SUNLinSolFreeEmpty(ls);
-    return SUNLS_SUCCESS;
-  };
-  return s;
+  });
 }
 
 void error_handler(int, const char*, const char*, char* msg, void* data) {
@@ -309,7 +227,7 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   check_flag(KINSetScaledStepTol(kin_.get(), s.step_tolerance), "KINSetScaledStepTol");
   if (s.max_step > 0) check_flag(KINSetMaxNewtonStep(kin_.get(), s.max_step), "KINSetMaxNewtonStep");
   callbacks_->last_error.clear();
-  callbacks_->callback_error.clear();
+  callbacks_->failure.message.clear();
   // The shift adds to the diagonal: a row whose pattern lacks (k, k) cannot take it.
   if (shift)
     for (std::size_t k = 0; k < n; ++k)
@@ -415,7 +333,7 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
     rep.message = std::string(name ? name : "KINSOL failure") +
                   fmt::format(" (largest residual {:.3g} in {})", r[worst], model_.describe_row(Index(worst))) +
                   (callbacks_->last_error.empty() ? "" : ": " + callbacks_->last_error) +
-                  (callbacks_->callback_error.empty() ? "" : " (" + callbacks_->callback_error + ")");
+                  (callbacks_->failure.message.empty() ? "" : " (" + callbacks_->failure.message + ")");
     free(name);
   }
   return rep;

@@ -15,6 +15,7 @@
 #include "study/distress_search.h"
 #include "study/richardson.h"
 #include "study/limit_curve.h"
+#include "study/limit_curve_jobs.h"
 #include "study/parallel.h"
 #include "model/limit_thresholds.h"
 #include "twb/error_family.h"
@@ -50,105 +51,6 @@ std::string fold_curve_column(CurveParameter p) {
 }
 
 namespace {
-
-// A parameter value as a user reads it.
-std::string shown(CurveParameter p, double v) {
-  switch (p) {
-    case CurveParameter::speed: return fmt::format("{:.6g} rad/s", v);
-    case CurveParameter::friction_coefficient: return fmt::format("f = {:.6g}", v);
-    case CurveParameter::gear_tilt: return fmt::format("{:.6g} mrad", 1e3 * v);
-    case CurveParameter::ambient_temperature: return fmt::format("{:.6g} C", v - 273.15);
-    case CurveParameter::viscosity_scale: return fmt::format("viscosity x {:.6g}", v);
-    case CurveParameter::roughness: return fmt::format("Rq {:.4g} um", 1e6 * v);
-  }
-  return fmt::format("{:.6g}", v);
-}
-
-}  // namespace
-
-namespace {
-
-using Crossings = std::vector<std::pair<double, std::vector<double>>>;
-
-// One criterion's limit curve (limit_curve.h), from the first end searched that crosses
-// it to the other end, on a model of its own.
-struct LimitCurveJob {
-  LimitKind kind = LimitKind::oil_temperature;
-  double from = 0.0, to = 0.0;
-  std::pair<double, std::vector<double>> start;
-  LimitCurve curve;
-  double seconds = 0.0;
-};
-
-std::vector<LimitCurveJob> limit_curve_jobs(const Study& st, const std::vector<std::pair<double, Crossings>>& ends) {
-  std::vector<LimitCurveJob> jobs;
-  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
-    // (a search that failed at its light load has no crossings at all)
-    const auto start = std::find_if(ends.begin(), ends.end(),
-                                    [&](const auto& e) { return c < e.second.size() && !e.second[c].second.empty(); });
-    if (start == ends.end()) continue;
-    LimitCurveJob& job = jobs.emplace_back();
-    job.kind = kFailureCriteria[c];
-    job.from = start->first;
-    job.to = job.from == st.from ? st.to : st.from;
-    job.start = start->second[c];
-  }
-  return jobs;
-}
-
-// W_d along this curve's distress fold (the member's rows so far, sorted in the
-// parameter), interpolated linearly between its points; none outside the fold's range.
-std::function<std::optional<double>(double)> distress_fold_of(const StudyOutcome& out, std::optional<double> member) {
-  std::vector<std::pair<double, double>> folds;
-  for (const FoldCurveRow& r : out.fold_curve)
-    if (r.member == member && (r.fold == "distress" || r.fold == "cusp")) folds.emplace_back(r.parameter, r.state.load);
-  std::sort(folds.begin(), folds.end());
-  return [folds](double p) -> std::optional<double> {
-    if (folds.size() < 2 || p < folds.front().first || p > folds.back().first) return std::nullopt;
-    const auto hi = std::lower_bound(folds.begin(), folds.end(), std::pair{p, -1e300});
-    if (hi == folds.begin()) return hi->second;
-    const auto lo = hi - 1;
-    return lo->second + (hi->second - lo->second) * (p - lo->first) / (hi->first - lo->first);
-  };
-}
-
-void trace_job(const Scene& scene, CurveParameter which, const LimitCurveSettings& settings, LimitCurveJob& job) {
-  const auto t0 = std::chrono::steady_clock::now();
-  try {
-    BearingModel model(scene);
-    job.curve = trace_limit_curve(model, which, job.kind, job.from, job.to, job.start, settings);
-  } catch (const InternalError&) {
-    throw;  // a bug: no fallback may hide it
-  } catch (const std::exception& e) {
-    job.curve.ended = std::string("the curve could not be continued: ") + e.what();
-  }
-  job.seconds = elapsed_ms(t0) / 1000.0;
-}
-
-// A traced limit curve's rows in fold_curve.csv (the criterion's name in the fold
-// column) and its summary line.
-void add_limit_curve(const LimitCurveJob& job, CurveParameter which, std::optional<double> member,
-                     const std::string& label, StudyOutcome& out, const std::function<void(const std::string&)>& say) {
-  const LimitCurve& curve = job.curve;
-  for (const LimitCurvePoint& pt : curve.points) {
-    FoldCurveRow& row = out.fold_curve.emplace_back();
-    row.parameter = pt.p;
-    row.fold = std::string(limit_name(job.kind));
-    row.state = pt.state;
-    row.member = member;
-  }
-  const std::string line =
-      curve.points.empty()
-          ? fmt::format("limit curve{}: {} not traced from {}: {}", label, limit_name(job.kind), shown(which, job.from),
-                        curve.ended)
-          : fmt::format("limit curve{}: {} crossed from {:.2f} N at {} to {:.2f} N at {} ({} points){}", label,
-                        limit_name(job.kind), curve.points.front().state.load, shown(which, curve.points.front().p),
-                        curve.points.back().state.load, shown(which, curve.points.back().p), curve.points.size(),
-                        curve.ended.empty() ? std::string() : "; ended " + curve.ended);
-  say(fmt::format("[curve{}] {} [{} steady solves, {:.1f} s]", label, line.substr(line.find(':') + 2), curve.solves,
-                  job.seconds));
-  out.summary.push_back(line);
-}
 
 // Runs every piece on up to `threads` threads; the first exception (in the pieces'
 // order) is thrown again once all are done, as run_in_parallel does, but only after
@@ -219,7 +121,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     BearingModel& m = i == 0 ? model : other_model;
     const double end = i == 0 ? st.from : st.to;
     m.set_curve_parameter(which, end);
-    say(fmt::format("[curve{}] the first fold at {}", label, shown(which, end)));
+    say(fmt::format("[curve{}] the first fold at {}", label, shown_parameter(which, end)));
     (i == 0 ? at_from : at_to) = search_distress(m, settings, progress);
   };
   if (threads > 1) {
@@ -234,7 +136,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   auto take = [&](DistressSearch& found, double end) {
     add_search_work(out.timings, found.counts);
     found.row.parameter = member;
-    if (which != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown(which, end), found.row.method);
+    if (which != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown_parameter(which, end), found.row.method);
     out.distress.push_back(found.row);
     for (std::size_t k = 0; k < found.cool_states; ++k) {
       out.states.push_back(found.states[k]);
@@ -271,7 +173,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   if (!first) {
     out.summary.push_back(fmt::format("fold curve{}: no fold between {:.6g} and {:.6g} N at either end ({} and {}): "
                                       "no sudden distress to follow",
-                                      label, st.load_start, st.load_end, shown(which, st.from), shown(which, st.to)));
+                                      label, st.load_start, st.load_end, shown_parameter(which, st.from), shown_parameter(which, st.to)));
     limit_curves_alone();
     return;
   }
@@ -303,7 +205,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   FoldCurve curve;
   try {
     curve = trace_fold_curve(model, parameter, *first->fold, fs, [&](const FoldCurvePoint& pt) {
-      say(fmt::format("[curve{}] {}: fold at {:.2f} N ({}) [{:.1f} s]", label, shown(which, pt.p), pt.lambda,
+      say(fmt::format("[curve{}] {}: fold at {:.2f} N ({}) [{:.1f} s]", label, shown_parameter(which, pt.p), pt.lambda,
                       pt.curvature > 0 ? "distress" : pt.curvature < 0 ? "recovery" : "of unknown kind",
                       elapsed_ms(t0) / 1000.0));
       return true;
@@ -314,12 +216,12 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     curve.message = std::string("the curve could not be continued: ") + e.what();
   }
   if (curve.points.empty()) {
-    out.summary.push_back(fmt::format("fold curve{}: not traced from {}: {}", label, shown(which, start), curve.message));
+    out.summary.push_back(fmt::format("fold curve{}: not traced from {}: {}", label, shown_parameter(which, start), curve.message));
     limit_curves_alone();
     return;
   }
   const auto n = std::size_t(model.size());
-  auto add_row = [&](double p, const std::string& fold, const BearingState& state) {
+  auto add_row = [&](double p, FoldKind fold, const BearingState& state) {
     FoldCurveRow& row = out.fold_curve.emplace_back();
     row.parameter = p;
     row.fold = fold;
@@ -338,16 +240,16 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     if (pt.curvature > 0) kind = +1;
     if (pt.curvature < 0) kind = -1;
     kind_of[k] = kind;
-    row_of[k] = add_row(pt.p, kind > 0 ? "distress" : "recovery", describe_at(pt.p, pt.lambda, pt.u));
+    row_of[k] = add_row(pt.p, kind > 0 ? FoldKind::distress : FoldKind::recovery, describe_at(pt.p, pt.lambda, pt.u));
     const bool turns = k + 1 < curve.points.size() && pt.tangent_p * curve.points[k + 1].tangent_p < 0.0;
     if (turns && next_turn < curve.turns.size()) {
       const CurveTurn& t = curve.turns[next_turn++];
-      add_row(t.p, t.cusp ? "cusp" : "turn", describe_at(t.p, t.lambda, std::span<const double>(t.point.u).first(n)));
+      add_row(t.p, t.cusp ? FoldKind::cusp : FoldKind::turn, describe_at(t.p, t.lambda, std::span<const double>(t.point.u).first(n)));
       out.summary.push_back(
           t.cusp ? fmt::format("fold curve{}: cusp at {}, {:.2f} N: the cool and hot branches merge; on the side "
                                "without a fold the bearing heats gradually, with no sudden distress",
-                               label, shown(which, t.p), t.lambda)
-                 : fmt::format("fold curve{}: turns back at {}, {:.2f} N without a cusp", label, shown(which, t.p),
+                               label, shown_parameter(which, t.p), t.lambda)
+                 : fmt::format("fold curve{}: turns back at {}, {:.2f} N without a cusp", label, shown_parameter(which, t.p),
                                t.lambda));
     }
   }
@@ -430,10 +332,10 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   if (!finished)
     out.summary.push_back(fmt::format("fold curve{}: stopped at {}, inside the range: no continuation step was "
                                       "accepted there ({}); the curve may turn sharply or end there",
-                                      label, shown(which, last), curve.message));
+                                      label, shown_parameter(which, last), curve.message));
   else if (curve.turns.empty())
     out.summary.push_back(fmt::format("fold curve{}: {} points from {} to {}, no cusp in range", label,
-                                      curve.points.size(), shown(which, curve.points.front().p), shown(which, last)));
+                                      curve.points.size(), shown_parameter(which, curve.points.front().p), shown_parameter(which, last)));
   add_limit_curves();
 }
 

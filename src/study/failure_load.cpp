@@ -10,6 +10,8 @@
 #include <boost/math/tools/toms748_solve.hpp>
 #include <fmt/format.h>
 
+#include "system/parameter_scope.h"
+
 #include "model/limit_thresholds.h"
 #include "solver/kinsol_newton.h"
 #include "solver/natural_continuation.h"
@@ -172,6 +174,7 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
 
 void locate_failure(BearingModel& model, const BranchStates& branch, const FailureSettings& settings,
                     DistressRow& row, long& solves, BranchStates* crossings) {
+  const ParameterScope load_as_given(model);
   row.criterion_loads.fill(std::nullopt);
   if (crossings) crossings->assign(std::size(kFailureCriteria), {});
   if (branch.empty()) return;
@@ -218,20 +221,20 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
     }
   }
   row.failure_load.reset();
-  row.criterion.clear();
+  row.criterion.reset();
   if (row.distress_load) {
     row.failure_load = row.distress_load;
-    row.criterion = "distress";
+    row.criterion = FailureCriterion::thermo_viscous_distress();
   }
   for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
     const std::optional<double>& w = row.criterion_loads[c];
     if (w && (!row.failure_load || *w < *row.failure_load)) {
       row.failure_load = w;
-      row.criterion = std::string(limit_name(kFailureCriteria[c]));
+      row.criterion = FailureCriterion::crossing(kFailureCriteria[c]);
     }
   }
   row.failure = failure_sentence(row, settings.load_end);
-  if (row.failure_load && row.criterion != "distress" && *row.failure_load <= settings.load_start)
+  if (row.failure_load && !row.criterion->distress && *row.failure_load <= settings.load_start)
     row.failure += fmt::format(" (already past it at the start, {:.6g} N: the crossing lies below the searched "
                                "range)",
                                settings.load_start);
@@ -240,12 +243,9 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
 std::string failure_sentence(const DistressRow& row, double load_end) {
   if (!row.failure_load)
     return fmt::format("no failure up to {:.6g} N (no thermo-viscous distress, no limit crossed)", load_end);
-  if (row.criterion == "distress")
+  if (!row.criterion || row.criterion->distress)
     return fmt::format("fails at {:.2f} N by thermo-viscous distress", *row.failure_load);
-  std::string kind_phrase;
-  for (LimitKind kind : kFailureCriteria)
-    if (limit_name(kind) == row.criterion) kind_phrase = std::string(criterion_phrase(kind));
-  return fmt::format("fails at {:.2f} N by {} ({})", *row.failure_load, kind_phrase,
+  return fmt::format("fails at {:.2f} N by {} ({})", *row.failure_load, criterion_phrase(row.criterion->limit),
                      row.distress_load ? fmt::format("thermo-viscous distress at {:.2f} N", *row.distress_load)
                                        : fmt::format("no thermo-viscous distress up to {:.6g} N", load_end));
 }

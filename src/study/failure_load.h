@@ -27,8 +27,8 @@ struct FailureSettings {
 
 // Fills row.criterion_loads, failure_load, criterion and failure from the branch's states
 // (load, state) in rising load, its end at the fold included where there is one, and
-// row.distress_load. Steady solves it made are counted in `solves`. The model's load is
-// left wherever the last trial state was.
+// row.distress_load. Steady solves it made are counted in `solves`. The model comes back
+// at the load it was given (a ParameterScope).
 // crossings, if given, receives each criterion's crossing (load, state), empty where none.
 void locate_failure(BearingModel& model, const BranchStates& branch, const FailureSettings& settings,
                     DistressRow& row, long& solves, BranchStates* crossings = nullptr);

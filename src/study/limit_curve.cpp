@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "system/parameter_scope.h"
+
 #include "failure_load.h"
 #include "solver/kinsol_newton.h"
 #include "study_support.h"
@@ -30,6 +32,7 @@ std::vector<double> extrapolation_weights(
 
 LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKind kind, double from, double to,
                              std::pair<double, std::vector<double>> crossing, const LimitCurveSettings& settings) {
+  const ParameterScope load_as_given(model);
   LimitCurve out;
   out.kind = kind;
   model.set_curve_parameter(which, from);

@@ -45,8 +45,10 @@ struct LimitCurve {
   long solves = 0;                      // steady solves (Newton corrections, continuations)
 };
 
-// From `crossing` (load, state) at parameter `from` to `to`. The model is left at the
-// last point's parameter and load.
+// From `crossing` (load, state) at parameter `from` to `to`. The model comes back at the
+// load it was given (a ParameterScope); its curve parameter is left at the last point's
+// (a curve is traced on a model of its own: restoring a roughness would replace the
+// scene's surfaces by uniform ones).
 LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKind kind, double from, double to,
                              std::pair<double, std::vector<double>> crossing, const LimitCurveSettings& settings);
 

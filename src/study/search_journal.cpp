@@ -25,7 +25,7 @@ static_assert(sizeof(BearingState) == 8 * 30 + sizeof(std::vector<LimitExcess>),
 
 // The format, the program's version and the journaled structs' layout: an entry written
 // by another build is not read (its search runs again) rather than misread.
-const std::string kMagic = fmt::format("twb-search-journal 4 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
+const std::string kMagic = fmt::format("twb-search-journal 5 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
                                        sizeof(SolvedState), sizeof(DistressRow), sizeof(TrajectorySample),
                                        sizeof(SearchCounts));
 
@@ -99,6 +99,16 @@ class Out {
     (*this)(v.has_value());
     if (v) (*this)(*v);
   }
+  template <class E>
+    requires std::is_enum_v<E>
+  void operator()(const std::optional<E>& v) {
+    (*this)(v.has_value());
+    if (v) (*this)(*v);
+  }
+  void operator()(const std::optional<FailureCriterion>& c) {
+    (*this)(c.has_value());
+    if (c) (*this)(c->distress), (*this)(c->limit);
+  }
   template <class T>
   void operator()(const std::vector<T>& v) {
     (*this)(std::uint64_t(v.size()));
@@ -147,6 +157,20 @@ class In {
     (*this)(has);
     v.reset();
     if (has) (*this)(v.emplace());
+  }
+  template <class E>
+    requires std::is_enum_v<E>
+  void operator()(std::optional<E>& v) {
+    bool has = false;
+    (*this)(has);
+    v.reset();
+    if (has) (*this)(v.emplace());
+  }
+  void operator()(std::optional<FailureCriterion>& c) {
+    bool has = false;
+    (*this)(has);
+    c.reset();
+    if (has) (*this)(c.emplace().distress), (*this)(c->limit);
   }
   template <class T>
   void operator()(std::vector<T>& v) {

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "twb/scene/scene_loader.h"
+
 
 namespace twb {
 
@@ -25,7 +27,7 @@ std::vector<std::string> summary_lines(const StudyOutcome& outcome) {
     const std::string where =
         fmt::format("{:.6g} rad/s{}{}", d.speed,
                     d.parameter ? fmt::format(", {} = {:.6g}", outcome.parameter_column, *d.parameter) : "",
-                    d.sliding.empty() ? "" : ", sliding " + d.sliding);
+                    d.sliding ? ", sliding " + std::string(scene_name(*d.sliding)) : "");
     lines.push_back(fmt::format(
         "distress at {}: {}{} ({})", where, d.distress_load ? fmt::format("W_d = {:.2f} N", *d.distress_load) : "none",
         d.extrapolated_load && d.discretization_error

@@ -36,7 +36,7 @@ TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
   found.extrapolated_load = 198.25;
   found.discretization_error = 4.0625;
   found.failure_load = 185.25;
-  found.criterion = "distress";
+  found.criterion = FailureCriterion::thermo_viscous_distress();
   found.criterion_loads[1] = 300.5;  // flash_temperature
   found.failure = "fails at 185.25 N by thermo-viscous distress";
   EXPECT_EQ(distress_csv({found}, ""),
@@ -85,7 +85,7 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   a.state.washer_mean_temperature = a.state.max_film_temperature = 273.15 + 24.0;
   a.converged = true;
   a.parameter = 0.2;
-  a.sliding = "washer_gear";
+  a.sliding = SlidingFilm::washer_gear;
   const std::string states = states_csv({a}, "friction_coefficient", true);
   EXPECT_EQ(states.rfind("load_N,speed_rad_s,friction_coefficient,sliding,T_mean_C,", 0), 0u) << states;
   EXPECT_NE(states.find("\n150,545,0.2,washer_gear,24,24,"), std::string::npos) << states;
@@ -110,13 +110,13 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   TrajectorySample t;
   t.state = a.state;
   t.parameter = 0.05;
-  t.sliding = "carrier_washer";
+  t.sliding = SlidingFilm::carrier_washer;
   const std::string trajectory = trajectory_csv({t}, "friction_coefficient", true);
   EXPECT_EQ(trajectory.substr(0, trajectory.find('\n')),
             "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,friction_coefficient,sliding");
   EXPECT_NE(trajectory.find(",150,545,0.05,carrier_washer\n"), std::string::npos) << trajectory;
 
-  DistressRow row{953.0, std::nullopt, 400.0, 399.0, 401.0, 400.5, "runaway", "washer_gear", {}, {}, {}};
+  DistressRow row{953.0, std::nullopt, 400.0, 399.0, 401.0, 400.5, "runaway", SlidingFilm::washer_gear, {}, {}, {}};
   EXPECT_EQ(distress_csv({row}, "", true),
             "speed_rad_s,sliding,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,"
             "W_d_extrapolated_N,W_d_error_N," kCriteria "failure,method\n"
@@ -134,7 +134,7 @@ TEST(SlidingTable, OneRowPerConfigurationWithTheChoiceMarked) {
   row.solved.state.f_eff = 0.011;
   row.solved.state.hmin_over_sigma = 3.5;
   row.solved.state.washer_mean_temperature = 273.15 + 40.0;
-  row.solved.sliding = "carrier_washer";
+  row.solved.sliding = SlidingFilm::carrier_washer;
   row.film_area = 3.0793e-4;
   row.chosen = true;
   EXPECT_EQ(sliding_csv({row}),

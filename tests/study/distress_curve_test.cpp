@@ -138,15 +138,15 @@ TEST(DistressCurve, StudyWritesTheCurveAndTheCusp) {
   const StudyOutcome out = run_study(model, {});
   ASSERT_FALSE(out.fold_curve.empty());
   EXPECT_EQ(out.fold_curve_column, "speed_rad_s");
-  EXPECT_EQ(out.fold_curve.front().fold, "distress");
+  EXPECT_EQ(out.fold_curve.front().fold, FoldKind::distress);
   const auto limit = [](const FoldCurveRow& r) {
-    return r.fold != "distress" && r.fold != "recovery" && r.fold != "cusp" && r.fold != "turn";
+    return r.fold == FoldKind::limit;
   };
   const auto first_limit = std::find_if(out.fold_curve.begin(), out.fold_curve.end(), limit);
   EXPECT_TRUE(std::all_of(first_limit, out.fold_curve.end(), limit));
   ASSERT_NE(first_limit, out.fold_curve.begin());
-  EXPECT_EQ((first_limit - 1)->fold, "recovery");
-  const auto cusp = std::find_if(out.fold_curve.begin(), out.fold_curve.end(), [](const FoldCurveRow& r) { return r.fold == "cusp"; });
+  EXPECT_EQ((first_limit - 1)->fold, FoldKind::recovery);
+  const auto cusp = std::find_if(out.fold_curve.begin(), out.fold_curve.end(), [](const FoldCurveRow& r) { return r.fold == FoldKind::cusp; });
   ASSERT_NE(cusp, out.fold_curve.end());
   ASSERT_EQ(shared().curve.turns.size(), 1u);
   EXPECT_NEAR(cusp->parameter, shared().curve.turns.front().p, 1e-6 * cusp->parameter);
@@ -166,17 +166,17 @@ TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
   ASSERT_FALSE(out.fold_curve.empty());
   long distress = 0, recovery_with_bar = 0;
   for (const FoldCurveRow& r : out.fold_curve) {
-    if (r.fold == "distress") {
+    if (r.fold == FoldKind::distress) {
       ++distress;
       ASSERT_TRUE(r.fine_load && r.extrapolated_load && r.discretization_error) << "at " << r.parameter;
       // Finer meshes carry more load here (W_d 7 % low on 9×66, 20 % on 5×24).
       EXPECT_GT(*r.fine_load, r.state.load);
       EXPECT_NEAR(*r.extrapolated_load, *r.fine_load + (*r.fine_load - r.state.load) / 3.0, 1e-12 * *r.fine_load);
     }
-    if (r.fold == "cusp" || r.fold == "turn") {
+    if (r.fold == FoldKind::cusp || r.fold == FoldKind::turn) {
       EXPECT_FALSE(r.fine_load);
     }
-    if (r.fold == "recovery" && r.fine_load) ++recovery_with_bar;
+    if (r.fold == FoldKind::recovery && r.fine_load) ++recovery_with_bar;
   }
   EXPECT_GT(distress, 3);
   EXPECT_GT(recovery_with_bar, 0);
@@ -215,7 +215,7 @@ TEST(DistressCurve, FamilyOfCurvesByFrictionCoefficient) {
   std::vector<double> cusps;
   for (const double f : {0.1, 0.3}) {
     const auto cusp = std::find_if(out.fold_curve.begin(), out.fold_curve.end(),
-                                   [&](const FoldCurveRow& r) { return r.fold == "cusp" && r.member == f; });
+                                   [&](const FoldCurveRow& r) { return r.fold == FoldKind::cusp && r.member == f; });
     ASSERT_NE(cusp, out.fold_curve.end()) << "f = " << f;
     cusps.push_back(cusp->parameter);
   }

@@ -43,7 +43,7 @@ std::map<std::string, std::vector<const FoldCurveRow*>> limit_rows(const StudyOu
   std::map<std::string, std::vector<const FoldCurveRow*>> rows;
   for (const FoldCurveRow& r : out.fold_curve)
     for (LimitKind kind : kFailureCriteria)
-      if (r.fold == limit_name(kind)) rows[r.fold].push_back(&r);
+      if (r.fold == FoldKind::limit && r.limit == kind) rows[fold_name(r)].push_back(&r);
   return rows;
 }
 
@@ -104,7 +104,7 @@ TEST(LimitCurve, NoPointLiesAboveTheDistressFold) {
   const StudyOutcome& out = shared().out;
   std::vector<std::pair<double, double>> folds;
   for (const FoldCurveRow& r : out.fold_curve)
-    if (r.fold == "distress") folds.emplace_back(r.parameter, r.state.load);
+    if (r.fold == FoldKind::distress) folds.emplace_back(r.parameter, r.state.load);
   ASSERT_GE(folds.size(), 2u) << "the washer has a distress fold at the high speeds";
   std::sort(folds.begin(), folds.end());
   for (const auto& [name, rows] : limit_rows(out))

@@ -118,8 +118,8 @@ TEST(StudyRunner, SlidingChoiceKeepsTheLowerTorque) {
   ASSERT_FALSE(out.solver_failed) << out.message;
   EXPECT_TRUE(out.sliding_column);
   ASSERT_EQ(out.distress.size(), 2u);
-  EXPECT_EQ(out.distress[0].sliding, "carrier_washer");
-  EXPECT_EQ(out.distress[1].sliding, "washer_gear");
+  EXPECT_EQ(out.distress[0].sliding, SlidingFilm::carrier_washer);
+  EXPECT_EQ(out.distress[1].sliding, SlidingFilm::washer_gear);
   ASSERT_EQ(out.sliding.size(), 6u);  // 3 loads × 2 configurations
   ASSERT_EQ(out.states.size(), 3u);
   const double pi = std::numbers::pi;
@@ -128,8 +128,8 @@ TEST(StudyRunner, SlidingChoiceKeepsTheLowerTorque) {
   for (std::size_t k = 0; k < 3; ++k) {
     const SlidingRow& a = out.sliding[2 * k];
     const SlidingRow& b = out.sliding[2 * k + 1];
-    EXPECT_EQ(a.solved.sliding, "carrier_washer");
-    EXPECT_EQ(b.solved.sliding, "washer_gear");
+    EXPECT_EQ(a.solved.sliding, SlidingFilm::carrier_washer);
+    EXPECT_EQ(b.solved.sliding, SlidingFilm::washer_gear);
     EXPECT_EQ(a.solved.state.load, b.solved.state.load);
     EXPECT_NEAR(a.film_area, film1, 1e-12 * film1);
     EXPECT_NEAR(b.film_area, film2, 1e-12 * film2);

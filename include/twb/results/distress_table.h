@@ -17,6 +17,7 @@
 #include <vector>
 #include "twb/model/operating_limits.h"
 #include "twb/results/result_table.h"
+#include "twb/scene/scene.h"
 
 namespace twb {
 
@@ -35,6 +36,18 @@ enum class DistressVerdict {
   solver_failure,   // a state the search needed could not be solved
 };
 
+// What sets W_fail (docs/physics.md section 8): thermo-viscous distress, or the first
+// failure criterion (kFailureCriteria) crossed on the branch.
+struct FailureCriterion {
+  bool distress = true;
+  LimitKind limit = LimitKind::oil_temperature;  // the criterion crossed, where not distress
+  static FailureCriterion thermo_viscous_distress() { return {}; }
+  static FailureCriterion crossing(LimitKind kind) { return {false, kind}; }
+  bool operator==(const FailureCriterion&) const = default;
+};
+// "distress", or the criterion's limit_name: distress.csv's criterion column.
+std::string criterion_name(const FailureCriterion& criterion);
+
 struct DistressRow {
   double speed = 0.0;                     // rad/s
   std::optional<double> parameter;        // the second axis' value (SI), if any
@@ -43,16 +56,16 @@ struct DistressRow {
   std::optional<double> bracket_high;     // lowest load whose step ran away, N
   std::optional<double> fold_load;        // turning point of the steady branch, N
   std::string method;                     // how W_d was decided (docs/model.md, "Distress on the bearing")
-  std::string sliding;                    // sliding_choice: "carrier_washer" or "washer_gear"
+  std::optional<SlidingFilm> sliding;     // sliding_choice: the configuration
   // study.error_estimate: richardson (docs/model.md): the fold on the mesh refined
   // by two, the extrapolated W_d and its error bar.
   std::optional<double> fine_fold_load;      // N
   std::optional<double> extrapolated_load;   // N
   std::optional<double> discretization_error;  // N
   // Where the bearing fails: W_fail, the least of W_d and the criteria's loads, and the
-  // criterion that sets it ("distress", or a failure criterion's limit_name).
+  // criterion that sets it (none without a failure load).
   std::optional<double> failure_load;  // N
-  std::string criterion;
+  std::optional<FailureCriterion> criterion;
   // Each failure criterion's first crossing on the branch (kFailureCriteria order), N;
   // empty where it is not crossed up to the branch's end or does not apply.
   std::array<std::optional<double>, std::size(kFailureCriteria)> criterion_loads;

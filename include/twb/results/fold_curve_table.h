@@ -14,13 +14,24 @@
 #include <vector>
 
 #include "twb/model/bearing_state.h"
+#include "twb/model/operating_limits.h"
 #include "twb/results/result_table.h"
 
 namespace twb {
 
+// Which curve a row lies on (the fold column, by fold_name).
+enum class FoldKind {
+  distress,  // the cool branch's fold: W_d
+  recovery,  // the hot branch turning back to the cool one
+  cusp,      // where the two merge and sudden distress ends
+  turn,      // the curve turns back in the parameter without a cusp
+  limit,     // a failure criterion's crossing continued in the parameter (FoldCurveRow::limit)
+};
+
 struct FoldCurveRow {
   double parameter = 0.0;  // SI
-  std::string fold;
+  FoldKind fold = FoldKind::distress;
+  LimitKind limit = LimitKind::oil_temperature;  // the criterion, on a limit curve
   BearingState state;  // at the fold; state.load is W_fold
   // A family of curves (study.family): this curve's value of the family parameter (SI).
   std::optional<double> member;
@@ -29,6 +40,9 @@ struct FoldCurveRow {
   // for cusps and turns, and where the refined fold was not found.
   std::optional<double> fine_load, extrapolated_load, discretization_error;
 };
+
+// "distress", "recovery", "cusp", "turn", or the criterion's limit_name: the fold column.
+std::string fold_name(const FoldCurveRow& row);
 
 // The table fold_curve.csv is written from (result_table.h).
 ResultTable fold_curve_table(const std::vector<FoldCurveRow>& rows, const std::string& parameter_column,

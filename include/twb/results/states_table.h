@@ -8,6 +8,7 @@
 #include "twb/model/bearing_state.h"
 #include "twb/model/film_fields.h"
 #include "twb/results/result_table.h"
+#include "twb/scene/scene.h"
 
 namespace twb {
 
@@ -27,7 +28,7 @@ struct SolvedState {
   // Which run of a study the state belongs to, when the study runs several: the value
   // of its parameter (SI) and the film that slides ("carrier_washer", "washer_gear").
   std::optional<double> parameter;
-  std::string sliding;
+  std::optional<SlidingFilm> sliding;  // sliding_choice: the configuration
   // Which steady branch a load sweep found the state on (states.csv's `branch`).
   Branch branch = Branch::none;
   // The discretization error of the reported quantities (a point study with

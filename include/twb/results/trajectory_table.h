@@ -10,6 +10,7 @@
 
 #include "twb/model/bearing_state.h"
 #include "twb/results/result_table.h"
+#include "twb/scene/scene.h"
 
 namespace twb {
 
@@ -17,7 +18,7 @@ struct TrajectorySample {
   double time = 0.0;  // s of pseudo-time since the step
   BearingState state;
   std::optional<double> parameter;  // as in SolvedState
-  std::string sliding;
+  std::optional<SlidingFilm> sliding;  // sliding_choice: the configuration
 };
 
 // The table trajectory.csv is written from (result_table.h).

@@ -1,0 +1,28 @@
+// KINSOL's linear solver: SparseLu on the system's pattern, which is fixed for the
+// system's life (SteadySystem::pattern()). SUNDIALS' own KLU module redoes the symbolic
+// analysis and a full pivoting factorization at the start of every KINSol call; here
+// the analysis is done once per solver, and every later Jacobian is refactored with the
+// pivot sequence of the last full factorization while that is safe
+// (SparseLu::refactor). The matrix KINSOL hands over is the CSR matrix of that pattern
+// (fill_sparse_matrix), in the pattern's order.
+#pragma once
+
+#include <sundials/sundials_linearsolver.h>
+
+#include "solver/sparse_lu.h"
+
+namespace twb {
+
+struct PatternKlu {
+  PatternKlu(const SparsePattern& pattern, SparseLu::Ordering ordering) : lu(pattern, ordering) {}
+  SparseLu lu;
+  int last_flag = SUNLS_SUCCESS;
+};
+
+// The solver's own factorization (shared with the pseudo-time steps).
+PatternKlu& pattern_klu(SUNLinearSolver s);
+// A SUNLinearSolver whose every operation catches everything (nothing may be thrown into
+// KINSOL); null where SUNDIALS cannot allocate one. Freed by SUNLinSolFree.
+SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern, SparseLu::Ordering ordering);
+
+}  // namespace twb

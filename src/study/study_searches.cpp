@@ -1,0 +1,255 @@
+#include "study/study_searches.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "distress_curve.h"
+#include "load_step_march.h"
+#include "parallel.h"
+#include "study/search_journal.h"
+#include "study/search_scheduler.h"
+#include "richardson.h"
+#include "state_error.h"
+#include "study_support.h"
+#include "twb/scene/scene_loader.h"
+#include "solver/sparse_lu.h"
+#include "study/steady_solver.h"
+#include "study/distress_search.h"
+#include "twb/error_family.h"
+#include "study/search_error_bars.h"
+
+namespace twb {
+
+std::string parameter_column(MapParameter p) {
+  switch (p) {
+    case MapParameter::friction_coefficient:
+      return "friction_coefficient";
+    case MapParameter::gear_tilt:
+      return "gear_tilt_rad";
+    case MapParameter::roughness:
+      return "roughness_Rq_m";
+    case MapParameter::none:
+      break;
+  }
+  return {};
+}
+
+Scene with_parameter(Scene scene, MapParameter p, double value) {
+  switch (p) {
+    case MapParameter::friction_coefficient:
+      scene.friction.coefficient = value;
+      break;
+    case MapParameter::gear_tilt:
+      scene.gear.tilt = value;
+      break;
+    case MapParameter::roughness:
+      set_roughness(scene, value);
+      break;
+    case MapParameter::none:
+      break;
+  }
+  return scene;
+}
+
+std::vector<Variant> parameter_variants(const Scene& scene, std::string& column) {
+  const Study& st = scene.study;
+  column = parameter_column(st.parameter);
+  if (st.parameter == MapParameter::none) return {Variant{}};
+  std::vector<Variant> out;
+  for (double value : st.parameter_values)
+    out.push_back({with_parameter(scene, st.parameter, value), value, {}, fmt::format(", {} = {:.6g}", column, value)});
+  return out;
+}
+
+std::vector<double> study_speeds(const BearingModel& model) {
+  const std::vector<double>& listed = model.scene().study.speeds;
+  return listed.empty() ? std::vector<double>{model.speed()} : listed;
+}
+
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// One search of run_searches: its own model (no state shared between threads), found
+// and tagged with its run.
+struct SearchTask {
+  const Variant* variant = nullptr;
+  std::size_t speed_index = 0;
+  double speed = 0.0;
+};
+struct SearchDone {
+  // What `take` reads the films of: the search's own model, or for a search found
+  // elsewhere its variant's (the films do not depend on the speed).
+  std::shared_ptr<const BearingModel> model;
+  DistressSearch found;
+  long klu_factorizations = 0;  // the whole task's, its error bar's search included
+};
+
+SearchDone search_one(const BearingModel& base, const SearchTask& task, const DistressSearchSettings& settings,
+                      const ProgressReport& progress) {
+  SearchDone done;
+  DistressSearch& found = done.found;
+  const Variant& variant = *task.variant;
+  const SparseLu::Counts before = SparseLu::thread_counts();  // this thread's, so this task's
+  try {
+    auto model = std::make_shared<BearingModel>(variant.scene ? *variant.scene : base.scene());
+    model->set_speed(task.speed);
+    done.model = model;
+    found = search_distress(*model, settings, progress);
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
+  } catch (const std::exception& e) {
+    found = DistressSearch{};
+    found.failed = true;
+    found.row.speed = task.speed;
+    found.row.verdict = DistressVerdict::solver_failure;
+    found.row.method = std::string("solver failure: ") + e.what();
+    found.message = found.row.method;
+  }
+  if (done.model) {
+    estimate_mesh_error(*done.model, settings, found, progress);
+    estimate_crossing_errors(*done.model, settings, found, progress);
+    estimate_state_errors(*done.model, found, progress);
+  }
+  done.klu_factorizations = SparseLu::thread_counts().factored_since(before) + found.counts.ida_factorizations;
+  found.row.parameter = variant.parameter;
+  found.row.sliding = variant.sliding;
+  for (std::size_t i = 0; i < found.states.size(); ++i) {
+    SolvedState& state = found.states[i];
+    state.parameter = variant.parameter;
+    state.sliding = variant.sliding;
+    state.branch = i < found.cool_states ? Branch::cool : Branch::hot;
+  }
+  for (TrajectorySample& sample : found.runaway) {
+    sample.parameter = variant.parameter;
+    sample.sliding = variant.sliding;
+  }
+  return done;
+}
+
+}  // namespace
+
+void run_searches(BearingModel& base, const std::vector<Variant>& variants, const DistressSearchSettings& settings,
+                  const ProgressReport& progress, const Running& how, RunTimings& timings,
+                  std::vector<std::string>& diagnostics, const SearchResult& take) {
+  const std::vector<double> speeds = study_speeds(base);
+  std::vector<SearchTask> tasks;
+  for (const Variant& variant : variants)
+    for (std::size_t k = 0; k < speeds.size(); ++k) tasks.push_back({&variant, k, speeds[k]});
+  const std::size_t total = tasks.size();
+  std::mutex lock;  // guards everything below it and the progress stream
+  const ProgressReport say = one_line_at_a_time(progress, lock);
+  std::map<std::size_t, SearchDone> ready;
+  std::size_t next_to_take = 0, done = 0;
+  const auto t0 = Clock::now();
+  const SearchJournal* journal = how.journal;
+
+  // Hands search i to `take` once all before it are taken: the study's order.
+  auto deliver = [&](std::size_t i, SearchDone result) {
+    const std::lock_guard<std::mutex> hold(lock);
+    ready.emplace(i, std::move(result));
+    ++done;
+    for (auto it = ready.find(next_to_take); it != ready.end(); it = ready.find(next_to_take)) {
+      const SearchTask& t = tasks[it->first];
+      DistressSearch& found = it->second.found;
+      for (const std::string& d : found.diagnostics)
+        diagnostics.push_back(fmt::format("{:.6g} rad/s{}: {}", t.speed, t.variant->label, d));
+      add_search_work(timings, found.counts);
+      timings.klu_factorizations += it->second.klu_factorizations;
+      if (it->second.model) take(*t.variant, t.speed_index, *it->second.model, found);
+      else take(*t.variant, t.speed_index, base, found);
+      if (progress) {
+        // Wall time per finished search (the threads' searches finish in parallel).
+        const double per_search = elapsed_ms(t0) / double(done);
+        progress(fmt::format("[{}/{}] done: W_d = {} ({}); {} stability tests, {} transients ({} IDA steps), {} "
+                             "KLU factorizations; about {:.0f} s left",
+                             it->first + 1, total,
+                             found.row.distress_load ? fmt::format("{:.2f} N", *found.row.distress_load) : "none",
+                             found.row.method, found.counts.stability_tests, found.counts.transients,
+                             found.counts.ida_steps, found.counts.klu_factorizations,
+                             per_search * double(total - done) / 1000.0));
+      }
+      ready.erase(it);
+      ++next_to_take;
+    }
+  };
+  // A search found elsewhere (the journal, another process) is not run again; the takers
+  // read the films of its variant's model, built once per variant (about 10 ms each on
+  // 9 x 66: not once per search, which on rank 0 of an MPI job would delay every
+  // answer). None when the model cannot be built.
+  std::vector<std::shared_ptr<const BearingModel>> variant_models(variants.size());
+  std::mutex variant_models_lock;
+  auto from_entry = [&](std::size_t i, JournaledSearch&& kept) -> std::optional<SearchDone> {
+    const Variant& variant = *tasks[i].variant;
+    SearchDone result;
+    try {
+      const std::lock_guard<std::mutex> hold(variant_models_lock);
+      std::shared_ptr<const BearingModel>& model = variant_models[std::size_t(&variant - variants.data())];
+      if (!model) model = std::make_shared<const BearingModel>(variant.scene ? *variant.scene : base.scene());
+      result.model = model;
+    } catch (const InternalError&) {
+      throw;  // a bug: no fallback may hide it
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+    result.found = std::move(kept.found);
+    result.klu_factorizations = kept.klu_factorizations;
+    return result;
+  };
+
+  // Found before the run was stopped: read, not run. A search whose model cannot be built
+  // runs again, which reports why.
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < total; ++i) {
+    std::optional<JournaledSearch> kept = journal ? journal->read(i) : std::nullopt;
+    std::optional<SearchDone> result = kept ? from_entry(i, std::move(*kept)) : std::nullopt;
+    if (!result) {
+      todo.push_back(i);
+      continue;
+    }
+    if (say)
+      say(fmt::format("[{}/{}] {:.6g} rad/s{}: from the journal", i + 1, total, tasks[i].speed, tasks[i].variant->label));
+    deliver(i, std::move(*result));
+  }
+
+  SearchScheduler::Work work;
+  auto run = [&](std::size_t i) {
+    const SearchTask& task = tasks[i];
+    if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
+    return search_one(base, task, settings, say);
+  };
+  work.run_here = [&](std::size_t i) {
+    if (how.stop && how.stop->load()) return;  // the study ends with the searches taken so far
+    SearchDone result = run(i);
+    // A search that failed is not kept: a resume tries it again (perhaps with fewer
+    // threads, or after the user freed memory).
+    if (journal && !result.found.failed) journal->write(i, result.found, result.klu_factorizations);
+    deliver(i, std::move(result));
+  };
+  work.run_for_another = [&](std::size_t i) {
+    const SearchDone result = run(i);
+    return journal_entry(result.found, result.klu_factorizations);
+  };
+  work.arrived = [&](std::size_t i, const std::string& entry) {
+    std::optional<JournaledSearch> kept = read_journal_entry(entry);
+    if (!kept) throw std::runtime_error(fmt::format("search {} came back damaged from another process", i + 1));
+    if (journal && !kept->found.failed) journal->write_entry(i, entry);
+    std::optional<SearchDone> result = from_entry(i, std::move(*kept));
+    if (!result) throw std::runtime_error(fmt::format("search {}: its model cannot be built here", i + 1));
+    deliver(i, std::move(*result));
+  };
+  ThreadScheduler here;
+  (how.scheduler ? *how.scheduler : here).run(todo, how.threads, work);
+}
+
+}  // namespace twb
