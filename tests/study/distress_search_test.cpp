@@ -26,12 +26,16 @@ Scene coarse_scene(double speed) {
 struct SharedSearch {
   BearingModel model{coarse_scene(545.0)};
   DistressSearch found;
+  double load_given = 0.0, load_after = 0.0;  // the model's load before and after the search
   SharedSearch() {
     DistressSearchSettings settings;
     settings.load_start = 100.0;
     settings.load_end = 600.0;
     settings.bracket_width = 0.002;
+    model.set_load(250.0);  // not a load the search visits last
+    load_given = model.load();
     found = search_distress(model, settings, {});
+    load_after = model.load();
   }
 };
 SharedSearch& shared() {
@@ -48,6 +52,14 @@ class BearingDistress : public ::testing::Test {
   BearingModel* model_ = nullptr;
   DistressSearch* found_ = nullptr;
 };
+
+// The search moves the load through the branch, the fold and the hot state it marches
+// to; its caller's model comes back at the load it was given (a ParameterScope), not
+// wherever the search ended.
+TEST_F(BearingDistress, TheModelComesBackAtTheLoadItWasGiven) {
+  ASSERT_TRUE(found_->row.distress_load) << found_->row.method;
+  EXPECT_EQ(shared().load_after, shared().load_given);
+}
 
 // The bound: W_d from transients within 1 % of the fold. At a saddle-node the
 // runaway threshold is the fold itself, so the only differences are the bracket's width
