@@ -149,7 +149,7 @@ INSTANTIATE_TEST_SUITE_P(Edges, Stability, ::testing::ValuesIn(kCases),
                          [](const ::testing::TestParamInfo<Case>& i) { return i.param.name; });
 
 // The finest mesh the work-precision study uses, as a point on the hot branch (500 N:
-// 9 s alone on the development machine; the sweep would repeat it three times).
+// 57-64 s alone on a CI-like machine; the sweep would repeat it three times).
 TEST(StabilityFineMesh, PointOn65x528) {
   StudyOutcome o;
   ASSERT_NO_THROW(o = run({"fine_mesh", {"mesh.radial_nodes=65", "mesh.circumferential_nodes=528"}},
