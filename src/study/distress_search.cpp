@@ -14,7 +14,6 @@
 #include "solver/natural_continuation.h"
 #include "solver/runaway.h"
 #include "study/steady_solver.h"
-#include "system/parameter_scope.h"
 
 namespace twb {
 

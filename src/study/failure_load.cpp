@@ -10,7 +10,6 @@
 #include <boost/math/tools/toms748_solve.hpp>
 #include <fmt/format.h>
 
-#include "system/parameter_scope.h"
 
 #include "model/limit_thresholds.h"
 #include "solver/kinsol_newton.h"

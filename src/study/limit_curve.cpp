@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "system/parameter_scope.h"
 
 #include "failure_load.h"
 #include "solver/kinsol_newton.h"

@@ -10,15 +10,10 @@
 #include "solver/natural_continuation.h"
 #include "solver/paper_scheme.h"
 #include "solver/sparse_lu.h"
+#include "study/study_support.h"
 #include "twb/error_family.h"
 
 namespace twb {
-
-namespace {
-double elapsed_ms(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-}  // namespace
 
 SteadySolver::SteadySolver(BearingModel& model, NewtonSettings settings, SparseLu::Ordering ordering)
     : model_(model), settings_(settings), newton_(model, ordering), pseudo_transient_(model, settings, newton_) {}
@@ -172,12 +167,8 @@ SteadyReport SteadySolver::solve_by_deformation_homotopy(std::vector<double>& u)
   // The model's own shapes (whole, unless a caller scaled them) are where the walk ends,
   // and what the model is left with however this ends, a solver's exception included.
   const double own = model_.deformation_scale();
-  struct OwnShapesAfter {
-    BearingModel& model;
-    double scale;
-    ~OwnShapesAfter() { model.set_deformation_scale(scale); }
-  } restore{model_, own};
-  model_.set_deformation_scale(0.0);
+  DeformationScale scale(model_);
+  const ParameterScope own_shapes_after(scale, 0.0);
   SteadyReport rep = settle(u, false);
   if (rep.converged) {
     // Natural continuation in the scale, with its jump test: Newton from the last state
@@ -185,7 +176,6 @@ SteadyReport SteadySolver::solve_by_deformation_homotopy(std::vector<double>& u)
     // on 5×24 at 545 rad/s, 150 N, constrained faces, a step of the scale from 0.625 to 1
     // landed on one 1 σ thinner and 3.6 K hotter than the branch's), and a corrected
     // state far from the tangent's prediction is such a jump: the step is halved.
-    DeformationScale scale(model_);
     NaturalSettings walk;
     walk.newton = settings_;
     walk.newton.max_iterations = std::min(settings_.max_iterations, 10);

@@ -81,4 +81,21 @@ class NewtonForm {
   bool kept_;
 };
 
+// The system's parameter (the bearing's load) for the scope: set to `value` if given,
+// and back to the value it had when the scope ends, whatever the solvers inside set it
+// to. A study takes one at its entry, so that its caller's model is the model it gave.
+class ParameterScope {
+ public:
+  explicit ParameterScope(SteadySystem& system) : system_(system), entered_(system.parameter()) {}
+  ParameterScope(SteadySystem& system, double value) : ParameterScope(system) { system.set_parameter(value); }
+  // The value was the system's own when the scope began, so setting it back cannot fail.
+  ~ParameterScope() { system_.set_parameter(entered_); }
+  ParameterScope(const ParameterScope&) = delete;
+  ParameterScope& operator=(const ParameterScope&) = delete;
+
+ private:
+  SteadySystem& system_;
+  double entered_;
+};
+
 }  // namespace twb
