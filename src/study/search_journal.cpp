@@ -95,20 +95,12 @@ class Out {
     (*this)(std::uint64_t(s.size()));
     bytes_.append(s);
   }
-  void operator()(const std::optional<double>& v) {
+  template <class T>
+  void operator()(const std::optional<T>& v) {
     (*this)(v.has_value());
     if (v) (*this)(*v);
   }
-  template <class E>
-    requires std::is_enum_v<E>
-  void operator()(const std::optional<E>& v) {
-    (*this)(v.has_value());
-    if (v) (*this)(*v);
-  }
-  void operator()(const std::optional<FailureCriterion>& c) {
-    (*this)(c.has_value());
-    if (c) (*this)(c->distress), (*this)(c->limit);
-  }
+  void operator()(const FailureCriterion& c) { (*this)(c.distress), (*this)(c.limit); }
   template <class T>
   void operator()(const std::vector<T>& v) {
     (*this)(std::uint64_t(v.size()));
@@ -152,26 +144,14 @@ class In {
     s.assign(bytes_.data() + at_, n);
     at_ += n;
   }
-  void operator()(std::optional<double>& v) {
+  template <class T>
+  void operator()(std::optional<T>& v) {
     bool has = false;
     (*this)(has);
     v.reset();
     if (has) (*this)(v.emplace());
   }
-  template <class E>
-    requires std::is_enum_v<E>
-  void operator()(std::optional<E>& v) {
-    bool has = false;
-    (*this)(has);
-    v.reset();
-    if (has) (*this)(v.emplace());
-  }
-  void operator()(std::optional<FailureCriterion>& c) {
-    bool has = false;
-    (*this)(has);
-    c.reset();
-    if (has) (*this)(c.emplace().distress), (*this)(c->limit);
-  }
+  void operator()(FailureCriterion& c) { (*this)(c.distress), (*this)(c.limit); }
   template <class T>
   void operator()(std::vector<T>& v) {
     std::uint64_t n = 0;
