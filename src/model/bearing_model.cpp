@@ -6,10 +6,8 @@
 #include <stdexcept>
 
 #include "model/assembly_totals.h"
-#include "model/reynolds_operator.h"
 #include "physics/asperity_contact.h"
 #include "physics/contact_table_cache.h"
-#include "physics/thermal_deformation.h"
 
 namespace twb {
 

@@ -14,7 +14,7 @@ class DeformationEffect final : public EffectAssembler {
   void add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const override;
 
  private:
-  ShapeUnknowns shape_;
+  const BearingModel& model_;
 };
 
 }  // namespace twb

@@ -21,19 +21,19 @@ namespace twb {
 // thickness flux), so the curvature couples the films through one column, not a dense
 // block. With the empirical friction law the sliding film's total contact force, which
 // every δ moves, is one unknown too (F̂c = F_c/contact_force_ref), for the same reason.
-DeformationEffect::DeformationEffect(ModelSetup& setup) {
+DeformationEffect::DeformationEffect(ModelSetup& setup) : model_(setup.model) {
   const Scene& scene = setup.model.scene();
   if (!scene.effects.thermal) throw std::invalid_argument("thermal_deformation needs the thermal effect");
-  shape_.dishing = setup.layout.add("washer dishing curvature", BlockEffect::thermal_deformation, 1);
+  ShapeUnknowns& shape = setup.shape;
+  shape.dishing = setup.layout.add("washer dishing curvature", BlockEffect::thermal_deformation, 1);
   // Every δ moves the sliding film's contact force, which sets f in every heat row.
   if (scene.effects.asperity_contact && scene.friction.law == FrictionLaw::empirical)
-    shape_.contact_force = setup.layout.add("sliding film contact force", BlockEffect::thermal_deformation, 1);
+    shape.contact_force = setup.layout.add("sliding film contact force", BlockEffect::thermal_deformation, 1);
   // κ̂ = 1 lifts the washer's rim by σ_ref; F̂c = 1 is the scene's load (fixed, unlike
   // the rigid rows' F_ext, so that the load enters no other row).
-  shape_.curvature_ref = setup.model.clearance_scale() /
+  shape.curvature_ref = setup.model.clearance_scale() /
                          dishing_shape(scene.washer.outer_radius, scene.washer.inner_radius, scene.washer.outer_radius);
-  shape_.contact_force_ref = scene.operating.load;
-  setup.shape = shape_;
+  shape.contact_force_ref = scene.operating.load;
 }
 
 // Rows are assembled as (what the state implies − the unknown) and negated with the
@@ -41,11 +41,12 @@ DeformationEffect::DeformationEffect(ModelSetup& setup) {
 // What the state implies is added by the heat balance (the flux crossing the washer)
 // and the film loads (the contact force).
 void DeformationEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTotals&) const {
-  a.add_residual(shape_.dishing, -u[std::size_t(shape_.dishing)]);
-  a.add_derivative(shape_.dishing, shape_.dishing, -1.0);
-  if (shape_.contact_force < 0) return;
-  a.add_residual(shape_.contact_force, -u[std::size_t(shape_.contact_force)]);
-  a.add_derivative(shape_.contact_force, shape_.contact_force, -1.0);
+  const ShapeUnknowns& shape = model_.shape_unknowns();
+  a.add_residual(shape.dishing, -u[std::size_t(shape.dishing)]);
+  a.add_derivative(shape.dishing, shape.dishing, -1.0);
+  if (shape.contact_force < 0) return;
+  a.add_residual(shape.contact_force, -u[std::size_t(shape.contact_force)]);
+  a.add_derivative(shape.contact_force, shape.contact_force, -1.0);
 }
 
 void BearingModel::build_shape_forms() {

@@ -16,7 +16,6 @@
 #include <fmt/format.h>
 
 #include "fold_approach.h"
-#include "load_step_march.h"
 #include "study/distress_phases.h"
 #include "study_support.h"
 #include "solver/linear_stability.h"
