@@ -13,6 +13,11 @@ namespace twb::cells {
 
 constexpr double kelvin_offset = 273.15;
 
+// The sliding column's cell: the configuration's scene name, empty for none.
+inline std::string film_name(const std::optional<SlidingFilm>& film) {
+  return film ? std::string(scene_name(*film)) : std::string();
+}
+
 // The columns that tell a study's runs apart: the parameter's value (e.g.
 // friction_coefficient) and the sliding film, each only when the study has it.
 struct RunColumns {
@@ -24,7 +29,7 @@ struct RunColumns {
   }
   void put(ResultTable& table, const std::optional<double>& value, const std::optional<SlidingFilm>& film) const {
     if (parameter) table.put_number(*parameter, value);
-    if (sliding) table.put_text(*sliding, film ? std::string(scene_name(*film)) : std::string());
+    if (sliding) table.put_text(*sliding, film_name(film));
   }
 };
 

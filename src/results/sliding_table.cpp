@@ -15,7 +15,7 @@ ResultTable sliding_table(const std::vector<SlidingRow>& rows) {
     const BearingState& s = r.solved.state;
     t.put_number(speed, s.speed);
     t.put_number(load, s.load);
-    t.put_text(sliding, r.solved.sliding ? std::string(scene_name(*r.solved.sliding)) : std::string());
+    t.put_text(sliding, cells::film_name(r.solved.sliding));
     t.put_number(area, r.film_area);
     t.put_number(fluid_force, s.fluid_force);
     t.put_number(fluid, s.fluid_share);
