@@ -27,6 +27,7 @@
 #include "twb/results/states_table.h"
 #include "study/search_journal.h"
 #include "study/search_scheduler.h"
+#include "twb/study/result_columns.h"
 #include "twb/error_family.h"
 #include "twb/scene/input_error.h"
 #include "twb/scene/scene_loader.h"
@@ -294,6 +295,9 @@ int main(int argc, char** argv) {
   merge_cmd->add_flag("-v,--verbose", merge_verbose, "also the solvers' own words (as twb run --verbose)");
   merge_cmd->add_flag("--full-precision", merge_full_precision, "17 significant digits (as twb run --full-precision)");
 
+  auto* columns_cmd = app.add_subcommand(
+      "columns", "print the columns of the results directory's CSV files as JSON (python/twb/plot/columns.json)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -310,6 +314,10 @@ int main(int argc, char** argv) {
   };
   try {
     if (*check_cmd) return check(scene_path, overrides);
+    if (*columns_cmd) {
+      if (job.rank() == 0) std::cout << twb::result_columns_json();
+      return 0;
+    }
     if (*merge_cmd) return merge(slice_dirs, merge_out, merge_quiet, merge_verbose, merge_full_precision);
     return run(request, job);
   } catch (const twb::cli::ResultsDirectoryError& e) {

@@ -10,6 +10,17 @@ std::string criterion_name(const FailureCriterion& criterion) {
   return criterion.distress ? "distress" : std::string(limit_name(criterion.limit));
 }
 
+namespace {
+
+// A criterion's own load column: W_<criterion>{suffix}_N, the body's colon an underscore.
+std::string criterion_column(LimitKind kind, const char* suffix) {
+  std::string name(limit_name(kind));
+  std::replace(name.begin(), name.end(), ':', '_');
+  return "W_" + name + suffix + "_N";
+}
+
+}  // namespace
+
 ResultTable distress_table(const std::vector<DistressRow>& rows, const std::string& parameter_column,
                            bool sliding_column) {
   ResultTable t;
@@ -21,18 +32,9 @@ ResultTable distress_table(const std::vector<DistressRow>& rows, const std::stri
   const auto w_d = t.number("W_d_N"), low = t.number("bracket_low_N"), high = t.number("bracket_high_N"),
              fold = t.number("fold_N"), fine = t.number("W_d_fine_N"), extrapolated = t.number("W_d_extrapolated_N"),
              error = t.number("W_d_error_N");
-  std::vector<ResultTable::Column> criteria;
-  for (LimitKind kind : kFailureCriteria) {
-    std::string name(limit_name(kind));
-    std::replace(name.begin(), name.end(), ':', '_');
-    criteria.push_back(t.number("W_" + name + "_N"));
-  }
-  std::vector<ResultTable::Column> criterion_errors;
-  for (LimitKind kind : kFailureCriteria) {
-    std::string name(limit_name(kind));
-    std::replace(name.begin(), name.end(), ':', '_');
-    criterion_errors.push_back(t.number("W_" + name + "_error_N"));
-  }
+  std::vector<ResultTable::Column> criteria, criterion_errors;
+  for (LimitKind kind : kFailureCriteria) criteria.push_back(t.number(criterion_column(kind, "")));
+  for (LimitKind kind : kFailureCriteria) criterion_errors.push_back(t.number(criterion_column(kind, "_error")));
   const auto failure = t.text("failure"), method = t.text("method");
   for (const DistressRow& r : rows) {
     t.put_number(speed, r.speed);

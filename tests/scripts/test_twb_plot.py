@@ -495,6 +495,26 @@ class TwbPlotTest(unittest.TestCase):
                 with open(os.path.join(other, name), "rb") as f:
                     self.assertEqual(f.read(), expected, os.path.join(other, name))
 
+    def test_the_plotting_names_only_columns_twb_writes(self):
+        """tables.py takes its lists from columns.json (made by `twb columns`, kept equal to
+        it by the test python_columns_are_twb_columns): a column name twb does not write
+        fails on import, and a distress.csv with such a column is refused with its line."""
+        with self.assertRaises(ImportError) as caught:
+            tp.tables._written("states", ("load_N", "T_hottest_C"))
+        self.assertIn("T_hottest_C", str(caught.exception))
+        with open(os.path.join(PYTHON_DIR, "twb", "plot", "columns.json"), encoding="utf-8") as f:
+            states = json.load(f)["tables"]["states"]
+        self.assertLessEqual(set(tp.tables.STATE_COLUMNS), set(states["columns"]) - set(states["optional"]))
+        self.assertEqual(set(tp.tables.STATE_ERROR_COLUMNS) | {"<parameter>", "sliding"}, set(states["optional"]))
+        d = os.path.join(self.tmp, "unknown_column")
+        os.makedirs(d)
+        write(os.path.join(d, "distress.csv"),
+              ["speed_rad_s,W_fail_N,criterion,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_wear_N,failure,method",
+               "545,188.4,distress,188.4,188.2,188.6,188.4,3,fails,runaway"])
+        with self.assertRaises(tp.InputError) as caught:
+            tp.read_distress(os.path.join(d, "distress.csv"))
+        self.assertIn("line 1", str(caught.exception))
+
     def test_malformed_input_exits_2_naming_the_file(self):
         cases = {
             "states_bad_number": ("states.csv", "line 3", lambda d: self.replace_line(

@@ -7,39 +7,75 @@ drawing a wrong figure from it.
 """
 
 import csv
+import json
 import math
 import os
 from dataclasses import dataclass
 
 import numpy as np
 
-STATE_COLUMNS = (
+def _definition():
+    """columns.json: the columns of every table as twb writes them, made by `twb columns`
+    from the C++ functions that write the tables (a test keeps the two the same)."""
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "columns.json"), encoding="utf-8") as f:
+        return json.load(f)
+
+
+_DEFINITION = _definition()
+_TABLES = _DEFINITION["tables"]
+# Where a study's own columns go: its second parameter's value and its sliding film.
+_RUN_PLACES = ("<parameter>", "sliding")
+
+
+def _written(table, names):
+    """names, each a column twb writes in the table: the plotting never names a column of
+    its own making (a mistyped or retired name fails on import, in the tests)."""
+    unknown = [n for n in names if n not in _TABLES[table]["columns"]]
+    if unknown:
+        raise ImportError(f"twb.plot names column(s) {', '.join(unknown)} that twb does not write "
+                          f"in {table}.csv (columns.json)")
+    return tuple(names)
+
+
+def _optional(table):
+    """The columns only some studies write, but for the run's own (parameter, sliding)."""
+    return tuple(c for c in _TABLES[table]["optional"] if c not in _RUN_PLACES + ("<family>",))
+
+
+# The states' columns the figures draw (a file may have more).
+STATE_COLUMNS = _written("states", (
     "load_N", "speed_rad_s", "T_mean_C", "T_max_C", "hmin_over_sigma", "gamma_x_ratio",
     "gamma_y_ratio", "fluid_share", "contact_share", "torque_Nm", "f_eff", "stribeck",
-    "converged", "iterations", "residual", "energy_error", "wall_ms")
+    "converged", "iterations", "residual", "energy_error", "wall_ms"))
 # A state's error bar (study.error_estimate: richardson on a point, every_state on a
-# sweep): the mesh-converged value and its bar, after the state's own columns; empty
-# cells in a state without one.
-STATE_ERROR_COLUMNS = tuple(f"{q}_{part}" for q in ("T_mean_C", "T_max_C", "hmin_over_sigma", "torque_Nm", "f_eff")
-                            for part in ("extrapolated", "error"))
-TRAJECTORY_COLUMNS = (
-    "t_s", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff", "load_N")
-DISTRESS_TAIL = ("W_d_N", "bracket_low_N", "bracket_high_N", "fold_N", "method")
+# sweep): the mesh-converged value and its bar; empty cells in a state without one.
+STATE_ERROR_COLUMNS = _optional("states")
+TRAJECTORY_COLUMNS = _written("trajectory", (
+    "t_s", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff", "load_N"))
+# distress.csv before every failure criterion was located (no W_fail_N): its columns
+# after the run's, read by position; the method last, free text that twb wrote unquoted.
+DISTRESS_TAIL = _written("distress", ("W_d_N", "bracket_low_N", "bracket_high_N", "fold_N", "method"))
 # Written since W_d has an error bar (study.error_estimate: richardson), before the method.
-DISTRESS_ERROR_COLUMNS = ("W_d_fine_N", "W_d_extrapolated_N", "W_d_error_N")
-SLIDING_COLUMNS = (
-    "speed_rad_s", "load_N", "sliding", "film_area_m2", "fluid_force_N", "fluid_share",
-    "contact_share", "torque_Nm", "f_eff", "hmin_over_sigma", "T_mean_C", "chosen")
+DISTRESS_ERROR_COLUMNS = _written("distress", ("W_d_fine_N", "W_d_extrapolated_N", "W_d_error_N"))
+SLIDING_COLUMNS = tuple(_TABLES["sliding"]["columns"])
 # The columns twb adds after the speed when a study runs several configurations: the
 # value of its second parameter, and the film that slides.
-PARAMETER_COLUMNS = ("friction_coefficient", "gear_tilt_rad", "roughness_Rq_m")
+PARAMETER_COLUMNS = tuple(_DEFINITION["run_parameters"])
 SLIDING_LABELS = {
     "carrier_washer": "film 1 slides (washer stuck to the gear)",
     "washer_gear": "film 2 slides (washer stuck to the carrier)",
 }
-FIELDS_COLUMNS = (
-    "film", "sliding", "r_m", "theta_rad", "h_m", "p_Pa", "p_contact_Pa", "T_film_C",
-    "T_surfaces_C", "viscosity_Pa_s")
+FIELDS_COLUMNS = tuple(_TABLES["fields"]["columns"])
+
+
+def _labels_every(what, labels, names):
+    """A figure's labels for a text column's values: one for each value twb writes."""
+    if set(labels) != set(names):
+        raise ImportError(f"twb.plot labels {what} {sorted(labels)}, twb writes {sorted(names)} (columns.json)")
+    return labels
+
+
+_labels_every("the sliding films", SLIDING_LABELS, _DEFINITION["sliding_films"])
 
 
 class InputError(Exception):
@@ -149,24 +185,25 @@ def read_states(path):
 
 
 def read_trajectory(path):
-    # speed_rad_s is optional: twb wrote it only from the multi-speed load sweep on.
+    # A file may lack the columns written only since (the speed, the run's): read where present.
     return _read_table(path, TRAJECTORY_COLUMNS, "trajectory.csv", optional=("speed_rad_s",))
 
 
 # fold_curve.csv (study type distress_curve): the curve's parameter first, then these.
-FOLD_CURVE_PARAMETERS = {
+FOLD_CURVE_PARAMETERS = _labels_every("the curve parameters", {
     "speed_rad_s": r"speed $\omega$ (rad/s)", "friction_coefficient": "dry friction coefficient",
     "gear_tilt_rad": "gear tilt (rad)", "ambient_C": "ambient temperature (°C)",
-    "viscosity_scale": "oil viscosity / the scene's", "roughness_Rq_m": "roughness Rq (m)"}
-FOLD_CURVE_TAIL = ("W_fold_N", "fold", "T_mean_C", "T_max_C", "hmin_over_sigma", "contact_share", "f_eff")
+    "viscosity_scale": "oil viscosity / the scene's", "roughness_Rq_m": "roughness Rq (m)"},
+    _DEFINITION["curve_parameters"])
 # W_d's error bar along the curve (study.error_estimate: richardson): after the tail in
 # files written since it exists, empty cells where a fold has none.
-FOLD_CURVE_ERROR = ("W_fold_fine_N", "W_fold_extrapolated_N", "W_fold_error_N")
+FOLD_CURVE_ERROR = _written("fold_curve", ("W_fold_fine_N", "W_fold_extrapolated_N", "W_fold_error_N"))
+_CURVE = _TABLES["fold_curve"]["columns"]
+FOLD_CURVE_TAIL = tuple(c for c in _CURVE[_CURVE.index("<parameter>") + 1:] if c not in FOLD_CURVE_ERROR)
 # The failure criteria whose crossing a distress curve continues beside its fold (the row's
 # load is where the criterion is crossed on the cool branch).
-LIMIT_KINDS = ("oil_temperature", "flash_temperature", "material_temperature:carrier",
-               "material_temperature:washer", "material_temperature:gear", "film_ratio")
-FOLD_KINDS = ("distress", "recovery", "cusp", "turn") + LIMIT_KINDS
+LIMIT_KINDS = tuple(c for c in _DEFINITION["failure_criteria"] if c != "distress")
+FOLD_KINDS = tuple(_DEFINITION["fold_kinds"])
 
 
 def read_fold_curve(path):
@@ -238,7 +275,7 @@ class DistressRow:
 
 # Written since every failure criterion is located (W_fail_N after the run's columns,
 # failure before the method): read by name.
-FAILURE_COLUMNS = ("W_fail_N", "criterion")
+FAILURE_COLUMNS = _written("distress", ("W_fail_N", "criterion"))
 
 
 def _read_distress_by_name(path, records, line, header):
@@ -247,8 +284,10 @@ def _read_distress_by_name(path, records, line, header):
     sliding = bool(middle) and middle[-1] == "sliding"
     if sliding:
         middle = middle[:-1]
+    written = set(_TABLES["distress"]["columns"]) | set(PARAMETER_COLUMNS)
     if (len(middle) > 1 or header[0] != "speed_rad_s" or tuple(header[-2:]) != ("failure", "method")
-            or any(c not in header for c in DISTRESS_TAIL + FAILURE_COLUMNS)):
+            or any(c not in header for c in DISTRESS_TAIL + FAILURE_COLUMNS)
+            or any(c not in written for c in header)):
         raise InputError(f"{path}: line {line}: expected the header speed_rad_s[,<parameter>][,sliding],"
                          f"W_fail_N,criterion,W_d_N,...,failure,method, got {','.join(header)}")
     column = {c: k for k, c in enumerate(header)}
