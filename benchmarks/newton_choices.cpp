@@ -93,7 +93,7 @@ void BM_SweepStart(benchmark::State& state) {
       settings.initial_step = settings.max_step = (last - load) / steps;
       model.set_load(load);
       std::vector<double> u = base;
-      const twb::NaturalReport rep = twb::continue_in_parameter(model, u, last, settings);
+      const twb::NaturalReport rep = twb::continue_in_parameter(model, u, model.parameter(), last, settings);
       if (!rep.reached_target) throw std::runtime_error("the sweep stopped: " + rep.message);
       iterations += rep.corrector_iterations;
       rejected += rep.rejected;

@@ -194,7 +194,7 @@ void BM_LoadSweepStates(benchmark::State& state) {
   for (auto _ : state) {
     model.set_load(load);
     std::vector<double> u = base;
-    const twb::NaturalReport rep = twb::continue_in_parameter(model, u, (1.0 + 0.02 * steps) * load, settings);
+    const twb::NaturalReport rep = twb::continue_in_parameter(model, u, model.parameter(), (1.0 + 0.02 * steps) * load, settings);
     if (!rep.reached_target || rep.accepted != steps)
       throw std::runtime_error("the sweep did not take its ten steps: " + rep.message);
     corrections += rep.corrector_iterations;

@@ -11,8 +11,9 @@
 
 namespace twb {
 
-ArclengthReport continue_by_arclength(SteadySystem& system, std::span<const double> u0, const ArclengthSettings& s,
-                                      const BranchCallback& on_point) {
+ArclengthReport continue_by_arclength(SteadySystem& system, std::span<const double> u0, double lambda0,
+                                      const ArclengthSettings& s, const BranchCallback& on_point) {
+  const ParameterScope at_start(system, lambda0);
   ArclengthReport rep;
   const auto n = std::size_t(system.size());
   ArclengthSystem arc(system, ContinuationMetric::of(system, s.parameter_scale, s.unknown_weights));
@@ -97,6 +98,7 @@ ArclengthReport continue_by_arclength(SteadySystem& system, std::span<const doub
     rep.lambda = arc.lambda_of(x);
     rep.u.assign(x.begin(), x.begin() + std::ptrdiff_t(n));
     control.accept(iterations);
+    system.set_parameter(rep.lambda);  // the callback's contract (branch_point.h)
     if (on_point && !on_point({rep.accepted, rep.u, rep.lambda, rep.arclength, t, iterations})) {
       rep.stop = ArclengthReport::Stop::caller;
       rep.message = fmt::format("stopped by the caller at λ = {:.10g}", rep.lambda);
@@ -108,7 +110,6 @@ ArclengthReport continue_by_arclength(SteadySystem& system, std::span<const doub
       break;
     }
   }
-  system.set_parameter(rep.lambda);
   return rep;
 }
 

@@ -58,9 +58,8 @@ struct ArclengthReport {
   std::vector<FoldPoint> folds;   // in the order the branch passed them
 };
 
-// From the steady state u0 at the system's current λ. Leaves the system's parameter at
-// the last accepted λ.
-ArclengthReport continue_by_arclength(SteadySystem& system, std::span<const double> u0,
+// From the steady state u0 at λ = lambda0. The system's parameter is given back as it was.
+ArclengthReport continue_by_arclength(SteadySystem& system, std::span<const double> u0, double lambda0,
                                       const ArclengthSettings& settings, const BranchCallback& on_point = {});
 
 }  // namespace twb

@@ -21,8 +21,9 @@ struct BranchPoint {
   const SparseLu* factors = nullptr;
 };
 
-// Called for every accepted state, the start included; returning false stops the
-// continuation there.
+// Called for every accepted state, the start included, with the system's parameter at
+// the state's λ (the continuation gives the caller's back when it ends); returning false
+// stops the continuation there.
 using BranchCallback = std::function<bool(const BranchPoint&)>;
 
 }  // namespace twb

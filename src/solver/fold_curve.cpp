@@ -59,12 +59,13 @@ std::optional<FoldCurvePoint> fold_at(SteadySystem& base, SecondParameter& param
                                       const FoldCurvePoint& near, double p, const NewtonSettings& newton) {
   const auto n = std::size_t(base.size());
   FoldCurveSystem curve = curve_through(base, parameter, fold);
-  curve.set_parameter(near.p);
   std::vector<double> x = curve.fold().extend(near.u, near.lambda);
   NaturalSettings natural;
   natural.newton = newton;
-  const NaturalReport rep = continue_in_parameter(curve, x, p, natural);
+  const NaturalReport rep = continue_in_parameter(curve, x, near.p, p, natural);
   if (!rep.reached_target) return std::nullopt;
+  // The curvature is the base system's at p (the fold system does not set p itself).
+  curve.set_parameter(p);
   FoldCurvePoint out;
   out.p = p;
   out.lambda = curve.fold().lambda_of(x);
@@ -103,7 +104,7 @@ FoldCurve trace_fold_curve(SteadySystem& base, SecondParameter& parameter, const
   // minimally augmented system of the fold system would need its second derivatives.
   arc.fold.minimally_augmented = false;
   const ArclengthReport rep =
-      continue_by_arclength(curve, x, arc, [&](const BranchPoint& b) {
+      continue_by_arclength(curve, x, parameter.value(), arc, [&](const BranchPoint& b) {
         FoldCurvePoint& pt = out.points.emplace_back();
         pt.index = b.index;
         pt.p = b.lambda;

@@ -158,7 +158,7 @@ FoldPoint locate_fold_near(SteadySystem& system, std::span<const double> u, doub
     fold.message = "locate_fold_near: the guess and its null vector must have one entry per unknown";
     return fold;
   }
-  system.set_parameter(lambda);
+  const ParameterScope at_guess(system, lambda);
   const ContinuationMetric metric = ContinuationMetric::of(system, std::abs(lambda));
   std::vector<double> x(u.begin(), u.end());
   x.push_back(lambda / metric.parameter_scale());
@@ -172,12 +172,12 @@ FoldPoint locate_fold_near(SteadySystem& system, std::span<const double> u, doub
     failed.iterations = fold.iterations;
     fold = std::move(failed);
   }
-  system.set_parameter(fold.u.empty() ? lambda : fold.lambda);
   return fold;
 }
 
 FoldPoint locate_fold(SteadySystem& system, const ContinuationMetric& metric, const FoldBracket& bracket,
                       const NewtonSettings& newton, const FoldSettings& settings) {
+  const ParameterScope kept(system);
   FoldPoint fold;
   const auto n = std::size_t(system.size());
   if (!(settings.minimally_augmented && minimally_augmented(system, metric, bracket, newton, fold)) &&
@@ -190,7 +190,6 @@ FoldPoint locate_fold(SteadySystem& system, const ContinuationMetric& metric, co
     unit(fold.null_vector, metric);
     fold.method = FoldMethod::interpolated;
   }
-  system.set_parameter(fold.lambda);
   return fold;
 }
 

@@ -56,7 +56,7 @@ struct FoldSettings {
 };
 
 // newton.residual_tolerance is the system's: the fold is converged when F and g are both
-// within it. Leaves the system's parameter at the returned λ.
+// within it. The system's parameter is given back as it was.
 FoldPoint locate_fold(SteadySystem& system, const ContinuationMetric& metric, const FoldBracket& bracket,
                       const NewtonSettings& newton, const FoldSettings& settings = {});
 
@@ -65,8 +65,8 @@ FoldPoint locate_fold(SteadySystem& system, const ContinuationMetric& metric, co
 // guess must be within Newton's reach, e.g. the fold of a mesh coarser by two,
 // interpolated (5 % off in load on the paper's bearing). Converged: u non-empty, method
 // minimally_augmented, curvature set (the caller decides whether the fold is of the
-// kind it wanted). Otherwise u empty and message says why. Leaves the system's
-// parameter at the returned λ, or at `lambda`. With load_accuracy > 0 (in λ's units)
+// kind it wanted). Otherwise u empty and message says why. The system's parameter is
+// given back as it was. With load_accuracy > 0 (in λ's units)
 // Newton stops once λ is settled to about that (NewtonSettings::watched), before F and
 // g meet the residual tolerance: for a caller that needs the fold's load alone.
 FoldPoint locate_fold_near(SteadySystem& system, std::span<const double> u, double lambda,

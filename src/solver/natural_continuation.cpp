@@ -40,18 +40,19 @@ std::vector<double> difference(std::span<const double> a, std::span<const double
 
 }  // namespace
 
-NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u, double target,
+NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u, double start, double target,
                                     const NaturalSettings& s, const BranchCallback& on_state) {
-  return NaturalContinuation(system).continue_to(u, target, s, on_state);
+  return NaturalContinuation(system).continue_to(u, start, target, s, on_state);
 }
 
 NaturalContinuation::NaturalContinuation(SteadySystem& system) : system_(system), newton_(system) {}
 
-NaturalReport NaturalContinuation::continue_to(std::vector<double>& u, double target, const NaturalSettings& s,
-                                               const BranchCallback& on_state) {
+NaturalReport NaturalContinuation::continue_to(std::vector<double>& u, double start, double target,
+                                               const NaturalSettings& s, const BranchCallback& on_state) {
   SteadySystem& system = system_;
+  const ParameterScope at_start(system, start);
   NaturalReport rep;
-  const double start = system.parameter(), interval = std::abs(target - start);
+  const double interval = std::abs(target - start);
   const double direction = target >= start ? 1.0 : -1.0;
   rep.lambda = start;
   if (on_state && !on_state({0, u, start, 0.0, {}, 0})) {
@@ -75,7 +76,7 @@ NaturalReport NaturalContinuation::continue_to(std::vector<double>& u, double ta
   // bearing, 1.2 N below the fold). The tangent's error shrinks with the step.
   std::vector<double> previous, slope;
   double previous_step = 0.0;
-  if (!end_.empty() && system.parameter() == end_lambda_ && u == end_) {
+  if (!end_.empty() && start == end_lambda_ && u == end_) {
     // The leg starts where the last one ended: its slope holds here. (Each leg still
     // starts with the tangent predictor, as a fresh continuation does.)
     slope = slope_;
@@ -152,7 +153,6 @@ NaturalReport NaturalContinuation::continue_to(std::vector<double>& u, double ta
     }
   }
   rep.reached_target = rep.lambda == target;
-  system.set_parameter(rep.lambda);
   end_ = u;
   end_lambda_ = rep.lambda;
   slope_ = slope;

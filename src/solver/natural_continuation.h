@@ -50,9 +50,9 @@ struct NaturalReport {
   std::string message;  // why it stopped short of the target
 };
 
-// From the steady state u at the system's current λ to `target`. u is replaced by the
-// last accepted state and the system's parameter left at its λ.
-NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u, double target,
+// From the steady state u at λ = start to `target`. u is replaced by the last accepted
+// state, whose λ is the report's; the system's parameter is given back as it was.
+NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u, double start, double target,
                                     const NaturalSettings& settings, const BranchCallback& on_state = {});
 
 // The same over several legs of one branch (a search that stops at grid loads, judges
@@ -63,7 +63,7 @@ NaturalReport continue_in_parameter(SteadySystem& system, std::vector<double>& u
 class NaturalContinuation {
  public:
   explicit NaturalContinuation(SteadySystem& system);
-  NaturalReport continue_to(std::vector<double>& u, double target, const NaturalSettings& settings,
+  NaturalReport continue_to(std::vector<double>& u, double start, double target, const NaturalSettings& settings,
                             const BranchCallback& on_state = {});
 
  private:

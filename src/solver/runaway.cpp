@@ -195,13 +195,14 @@ class StepJudge {
 
 }  // namespace
 
-StepOutcome classify_step(SteadySystem& system, std::span<const double> start_state, double new_parameter,
-                          const RunawaySettings& settings, const TransientObserver& observer) {
+StepOutcome classify_step(SteadySystem& system, std::span<const double> start_state, double start_parameter,
+                          double new_parameter, const RunawaySettings& settings, const TransientObserver& observer) {
   StepOutcome out;
+  const ParameterScope at_start(system, start_parameter);
   // The time scale belongs to the machine as it runs before the step (λ still old).
   out.relaxation_time = slowest_relaxation_time(system, start_state, settings.relaxation_iterations);
   out.horizon = settings.horizon_multiple * out.relaxation_time;
-  const double old_parameter = system.parameter();
+  const double old_parameter = start_parameter;
   system.set_parameter(new_parameter);
   StepJudge(system, settings, out).run(start_state, observer);
   if (out.settled() && settings.on_branch &&
@@ -210,7 +211,6 @@ StepOutcome classify_step(SteadySystem& system, std::span<const double> start_st
     out.evidence = StepEvidence::left_branch;
     out.reason = "settled off the branch continued from the start (" + out.reason + ")";
   }
-  system.set_parameter(new_parameter);
   return out;
 }
 
@@ -224,7 +224,7 @@ Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<c
     b.message = fmt::format("no interval to bisect: high {:.6g} is not above low {:.6g}", high_parameter, low_parameter);
     return b;
   }
-  system.set_parameter(low_parameter);
+  const ParameterScope at_low(system, low_parameter);
   {
     KinsolNewton newton(system);
     const NewtonReport rep = newton.solve(b.low_state, settings.newton);
@@ -241,8 +241,7 @@ Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<c
   double target = high_parameter;
   while (!proven || (b.high - b.low) > settings.relative_width * std::abs(b.high)) {
     const double trial = proven ? 0.5 * (b.low + b.high) : target;
-    system.set_parameter(b.low);
-    StepOutcome o = classify_step(system, b.low_state, trial, settings);
+    StepOutcome o = classify_step(system, b.low_state, b.low, trial, settings);
     b.steps.push_back({trial, o.verdict, o.evidence, o.time, o.reason});
     b.ida_steps += o.statistics.steps;
     b.ida_factorizations += o.statistics.linear_setups;
@@ -250,7 +249,6 @@ Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<c
     if (o.evidence == StepEvidence::no_consistent_start) {
       const double nearer = 0.5 * (b.low + target);
       if (proven || nearer - b.low <= settings.relative_width * std::abs(nearer)) {
-        system.set_parameter(b.low);
         b.message = fmt::format("the step to {:.6g} could not start: {}", trial, o.reason);
         return b;
       }
@@ -259,7 +257,6 @@ Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<c
     }
     if (o.settled()) {
       if (!proven && trial == high_parameter) {
-        system.set_parameter(b.low);
         b.message = fmt::format("the step to {:.6g}, the bracket's upper end, settles: no runaway to bracket", trial);
         return b;
       }
@@ -271,7 +268,6 @@ Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<c
       proven = true;
     }
   }
-  system.set_parameter(b.low);
   b.valid = true;
   return b;
 }

@@ -116,11 +116,13 @@ struct StepOutcome {
   bool settled() const { return verdict == StepVerdict::settled; }
 };
 
-// Steps the system from start_state, a steady state at its current λ, to λ = new_parameter
-// (left set), and integrates the transient until the verdict. The observer, if given,
-// sees every internal step.
-StepOutcome classify_step(SteadySystem& system, std::span<const double> start_state, double new_parameter,
-                          const RunawaySettings& settings, const TransientObserver& observer = {});
+// Steps the system from start_state, a steady state at λ = start_parameter, to
+// λ = new_parameter, and integrates the transient until the verdict (whose states are at
+// new_parameter). The observer, if given, sees every internal step. The system's
+// parameter is given back as it was.
+StepOutcome classify_step(SteadySystem& system, std::span<const double> start_state, double start_parameter,
+                          double new_parameter, const RunawaySettings& settings,
+                          const TransientObserver& observer = {});
 
 struct BracketStep {
   double parameter;
@@ -151,8 +153,8 @@ using BracketObserver = std::function<void(const BracketStep&)>;
 // large to start (no consistent state: StepEvidence::no_consistent_start) is retried
 // halfway and a settled one raises low, so the search walks up toward
 // high_parameter; once a runaway is proven, a trial that cannot start ends the search
-// (not valid): a bracket must rest on dynamics that were integrated. Leaves the
-// system at λ = bracket.low.
+// (not valid): a bracket must rest on dynamics that were integrated. The system's
+// parameter is given back as it was.
 Bracket bracket_critical(SteadySystem& system, double low_parameter, std::span<const double> low_state,
                          double high_parameter, const RunawaySettings& settings, const BracketObserver& observer = {});
 

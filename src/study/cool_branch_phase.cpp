@@ -74,8 +74,7 @@ DistressSearchPhases::CoolBranchEnd DistressSearchPhases::continue_cool_branch()
     SegmentStop stop = SegmentStop::none;
     auto t0 = std::chrono::steady_clock::now();
     std::vector<double> x = low_state_;
-    model_.set_load(low_);
-    const NaturalReport rep = cool_branch.continue_to(x, target, natural_, [&](const BranchPoint& p) {
+    const NaturalReport rep = cool_branch.continue_to(x, low_, target, natural_, [&](const BranchPoint& p) {
       if (p.index > 0) {
         Pending& q = pending.emplace_back(
             Pending{{p.u.begin(), p.u.end()}, p.lambda, p.corrector_iterations, 0.0, Stability::inconclusive, {}});
@@ -111,10 +110,9 @@ DistressSearchPhases::CoolBranchEnd DistressSearchPhases::continue_cool_branch()
       if (transient_ && p.stability != Stability::stable) {
         say(fmt::format("  {:.2f} N: linear stability {} ({}); the transient decides", p.load,
                         to_string(p.stability), p.why));
-        model_.set_load(low_);
         StepOutcome step;
         try {
-          step = classify_step(model_, low_state_, p.load, runaway);
+          step = classify_step(model_, low_state_, low_, p.load, runaway);
         } catch (const InternalError&) {
           throw;  // a bug: no fallback may hide it
         } catch (const std::exception& e) {

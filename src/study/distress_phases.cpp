@@ -63,8 +63,7 @@ ArclengthReport round_the_fold(BearingModel& model, std::span<const double> stat
   arc.lambda_min = 0.98 * load;
   arc.lambda_max = load_end;
   arc.max_points = 200;
-  model.set_load(load);
-  return continue_by_arclength(model, state, arc, [&](const BranchPoint& p) {
+  return continue_by_arclength(model, state, load, arc, [&](const BranchPoint& p) {
     const bool turned = !p.tangent.empty() && p.tangent.back() < 0.0;
     if (cool_side && !turned && p.index > 0) cool_side->emplace_back(p.lambda, std::vector<double>(p.u.begin(), p.u.end()));
     return !turned;
@@ -130,7 +129,8 @@ DistressSearch DistressSearchPhases::run(std::vector<double> u, const SteadyRepo
     return std::move(out_);
   }
   if (!locate_and_prove_fold(end, u)) return std::move(out_);
-  if (settings_.continue_past_distress) sweep_hot_branch(std::move(u));
+  // (past distress u is the state at the bracket's upper end, where the march went)
+  if (settings_.continue_past_distress) sweep_hot_branch(std::move(u), out_.row.bracket_high.value());
   return std::move(out_);
 }
 
@@ -243,8 +243,7 @@ bool DistressSearchPhases::bisect(bool ran_away, FoldProof& proof, std::optional
   const double widen = std::max(4.0 * settings_.bracket_width, 0.01);
   double high = ran_away ? runaway_load_ : std::min(low_ * (1.0 + widen), settings_.load_end);
   for (int attempt = 0; !ran_away && attempt < 400 && low_ < settings_.load_end; ++attempt) {
-    model_.set_load(low_);
-    const StepOutcome step = classify_step(model_, low_state_, high, detector_);
+    const StepOutcome step = classify_step(model_, low_state_, low_, high, detector_);
     out_.counts.add(step);
     if (!step.settled()) break;
     low_ = high;
@@ -261,7 +260,6 @@ bool DistressSearchPhases::bisect(bool ran_away, FoldProof& proof, std::optional
         fmt::format("no distress up to {:.6g} N: every load step settled on the branch", settings_.load_end);
     return false;
   }
-  model_.set_load(low_);
   Bracket& bracket = proof.bracket;
   bracket = bracket_critical(model_, low_, low_state_, high, detector_, [&](const BracketStep& step) {
     say(fmt::format("  the step to {:.2f} N {}", step.parameter,
@@ -300,15 +298,13 @@ bool DistressSearchPhases::march_past(FoldProof& proof, std::vector<double>& u) 
     return false;
   }
   if (!proof.runaway_state.empty()) {
-    model_.set_load(bracket.high);
-    hot = march_load_step(model_, proof.runaway_state, bracket.high, runaway.transient, runaway.newton, 0.0,
+    hot = march_load_step(model_, proof.runaway_state, bracket.high, bracket.high, runaway.transient, runaway.newton, 0.0,
                           proof.runaway_time);
     out_.runaway = std::move(proof.runaway);
     // (the march's first sample is the proof's last; a march that could not start has none)
     if (hot.trajectory.size() > 1) out_.runaway.insert(out_.runaway.end(), hot.trajectory.begin() + 1, hot.trajectory.end());
   } else {
-    model_.set_load(bracket.low);
-    hot = march_load_step(model_, bracket.low_state, bracket.high, runaway.transient, runaway.newton);
+    hot = march_load_step(model_, bracket.low_state, bracket.low, bracket.high, runaway.transient, runaway.newton);
     out_.runaway = std::move(hot.trajectory);
   }
   say(fmt::format("  the step to {:.2f} N: {}", bracket.high, hot.message));
@@ -322,12 +318,12 @@ bool DistressSearchPhases::march_past(FoldProof& proof, std::vector<double>& u) 
 }
 
 // Load sweep: the hot branch on to load_end, from the state the runaway reached.
-void DistressSearchPhases::sweep_hot_branch(std::vector<double> u) {
+void DistressSearchPhases::sweep_hot_branch(std::vector<double> u, double load) {
   auto t0 = std::chrono::steady_clock::now();
   for (double target : targets_) {
-    if (target <= model_.load()) continue;
-    natural_.initial_step = natural_.max_step = target - model_.load();
-    const NaturalReport rep = continue_in_parameter(model_, u, target, natural_, [&](const BranchPoint& p) {
+    if (target <= load) continue;
+    natural_.initial_step = natural_.max_step = target - load;
+    const NaturalReport rep = continue_in_parameter(model_, u, load, target, natural_, [&](const BranchPoint& p) {
       if (p.index == 0) return true;
       keep(p.lambda, p.u, p.corrector_iterations, elapsed_ms(t0));
       t0 = std::chrono::steady_clock::now();
@@ -339,6 +335,7 @@ void DistressSearchPhases::sweep_hot_branch(std::vector<double> u) {
       out_.message = fmt::format("past distress the branch was lost at {:.6g} N: {}", rep.lambda, rep.message);
       break;
     }
+    load = rep.lambda;
   }
 }
 

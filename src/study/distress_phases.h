@@ -60,7 +60,7 @@ class DistressSearchPhases {
   void report_steady_fold();                     // without transients: the steady branch's fold only
   // Phases 3-6; false where the search stops (its row says why).
   bool locate_and_prove_fold(CoolBranchEnd end, std::vector<double>& u);
-  void sweep_hot_branch(std::vector<double> u);  // phase 7
+  void sweep_hot_branch(std::vector<double> u, double load);  // phase 7: from u at load
 
   // Where the proof failed: bisection by transients from the last cool state. False
   // where no bracket results (the row says why).

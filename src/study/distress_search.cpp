@@ -50,10 +50,9 @@ RunawaySettings distress_detector(const Scene& scene, double bracket_width) {
                           std::span<const double> settled, double load) mutable {
     if (load <= start_load) return true;
     std::vector<double> x(start.begin(), start.end());
-    system.set_parameter(start_load);
     natural.initial_step = natural.max_step = 0.25 * (load - start_load);
     natural.min_step = 1e-3 * (load - start_load);
-    const NaturalReport rep = continue_in_parameter(system, x, load, natural);
+    const NaturalReport rep = continue_in_parameter(system, x, start_load, load, natural);
     return rep.reached_target && same_state(x, settled);
   };
   return r;
@@ -107,8 +106,7 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
   natural.newton = in_basin(newton);
   natural.initial_step = natural.max_step = 0.15 * settings.load_start;
   natural.min_step = settings.bracket_width * light;
-  model.set_load(settings.load_start);
-  const NaturalReport descent = continue_in_parameter(model, down, light, natural);
+  const NaturalReport descent = continue_in_parameter(model, down, settings.load_start, light, natural);
   model.set_load(light);
   std::vector<double> light_state;
   const SteadyReport light_start = steady.solve_cold(light_state);

@@ -49,11 +49,10 @@ class BranchSegment {
     }
     std::vector<double> u = from->second;
     const double span = std::abs(load - from->first);
-    model_.set_load(from->first);
     natural_.initial_step = natural_.max_step = span;
     natural_.min_step = 1e-3 * span;
     ++solves_;
-    const NaturalReport rep = continue_in_parameter(model_, u, load, natural_);
+    const NaturalReport rep = continue_in_parameter(model_, u, from->first, load, natural_);
     if (!rep.reached_target)
       throw LostBranch(fmt::format("the branch was not continued to {:.6g} N: {}", load, rep.message));
     model_.set_load(load);

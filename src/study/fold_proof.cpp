@@ -29,8 +29,7 @@ FoldProof prove_fold(BearingModel& model, const BranchStates& cool, const Branch
   }
   const auto& from = (nearest != approach.rend() && nearest->first > start->first) ? *nearest : *start;
   say(fmt::format("  proving the fold at {:.2f} N: a load step {:.2f} -> {:.2f} N", fold, from.first, b.low));
-  model.set_load(from.first);
-  StepOutcome below = classify_step(model, from.second, b.low, runaway);
+  StepOutcome below = classify_step(model, from.second, from.first, b.low, runaway);
   counts.add(below);
   b.steps.push_back({b.low, below.verdict, below.evidence, below.time, below.reason});
   if (!below.settled()) {
@@ -39,14 +38,14 @@ FoldProof prove_fold(BearingModel& model, const BranchStates& cool, const Branch
     return proof;
   }
   say(fmt::format("  proving the fold at {:.2f} N: it settles; a load step {:.2f} -> {:.2f} N", fold, b.low, b.high));
-  model.set_load(b.low);
   const TransientObserver record_runaway = [&](double t, std::span<const double> u) {
     TrajectorySample& sample = proof.runaway.emplace_back();
     sample.time = t;
     sample.state = model.describe(u);
   };
   StepOutcome above =
-      classify_step(model, below.final_state, b.high, runaway, keep_trajectory ? record_runaway : TransientObserver{});
+      classify_step(model, below.final_state, b.low, b.high, runaway,
+                    keep_trajectory ? record_runaway : TransientObserver{});
   counts.add(above);
   b.steps.push_back({b.high, above.verdict, above.evidence, above.time, above.reason});
   if (above.settled()) {

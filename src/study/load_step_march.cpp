@@ -27,10 +27,11 @@ constexpr double settle_fraction = 1e-3;
 
 }  // namespace
 
-StepMarch march_load_step(BearingModel& model, std::span<const double> start_state, double new_load,
-                          const TransientSettings& settings, const NewtonSettings& newton, double duration,
-                          double start_time) {
+StepMarch march_load_step(BearingModel& model, std::span<const double> start_state, double start_load,
+                          double new_load, const TransientSettings& settings, const NewtonSettings& newton,
+                          double duration, double start_time) {
   const auto t0 = std::chrono::steady_clock::now();
+  const ParameterScope at_start(model, start_load);
   StepMarch out;
   // The horizon's time scale, needed only when no duration is given. Near a fold the
   // Jacobian can be singular: then the march is bounded by a generous fixed span.
@@ -45,7 +46,7 @@ StepMarch march_load_step(BearingModel& model, std::span<const double> start_sta
     }
     if (!(tau > 0) || !std::isfinite(tau)) tau = 10.0;  // s: several times the carrier's own ρ c t²/K
   }
-  const double old_load = model.load();
+  const double old_load = start_load;
   model.set_load(new_load);
   IdaTransient ida(model, settings);
   const double horizon = start_time + (duration > 0 ? duration : horizon_multiple * tau);

@@ -28,12 +28,13 @@ struct StepMarch {
   std::string message;        // how the march ended
 };
 
-// From start_state, steady at the model's current load, to new_load (left set).
+// From start_state, steady at start_load, to new_load (the trajectory's and the state's
+// load); the model's load is given back as it was.
 // duration > 0 fixes the span of pseudo-time; 0 marches until the state settles, up to
 // a horizon of many slowest relaxation times.
 // start_time > 0 goes on with a step already under way: start_state is the trajectory's
 // state at that time (not steady), and the march's samples follow on in time.
-StepMarch march_load_step(BearingModel& model, std::span<const double> start_state, double new_load,
+StepMarch march_load_step(BearingModel& model, std::span<const double> start_state, double start_load, double new_load,
                           const TransientSettings& settings, const NewtonSettings& newton, double duration = 0.0,
                           double start_time = 0.0);
 

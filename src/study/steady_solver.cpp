@@ -182,7 +182,7 @@ SteadyReport SteadySolver::solve_by_deformation_homotopy(std::vector<double>& u)
     walk.initial_step = 0.25 * own;
     walk.max_step = 0.25 * own;
     walk.min_step = 0.01 * own;
-    const NaturalReport r = continue_in_parameter(scale, u, own, walk);
+    const NaturalReport r = continue_in_parameter(scale, u, 0.0, own, walk);
     ++rep.newton_solves;
     rep.iterations += r.corrector_iterations;
     rep.converged = r.reached_target;

@@ -225,13 +225,14 @@ void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport&
   }
   out.states.push_back(record(model, u, rep));
   if (progress) progress(fmt::format("steady at {:.6g} N; stepping to {:.6g} N", st.load_start, st.load_end));
-  StepMarch march = march_load_step(model, u, st.load_end, TransientSettings{}, newton, st.duration);
+  StepMarch march = march_load_step(model, u, st.load_start, st.load_end, TransientSettings{}, newton, st.duration);
   out.timings.newton_iterations += rep.iterations + march.newton_iterations;
   out.timings.jacobian_evaluations += rep.jacobian_evaluations;
   out.timings.transients += 1;
   out.timings.ida_steps += march.ida_steps;
   out.timings.ida_factorizations += march.ida_factorizations;
   out.trajectory = std::move(march.trajectory);
+  model.set_load(st.load_end);  // the march's last state is at the load it stepped to
   SolvedState last = solved_state(model, march.state);
   last.converged = march.settled;
   last.iterations = march.newton_iterations;

@@ -93,7 +93,7 @@ TEST_P(CavitationRowTest, ASweepCorrectsInNewtonsFormAndLeavesTheModelsOwn) {
   const double load = w.model.load();
   const double step = 0.02 * load;
   settings.initial_step = settings.max_step = step;
-  const NaturalReport rep = continue_in_parameter(w.model, w.state, load + 5 * step, settings);
+  const NaturalReport rep = continue_in_parameter(w.model, w.state, w.model.parameter(), load + 5 * step, settings);
   ASSERT_TRUE(rep.reached_target) << rep.message;
   EXPECT_EQ(rep.accepted, 5);
   EXPECT_EQ(rep.rejected, 0) << rep.last_rejection;

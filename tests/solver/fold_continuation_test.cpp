@@ -43,7 +43,7 @@ struct SemenovBranch {
 SemenovBranch continue_semenov(const ArclengthSettings& s) {
   testing::SemenovProblem semenov(0.1);
   SemenovBranch b;
-  b.report = continue_by_arclength(semenov, testing::SemenovProblem::lower_steady_state(0.1), s,
+  b.report = continue_by_arclength(semenov, testing::SemenovProblem::lower_steady_state(0.1), semenov.parameter(), s,
                                    [&](const BranchPoint& p) {
                                      b.points.push_back({p.u[0], p.u[1], p.lambda});
                                      return true;
@@ -138,7 +138,7 @@ DiscreteFold bratu_fold(int n) {
   const std::vector<double> u0 = testing::steady_state(bratu, std::vector<double>(std::size_t(n), 0.0), s.newton);
   // Stop once on the upper branch, below λ = 3.
   const ArclengthReport r =
-      continue_by_arclength(bratu, u0, s, [](const BranchPoint& p) { return !(p.tangent.back() < 0 && p.lambda < 3.0); });
+      continue_by_arclength(bratu, u0, bratu.parameter(), s, [](const BranchPoint& p) { return !(p.tangent.back() < 0 && p.lambda < 3.0); });
   print(r);
   EXPECT_EQ(r.stop, ArclengthReport::Stop::caller) << r.message;
   EXPECT_EQ(r.folds.size(), 1u);

@@ -34,7 +34,7 @@ FoldPoint first_fold(SteadySystem& system, std::vector<double> start, double lam
   arc.initial_step = 0.02;
   arc.max_step = 0.1;
   arc.max_points = 400;
-  const ArclengthReport rep = continue_by_arclength(system, start, arc);
+  const ArclengthReport rep = continue_by_arclength(system, start, system.parameter(), arc);
   if (rep.folds.empty()) throw std::runtime_error("no fold: " + rep.message);
   return rep.folds.front();
 }

@@ -85,7 +85,7 @@ TEST(LinearStability, BratuLosesStabilityAtTheFold) {
   arc.lambda_min = 2.5;
   arc.max_points = 60;
   int stable = 0, unstable = 0;
-  continue_by_arclength(bratu, start, arc, [&](const BranchPoint& p) {
+  continue_by_arclength(bratu, start, bratu.parameter(), arc, [&](const BranchPoint& p) {
     if (p.index == 0) return true;
     const StabilityReport rep = stability_at(bratu, p.u);
     // Within 1e-3 of the fold the slowest rate is itself tiny: skip the turning point.

@@ -37,13 +37,15 @@ NaturalReport bratu_ramp(Predictor predictor) {
   std::vector<double> u = testing::steady_state(bratu, std::vector<double>(100, 0.0), s.newton);
   s.initial_step = s.max_step = 0.1;
   s.growth = 1.0;
-  const NaturalReport r = continue_in_parameter(bratu, u, 3.0, s);
+  const double start = bratu.parameter();
+  const NaturalReport r = continue_in_parameter(bratu, u, start, 3.0, s);
   std::cout << "predictor " << int(predictor) << ": " << r.accepted << " steps, " << r.rejected << " rejected, "
             << r.corrector_iterations << " corrector iterations\n";
   EXPECT_TRUE(r.reached_target) << r.message;
   EXPECT_EQ(r.accepted, 25);
   EXPECT_EQ(r.rejected, 0) << r.last_rejection;
-  EXPECT_DOUBLE_EQ(bratu.parameter(), 3.0);
+  EXPECT_DOUBLE_EQ(r.lambda, 3.0);
+  EXPECT_EQ(bratu.parameter(), start);  // given back as it was
   return r;
 }
 
@@ -68,22 +70,25 @@ TEST(NaturalContinuation, LegsReuseTheAnalysisAndReachTheSameState) {
   s.initial_step = s.max_step = 0.1;
 
   std::vector<double> whole = start;
-  ASSERT_TRUE(continue_in_parameter(bratu, whole, 3.0, s).reached_target);
+  ASSERT_TRUE(continue_in_parameter(bratu, whole, bratu.parameter(), 3.0, s).reached_target);
 
   bratu.set_parameter(0.5);
   std::vector<double> legs = start;
   const SparseLu::Counts before = SparseLu::thread_counts();
   NaturalContinuation branch(bratu);
-  for (double target : {1.0, 1.5, 2.0, 2.5, 3.0}) ASSERT_TRUE(branch.continue_to(legs, target, s).reached_target);
+  double from = 0.5;
+  for (double target : {1.0, 1.5, 2.0, 2.5, 3.0}) {
+    ASSERT_TRUE(branch.continue_to(legs, from, target, s).reached_target);
+    from = target;
+  }
   EXPECT_EQ(SparseLu::thread_counts().analyses - before.analyses, 1);
   EXPECT_EQ(SparseLu::thread_counts().factorizations - before.factorizations, 1);  // the first slope's
   for (std::size_t k = 0; k < legs.size(); ++k) EXPECT_NEAR(legs[k], whole[k], 1e3 * tolerance);
 
   // A leg from another state (or λ) than the last one's end computes its slope afresh.
   std::vector<double> elsewhere = start;
-  bratu.set_parameter(0.5);
   const SparseLu::Counts again = SparseLu::thread_counts();
-  ASSERT_TRUE(branch.continue_to(elsewhere, 1.0, s).reached_target);
+  ASSERT_TRUE(branch.continue_to(elsewhere, 0.5, 1.0, s).reached_target);
   EXPECT_EQ(SparseLu::thread_counts().analyses - again.analyses, 0);
   EXPECT_GE(SparseLu::thread_counts().factorizations - again.factorizations, 1);
 }
@@ -94,11 +99,12 @@ TEST(NaturalContinuation, CallbackSeesEveryStateAndCanStop) {
   std::vector<double> u = testing::SemenovProblem::lower_steady_state(0.1);
   int calls = 0;
   double last = 0.0;
-  const NaturalReport r = continue_in_parameter(semenov, u, 0.3, settings_with(Predictor::secant),
+  const NaturalReport r = continue_in_parameter(semenov, u, 0.1, 0.3, settings_with(Predictor::secant),
                                                 [&](const BranchPoint& p) {
                                                   EXPECT_EQ(p.index, calls);
                                                   EXPECT_GE(p.lambda, last);
                                                   EXPECT_NEAR(p.u[0] * std::exp(-p.u[0]), p.lambda, 2 * tolerance);
+                                                  EXPECT_EQ(semenov.parameter(), p.lambda);  // the contract
                                                   last = p.lambda;
                                                   return ++calls < 4;
                                                 });
@@ -106,7 +112,7 @@ TEST(NaturalContinuation, CallbackSeesEveryStateAndCanStop) {
   EXPECT_EQ(calls, 4);
   EXPECT_EQ(r.accepted, 3);
   EXPECT_DOUBLE_EQ(r.lambda, last);
-  EXPECT_DOUBLE_EQ(semenov.parameter(), last);
+  EXPECT_EQ(semenov.parameter(), 0.1);  // given back as it was
   EXPECT_NE(r.message.find("caller"), std::string::npos);
 }
 
@@ -133,7 +139,7 @@ void expect_stop_below_fold(const NaturalReport& r, double fold, double interval
 TEST(NaturalContinuation, StopsWithAReportBelowSemenovsFold) {
   testing::SemenovProblem semenov(0.1);
   std::vector<double> u = testing::SemenovProblem::lower_steady_state(0.1);
-  const NaturalReport r = continue_in_parameter(semenov, u, 0.5, settings_with(Predictor::secant));
+  const NaturalReport r = continue_in_parameter(semenov, u, semenov.parameter(), 0.5, settings_with(Predictor::secant));
   expect_stop_below_fold(r, std::exp(-1.0), 0.4);
   EXPECT_LT(u[0], 1.0);  // still the lower branch
   EXPECT_NEAR(u[0] * std::exp(-u[0]), r.lambda, 2 * tolerance);
@@ -151,13 +157,13 @@ TEST(NaturalContinuation, StopsJustBelowBratusFoldFoundByArclength) {
   ArclengthSettings arc;
   arc.newton = s.newton;
   const ArclengthReport around =
-      continue_by_arclength(bratu, u0, arc, [](const BranchPoint& p) { return p.tangent.back() > 0; });
+      continue_by_arclength(bratu, u0, bratu.parameter(), arc, [](const BranchPoint& p) { return p.tangent.back() > 0; });
   ASSERT_EQ(around.folds.size(), 1u);
   const double fold = around.folds[0].lambda;
 
   bratu.set_parameter(1.0);
   std::vector<double> u = u0;
-  const NaturalReport r = continue_in_parameter(bratu, u, 4.0, s);
+  const NaturalReport r = continue_in_parameter(bratu, u, 1.0, 4.0, s);
   expect_stop_below_fold(r, fold, 3.0);
   EXPECT_LT(u[50], around.folds[0].u[50]);  // the lower branch: u grows along it up to the fold
 }

@@ -28,11 +28,11 @@ constexpr int bratu_nodes = 100;
 // Bratu's smallest eigenvalue ≈ π² − λe^u ≈ 5), so 1e-8 relative holds with margin.
 TEST(Runaway, SmallStableStepSettlesOnTheSteadyState) {
   testing::SemenovProblem semenov(0.3);
-  const StepOutcome s = classify_step(semenov, testing::SemenovProblem::lower_steady_state(0.3), 0.31, {});
+  const StepOutcome s = classify_step(semenov, testing::SemenovProblem::lower_steady_state(0.3), 0.3, 0.31, {});
   ASSERT_TRUE(s.settled()) << s.reason;
   EXPECT_EQ(s.evidence, StepEvidence::steady_state_found);
   EXPECT_LT(testing::relative_difference(s.final_state, testing::SemenovProblem::lower_steady_state(0.31)), 1e-8);
-  EXPECT_EQ(semenov.parameter(), 0.31);
+  EXPECT_EQ(semenov.parameter(), 0.3);  // given back as it was
 
   testing::BratuProblem bratu(bratu_nodes, 2.0);
   const std::vector<double> before = testing::lower_branch_state(bratu, 2.0);
@@ -40,7 +40,7 @@ TEST(Runaway, SmallStableStepSettlesOnTheSteadyState) {
   bratu.set_parameter(2.1);
   ASSERT_TRUE(KinsolNewton(bratu).solve(expected, NewtonSettings{}).converged);
   bratu.set_parameter(2.0);
-  const StepOutcome b = classify_step(bratu, before, 2.1, {});
+  const StepOutcome b = classify_step(bratu, before, bratu.parameter(), 2.1, {});
   ASSERT_TRUE(b.settled()) << b.reason;
   EXPECT_LT(testing::relative_difference(b.final_state, expected), 1e-8);
   std::cout << "Bratu 2 -> 2.1: settled at t = " << b.time << " (relaxation time " << b.relaxation_time << ", "
@@ -51,7 +51,7 @@ TEST(Runaway, SmallStableStepSettlesOnTheSteadyState) {
 TEST(Runaway, NoStepIsSettledAtOnce) {
   testing::SemenovProblem semenov(0.3);
   const std::vector<double> steady = testing::SemenovProblem::lower_steady_state(0.3);
-  const StepOutcome s = classify_step(semenov, steady, 0.3, {});
+  const StepOutcome s = classify_step(semenov, steady, semenov.parameter(), 0.3, {});
   ASSERT_TRUE(s.settled()) << s.reason;
   EXPECT_EQ(s.time, 0.0);
   EXPECT_LT(testing::relative_difference(s.final_state, steady), 1e-12);
@@ -61,10 +61,9 @@ TEST(Runaway, NoStepIsSettledAtOnce) {
 // settles, above runs away (by its acceleration or at the horizon; never by a crash).
 void expect_fold_between(SteadySystem& system, double critical) {
   const std::vector<double> start = testing::lower_branch_state(system, 0.95 * critical);
-  const StepOutcome below = classify_step(system, start, 0.995 * critical, {});
+  const StepOutcome below = classify_step(system, start, 0.95 * critical, 0.995 * critical, {});
   EXPECT_TRUE(below.settled()) << below.reason;
-  system.set_parameter(0.95 * critical);
-  const StepOutcome above = classify_step(system, start, 1.005 * critical, {});
+  const StepOutcome above = classify_step(system, start, 0.95 * critical, 1.005 * critical, {});
   EXPECT_FALSE(above.settled()) << above.reason;
   // The runaway's rate passed a minimum (the ghost) on its way up.
   double minimum = INFINITY;
@@ -96,7 +95,7 @@ TEST(Runaway, IgnitionJustBelowSettlesJustAboveRunsAway) {
 TEST(Runaway, JumpToTheHotBranchIsARunaway) {
   testing::SemenovProblem ignition(0.0, activation);
   const std::vector<double> start = testing::lower_branch_state(ignition, 0.2);
-  const StepOutcome o = classify_step(ignition, start, 1.0, {});
+  const StepOutcome o = classify_step(ignition, start, ignition.parameter(), 1.0, {});
   EXPECT_FALSE(o.settled()) << o.reason;
   EXPECT_EQ(o.evidence, StepEvidence::acceleration) << o.reason;
   // The hot state θ = ψ·exp(θ/(1 + εθ)) at ψ = 1 lies near θ = 122; the verdict comes
@@ -113,7 +112,7 @@ TEST(Runaway, GhostOutlastingTheHorizonIsARunaway) {
   const std::vector<double> start = testing::lower_branch_state(semenov, 0.95 * critical);
   RunawaySettings short_horizon;
   short_horizon.horizon_multiple = 1.0;
-  const StepOutcome o = classify_step(semenov, start, 1.001 * critical, short_horizon);
+  const StepOutcome o = classify_step(semenov, start, semenov.parameter(), 1.001 * critical, short_horizon);
   EXPECT_FALSE(o.settled()) << o.reason;
   EXPECT_EQ(o.evidence, StepEvidence::no_steady_state_nearby) << o.reason;
   EXPECT_DOUBLE_EQ(o.time, o.horizon);

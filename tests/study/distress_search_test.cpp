@@ -119,11 +119,9 @@ TEST_F(BearingDistress, StepBelowSettlesStepAboveRunsAway) {
   ASSERT_TRUE(found_->row.distress_load);
   const double wd = *found_->row.distress_load, low = *found_->row.bracket_low;
   const RunawaySettings settings = distress_detector(model_->scene(), 0.002);
-  model_->set_load(low);
-  const StepOutcome below = classify_step(*model_, found_->bracket_state, 0.99 * wd, settings);
+  const StepOutcome below = classify_step(*model_, found_->bracket_state, low, 0.99 * wd, settings);
   EXPECT_TRUE(below.settled()) << below.reason;
-  model_->set_load(low);
-  const StepOutcome above = classify_step(*model_, found_->bracket_state, 1.01 * wd, settings);
+  const StepOutcome above = classify_step(*model_, found_->bracket_state, low, 1.01 * wd, settings);
   EXPECT_FALSE(above.settled()) << above.reason;
 }
 
@@ -172,10 +170,10 @@ TEST_P(DetectorRobustness, DistressLoadMovesLessThanHalfAPercent) {
   // The proof's two steps keep their verdicts, so W_d (the fold) does not move at all:
   // from 1 % below to the bracket's low end it settles, from there to its high end it
   // runs away.
-  s.model.set_load(0.99 * wd);
-  const StepOutcome below = classify_step(s.model, low, *s.found.row.bracket_low, settings);
+  const StepOutcome below = classify_step(s.model, low, 0.99 * wd, *s.found.row.bracket_low, settings);
   ASSERT_TRUE(below.settled()) << variant.name << " x" << factor << ": " << below.reason;
-  const StepOutcome above = classify_step(s.model, below.final_state, *s.found.row.bracket_high, settings);
+  const StepOutcome above =
+      classify_step(s.model, below.final_state, *s.found.row.bracket_low, *s.found.row.bracket_high, settings);
   EXPECT_FALSE(above.settled()) << variant.name << " x" << factor << ": " << above.reason;
 }
 

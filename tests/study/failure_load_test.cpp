@@ -62,9 +62,8 @@ double margin_at(BearingModel& model, const DistressSearch& found, LimitKind kin
   }
   natural.initial_step = natural.max_step = std::min(0.05 * load, load - at);
   natural.min_step = 1e-6 * load;
-  model.set_load(at);
   if (load > at) {
-    const NaturalReport rep = continue_in_parameter(model, u, load, natural);
+    const NaturalReport rep = continue_in_parameter(model, u, at, load, natural);
     EXPECT_TRUE(rep.reached_target) << rep.message;
   }
   at = load;

@@ -85,12 +85,13 @@ TEST(LimitCurve, PointsAreCrossingsOfTheCoolBranch) {
       // changes sign between (the bracket width the curve locates to).
       natural.initial_step = natural.max_step = 0.05 * w;
       natural.min_step = 1e-6 * w;
-      const NaturalReport below = continue_in_parameter(model, u, 0.998 * w, natural);
+      const NaturalReport below = continue_in_parameter(model, u, 100.0, 0.998 * w, natural);
       ASSERT_TRUE(below.reached_target) << name << " at " << r->parameter << ": " << below.message;
+      model.set_load(0.998 * w);
       const double m_below =
           *failure_margin(kind, LimitValues::of(model.describe(u), true), limits);
       natural.initial_step = natural.max_step = 0.004 * w;
-      const NaturalReport above = continue_in_parameter(model, u, 1.002 * w, natural);
+      const NaturalReport above = continue_in_parameter(model, u, 0.998 * w, 1.002 * w, natural);
       ASSERT_TRUE(above.reached_target) << name << " at " << r->parameter << ": " << above.message;
       model.set_load(1.002 * w);
       const double m_above = *failure_margin(kind, LimitValues::of(model.describe(u), true), limits);

@@ -23,10 +23,10 @@ TEST(LoadStepStart, ALargeStepOnTheBronzeWasherStartsAndSettles) {
   const NewtonSettings newton = newton_settings(scene);
   std::vector<double> u;
   ASSERT_TRUE(SteadySolver(model, newton).solve_cold(u).converged);
-  const StepMarch march = march_load_step(model, u, 300.0, TransientSettings{}, newton, 0.0);
+  const StepMarch march = march_load_step(model, u, 200.0, 300.0, TransientSettings{}, newton, 0.0);
   EXPECT_TRUE(march.started) << march.message;
   EXPECT_TRUE(march.settled) << march.message;
-  EXPECT_EQ(model.load(), 300.0);
+  EXPECT_EQ(model.load(), 200.0);  // given back as it was
 }
 
 }  // namespace

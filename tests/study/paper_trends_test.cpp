@@ -107,9 +107,9 @@ Branch follow_branch(const Scene& scene, const std::vector<double>& loads) {
   natural.newton = newton;
   natural.newton.max_iterations = 12;
   for (std::size_t k = 1; k < loads.size(); ++k) {
-    natural.initial_step = natural.max_step = loads[k] - model.load();
+    natural.initial_step = natural.max_step = loads[k] - loads[k - 1];
     natural.min_step = 0.002 * loads[k];
-    const NaturalReport rep = continue_in_parameter(model, u, loads[k], natural, [&](const BranchPoint& p) {
+    const NaturalReport rep = continue_in_parameter(model, u, loads[k - 1], loads[k], natural, [&](const BranchPoint& p) {
       if (p.index > 0) out.states.push_back(model.describe(p.u));
       return true;
     });
@@ -137,7 +137,7 @@ std::optional<double> fold_of(const Branch& b) {
   arc.lambda_min = 0.98 * load;  // turned back: the fold is passed
   arc.lambda_max = 2.0 * load;
   arc.max_points = 200;
-  const ArclengthReport rep = continue_by_arclength(model, b.last, arc);
+  const ArclengthReport rep = continue_by_arclength(model, b.last, load, arc);
   if (rep.folds.empty()) return {};
   return rep.folds.front().lambda;
 }
