@@ -8,6 +8,7 @@
 #include "model/assembly_totals.h"
 #include "physics/asperity_contact.h"
 #include "physics/contact_table_cache.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -275,7 +276,7 @@ SegregatedSystem::Blocks BearingModel::segregated_blocks() const {
                                : block.effect == BlockEffect::thermal || block.effect == BlockEffect::thermal_deformation
                                    ? &b.temperature
                                                                  : nullptr;
-    if (!into) throw std::logic_error(std::string("segregated_blocks: unknown block of effect ") + effect_name(block.effect));
+    if (!into) throw InternalError(std::string("segregated_blocks: unknown block of effect ") + effect_name(block.effect));
     for (Index k = 0; k < block.size; ++k) into->push_back(block.offset + k);
   }
   return b;

@@ -1,4 +1,5 @@
 #include "model/sparse_assembly.h"
+#include "twb/error_family.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -30,7 +31,7 @@ void Assembler::add_derivative_searched(Index row, Index col, double value) {
   if (jacobian_.empty()) return;
   const Index k = pattern_->find(row, col);
   if (k < 0)
-    throw std::logic_error("Jacobian entry (" + std::to_string(row) + ", " + std::to_string(col) +
+    throw InternalError("Jacobian entry (" + std::to_string(row) + ", " + std::to_string(col) +
                            ") is outside the structural pattern");
   jacobian_[k] += value;
   if (recording_) recording_->push_back(k);

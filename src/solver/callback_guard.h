@@ -6,6 +6,7 @@
 
 #include <exception>
 #include <string>
+#include <utility>
 
 #include "twb/error_family.h"
 
@@ -15,6 +16,10 @@ namespace twb {
 struct CallbackFailure {
   std::string message;          // what it threw, for the report
   std::exception_ptr internal;  // an InternalError, to throw again after the solve
+  // Once the C solver has returned: the internal error, if one was kept, thrown again.
+  void rethrow_internal() {
+    if (internal) std::rethrow_exception(std::exchange(internal, nullptr));
+  }
 };
 
 // body() returns the callback's flag (0, or > 0 for a recoverable failure).

@@ -31,9 +31,6 @@ struct IdaTransient::Callbacks {
   // What a callback threw (callback_guard.h): an internal error is carried across the
   // C solver and thrown again once it returns.
   CallbackFailure failure;
-  void rethrow_internal() {
-    if (failure.internal) std::rethrow_exception(std::exchange(failure.internal, nullptr));
-  }
 };
 
 namespace {
@@ -159,7 +156,7 @@ IdaTransient::IdaTransient(const SteadySystem& system, TransientSettings setting
 IdaTransient::~IdaTransient() = default;
 
 TransientStatus IdaTransient::status_from(int flag, const char* call) const {
-  callbacks_->rethrow_internal();
+  callbacks_->failure.rethrow_internal();
   TransientStatus s;
   s.flag = flag;
   s.ok = flag >= 0;

@@ -37,9 +37,6 @@ struct KinsolNewton::Callbacks {
   // What a callback threw (callback_guard.h): an internal error is carried across the
   // C solver and thrown again once it returns.
   CallbackFailure failure;
-  void rethrow_internal() {
-    if (failure.internal) std::rethrow_exception(std::exchange(failure.internal, nullptr));
-  }
   const PseudoTimeShift* shift = nullptr;
   std::vector<Index> diagonal;  // position of (k, k) in the pattern
 
@@ -228,6 +225,7 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   if (s.max_step > 0) check_flag(KINSetMaxNewtonStep(kin_.get(), s.max_step), "KINSetMaxNewtonStep");
   callbacks_->last_error.clear();
   callbacks_->failure.message.clear();
+  pattern_klu(klu_.get()).failure.message.clear();
   // The shift adds to the diagonal: a row whose pattern lacks (k, k) cannot take it.
   if (shift)
     for (std::size_t k = 0; k < n; ++k)
@@ -247,7 +245,8 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
     callbacks_->last_watched.reset();
     callbacks_->full_steps = strategy == KIN_NONE;
     const int result = KINSol(kin_.get(), y_.get(), strategy, scale_.get(), residual_scale_.get());
-    callbacks_->rethrow_internal();
+    callbacks_->failure.rethrow_internal();
+    pattern_klu(klu_.get()).failure.rethrow_internal();
     long count = 0;
     KINGetNumNonlinSolvIters(kin_.get(), &count);
     rep.iterations += count;
@@ -330,10 +329,12 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
     rep.worst_block = model_.block_name(Index(worst));
     rep.worst_row = Index(worst);
     char* name = KINGetReturnFlagName(flag);
+    const std::string& linear_failure = pattern_klu(klu_.get()).failure.message;
     rep.message = std::string(name ? name : "KINSOL failure") +
                   fmt::format(" (largest residual {:.3g} in {})", r[worst], model_.describe_row(Index(worst))) +
                   (callbacks_->last_error.empty() ? "" : ": " + callbacks_->last_error) +
-                  (callbacks_->failure.message.empty() ? "" : " (" + callbacks_->failure.message + ")");
+                  (callbacks_->failure.message.empty() ? "" : " (" + callbacks_->failure.message + ")") +
+                  (linear_failure.empty() ? "" : " (linear solver: " + linear_failure + ")");
     free(name);
   }
   return rep;

@@ -9,6 +9,13 @@ namespace twb {
 
 PatternKlu& pattern_klu(SUNLinearSolver s) { return *static_cast<PatternKlu*>(s->content); }
 
+namespace {
+
+// guarded_callback's −1 (it stopped an exception) as the linear solver's flag for it.
+int unrecoverable_if_thrown(int flag) { return flag < 0 ? SUNLS_PACKAGE_FAIL_UNREC : flag; }
+
+}  // namespace
+
 SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern, SparseLu::Ordering ordering) {
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
   if (!s) return nullptr;
@@ -28,23 +35,19 @@ SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern, S
   // the solve as unrecoverable.
   s->ops->setup = [](SUNLinearSolver ls, SUNMatrix a) {
     PatternKlu& k = pattern_klu(ls);
-    try {
-      const std::span<const double> values(SUNSparseMatrix_Data(a), std::size_t(SUNSparseMatrix_NNZ(a)));
-      return k.last_flag = k.lu.refactor(values) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
-    } catch (...) {
-      return k.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
-    }
+    return k.last_flag = unrecoverable_if_thrown(guarded_callback(k.failure, [&] {
+             const std::span<const double> values(SUNSparseMatrix_Data(a), std::size_t(SUNSparseMatrix_NNZ(a)));
+             return k.lu.refactor(values) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
+           }));
   };
   s->ops->solve = [](SUNLinearSolver ls, SUNMatrix, N_Vector x, N_Vector b, realtype) {
     PatternKlu& k = pattern_klu(ls);
     if (!k.lu.factored()) return k.last_flag = SUNLS_PACKAGE_FAIL_REC;
-    try {
-      N_VScale(1.0, b, x);
-      k.lu.solve(std::span<double>(N_VGetArrayPointer(x), std::size_t(N_VGetLength(x))));
-      return k.last_flag = SUNLS_SUCCESS;
-    } catch (...) {
-      return k.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
-    }
+    return k.last_flag = unrecoverable_if_thrown(guarded_callback(k.failure, [&] {
+             N_VScale(1.0, b, x);
+             k.lu.solve(std::span<double>(N_VGetArrayPointer(x), std::size_t(N_VGetLength(x))));
+             return SUNLS_SUCCESS;
+           }));
   };
   s->ops->lastflag = [](SUNLinearSolver ls) { return sunindextype(pattern_klu(ls).last_flag); };
   s->ops->free = [](SUNLinearSolver ls) {

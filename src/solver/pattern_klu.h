@@ -9,6 +9,7 @@
 
 #include <sundials/sundials_linearsolver.h>
 
+#include "solver/callback_guard.h"
 #include "solver/sparse_lu.h"
 
 namespace twb {
@@ -17,6 +18,9 @@ struct PatternKlu {
   PatternKlu(const SparsePattern& pattern, SparseLu::Ordering ordering) : lu(pattern, ordering) {}
   SparseLu lu;
   int last_flag = SUNLS_SUCCESS;
+  // What setup or solve threw (callback_guard.h): KINSOL sees an unrecoverable failure,
+  // and the Newton solver throws an internal error again once KINSOL has returned.
+  CallbackFailure failure;
 };
 
 // The solver's own factorization (shared with the pseudo-time steps).

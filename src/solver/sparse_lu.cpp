@@ -95,12 +95,12 @@ bool SparseLu::refactor(std::span<const double> values) {
 bool SparseLu::factored() const { return klu_->numeric != nullptr; }
 
 void SparseLu::solve(std::span<double> b) const {
-  if (!klu_->numeric) throw std::logic_error("SparseLu::solve without a factorization");
+  if (!klu_->numeric) throw InternalError("SparseLu::solve without a factorization");
   klu_l_tsolve(klu_->symbolic, klu_->numeric, klu_->n, 1, b.data(), &klu_->common);
 }
 
 void SparseLu::solve_transposed(std::span<double> b) const {
-  if (!klu_->numeric) throw std::logic_error("SparseLu::solve_transposed without a factorization");
+  if (!klu_->numeric) throw InternalError("SparseLu::solve_transposed without a factorization");
   klu_l_solve(klu_->symbolic, klu_->numeric, klu_->n, 1, b.data(), &klu_->common);
 }
 

@@ -9,6 +9,7 @@
 #include "study/study_support.h"
 #include "failure_load.h"
 #include "solver/kinsol_newton.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -158,7 +159,7 @@ std::optional<MeshErrorEstimate> RefinedFoldCurve::at(double p, double load, std
                                                       std::string& why) {
   // The coarse model must stand at p: its state u is interpolated through its settings.
   if (coarse_.curve_parameter(which_) != p)
-    throw std::logic_error("RefinedFoldCurve::at: the coarse model is not at the point's parameter");
+    throw InternalError("RefinedFoldCurve::at: the coarse model is not at the point's parameter");
   fine_->set_curve_parameter(which_, p);
   std::vector<double> guess;
   double guess_load = load;
