@@ -131,6 +131,7 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
     const FilmMesh& m = film.mesh;
     const std::array<Index, 3> rigid_cols = film.rigid_columns();
     const std::array<ComponentId, 2> sides{film.lower, film.upper};
+    const GapPlane plane = film.plane(q);
     for (int i = 0; i < m.radial_nodes(); ++i) {
       const double area = m.node_area(i);
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
@@ -139,7 +140,7 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
         const Index row = film.temperature_row(n);
         const double scale = layout.row_scale(row);
         const double x = node.x, y = node.y;
-        const double h = film.node_gap(q, x, y) + (deforms ? model.shape_at(u, film, n) : 0.0);
+        const double h = plane.at(x, y) + (deforms ? model.shape_at(u, film, n) : 0.0);
         const std::array<double, 3> dh = film.gap_gradient(x, y);
         const LinearForm& shape = model.shape_form(film, n);
         const ValueSlope gap = average_gap(h, film.sigma);
@@ -247,11 +248,12 @@ double BearingModel::hottest_face_temperature(std::span<const double> u, Compone
   for (const Film& film : films_) {
     if (film.lower != id && film.upper != id) continue;
     const FilmMesh& m = film.mesh;
+    const GapPlane plane = film.plane(q);
     for (int i = 0; i < m.radial_nodes(); ++i)
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const int n = m.node(i, j);
         const double r = m.radius(i), th = m.angle(j);
-        const double h = film.node_gap(q, r * std::cos(th), r * std::sin(th)) + (deforms() ? shape_at(u, film, n) : 0.0);
+        const double h = plane.at(r * std::cos(th), r * std::sin(th)) + (deforms() ? shape_at(u, film, n) : 0.0);
         const double path = average_gap(h, film.sigma).value / (2.0 * k_oil) + own;
         const double body = face_temperature(u, id, m.radius(i), j, nullptr);
         const double tf = temperature_of(u, film.temperature_row(n));
