@@ -50,6 +50,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   };
   f1.shear_weight = weight(scene_.washer.roughness.rq, scene_.carrier.roughness.rq);
   f2.shear_weight = weight(scene_.gear.roughness.rq, scene_.washer.roughness.rq);
+  if (const std::optional<Grooves>& g = scene_.washer.grooves) (g->film == 1 ? f1 : f2).relief = FaceRelief(*g, nt);
   films_ = {f1, f2};
 
   // Reference scales (their values do not depend on the unknowns declared).

@@ -42,6 +42,7 @@ void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotal
       if (deformed)
         h += (1 - pt.s) * (1 - pt.t) * cell.d_node[0] + pt.s * (1 - pt.t) * cell.d_node[1] +
              (1 - pt.s) * pt.t * cell.d_node[2] + pt.s * pt.t * cell.d_node[3];
+      if (cell.relief) h += cell.relief_at(pt.t);
       if (h > cutoff) continue;
       contact_points.push_back(pt);
       contact_h.push_back(h);

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 
+#include "model/face_relief.h"
 #include "twb/model/bearing_state.h"
 #include "twb/model/film_mesh.h"
 #include "system/sparse_pattern.h"
@@ -29,7 +30,8 @@ struct GapPlane {
 //   h = c + s·(γx·y − γy·x) − tilt·x
 // film 1 (carrier–washer): c = c1 = z_w,              s = +1, tilt = 0
 // film 2 (washer–gear):    c = c2 = z_g − z_w − t_w,  s = −1, tilt = γ_tilt
-// plus, with thermal deformation, the node shapes δ (film_shape.cpp).
+// plus, with thermal deformation, the node shapes δ (film_shape.cpp), plus the face's
+// relief g (grooves, shaped lands: face_relief.h), which is constant in the unknowns.
 struct Film {
   int number = 1;
   FilmMesh mesh;
@@ -38,6 +40,7 @@ struct Film {
   double sign = 1.0;
   double imposed_tilt = 0.0;
   bool sliding = false;
+  FaceRelief relief{};            // flat unless the washer's face on this film is grooved
   double sigma = 0.0;             // combined RMS roughness
   double shear_weight = 0.0;      // [(σ_moving/σ)² − (σ_fixed/σ)²], eq [3]
   Index pressure_offset = -1;     // interior nodes (radial 1..Nr-2), -1 without hydrodynamics

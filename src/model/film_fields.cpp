@@ -24,7 +24,9 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
       const double r = m.radius(i);
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const std::size_t k = std::size_t(m.node(i, j));
-        const double h = plane.at_polar(r, m.angle(j)) + (deforms() ? shape_at(u, film, int(k)) : 0.0);
+        // On a relief's edge the node's gap is its control volume's mean (face_relief.h).
+        double h = plane.at_polar(r, m.angle(j)) + (deforms() ? shape_at(u, film, int(k)) : 0.0);
+        if (!film.relief.flat()) h += 0.5 * (film.relief.node_halves(j).before + film.relief.node_halves(j).after);
         f.gap[k] = h;
         f.pressure[k] = pressure_at(u, film, i, j);
         // The contact law's value at the node's gap, for a map. The reported contact

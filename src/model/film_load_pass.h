@@ -84,7 +84,11 @@ struct FilmCell {
   std::array<int, 4> node{};
   std::array<Index, 4> p_col{-1, -1, -1, -1};
   std::array<double, 4> p_node{}, t_node{}, d_node{};
+  // The face relief on the cell's lines j and j+1 (linear between; face_relief.h).
+  bool relief = false;
+  double relief_start = 0.0, relief_end = 0.0;
   GapRange gap_range;
+  double relief_at(double t) const { return relief_start + t * (relief_end - relief_start); }
 };
 
 // A cell's integrals with their gradients. Rigid-body gradients are gathered against

@@ -135,10 +135,17 @@ FilmCell FilmLoadPass::cell(int i, int j) const {
   const double r0 = mesh.radius(i), r1 = mesh.radius(i + 1);
   const double t0 = mesh.angle(j), t1 = t0 + mesh.dtheta();
   if (contact) c.gap_range = plane.range(r0, r1, t0, t1, cos_node[j], sin_node[j], cos_node[j + 1], sin_node[j + 1]);
-  // A bilinear shape stays within its corners' values.
+  // A bilinear shape stays within its corners' values, and a linear relief within its edges'.
   if (deformed) {
     c.gap_range.least += *std::min_element(c.d_node.begin(), c.d_node.end());
     c.gap_range.greatest += *std::max_element(c.d_node.begin(), c.d_node.end());
+  }
+  if (!film.relief.flat()) {
+    c.relief = true;
+    c.relief_start = film.relief.column_start(j);
+    c.relief_end = film.relief.column_end(j);
+    c.gap_range.least += std::min(c.relief_start, c.relief_end);
+    c.gap_range.greatest += std::max(c.relief_start, c.relief_end);
   }
   return c;
 }

@@ -22,6 +22,7 @@ void FilmLoadPass::fluid_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals&
         point_h[q] = gap_plane.at(x, y);
         if (deformed)
           for (int k = 0; k < 4; ++k) point_h[q] += N[k] * cell.d_node[k];
+        if (cell.relief) point_h[q] += cell.relief_at(tt);
       }
     }
     model.viscosity(point_t, point_mu);

@@ -140,20 +140,33 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
         const Index row = film.temperature_row(n);
         const double scale = layout.row_scale(row);
         const double x = node.x, y = node.y;
-        const double h = plane.at(x, y) + (deforms ? model.shape_at(u, film, n) : 0.0);
+        // A node on a relief's edge (docs/physics.md section 14): the two halves of its
+        // control volume conduct side by side, each through its own gap.
+        const FaceRelief::Halves relief = film.relief.flat() ? FaceRelief::Halves{0.0, 0.0} : film.relief.node_halves(j);
+        const double smooth = plane.at(x, y) + (deforms ? model.shape_at(u, film, n) : 0.0);
         const std::array<double, 3> dh = film.gap_gradient(x, y);
         const LinearForm& shape = model.shape_form(film, n);
-        const ValueSlope gap = average_gap(h, film.sigma);
+        const ValueSlope gap = average_gap(smooth + relief.before, film.sigma);
+        const bool straddles = relief.after != relief.before;
+        const ValueSlope other_gap = straddles ? average_gap(smooth + relief.after, film.sigma) : gap;
         const double tf = model.temperature_of(u, row);
 
         for (std::size_t side = 0; side < 2; ++side) {
           const FaceLink& face = node.face[side];
           double ts = ambient;
           for (int t = 0; t < face.terms; ++t) ts += face.weight[std::size_t(t)] * u[face.column[std::size_t(t)]];
-          const double res = gap.value / (2.0 * k_oil) + model.body_resistance(sides[side]);
-          const double flow = area * (tf - ts) / res;  // W from the film node into the component
-          const double dflow_dh = -flow / res * gap.slope / (2.0 * k_oil);
-          const double conductance = area / res;
+          const double body = model.body_resistance(sides[side]);
+          const double res = gap.value / (2.0 * k_oil) + body;
+          double flow = area * (tf - ts) / res;  // W from the film node into the component
+          double dflow_dh = -flow / res * gap.slope / (2.0 * k_oil);
+          double conductance = area / res;
+          if (straddles) {
+            const double other = other_gap.value / (2.0 * k_oil) + body;
+            conductance = 0.5 * area * (1.0 / res + 1.0 / other);
+            flow = conductance * (tf - ts);
+            dflow_dh = -0.5 * area * (tf - ts) * (gap.slope / (res * res) + other_gap.slope / (other * other)) /
+                       (2.0 * k_oil);
+          }
           a.add_residual(row, -scale * flow);
           if (jac) {
             a.add_derivative(row, row, -scale * conductance);
@@ -254,9 +267,13 @@ double BearingModel::hottest_face_temperature(std::span<const double> u, Compone
         const int n = m.node(i, j);
         const double r = m.radius(i), th = m.angle(j);
         const double h = plane.at(r * std::cos(th), r * std::sin(th)) + (deforms() ? shape_at(u, film, n) : 0.0);
-        const double path = average_gap(h, film.sigma).value / (2.0 * k_oil) + own;
         const double body = face_temperature(u, id, m.radius(i), j, nullptr);
         const double tf = temperature_of(u, film.temperature_row(n));
+        // Beside a relief's edge the land's half conducts more: the hotter face is under it.
+        const double relief = film.relief.flat() ? 0.0
+                                                 : std::min(film.relief.node_halves(j).before,
+                                                            film.relief.node_halves(j).after);
+        const double path = average_gap(h + relief, film.sigma).value / (2.0 * k_oil) + own;
         hottest = std::max(hottest, body + (tf - body) * own / path);
       }
   }

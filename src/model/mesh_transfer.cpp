@@ -10,6 +10,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "model/bearing_model.h"
 #include "twb/error_family.h"
 
@@ -104,12 +106,26 @@ std::vector<double> BearingModel::interpolated_from(const BearingModel& source, 
   return out;
 }
 
+bool BearingModel::resolves_grooves_on(int circumferential_nodes) const {
+  return !scene_.washer.grooves ||
+         grooves_on_grid(*scene_.washer.grooves, scene_.mesh.circumferential_nodes, circumferential_nodes);
+}
+
 std::unique_ptr<BearingModel> BearingModel::on_mesh(int radial_nodes, int circumferential_nodes) const {
   // The scene holds every parameter changed since construction except the load, the
   // viscosity scale (set_curve_parameter) and the deformation scale.
   Scene scene = scene_;
   scene.mesh.radial_nodes = radial_nodes;
   scene.mesh.circumferential_nodes = circumferential_nodes;
+  if (scene.washer.grooves) {
+    const std::optional<Grooves> g =
+        grooves_on_grid(*scene.washer.grooves, scene_.mesh.circumferential_nodes, circumferential_nodes);
+    if (!g)
+      throw InternalError(fmt::format("on_mesh: the grooves cannot lie on a grid of {} circumferential nodes "
+                                      "(resolves_grooves_on says which can hold them)",
+                                      circumferential_nodes));
+    scene.washer.grooves = g;
+  }
   auto model = std::make_unique<BearingModel>(scene);
   model->set_load(load_);
   if (viscosity_scale_ != 1.0) model->set_curve_parameter(CurveParameter::viscosity_scale, viscosity_scale_);

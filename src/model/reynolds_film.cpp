@@ -135,10 +135,23 @@ void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assem
     const bool circumferential = f.kind == ReynoldsFace::Kind::circumferential;
     const double x = f.r * std::cos(f.theta), y = f.r * std::sin(f.theta);
     const Index na = m.node(f.ia, f.ja), nb = m.node(f.ib, f.jb);
-    // A face lies midway between its two nodes: the shape is their mean there.
-    const double h = plane.at(x, y) + (deformed ? 0.5 * (delta[na] + delta[nb]) : 0.0);
+    // A face lies midway between its two nodes: the shape is their mean there. A
+    // circumferential face lies within one column of the relief; a radial face on a
+    // relief's edge has half its length on either side, each with its own gap
+    // (docs/physics.md section 14), so its conductance is the mean of the two.
+    FaceRelief::Halves relief{0.0, 0.0};
+    if (!film.relief.flat())
+      relief = circumferential ? FaceRelief::Halves{film.relief.in_column(f.ja, 0.5), film.relief.in_column(f.ja, 0.5)}
+                               : film.relief.node_halves(f.ja);
+    const double smooth = plane.at(x, y) + (deformed ? 0.5 * (delta[na] + delta[nb]) : 0.0);
+    const double h = smooth + relief.before;
     const std::array<double, 3> dh = film.gap_gradient(x, y);
-    const Conductance g = conductance(h, 0.5 * (node_t[na] + node_t[nb]));
+    const double t_face = 0.5 * (node_t[na] + node_t[nb]);
+    Conductance g = conductance(h, t_face);
+    if (relief.after != relief.before) {
+      const Conductance other = conductance(smooth + relief.after, t_face);
+      g = {0.5 * (g.g + other.g), 0.5 * (g.dg_dh + other.dg_dh), 0.5 * (g.dg_dt + other.dg_dt)};
+    }
     const ValueSlope carried = circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
     const int upwind = ReynoldsOperator::upwind_node(f, omega);
     const double theta = circumferential ? content(upwind) : 1.0;

@@ -38,7 +38,7 @@ void read_geometry(const MapReader& scene, Scene& out) {
                            {"carrier", "washer", "gear"});
   const MapReader carrier(geometry.get("carrier", "a map with thickness"), {"thickness"});
   const MapReader washer(geometry.get("washer", "a map with inner_diameter, outer_diameter, thickness"),
-                         {"inner_diameter", "outer_diameter", "thickness"});
+                         {"inner_diameter", "outer_diameter", "thickness", "grooves"});
   const MapReader gear(geometry.get("gear", "a map with inner_diameter, outer_diameter, thickness, tilt"),
                        {"inner_diameter", "outer_diameter", "thickness", "tilt"});
 

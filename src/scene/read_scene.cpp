@@ -13,6 +13,7 @@ Scene read_scene(const Node& root) {
   read_bodies(scene, out);
   read_operation(scene, out);
   read_numerics(scene, out);
+  read_grooves(scene, out);
   return out;
 }
 

@@ -19,6 +19,9 @@ void read_bodies(const MapReader& scene, Scene& out);
 void read_operation(const MapReader& scene, Scene& out);
 // mesh, solver, study, output
 void read_numerics(const MapReader& scene, Scene& out);
+// geometry.washer.grooves, after the rest: they round the mesh to their edges and need
+// the sliding film
+void read_grooves(const MapReader& scene, Scene& out);
 
 // The whole scene from the root of the (overridden) YAML tree.
 Scene read_scene(const Node& root);

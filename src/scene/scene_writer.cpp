@@ -66,6 +66,24 @@ void write_effects(Writer& w, const Effects& e) {
     w.line(1, fmt::format("- thermal_deformation: {{face_expansion: {}}}", kFaceExpansions.name(e.face_expansion)));
 }
 
+// As resolved: the width as the angle of its whole cells, the land's inlet as the share
+// of its whole cells (docs/physics.md section 14).
+void write_grooves(Writer& w, const Grooves& g, const Scene& s) {
+  w.line(2, "grooves:");
+  w.entry(3, "count", fmt::format("{}", g.count));
+  w.entry(3, "face", g.film == 1 ? "film_1" : "film_2");
+  const double mean_radius = 0.5 * (s.washer.inner_radius + s.washer.outer_radius);
+  w.entry(3, "width", quantity(g.width, "rad"),
+          fmt::format("{} cells of the {} round the grid; {:.4g} mm at the mean radius", g.cells,
+                      s.mesh.circumferential_nodes, 1e3 * g.width * mean_radius));
+  w.entry(3, "depth", quantity(g.depth, "m"));
+  if (g.land.shape == LandShape::flat) return;
+  w.line(3, "land:");
+  w.line(4, fmt::format("{}:", g.land.shape == LandShape::taper ? "taper" : "step"));
+  w.entry(5, "depth", quantity(g.land.depth, "m"));
+  w.entry(5, "fraction", quantity(g.land.fraction, "1"), "of the land, whole cells");
+}
+
 void write_geometry(Writer& w, const Scene& s) {
   w.line(0, "geometry:");
   w.line(1, "carrier:  # its face covers the washer annulus");
@@ -74,6 +92,7 @@ void write_geometry(Writer& w, const Scene& s) {
   w.entry(2, "inner_diameter", quantity(2 * s.washer.inner_radius, "m"));
   w.entry(2, "outer_diameter", quantity(2 * s.washer.outer_radius, "m"));
   w.entry(2, "thickness", quantity(s.washer.thickness, "m"));
+  if (const std::optional<Grooves>& g = s.washer.grooves) write_grooves(w, *g, s);
   w.line(1, "gear:");
   w.entry(2, "inner_diameter", quantity(2 * s.gear.inner_radius, "m"));
   w.entry(2, "outer_diameter", quantity(2 * s.gear.outer_radius, "m"));
@@ -154,7 +173,8 @@ void write_operation(Writer& w, const Scene& s) {
 void write_numerics(Writer& w, const Scene& s) {
   w.line(0, "mesh:");
   w.entry(1, "radial_nodes", fmt::format("{}", s.mesh.radial_nodes));
-  w.entry(1, "circumferential_nodes", fmt::format("{}", s.mesh.circumferential_nodes));
+  w.entry(1, "circumferential_nodes", fmt::format("{}", s.mesh.circumferential_nodes),
+          s.washer.grooves ? fmt::format("a multiple of the {} grooves", s.washer.grooves->count) : std::string());
   w.entry(1, "contact_quadrature", fmt::format("{}", s.mesh.contact_quadrature));
   w.entry(1, "flat_contact_quadrature", fmt::format("{}", s.mesh.flat_contact_quadrature));
 

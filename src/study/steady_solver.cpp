@@ -46,9 +46,11 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
     spent.attempts.push_back(fmt::format("{}: {}", strategy, why.empty() ? "did not converge" : why));
   };
   // The coarser mesh must still be a legal one (docs/scenes.md, "Bounds"): at least
-  // 5 × 24, so that it keeps interior pressure nodes and its wedge.
+  // 5 × 24, so that it keeps interior pressure nodes and its wedge, and hold the
+  // washer's grooves.
   if (mesh_sequence_ && mesh.node_count() > kSequenceAbove && (mesh.radial_nodes() + 1) / 2 >= 5 &&
-      (mesh.circumferential_nodes() + 1) / 2 >= 24) {
+      (mesh.circumferential_nodes() + 1) / 2 >= 24 &&
+      model_.resolves_grooves_on((mesh.circumferential_nodes() + 1) / 2)) {
     try {
       SteadyReport rep = solve_by_mesh_sequence(u);
       if (rep.converged) return rep;

@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "../support/table1_scene.h"
@@ -33,6 +34,7 @@ struct EffectSet {
   bool deformation = false;
   FrictionLaw friction = FrictionLaw::empirical;
   CavitationModel cavitation_model = CavitationModel::reynolds;
+  int grooved_film = 0;  // 1 or 2: three tapered-land grooves on that washer face (film 2 slides)
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -66,6 +68,19 @@ TEST_P(JacobianTest, MatchesCentralDifferences) {
   s.effects.cavitation = e.cavitation_model;
   s.mesh.radial_nodes = 5;
   s.mesh.circumferential_nodes = 12;
+  if (e.grooved_film > 0) {
+    // Pitch 4 cells: a groove of 2, a land of 2 whose first falls as a taper; the
+    // relief's edges and its radial faces' two halves enter every row a gap does.
+    s.operating.sliding = SlidingFilm::washer_gear;
+    Grooves g;
+    g.count = 3;
+    g.film = e.grooved_film;
+    g.cells = 2;
+    g.width = 2 * 2 * std::numbers::pi / 12;
+    g.depth = 3e-6;
+    g.land = {LandShape::taper, 1e-6, 0.5};
+    s.washer.grooves = g;
+  }
   BearingModel m(s);
   m.set_newton_form(e.cavitation == CavitationRow::minimum);
   const SparsePattern& p = m.pattern();
@@ -165,7 +180,13 @@ INSTANTIATE_TEST_SUITE_P(
                                 CavitationModel::jfo},
                       EffectSet{"jfo_with_deformation", true, true, true, true, 545.0, CarrierTemperature::load_frame,
                                 CavitationRow::fischer_burmeister, true, FrictionLaw::empirical,
-                                CavitationModel::jfo}),
+                                CavitationModel::jfo},
+                      EffectSet{"grooved_sliding_film_all_effects", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
+                                FrictionLaw::empirical, CavitationModel::reynolds, 2},
+                      EffectSet{"grooved_standing_film_jfo", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, false,
+                                FrictionLaw::empirical, CavitationModel::jfo, 1}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -106,7 +106,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"missing_gear", 4, 3, {"missing required key 'gear' in 'geometry'", "allowed: carrier, washer, gear"}},
     {"empty_required_value", 8, 3, {"operating.load: expected a force", "got no value"}},
     {"map_where_scalar_expected", 8, 9, {"operating.load: expected a force", "got a map"}},
-    {"list_where_map_expected", 5, 11, {"'geometry.washer' must be a map (allowed keys: inner_diameter, outer_diameter, thickness); got a list"}},
+    {"list_where_map_expected", 5, 11, {"'geometry.washer' must be a map (allowed keys: inner_diameter, outer_diameter, thickness, grooves); got a list"}},
     {"scalar_where_list_expected", 2, 10, {"effects: expected a list of effects (hydrodynamics, flow_factors, asperity_contact, thermal, thermal_deformation); got the value 'hydrodynamics'"}},
     {"scalar_where_map_expected", 12, 7, {"'mesh' must be a map (allowed keys: radial_nodes, circumferential_nodes, contact_quadrature, flat_contact_quadrature); got the value '17'"}},
     {"not_a_whole_number", 12, 22, {"mesh.radial_nodes: '9.5' is not a whole number", "expected a whole number in [3, 1025]"}},
@@ -138,6 +138,9 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"yaml_tab_indentation", 9, 0, {"YAML syntax error", "tab"}},
     {"yaml_stray_comma", 2, 1, {"YAML syntax error: unexpected ','"}},
     {"scene_not_a_map", 2, 1, {"the scene must be a map (allowed keys: effects, geometry", "got a list"}},
+    {"grooves_on_a_turning_washer", 9, 14, {"geometry.washer.grooves", "needs operating.sliding: washer_gear"}},
+    {"groove_width_without_unit", 9, 32, {"geometry.washer.grooves.width: '0.2' has no unit", "a length", "an angle"}},
+    {"land_with_two_shapes", 13, 13, {"geometry.washer.grooves.land", "expected one shape", "taper and step"}},
   };
   return cases;
 }

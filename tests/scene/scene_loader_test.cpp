@@ -1,5 +1,6 @@
 // Defaults, describe_scene's round trip, and the file-level errors of load_scene.
 #include <cmath>
+#include <numbers>
 #include <ostream>
 
 #include <gtest/gtest.h>
@@ -33,6 +34,16 @@ void expect_same_component(const Component& a, const Component& b) {
   expect_same_material(a.material, b.material);
   EXPECT_EQ(a.roughness.ra, b.roughness.ra);
   EXPECT_EQ(a.roughness.rq, b.roughness.rq);
+  ASSERT_EQ(a.grooves.has_value(), b.grooves.has_value());
+  if (!a.grooves) return;
+  EXPECT_EQ(a.grooves->count, b.grooves->count);
+  EXPECT_EQ(a.grooves->film, b.grooves->film);
+  EXPECT_EQ(a.grooves->width, b.grooves->width);
+  EXPECT_EQ(a.grooves->depth, b.grooves->depth);
+  EXPECT_EQ(a.grooves->cells, b.grooves->cells);
+  EXPECT_EQ(a.grooves->land.shape, b.grooves->land.shape);
+  EXPECT_EQ(a.grooves->land.depth, b.grooves->land.depth);
+  EXPECT_EQ(a.grooves->land.fraction, b.grooves->land.fraction);
 }
 
 // Every field but `source`.
@@ -116,6 +127,43 @@ TEST(SceneDefaults, SummitDensityGivenDirectlySetsEtaRSigma) {
   EXPECT_NEAR(scene.asperities.eta_r_sigma, 1e10 * 10e-6 * 0.5e-6, 1e-15);
 }
 
+// Grooves put every edge on a node line (docs/physics.md section 14): the circumferential
+// count becomes the nearest multiple of the groove count, the width and the land's
+// inlet whole cells of it.
+TEST(SceneGrooves, EdgesOnNodeLinesRoundTheGridAndTheWidths) {
+  const std::string bodies(testing::kSceneBodies);
+  auto grooved = [&](const std::string& grooves, const std::string& mesh) {
+    std::string text = bodies;
+    text.replace(text.find("thickness: 0.635 mm}"), 20, "thickness: 0.635 mm, grooves: " + grooves + "}");
+    return TempScene(text + "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n" + mesh);
+  };
+  // 66 nodes, 8 grooves: 64 (8 per pitch). 2 mm at the mean radius 8.45 mm is 0.2367 rad,
+  // 2.41 cells of 2π/64: 2 cells.
+  const Scene eight = load_scene(grooved("{count: 8, width: 2 mm, depth: 50 um}", "").path());
+  ASSERT_TRUE(eight.washer.grooves);
+  EXPECT_EQ(eight.mesh.circumferential_nodes, 64);
+  EXPECT_EQ(eight.washer.grooves->cells, 2);
+  EXPECT_DOUBLE_EQ(eight.washer.grooves->width, 2 * 2 * std::numbers::pi / 64);
+  EXPECT_EQ(eight.washer.grooves->film, 2);
+  EXPECT_EQ(eight.washer.grooves->land.shape, LandShape::flat);
+  // 100 nodes, 7 grooves: 98 (14 per pitch); 30 degrees is 8.17 cells of 2π/98: 8; the
+  // taper over 0.3 of the 6-cell land: 2 cells, 1/3.
+  const Scene seven = load_scene(
+      grooved("{count: 7, width: 30 deg, depth: 20 um, land: {taper: {depth: 5 um, fraction: 0.3}}}",
+              "mesh: {circumferential_nodes: 100}\n")
+          .path());
+  EXPECT_EQ(seven.mesh.circumferential_nodes, 98);
+  EXPECT_EQ(seven.washer.grooves->cells, 8);
+  EXPECT_EQ(seven.washer.grooves->land.shape, LandShape::taper);
+  EXPECT_DOUBLE_EQ(seven.washer.grooves->land.fraction, 2.0 / 6.0);
+  // A groove wider than the pitch keeps one cell of land, a step one cell of flat land.
+  const Scene wide = load_scene(
+      grooved("{count: 24, width: 20 deg, depth: 20 um, land: {step: {depth: 5 um, fraction: 0.9}}}", "").path());
+  EXPECT_EQ(wide.mesh.circumferential_nodes, 72);
+  EXPECT_EQ(wide.washer.grooves->cells, 1);
+  EXPECT_DOUBLE_EQ(wide.washer.grooves->land.fraction, 0.5);
+}
+
 // A load grid without `speeds` runs at operating.speed; with them, at each of them.
 TEST(SceneDefaults, LoadSweepSpeedsDefaultToTheOperatingSpeed) {
   const std::string sweep = "study: {type: load_sweep, load_start: 100 N, load_end: 1750 N, load_steps: 34";
@@ -197,6 +245,17 @@ INSTANTIATE_TEST_SUITE_P(
         RoundTripCase{"thermal_deformation_constrained",
                       with_thermal(kMinimalScene, "thermal, {thermal_deformation: {face_expansion: constrained}}") +
                           "materials: {carrier: {thermal_expansion: 11.5e-6 1/K}}\n"},
+        RoundTripCase{"grooved_washer_tapered_lands",
+                      std::string(testing::kSceneBodies).replace(std::string(testing::kSceneBodies).find("thickness: 0.635 mm}"), 20,
+                                                        "thickness: 0.635 mm, grooves: {count: 6, width: 2 mm, "
+                                                        "depth: 40 um, land: {taper: {depth: 8 um, fraction: 0.6}}}}") +
+                          "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n"},
+        RoundTripCase{"grooved_washer_stepped_lands_on_film_1",
+                      std::string(testing::kSceneBodies).replace(std::string(testing::kSceneBodies).find("thickness: 0.635 mm}"), 20,
+                                                        "thickness: 0.635 mm, grooves: {count: 12, width: 15 deg, "
+                                                        "depth: 0.1 mm, face: film_1, land: {step: {depth: 10 um, "
+                                                        "fraction: 0.5}}}}") +
+                          "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n"},
         RoundTripCase{"mass_conserving_cavitation",
                       std::string(kMinimalScene).replace(std::string(kMinimalScene).find("[hydrodynamics"), 14,
                                                          "[{hydrodynamics: {cavitation: jfo, cavity_pressure: -0.3 bar}}")},

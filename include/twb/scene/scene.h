@@ -93,6 +93,28 @@ struct Roughness {
   double rq = 0.515e-6;    // m, RMS roughness (sigma in the paper)
 };
 
+// A land's shaped inlet (docs/physics.md section 14), from the edge the moving face drags
+// oil in from: a taper falling linearly to the flat land, or a Rayleigh step.
+enum class LandShape { flat, taper, step };
+struct Land {
+  LandShape shape = LandShape::flat;
+  double depth = 0.0;     // m, the extra gap at the inlet edge
+  double fraction = 0.0;  // of the land's angle, resolved to whole cells of the grid
+};
+
+// Radial grooves in the washer's face on one film (docs/physics.md section 14), equally
+// spaced, from the inner to the outer radius, the first starting at θ = 0. Resolved so
+// that every edge lies on a node line: the circumferential node count is a multiple of
+// the count, and the width and the land's inlet are whole cells.
+struct Grooves {
+  int count = 0;
+  int film = 2;        // the film whose washer face is grooved
+  double width = 0.0;  // rad
+  double depth = 0.0;  // m
+  Land land;
+  int cells = 0;       // of the grid, per groove (resolved)
+};
+
 struct Component {
   double inner_radius = 0.0;  // m
   double outer_radius = 0.0;  // m
@@ -100,6 +122,7 @@ struct Component {
   double tilt = 0.0;          // rad, imposed tilt about y (gear only)
   Material material;
   Roughness roughness;
+  std::optional<Grooves> grooves{};  // the washer's face only
 };
 
 // Summit statistics estimated from measured profiles (docs/physics.md section 13): what they

@@ -1,0 +1,108 @@
+// The washer's face grooves and the shapes of its lands (docs/physics.md section 14):
+// read last, because they round the mesh so that every edge lies on a node line, and
+// because the face they are cut in must be at rest in the load frame.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "physical_bounds.h"
+#include "scene_names.h"
+#include "scene_sections.h"
+#include "quantity.h"
+
+namespace twb::scene_io {
+namespace {
+
+inline constexpr EnumNames<int, 2> kGroovedFaces{{"film_1", "film_2"}, {1, 2}};
+
+inline constexpr Range groove_depth{.low = 1e-7, .high = 5e-3,
+                                    .reason = "a groove from 0.1 um to 5 mm deep (thrust washers: 10 to 100 um)"};
+inline constexpr Range land_depth{.low = 1e-8, .high = 1e-3, .reason = "a taper or step from 10 nm to 1 mm deep"};
+inline constexpr Range land_fraction{.low = 0.0, .low_open = true, .high = 1.0,
+                                     .reason = "a share of the land's angle, above 0 and at most 1"};
+
+// A groove's width is a length (at the washer's mean radius) or an angle; a bare number
+// would be neither for sure.
+double groove_angle(const MapReader& grooves, double mean_radius) {
+  const Node node = grooves.get("width", "a length (e.g. 2 mm) or an angle (e.g. 10 deg)");
+  const std::string text = node.yaml().Scalar();
+  if (std::none_of(text.begin(), text.end(), [](unsigned char c) { return std::isalpha(c); }))
+    node.fail(fmt::format("{}: '{}' has no unit; give the groove's width as a length (e.g. 2 mm, at the mean radius) "
+                          "or an angle (e.g. 10 deg)",
+                          node.path(), text));
+  try {
+    return to_si(text, si::length) / mean_radius;
+  } catch (const QuantityError&) {
+    return grooves.quantity("width", si::angle, {.low = 0.0, .low_open = true, .high = 2 * std::numbers::pi});
+  }
+}
+
+Land read_land(const MapReader& grooves) {
+  Land land;
+  if (!grooves.has("land")) return land;
+  const MapReader shape = grooves.map("land", {"taper", "step"});
+  const std::vector<std::string> keys = shape.keys();
+  if (keys.size() != 1) {
+    const Node node = grooves.get("land", "");
+    node.fail(fmt::format("{}: expected one shape, taper: {{depth, fraction}} or step: {{depth, fraction}}; got {}",
+                          node.path(), keys.empty() ? "none" : fmt::format("{}", fmt::join(keys, " and "))));
+  }
+  land.shape = keys.front() == "taper" ? LandShape::taper : LandShape::step;
+  const MapReader inlet = shape.map(keys.front(), {"depth", "fraction"});
+  land.depth = inlet.quantity("depth", si::length, land_depth);
+  land.fraction = inlet.quantity("fraction", si::dimensionless, land_fraction);
+  return land;
+}
+
+}  // namespace
+
+void read_grooves(const MapReader& scene, Scene& out) {
+  const MapReader geometry(scene.get("geometry", ""), {"carrier", "washer", "gear"});
+  const MapReader washer(geometry.get("washer", ""), {"inner_diameter", "outer_diameter", "thickness", "grooves"});
+  if (!washer.has("grooves")) return;
+  const MapReader grooves = washer.map("grooves", {"count", "width", "depth", "face", "land"});
+  // The relief is at rest in the load frame only where the washer is: with film 2
+  // sliding the washer stays with the carrier (docs/physics.md section 14).
+  if (out.operating.sliding != SlidingFilm::washer_gear) {
+    const Node node = washer.get("grooves", "");
+    node.fail(fmt::format("{}: a grooved washer needs operating.sliding: washer_gear (the washer at rest with the "
+                          "carrier, its grooves at rest in the load frame); a washer turning with the gear "
+                          "(carrier_washer) would carry its grooves round under the tilted films, which twb does "
+                          "not model yet",
+                          node.path()));
+  }
+  Grooves g;
+  g.count = grooves.get("count", "the number of grooves round the face").integer(1, 360, "grooves round the face");
+  g.film = read_choice(grooves, "face", kGroovedFaces, 2);
+  g.depth = grooves.quantity("depth", si::length, groove_depth);
+  g.land = read_land(grooves);
+  const double width = groove_angle(grooves, 0.5 * (out.washer.inner_radius + out.washer.outer_radius));
+
+  // Every edge on a node line: a whole number of cells per groove pitch, and at least
+  // one cell for the groove, the land, and a shaped inlet and the flat rest after a step.
+  MeshSettings& mesh = out.mesh;
+  const int least_pitch = g.land.shape == LandShape::step ? 3 : 2;
+  const int pitch = std::max(least_pitch, int(std::lround(double(mesh.circumferential_nodes) / g.count)));
+  if (g.count * pitch > bounds::kMostCircumferentialNodes) {
+    const Node node = grooves.get("count", "");
+    node.fail(fmt::format("{}: {} grooves of at least {} cells each need {} circumferential nodes, more than the "
+                          "{} a machine's memory allows",
+                          node.path(), g.count, pitch, g.count * pitch, bounds::kMostCircumferentialNodes));
+  }
+  mesh.circumferential_nodes = g.count * pitch;
+  const double cell = 2 * std::numbers::pi / mesh.circumferential_nodes;
+  const int land_least = g.land.shape == LandShape::step ? 2 : 1;
+  g.cells = std::clamp(int(std::lround(width / cell)), 1, pitch - land_least);
+  g.width = g.cells * cell;
+  if (g.land.shape != LandShape::flat) {
+    const int land_cells = pitch - g.cells;
+    const int most = g.land.shape == LandShape::step ? land_cells - 1 : land_cells;
+    g.land.fraction = double(std::clamp(int(std::lround(g.land.fraction * land_cells)), 1, most)) / land_cells;
+  }
+  out.washer.grooves = g;
+}
+
+}  // namespace twb::scene_io
