@@ -51,6 +51,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   f1.shear_weight = weight(scene_.washer.roughness.rq, scene_.carrier.roughness.rq);
   f2.shear_weight = weight(scene_.gear.roughness.rq, scene_.washer.roughness.rq);
   if (const std::optional<Grooves>& g = scene_.washer.grooves) (g->film == 1 ? f1 : f2).relief = FaceRelief(*g, nt);
+  if (scene_.lubricant.supply) (film1_slides ? f1 : f2).inner_edge_pressure = scene_.lubricant.supply->pressure;
   films_ = {f1, f2};
 
   // Reference scales (their values do not depend on the unknowns declared).
@@ -217,7 +218,7 @@ RigidPosition BearingModel::position(std::span<const double> u) const {
 
 double BearingModel::pressure_at(std::span<const double> u, const Film& film, int i, int j) const {
   const Index k = film.pressure_column(i, j);
-  return k >= 0 ? p_ref_ * u[k] : 0.0;
+  return k >= 0 ? p_ref_ * u[k] : film.edge_pressure(i);
 }
 
 double BearingModel::content_at(std::span<const double> u, const Film& film, int i, int j) const {

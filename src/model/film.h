@@ -41,6 +41,9 @@ struct Film {
   double imposed_tilt = 0.0;
   bool sliding = false;
   FaceRelief relief{};            // flat unless the washer's face on this film is grooved
+  // The pressure (Pa, gauge) its inner edge holds: the oil supply's where the film is fed
+  // from the bore (docs/physics.md section 14), else ambient; the outer edge is ambient.
+  double inner_edge_pressure = 0.0;
   double sigma = 0.0;             // combined RMS roughness
   double shear_weight = 0.0;      // [(σ_moving/σ)² − (σ_fixed/σ)²], eq [3]
   Index pressure_offset = -1;     // interior nodes (radial 1..Nr-2), -1 without hydrodynamics
@@ -67,6 +70,8 @@ struct Film {
   Index pressure_column(int i, int j) const { return column_of(pressure_offset, mesh.interior_node(i, j)); }
   Index content_column(int i, int j) const { return column_of(content_offset, mesh.interior_node(i, j)); }
   Index temperature_row(int node) const { return temperature_offset + node; }
+  // The pressure an edge node (no unknown there) holds.
+  double edge_pressure(int i) const { return i == 0 ? inner_edge_pressure : 0.0; }
 
  private:
   static Index column_of(Index offset, Index interior) { return offset >= 0 && interior >= 0 ? offset + interior : -1; }

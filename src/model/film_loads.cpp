@@ -130,7 +130,7 @@ FilmCell FilmLoadPass::cell(int i, int j) const {
     c.t_node[k] = node_t[std::size_t(c.node[k])];
     if (deformed) c.d_node[k] = node_delta[std::size_t(c.node[k])];
     c.p_col[k] = film.pressure_column(ci[k], cj[k]);
-    if (c.p_col[k] >= 0) c.p_node[k] = model.pressure_scale() * u[std::size_t(c.p_col[k])];
+    c.p_node[k] = c.p_col[k] >= 0 ? model.pressure_scale() * u[std::size_t(c.p_col[k])] : film.edge_pressure(ci[k]);
   }
   const double r0 = mesh.radius(i), r1 = mesh.radius(i + 1);
   const double t0 = mesh.angle(j), t1 = t0 + mesh.dtheta();

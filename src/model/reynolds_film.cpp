@@ -88,7 +88,8 @@ void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assem
 
   const ReynoldsOperator op(m);
   auto p_col = [&](int k) -> Index { return k >= 0 ? film.pressure_offset + k : -1; };
-  auto p_val = [&](int k) { return k >= 0 ? p_ref * u[p_col(k)] : 0.0; };
+  // An edge node holds its edge's pressure (ambient, or the supply's at a fed bore).
+  auto p_val = [&](int k, int i) { return k >= 0 ? p_ref * u[p_col(k)] : film.edge_pressure(i); };
   // Mass-conserving cavitation (docs/physics.md section 12): the Couette flux carries the film
   // content θ of its upwind node (θ = 1 on the flooded edges), and the flow balances
   // are rows of their own, the content's; the pressure rows state p̂ ≥ 0, 1 − θ ≥ 0.
@@ -156,7 +157,7 @@ void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assem
     const int upwind = ReynoldsOperator::upwind_node(f, omega);
     const double theta = circumferential ? content(upwind) : 1.0;
     const ReynoldsFaceFlux flow =
-        ReynoldsOperator::flux(f, omega, g.g, theta * carried.value, p_val(f.a), p_val(f.b));
+        ReynoldsOperator::flux(f, omega, g.g, theta * carried.value, p_val(f.a, f.ia), p_val(f.b, f.ib));
     const double dq_dh = flow.dq_dg * g.dg_dh + flow.dq_dcarried * theta * carried.slope;
     const double dq_dt = flow.dq_dg * g.dg_dt * 0.5;
     const double dq_dtheta = flow.dq_dcarried * carried.value;

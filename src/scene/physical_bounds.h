@@ -26,6 +26,8 @@ inline constexpr Range material_temperature{.low = 0.0, .low_open = true, .high 
                                                       "2000 K"};
 inline constexpr Range film_ratio{.low = 0.0, .high = 100.0,
                                   .reason = "a least h_min/sigma, e.g. 1 (mixed lubrication) or 3 (full film)"};
+inline constexpr Range supply_pressure{.low = 0.0, .high = 1e8,
+                                       .reason = "a gauge supply pressure up to 1000 bar (transmissions: 1 to 20 bar)"};
 inline constexpr Range friction_coefficient{.low = 0.0, .high = 5.0,
                                             .reason = "a dry friction coefficient, 0 to 5"};
 

@@ -71,6 +71,8 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.lubricant.g0, b.lubricant.g0);
   EXPECT_EQ(a.lubricant.s0, b.lubricant.s0);
   EXPECT_EQ(a.lubricant.constant_viscosity, b.lubricant.constant_viscosity);
+  ASSERT_EQ(a.lubricant.supply.has_value(), b.lubricant.supply.has_value());
+  if (a.lubricant.supply) EXPECT_EQ(a.lubricant.supply->pressure, b.lubricant.supply->pressure);
   EXPECT_EQ(a.operating.load, b.operating.load);
   EXPECT_EQ(a.operating.speed, b.operating.speed);
   EXPECT_EQ(a.operating.sliding, b.operating.sliding);
@@ -256,6 +258,8 @@ INSTANTIATE_TEST_SUITE_P(
                                                         "depth: 0.1 mm, face: film_1, land: {step: {depth: 10 um, "
                                                         "fraction: 0.5}}}}") +
                           "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n"},
+        RoundTripCase{"oil_supply_at_the_bore",
+                      std::string(kMinimalScene) + "lubricant: {supply: {pressure: 3.5 bar, at: inner_radius}}\n"},
         RoundTripCase{"mass_conserving_cavitation",
                       std::string(kMinimalScene).replace(std::string(kMinimalScene).find("[hydrodynamics"), 14,
                                                          "[{hydrodynamics: {cavitation: jfo, cavity_pressure: -0.3 bar}}")},

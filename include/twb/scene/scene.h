@@ -154,6 +154,12 @@ struct ViscositySource {
   double largest_error = 0.0;           // over every fitted temperature
 };
 
+// Oil fed to the film under pressure (docs/physics.md section 14). So far at the inner
+// radius: the sliding film's inner edge holds the supply pressure instead of ambient.
+struct OilSupply {
+  double pressure = 0.0;  // Pa, gauge
+};
+
 struct Lubricant {
   double conductivity = 0.145;  // W/(m K)
   ViscosityModel viscosity_model = ViscosityModel::roelands;
@@ -167,6 +173,7 @@ struct Lubricant {
   // about every 10 K beyond, and its flash point (ASTM D92, about 180 degC).
   double max_temperature = 423.15;    // K, 150 degC
   double flash_temperature = 453.15;  // K, 180 degC
+  std::optional<OilSupply> supply{};  // none: both edges at ambient
 };
 
 // Failure criteria a scene may add besides the oil's and the materials' temperatures
