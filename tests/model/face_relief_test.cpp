@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/solved_film.h"
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "model/face_relief.h"
@@ -88,22 +89,13 @@ struct StepProfile {
 
 std::vector<StepProfile> unfed_grooves(int count, std::vector<int> rows) {
   const int pitch = 4, groove_cells = 3;
-  Scene s = testing::table1_scene(true, false, true, false, 100.0, 3000.0);
-  s.washer.inner_radius = s.gear.inner_radius = s.carrier.inner_radius = 10e-3;
-  s.washer.outer_radius = s.gear.outer_radius = s.carrier.outer_radius = 30e-3;
-  s.gear.tilt = 0.0;
-  s.operating.sliding = SlidingFilm::washer_gear;
-  s.lubricant.viscosity_model = ViscosityModel::constant;
+  Scene s = testing::wide_parallel_annulus(100.0, 3000.0);
   s.mesh.radial_nodes = 11;
   s.mesh.circumferential_nodes = count * pitch;
   Grooves g = grooves(count, groove_cells, 6e-6);
   g.width = groove_cells * 2 * std::numbers::pi / s.mesh.circumferential_nodes;
   s.washer.grooves = g;
-  BearingModel model(s);
-  std::vector<double> u;
-  const SteadyReport rep = SteadySolver(model, {}).solve_cold(u);
-  EXPECT_TRUE(rep.converged) << rep.message;
-  const FilmFields f = model.fields(u)[1];
+  const FilmFields f = testing::solved_sliding_film(s);
   const FilmMesh& m = f.mesh;
   std::vector<StepProfile> out;
   for (int i : rows) {

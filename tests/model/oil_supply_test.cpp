@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/solved_film.h"
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "study/steady_solver.h"
@@ -22,20 +23,11 @@ namespace {
 double radial_flow_error(int radial_nodes) {
   // The washer sits on the carrier and on the gear by contact: the supply's film
   // carries only part of the load (about 415 N of 1000 N here), whatever its gap.
-  Scene s = testing::table1_scene(true, false, true, false, 0.0, 1000.0);
-  s.washer.inner_radius = s.gear.inner_radius = s.carrier.inner_radius = 10e-3;
-  s.washer.outer_radius = s.gear.outer_radius = s.carrier.outer_radius = 30e-3;
-  s.gear.tilt = 0.0;
-  s.operating.sliding = SlidingFilm::washer_gear;
-  s.lubricant.viscosity_model = ViscosityModel::constant;
+  Scene s = testing::wide_parallel_annulus(0.0, 1000.0);
   s.lubricant.supply = OilSupply{5e5};
   s.mesh.radial_nodes = radial_nodes;
   s.mesh.circumferential_nodes = 24;
-  BearingModel model(s);
-  std::vector<double> u;
-  const SteadyReport rep = SteadySolver(model, {}).solve_cold(u);
-  EXPECT_TRUE(rep.converged) << rep.message;
-  const FilmFields f = model.fields(u)[1];
+  const FilmFields f = testing::solved_sliding_film(s);
   const FilmMesh& m = f.mesh;
   const double ps = s.lubricant.supply->pressure, ri = m.inner_radius(), ro = m.outer_radius();
   double worst = 0.0;

@@ -30,6 +30,19 @@ inline Scene table1_scene(bool hydrodynamics, bool flow_factors, bool contact, b
   return s;
 }
 
+// A wide parallel annulus for the closed forms of a film alone (docs/physics.md section
+// 14): washer, gear and carrier faces from r = 10 to 30 mm, no tilt, film 2 sliding over
+// the washer held by the carrier, an isothermal oil of constant viscosity.
+inline Scene wide_parallel_annulus(double speed, double load) {
+  Scene s = table1_scene(true, false, true, false, speed, load);
+  s.washer.inner_radius = s.gear.inner_radius = s.carrier.inner_radius = 10e-3;
+  s.washer.outer_radius = s.gear.outer_radius = s.carrier.outer_radius = 30e-3;
+  s.gear.tilt = 0.0;
+  s.operating.sliding = SlidingFilm::washer_gear;
+  s.lubricant.viscosity_model = ViscosityModel::constant;
+  return s;
+}
+
 // The coarse mesh of the model and study tests: 5 radial × 24 circumferential nodes,
 // seconds per distress search. Distress moves with the mesh (about 161 N instead of
 // 188 N at 545 rad/s), so tests compare twb with itself on it, not with the paper.
