@@ -22,7 +22,6 @@ enum class ComponentId { carrier = 0, washer = 1, gear = 2 };
 struct GapPlane {
   double c = 0, a = 0, b = 0;
   double at(double x, double y) const { return c + a * x + b * y; }
-  double at_polar(double r, double theta) const { return at(r * std::cos(theta), r * std::sin(theta)); }
   double least_within(double r) const { return c - std::hypot(a, b) * r; }
 };
 
@@ -56,6 +55,16 @@ struct Film {
   double clearance(const RigidPosition& q) const { return clearance_unknown == 0 ? q.c1 : q.c2; }
   GapPlane plane(const RigidPosition& q) const {
     return {clearance(q), -sign * q.gamma_y - imposed_tilt, sign * q.gamma_x};
+  }
+  // The plane at a film node, summed in the order of the physics' form above: the heat
+  // paths, the least gap and the reported fields were computed so before the plane had
+  // one object, and their results (W_d among them) stay bit-identical. The same plane
+  // as GapPlane::at up to the last digit; the relief is added by the caller.
+  double node_gap(const RigidPosition& q, double x, double y) const {
+    return clearance(q) + sign * (q.gamma_x * y - q.gamma_y * x) - imposed_tilt * x;
+  }
+  double node_gap_polar(const RigidPosition& q, double r, double theta) const {
+    return node_gap(q, r * std::cos(theta), r * std::sin(theta));
   }
   // ∂h/∂(ĉ, γ̂x, γ̂y) at (x, y), in the scaled unknowns of rigid_columns().
   std::array<double, 3> gap_gradient(double x, double y) const {

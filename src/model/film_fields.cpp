@@ -14,7 +14,6 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
   std::vector<FilmFields> out;
   for (const Film& film : films_) {
     const FilmMesh& m = film.mesh;
-    const GapPlane plane = film.plane(q);
     const std::size_t n = std::size_t(m.node_count());
     FilmFields f{film.number, film.sliding, m, {}, {}, {}, {}, {}, {}};
     for (auto* v : {&f.gap, &f.pressure, &f.contact_pressure, &f.film_temperature, &f.surface_temperature,
@@ -25,7 +24,7 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const std::size_t k = std::size_t(m.node(i, j));
         // On a relief's edge the node's gap is its control volume's mean (face_relief.h).
-        double h = plane.at_polar(r, m.angle(j)) + (deforms() ? shape_at(u, film, int(k)) : 0.0);
+        double h = film.node_gap_polar(q, r, m.angle(j)) + (deforms() ? shape_at(u, film, int(k)) : 0.0);
         if (!film.relief.flat()) h += 0.5 * (film.relief.node_halves(j).before + film.relief.node_halves(j).after);
         f.gap[k] = h;
         f.pressure[k] = pressure_at(u, film, i, j);

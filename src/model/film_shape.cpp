@@ -119,7 +119,7 @@ double BearingModel::least_gap(std::span<const double> u, const Film& film) cons
   double least = INFINITY;
   for (int i = 0; i < m.radial_nodes(); ++i)
     for (int j = 0; j < m.circumferential_nodes(); ++j)
-      least = std::min(least, plane.at_polar(m.radius(i), m.angle(j)) + delta[std::size_t(m.node(i, j))] + lower_side(j));
+      least = std::min(least, film.node_gap_polar(q, m.radius(i), m.angle(j)) + delta[std::size_t(m.node(i, j))] + lower_side(j));
   if (plane.a == 0.0 && plane.b == 0.0) return least;
   const double two_pi = 2 * std::numbers::pi;
   double theta = std::atan2(-plane.b, -plane.a);
@@ -130,7 +130,7 @@ double BearingModel::least_gap(std::span<const double> u, const Film& film) cons
   const int rim = m.radial_nodes() - 1;
   const double rim_delta =
       (1 - t) * delta[std::size_t(m.node(rim, j))] + t * delta[std::size_t(m.node(rim, m.wrap(j + 1)))];
-  return std::min(least, plane.at_polar(m.outer_radius(), theta) + rim_delta + (relief ? film.relief.in_column(j, t) : 0.0));
+  return std::min(least, film.node_gap_polar(q, m.outer_radius(), theta) + rim_delta + (relief ? film.relief.in_column(j, t) : 0.0));
 }
 
 double BearingModel::dishing_curvature(std::span<const double> u) const {

@@ -131,7 +131,6 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
     const FilmMesh& m = film.mesh;
     const std::array<Index, 3> rigid_cols = film.rigid_columns();
     const std::array<ComponentId, 2> sides{film.lower, film.upper};
-    const GapPlane plane = film.plane(q);
     for (int i = 0; i < m.radial_nodes(); ++i) {
       const double area = m.node_area(i);
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
@@ -143,7 +142,7 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
         // A node on a relief's edge (docs/physics.md section 14): the two halves of its
         // control volume conduct side by side, each through its own gap.
         const FaceRelief::Halves relief = film.relief.flat() ? FaceRelief::Halves{0.0, 0.0} : film.relief.node_halves(j);
-        const double smooth = plane.at(x, y) + (deforms ? model.shape_at(u, film, n) : 0.0);
+        const double smooth = film.node_gap(q, x, y) + (deforms ? model.shape_at(u, film, n) : 0.0);
         const std::array<double, 3> dh = film.gap_gradient(x, y);
         const LinearForm& shape = model.shape_form(film, n);
         const ValueSlope gap = average_gap(smooth + relief.before, film.sigma);
@@ -261,12 +260,11 @@ double BearingModel::hottest_face_temperature(std::span<const double> u, Compone
   for (const Film& film : films_) {
     if (film.lower != id && film.upper != id) continue;
     const FilmMesh& m = film.mesh;
-    const GapPlane plane = film.plane(q);
     for (int i = 0; i < m.radial_nodes(); ++i)
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const int n = m.node(i, j);
         const double r = m.radius(i), th = m.angle(j);
-        const double h = plane.at(r * std::cos(th), r * std::sin(th)) + (deforms() ? shape_at(u, film, n) : 0.0);
+        const double h = film.node_gap(q, r * std::cos(th), r * std::sin(th)) + (deforms() ? shape_at(u, film, n) : 0.0);
         const double body = face_temperature(u, id, m.radius(i), j, nullptr);
         const double tf = temperature_of(u, film.temperature_row(n));
         // Beside a relief's edge the land's half conducts more: the hotter face is under it.
