@@ -4,6 +4,16 @@
 
 namespace twb {
 
+namespace {
+
+// The whole cells of a land of `land` cells that its shaped inlet covers (none for a flat
+// land): the scene resolved the fraction to whole cells, so this only undoes the ratio.
+int inlet_cells(const Land& shape, int land) {
+  return shape.shape == LandShape::flat ? 0 : int(shape.fraction * land + 0.5);
+}
+
+}  // namespace
+
 FaceRelief::FaceRelief(const Grooves& grooves, int circumferential_nodes) {
   const int pitch = circumferential_nodes / grooves.count;
   const int land = pitch - grooves.cells;
@@ -12,7 +22,7 @@ FaceRelief::FaceRelief(const Grooves& grooves, int circumferential_nodes) {
   start_.assign(std::size_t(circumferential_nodes), 0.0);
   end_.assign(std::size_t(circumferential_nodes), 0.0);
   const Land& shape = grooves.land;
-  const int inlet = shape.shape == LandShape::flat ? 0 : int(shape.fraction * land + 0.5);
+  const int inlet = inlet_cells(shape, land);
   for (int first = 0; first < circumferential_nodes; first += pitch) {
     for (int c = 0; c < grooves.cells; ++c) start_[first + c] = end_[first + c] = grooves.depth;
     for (int c = 0; c < inlet; ++c) {
@@ -44,7 +54,7 @@ std::optional<Grooves> grooves_on_grid(const Grooves& grooves, int from, int to)
   out.cells = *cells;
   if (grooves.land.shape != LandShape::flat) {
     const int land = pitch_from - grooves.cells;
-    const std::optional<int> inlet = scaled(int(grooves.land.fraction * land + 0.5));
+    const std::optional<int> inlet = scaled(inlet_cells(grooves.land, land));
     const int land_to = pitch_to - *cells;
     if (!inlet || *inlet < 1 || *inlet > land_to || (grooves.land.shape == LandShape::step && *inlet == land_to))
       return std::nullopt;

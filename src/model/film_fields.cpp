@@ -25,7 +25,10 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
         const std::size_t k = std::size_t(m.node(i, j));
         // On a relief's edge the node's gap is its control volume's mean (face_relief.h).
         double h = film.node_gap_polar(q, r, m.angle(j)) + (deforms() ? shape_at(u, film, int(k)) : 0.0);
-        if (!film.relief.flat()) h += 0.5 * (film.relief.node_halves(j).before + film.relief.node_halves(j).after);
+        if (!film.relief.flat()) {
+          const FaceRelief::Halves halves = film.relief.node_halves(j);
+          h += 0.5 * (halves.before + halves.after);
+        }
         f.gap[k] = h;
         f.pressure[k] = pressure_at(u, film, i, j);
         // The contact law's value at the node's gap, for a map. The reported contact

@@ -268,9 +268,8 @@ double BearingModel::hottest_face_temperature(std::span<const double> u, Compone
         const double body = face_temperature(u, id, m.radius(i), j, nullptr);
         const double tf = temperature_of(u, film.temperature_row(n));
         // Beside a relief's edge the land's half conducts more: the hotter face is under it.
-        const double relief = film.relief.flat() ? 0.0
-                                                 : std::min(film.relief.node_halves(j).before,
-                                                            film.relief.node_halves(j).after);
+        const FaceRelief::Halves halves = film.relief.flat() ? FaceRelief::Halves{0.0, 0.0} : film.relief.node_halves(j);
+        const double relief = std::min(halves.before, halves.after);
         const double path = average_gap(h + relief, film.sigma).value / (2.0 * k_oil) + own;
         hottest = std::max(hottest, body + (tf - body) * own / path);
       }
