@@ -4,8 +4,11 @@ other, cell by cell as text, timing columns aside (`wall_ms` and any column endi
 `_ms`). For changes that must not change results (a restructuring of the code): run
 the same scenes with the build before and after and compare.
 
-    python3 scripts/same_results.py BEFORE AFTER
+    python3 scripts/same_results.py [--added-columns] BEFORE AFTER
 
+With --added-columns, columns that only AFTER has are listed but are no difference (a
+change that adds results and must leave the old ones as they were); the shared columns
+are compared by name.
 Directories are compared recursively (a directory of runs, one per scene). Prints each
 difference (file, row, column, both cells) and exits 1 if there is any, 0 otherwise.
 """
@@ -23,29 +26,35 @@ def rows(path):
         return list(csv.reader(f))
 
 
-def compare_file(before, after, name, out):
+def compare_file(before, after, name, out, added, allow_added):
     a, b = rows(before), rows(after)
     if not a or not b:
         if a != b:
             out.append(f"{name}: one file is empty")
         return
-    if a[0] != b[0]:
+    new = [c for c in b[0] if c not in a[0]]
+    if a[0] != b[0] and not (allow_added and [c for c in b[0] if c in a[0]] == a[0]):
         out.append(f"{name}: columns differ: {a[0]} / {b[0]}")
         return
+    if new:
+        added.append(f"{name}: added columns {new}")
     if len(a) != len(b):
         out.append(f"{name}: {len(a) - 1} rows / {len(b) - 1} rows")
     header = a[0]
+    where = {column: k for k, column in enumerate(b[0])}
     for r, (ra, rb) in enumerate(zip(a[1:], b[1:]), start=1):
         for c, column in enumerate(header):
             if timing(column):
                 continue
             x = ra[c] if c < len(ra) else ""
-            y = rb[c] if c < len(rb) else ""
+            y = rb[where[column]] if where[column] < len(rb) else ""
             if x != y:
                 out.append(f"{name}: row {r}, {column}: {x} / {y}")
 
 
 def main(argv):
+    allow_added = "--added-columns" in argv[1:]
+    argv = [argv[0]] + [a for a in argv[1:] if a != "--added-columns"]
     if len(argv) != 3:
         print(__doc__.strip(), file=sys.stderr)
         return 2
@@ -59,14 +68,14 @@ def main(argv):
     if not names:
         print("error: no CSV files to compare", file=sys.stderr)
         return 2
-    out = []
+    out, added = [], []
     for name in names:
         pa, pb = before / name, after / name
         if not pa.exists() or not pb.exists():
             out.append(f"{name}: only in {'after' if not pa.exists() else 'before'}")
             continue
-        compare_file(pa, pb, str(name), out)
-    for line in out:
+        compare_file(pa, pb, str(name), out, added, allow_added)
+    for line in added + out:
         print(line)
     print(f"{len(names)} files compared: " + (f"{len(out)} differences" if out else "the same"))
     return 1 if out else 0

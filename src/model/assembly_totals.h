@@ -28,6 +28,9 @@ struct FilmTotals {
   double friction_coefficient = 0, friction_slope = 0;
   bool friction_clamped = false;
   double friction_heat = 0;
+  // Flows of the sliding film (m³/s, docs/physics.md section 14): leaving it at its inner
+  // and at its outer radius, and out of its fed grooves into it.
+  double inner_flow = 0, outer_flow = 0, groove_flow = 0;
 };
 
 struct AssemblyTotals {

@@ -51,7 +51,15 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   f1.shear_weight = weight(scene_.washer.roughness.rq, scene_.carrier.roughness.rq);
   f2.shear_weight = weight(scene_.gear.roughness.rq, scene_.washer.roughness.rq);
   if (const std::optional<Grooves>& g = scene_.washer.grooves) (g->film == 1 ? f1 : f2).relief = FaceRelief(*g, nt);
-  if (scene_.lubricant.supply) (film1_slides ? f1 : f2).inner_edge_pressure = scene_.lubricant.supply->pressure;
+  if (const std::optional<OilSupply>& supply = scene_.lubricant.supply) {
+    Film& fed = film1_slides ? f1 : f2;
+    if (supply->feeds_bore()) fed.inner_edge_pressure = supply->pressure;
+    // The scene refused a supply into grooves that are not in the sliding film's face.
+    if (supply->feeds_grooves()) {
+      if (fed.relief.flat()) throw InternalError("BearingModel: oil supplied into grooves the sliding film lacks");
+      fed.groove_pressure = supply->pressure;
+    }
+  }
   films_ = {f1, f2};
 
   // Reference scales (their values do not depend on the unknowns declared).
@@ -309,6 +317,16 @@ void BearingModel::evaluate(std::span<const double> u, std::span<double> residua
                             std::span<double> jacobian) const {
   Assembler a(&pattern_, residual, jacobian, &slot_tape_);
   assemble(u, a, nullptr);
+}
+
+double BearingModel::groove_supply_force() const {
+  const Film& film = sliding_film();
+  if (!film.groove_pressure) return 0.0;
+  double area = 0.0;
+  for (int i = 1; i < film.mesh.radial_nodes() - 1; ++i)
+    for (int j = 0; j < film.mesh.circumferential_nodes(); ++j)
+      if (film.fed_node(i, j)) area += film.mesh.node_area(i);
+  return *film.groove_pressure * area;
 }
 
 void BearingModel::assemble(std::span<const double> u, Assembler& a, AssemblyTotals* totals) const {

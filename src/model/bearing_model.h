@@ -138,6 +138,10 @@ class BearingModel final : public SegregatedSystem {
 
   RigidPosition position(std::span<const double> u) const;
 
+  // The force (N) the oil supply holds on the sliding film's fed grooves alone: p_s times
+  // their nodes' areas, a floor of the film's hydrostatic force (docs/physics.md section
+  // 14). Below it no load keeps the gear down. 0 without supply into grooves.
+  double groove_supply_force() const;
 
   // Thermal deformation (docs/physics.md section 11; film_shape.cpp): the change δ of a film's
   // gap at a node from its plane, δ = form · u (m), from the carrier's and gear's face

@@ -85,6 +85,13 @@ BearingState BearingModel::describe(std::span<const double> u) const {
     for (Index k = film.pressure_offset; k < film.pressure_offset + film.mesh.interior_count(); ++k)
       s.complementarity_error = std::max(s.complementarity_error, std::abs(residual[k]));
 
+  if (film.pressure_offset >= 0) {
+    // A fed bore's inflow is supply; the grooves' outflow is supply wherever they are fed.
+    const bool fed_bore = scene_.lubricant.supply && scene_.lubricant.supply->feeds_bore();
+    s.flows = FilmFlows{ft.groove_flow - (fed_bore ? ft.inner_flow : 0.0), ft.inner_flow, ft.outer_flow,
+                        ft.groove_flow};
+  }
+
   // The contact pressure falls with the gap, so each film's largest is at its least gap.
   if (contact_)
     for (const Film& f : films_) {

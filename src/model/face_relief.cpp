@@ -21,10 +21,14 @@ FaceRelief::FaceRelief(const Grooves& grooves, int circumferential_nodes) {
     throw InternalError("FaceRelief: the grooves are not resolved to whole cells of the grid");
   start_.assign(std::size_t(circumferential_nodes), 0.0);
   end_.assign(std::size_t(circumferential_nodes), 0.0);
+  groove_.assign(std::size_t(circumferential_nodes), 0);
   const Land& shape = grooves.land;
   const int inlet = inlet_cells(shape, land);
   for (int first = 0; first < circumferential_nodes; first += pitch) {
-    for (int c = 0; c < grooves.cells; ++c) start_[first + c] = end_[first + c] = grooves.depth;
+    for (int c = 0; c < grooves.cells; ++c) {
+      start_[first + c] = end_[first + c] = grooves.depth;
+      groove_[first + c] = 1;
+    }
     for (int c = 0; c < inlet; ++c) {
       const int j = first + grooves.cells + c;
       if (shape.shape == LandShape::step) {

@@ -32,9 +32,16 @@ class FaceRelief {
     double before, after;
   };
   Halves node_halves(int j) const;
+  // Whether node line j bounds a groove: inside one or on either of its edges, where a
+  // groove fed with oil holds the supply's pressure (docs/physics.md section 14).
+  bool on_groove(int j) const {
+    const int n = int(groove_.size());
+    return !groove_.empty() && (groove_[std::size_t((j - 1 + n) % n)] || groove_[std::size_t(j % n)]);
+  }
 
  private:
   std::vector<double> start_, end_;  // g on each column's two node lines
+  std::vector<char> groove_;         // whether each column lies in a groove
 };
 
 // The grooves on a grid of `to` circumferential nodes instead of `from`, their angles

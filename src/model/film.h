@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "model/face_relief.h"
 #include "twb/model/bearing_state.h"
@@ -43,6 +44,9 @@ struct Film {
   // The pressure (Pa, gauge) its inner edge holds: the oil supply's where the film is fed
   // from the bore (docs/physics.md section 14), else ambient; the outer edge is ambient.
   double inner_edge_pressure = 0.0;
+  // With oil supplied into the grooves: the pressure every node on a groove holds
+  // (fed_node); none without.
+  std::optional<double> groove_pressure{};
   double sigma = 0.0;             // combined RMS roughness
   double shear_weight = 0.0;      // [(σ_moving/σ)² − (σ_fixed/σ)²], eq [3]
   Index pressure_offset = -1;     // interior nodes (radial 1..Nr-2), -1 without hydrodynamics
@@ -81,6 +85,11 @@ struct Film {
   Index temperature_row(int node) const { return temperature_offset + node; }
   // The pressure an edge node (no unknown there) holds.
   double edge_pressure(int i) const { return i == 0 ? inner_edge_pressure : 0.0; }
+  // An interior node on a fed groove: its pressure unknown holds the supply's (and its
+  // content is full), a boundary of the lands' Reynolds equation like the edges.
+  bool fed_node(int i, int j) const {
+    return groove_pressure && i > 0 && i < mesh.radial_nodes() - 1 && relief.on_groove(j);
+  }
 
  private:
   static Index column_of(Index offset, Index interior) { return offset >= 0 && interior >= 0 ? offset + interior : -1; }

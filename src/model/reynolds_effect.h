@@ -8,6 +8,8 @@
 
 namespace twb {
 
+struct FilmTotals;
+
 class ReynoldsEffect final : public EffectAssembler {
  public:
   // Declares the pressure block (and the content block) of every sliding film.
@@ -15,7 +17,7 @@ class ReynoldsEffect final : public EffectAssembler {
   void add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const override;
 
  private:
-  void add_film(std::span<const double> u, const Film& film, Assembler& a) const;
+  void add_film(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const;
 
   const BearingModel& model_;
   // Per interior node: p_ref times the Poiseuille diagonal of a uniform reference

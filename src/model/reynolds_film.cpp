@@ -69,12 +69,12 @@ ReynoldsEffect::ReynoldsEffect(ModelSetup& setup) : model_(setup.model) {
   }
 }
 
-void ReynoldsEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTotals&) const {
-  for (const Film& film : model_.films())
-    if (film.pressure_offset >= 0) add_film(u, film, a);
+void ReynoldsEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const {
+  for (std::size_t f = 0; f < model_.films().size(); ++f)
+    if (model_.films()[f].pressure_offset >= 0) add_film(u, model_.films()[f], a, totals.film[f]);
 }
 
-void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assembler& a) const {
+void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const {
   const BearingModel& model = model_;
   const Scene& scene = model.scene();
   const bool jac = a.wants_jacobian();
@@ -87,16 +87,29 @@ void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assem
   const double p_ref = model.pressure_scale();
 
   const ReynoldsOperator op(m);
-  auto p_col = [&](int k) -> Index { return k >= 0 ? film.pressure_offset + k : -1; };
+  // A node on a fed groove holds the supply's pressure, full of oil: like an edge node,
+  // a boundary of the lands' flow, whose own rows only say so (docs/physics.md section 14).
+  std::vector<char> fed(std::size_t(op.interior_count()), 0);
+  if (film.groove_pressure)
+    for (int i = 1; i < m.radial_nodes() - 1; ++i)
+      for (int j = 0; j < m.circumferential_nodes(); ++j) fed[std::size_t(op.interior_index(i, j))] = film.fed_node(i, j);
+  auto free = [&](int k) { return k >= 0 && !fed[std::size_t(k)]; };
+  auto p_col = [&](int k) -> Index { return free(k) ? film.pressure_offset + k : -1; };
   // An edge node holds its edge's pressure (ambient, or the supply's at a fed bore).
-  auto p_val = [&](int k, int i) { return k >= 0 ? p_ref * u[p_col(k)] : film.edge_pressure(i); };
+  auto p_val = [&](int k, int i) {
+    return free(k) ? p_ref * u[p_col(k)] : k >= 0 ? *film.groove_pressure : film.edge_pressure(i);
+  };
   // Mass-conserving cavitation (docs/physics.md section 12): the Couette flux carries the film
-  // content θ of its upwind node (θ = 1 on the flooded edges), and the flow balances
-  // are rows of their own, the content's; the pressure rows state p̂ ≥ 0, 1 − θ ≥ 0.
+  // content θ of its upwind node (θ = 1 on the flooded edges and grooves), and the flow
+  // balances are rows of their own, the content's; the pressure rows state p̂ ≥ 0, 1 − θ ≥ 0.
   const bool jfo = film.content_offset >= 0;
-  auto content_col = [&](int k) -> Index { return jfo && k >= 0 ? film.content_offset + k : -1; };
-  auto content = [&](int k) { return jfo && k >= 0 ? u[content_col(k)] : 1.0; };
+  auto content_col = [&](int k) -> Index { return jfo && free(k) ? film.content_offset + k : -1; };
+  auto content = [&](int k) { return jfo && free(k) ? u[content_col(k)] : 1.0; };
   auto balance_row = [&](int k) -> Index { return jfo ? content_col(k) : p_col(k); };
+  // The flows the state reports (m³/s): out of the film at each radius, and out of the fed
+  // grooves into it, from the very face fluxes of the balances.
+  const bool report = a.mode() == Assembler::Mode::values;
+  const int outer = m.radial_nodes() - 1;
 
   std::vector<double> node_t(m.node_count());
   for (int n = 0; n < m.node_count(); ++n) node_t[n] = model.apply(model.viscosity_temperature_form(film, n), u);
@@ -162,6 +175,12 @@ void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assem
     const double dq_dt = flow.dq_dg * g.dg_dt * 0.5;
     const double dq_dtheta = flow.dq_dcarried * carried.value;
     const Index ra = p_col(f.a), rb = p_col(f.b);
+    if (report) {
+      if (!circumferential && f.ia == 0) totals.inner_flow -= flow.q;
+      if (!circumferential && f.ib == outer) totals.outer_flow += flow.q;
+      for (const auto [node, sign] : f.ends())
+        if (node >= 0 && fed[std::size_t(node)]) totals.groove_flow += sign * flow.q;
+    }
     for (const auto [node, sign] : f.ends()) {
       const Index row = balance_row(node);
       if (row < 0) continue;
@@ -178,10 +197,23 @@ void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assem
     }
   });
 
+  // A fed node's rows: p̂ = p_s / p_ref, and θ = 1.
+  for (int k = 0; k < op.interior_count(); ++k) {
+    if (free(k)) continue;
+    const Index row = film.pressure_offset + k;
+    a.set_residual(row, u[row] - *film.groove_pressure / p_ref);
+    a.add_derivative(row, row, 1.0);
+    if (!jfo) continue;
+    const Index theta_col = film.content_offset + k;
+    a.set_residual(theta_col, u[theta_col] - 1.0);
+    a.add_derivative(theta_col, theta_col, 1.0);
+  }
+
   if (jfo) {
     // Content rows: the flow balance ŵ = w / its scale, which rises with the node's own
     // content (its Couette outflow) and pressure. Pressure rows: φ(p̂, 1 − θ).
     for (int k = 0; k < op.interior_count(); ++k) {
+      if (!free(k)) continue;
       const Index row = p_col(k), theta_col = content_col(k);
       if (a.mode() == Assembler::Mode::values) {
         const double scale = flow_scale_[k];
@@ -202,6 +234,7 @@ void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assem
   // scheme, which projects p ≥ 0 itself, scale it alone).
   if (a.mode() != Assembler::Mode::values) return;
   for (int k = 0; k < op.interior_count(); ++k) {
+    if (!free(k)) continue;
     const Index row = p_col(k);
     const double scale = flow_scale_[k];
     const double w_hat = a.residual_value(row) / scale;

@@ -1,6 +1,7 @@
 #include "twb/results/states_table.h"
 
 #include <algorithm>
+#include <array>
 
 #include <fmt/format.h>
 
@@ -9,6 +10,10 @@
 namespace twb {
 
 using cells::kelvin_offset;
+
+namespace {
+constexpr double kLitresPerMinute = 1e3 * 60.0;  // l/min in one m³/s
+}  // namespace
 
 ResultTable states_table(const std::vector<SolvedState>& rows, const std::string& parameter_column,
                          bool sliding_column) {
@@ -24,6 +29,13 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::string
              residual = t.number("residual", Style::scientific),
              energy = t.number("energy_error", Style::scientific), wall = t.number("wall_ms", Style::fixed),
              branch = t.text("branch"), fails_by = t.text("fails_by"), limits = t.text("limits");
+  // The oil's flows where the film has hydrodynamics, in m³/s and in l/min.
+  std::vector<ResultTable::Column> flows;
+  if (std::any_of(rows.begin(), rows.end(), [](const SolvedState& r) { return r.state.flows.has_value(); }))
+    for (const char* q : {"Q_supply", "Q_inner", "Q_outer", "Q_grooves"}) {
+      flows.push_back(t.number(std::string(q) + "_m3_s", Style::scientific));
+      flows.push_back(t.number(std::string(q) + "_l_min"));
+    }
   // The error bars' columns only where some state has them.
   std::vector<ResultTable::Column> errors;
   if (std::any_of(rows.begin(), rows.end(), [](const SolvedState& r) { return !r.mesh_errors.empty(); }))
@@ -59,6 +71,15 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::string
     // never a verdict of safety.
     t.put_text(fails_by, failure_names(s.limits));
     t.put_text(limits, limit_names(s.limits));
+    if (!flows.empty()) {
+      const std::optional<FilmFlows>& q = s.flows;
+      const std::array<double, 4> m3_s =
+          q ? std::array<double, 4>{q->supplied, q->inner, q->outer, q->grooves} : std::array<double, 4>{};
+      for (std::size_t k = 0; k < m3_s.size(); ++k) {
+        t.put_number(flows[2 * k], q ? std::optional<double>(m3_s[k]) : std::nullopt);
+        t.put_number(flows[2 * k + 1], q ? std::optional<double>(m3_s[k] * kLitresPerMinute) : std::nullopt);
+      }
+    }
     for (std::size_t k = 0; k < errors.size(); ++k)
       t.put_number(errors[k], k < r.mesh_errors.size() ? std::optional<double>(r.mesh_errors[k]) : std::nullopt);
   }

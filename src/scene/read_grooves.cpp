@@ -57,12 +57,24 @@ Land read_land(const MapReader& grooves) {
   return land;
 }
 
+// The scene's `lubricant.supply.at`, where a supply into the grooves is refused.
+[[noreturn]] void refuse_groove_supply(const MapReader& scene, const std::string& why) {
+  const MapReader oil = scene.map("lubricant", {std::begin(kLubricantKeys), std::end(kLubricantKeys)});
+  const Node at = oil.map("supply", {std::begin(kSupplyKeys), std::end(kSupplyKeys)}).get("at", "");
+  at.fail(fmt::format("{}: oil supplied at '{}' needs {}; feed the bore alone with at: inner_radius", at.path(),
+                      at.yaml().Scalar(), why));
+}
+
 }  // namespace
 
 void read_grooves(const MapReader& scene, Scene& out) {
   const MapReader geometry(scene.get("geometry", ""), {"carrier", "washer", "gear"});
   const MapReader washer(geometry.get("washer", ""), {"inner_diameter", "outer_diameter", "thickness", "grooves"});
-  if (!washer.has("grooves")) return;
+  const bool feeds_grooves = out.lubricant.supply && out.lubricant.supply->feeds_grooves();
+  if (!washer.has("grooves")) {
+    if (feeds_grooves) refuse_groove_supply(scene, "grooves to feed (geometry.washer.grooves)");
+    return;
+  }
   const MapReader grooves = washer.map("grooves", {"count", "width", "depth", "face", "land"});
   // The relief is at rest in the load frame only where the washer is: with film 2
   // sliding the washer stays with the carrier (docs/physics.md section 14).
@@ -77,9 +89,24 @@ void read_grooves(const MapReader& scene, Scene& out) {
   Grooves g;
   g.count = grooves.get("count", "the number of grooves round the face").integer(1, 360, "grooves round the face");
   g.film = read_choice(grooves, "face", kGroovedFaces, 2);
+  if (feeds_grooves && g.film != 2)
+    refuse_groove_supply(scene, "the grooves in the sliding film's face (face: film_2 with sliding: washer_gear)");
   g.depth = grooves.quantity("depth", si::length, groove_depth);
+  if (g.depth >= out.washer.thickness) {
+    const Node node = grooves.get("depth", "");
+    node.fail(fmt::format("{}: a groove {:.4g} mm deep would cut through the washer, {:.4g} mm thick; it must be "
+                          "shallower than the washer",
+                          node.path(), g.depth * 1e3, out.washer.thickness * 1e3));
+  }
   g.land = read_land(grooves);
   const double width = groove_angle(grooves, 0.5 * (out.washer.inner_radius + out.washer.outer_radius));
+  const double pitch_angle = 2 * std::numbers::pi / g.count;
+  if (width >= pitch_angle) {
+    const Node node = grooves.get("width", "");
+    node.fail(fmt::format("{}: {} grooves {:.4g} deg wide leave no land between them: the pitch is {:.4g} deg "
+                          "(360 deg / count), and a groove must be narrower",
+                          node.path(), g.count, width * 180 / std::numbers::pi, pitch_angle * 180 / std::numbers::pi));
+  }
 
   // Every edge on a node line: a whole number of cells per groove pitch, and at least
   // one cell for the groove, the land, and a shaped inlet and the flat rest after a step.

@@ -113,16 +113,13 @@ void read_fitted_viscosity(const MapReader& viscosity, bool data_sheet, Lubrican
 }
 
 void read_lubricant(const MapReader& scene, Scene& out) {
-  const MapReader oil =
-      scene.map("lubricant", {"conductivity", "viscosity", "max_temperature", "flash_temperature", "supply"});
+  const MapReader oil = scene.map("lubricant", {std::begin(kLubricantKeys), std::end(kLubricantKeys)});
   Lubricant& l = out.lubricant;
   if (oil.has("supply")) {
-    const MapReader supply = oil.map("supply", {"pressure", "at"});
-    // Where the oil enters: the bore so far; the grooves (and both) come with the
-    // grooves' own supply rows (docs/physics.md section 14).
-    static constexpr std::string_view kInlets[] = {"inner_radius"};
-    supply.choice("at", kInlets, 0);
-    l.supply = OilSupply{supply.quantity("pressure", si::stress, bounds::supply_pressure)};
+    // Whether the grooves it feeds exist is checked with the grooves (read_grooves.cpp).
+    const MapReader supply = oil.map("supply", {std::begin(kSupplyKeys), std::end(kSupplyKeys)});
+    l.supply = OilSupply{supply.quantity("pressure", si::stress, bounds::supply_pressure),
+                         read_choice(supply, "at", kSupplyInlets, SupplyInlet::inner_radius)};
   }
   l.conductivity = oil.quantity("conductivity", si::conductivity, bounds::oil_conductivity, l.conductivity);
   l.max_temperature = oil.quantity("max_temperature", si::temperature, bounds::absolute_temperature, l.max_temperature);

@@ -25,6 +25,15 @@ inline constexpr EnumNames<CarrierTemperature, 2> kCarrierTemperatures{
 inline constexpr EnumNames<FaceExpansion, 2> kFaceExpansions{
     {"free", "constrained"}, {FaceExpansion::free, FaceExpansion::constrained}};
 
+inline constexpr EnumNames<SupplyInlet, 3> kSupplyInlets{
+    {"inner_radius", "grooves", "both"}, {SupplyInlet::inner_radius, SupplyInlet::grooves, SupplyInlet::both}};
+
+// The lubricant's keys: read with the operating point, and again by the grooves, which
+// check that a supply into the grooves has grooves to feed.
+inline constexpr std::string_view kLubricantKeys[] = {"conductivity", "viscosity", "max_temperature",
+                                                       "flash_temperature", "supply"};
+inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at"};
+
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
     {"roelands", "constant"}, {ViscosityModel::roelands, ViscosityModel::constant}};
 

@@ -142,7 +142,8 @@ void write_operation(Writer& w, const Scene& s) {
   w.entry(1, "conductivity", quantity(l.conductivity, "W/(m K)"));
   w.entry(1, "max_temperature", quantity(l.max_temperature, "K"));
   w.entry(1, "flash_temperature", quantity(l.flash_temperature, "K"));
-  if (l.supply) w.line(1, fmt::format("supply: {{pressure: {} Pa, at: inner_radius}}", l.supply->pressure));
+  if (l.supply)
+    w.line(1, fmt::format("supply: {{pressure: {} Pa, at: {}}}", l.supply->pressure, kSupplyInlets.name(l.supply->at)));
   w.line(1, "viscosity:");
   w.entry(2, "model", std::string(kViscosityModels.name(l.viscosity_model)));
   if (l.viscosity_model == ViscosityModel::roelands) {

@@ -37,9 +37,10 @@ Json columns(const ResultTable& fullest, const ResultTable& plainest) {
 
 std::string result_columns_json() {
   const std::string parameter = "<parameter>", family = "<family>";
-  // One row is enough for the states table to declare its error bars' columns.
+  // One row is enough for the states table to declare its error bars' and flows' columns.
   SolvedState with_errors;
   with_errors.mesh_errors.assign(std::size(kMeshErrorQuantities), 0.0);
+  with_errors.state.flows = FilmFlows{};
   Json tables;
   tables["states"] = columns(states_table({with_errors}, parameter, true), states_table({}, {}, false));
   tables["distress"] = columns(distress_table({}, parameter, true), distress_table({}, {}, false));

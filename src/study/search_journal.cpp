@@ -20,12 +20,12 @@ namespace fs = std::filesystem;
 // A field added to a state must be journaled too, or a resumed run would write it as
 // zero: the size fails to compile until fields_of_state is extended (the other structs'
 // sizes are in kMagic, so an entry of another layout is never read).
-static_assert(sizeof(BearingState) == 8 * 30 + sizeof(std::vector<LimitExcess>),
+static_assert(sizeof(BearingState) == 8 * 30 + sizeof(std::optional<FilmFlows>) + sizeof(std::vector<LimitExcess>),
               "journal every BearingState field (search_journal.cpp)");
 
 // The format, the program's version and the journaled structs' layout: an entry written
 // by another build is not read (its search runs again) rather than misread.
-const std::string kMagic = fmt::format("twb-search-journal 5 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
+const std::string kMagic = fmt::format("twb-search-journal 6 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
                                        sizeof(SolvedState), sizeof(DistressRow), sizeof(TrajectorySample),
                                        sizeof(SearchCounts));
 
@@ -53,7 +53,11 @@ void fields_of_state(A& a, S& s) {
   a(s.contact_share), a(s.torque), a(s.f_eff), a(s.stribeck), a(s.friction_coefficient), a(s.friction_clamped);
   a(s.heat_generated), a(s.heat_to_ambient), a(s.energy_error), a(s.force_balance_error);
   a(s.moment_balance_error), a(s.complementarity_error), a(s.max_contact_pressure);
-  a(s.position.c1), a(s.position.gamma_x), a(s.position.gamma_y), a(s.position.c2), a(s.limits);
+  a(s.position.c1), a(s.position.gamma_x), a(s.position.gamma_y), a(s.position.c2), a(s.flows), a(s.limits);
+}
+template <class A, class S>
+void fields_of_flows(A& a, S& q) {
+  a(q.supplied), a(q.inner), a(q.outer), a(q.grooves);
 }
 template <class A, class S>
 void fields_of_film(A& a, S& f) {
@@ -110,6 +114,7 @@ class Out {
     (*this)(m.inner_radius()), (*this)(m.outer_radius()), (*this)(m.radial_nodes()), (*this)(m.circumferential_nodes());
   }
   void operator()(const LimitExcess& e) { fields_of_limit(*this, e); }
+  void operator()(const FilmFlows& q) { fields_of_flows(*this, q); }
   void operator()(const BearingState& s) { fields_of_state(*this, s); }
   void operator()(const FilmFields& f) { fields_of_film(*this, f); }
   void operator()(const SolvedState& s) { fields_of_solved(*this, s); }
@@ -171,6 +176,7 @@ class In {
     m = FilmMesh(r_in, r_out, nr, nt);
   }
   void operator()(LimitExcess& e) { fields_of_limit(*this, e); }
+  void operator()(FilmFlows& q) { fields_of_flows(*this, q); }
   void operator()(BearingState& s) { fields_of_state(*this, s); }
   void operator()(FilmFields& f) { fields_of_film(*this, f); }
   void operator()(SolvedState& s) { fields_of_solved(*this, s); }

@@ -294,7 +294,10 @@ SteadyReport SteadySolver::ramp(std::vector<double>& u, SteadyReport rep) {
   // Find a fraction of the load that Newton reaches from the cold start.
   std::vector<double> state;
   double start = 0.0;
+  // A load the fed grooves' supply alone outweighs lifts the gear off: no start there.
+  const double lift = model_.groove_supply_force();
   for (double fraction = 0.5; fraction >= 1.0 / 64.0; fraction *= 0.5) {
+    if (target * fraction <= lift) break;
     model_.set_load(target * fraction);
     state = model_.cold_start();
     if (reach(state, rep)) {
@@ -305,6 +308,12 @@ SteadyReport SteadySolver::ramp(std::vector<double>& u, SteadyReport rep) {
   if (start == 0.0) {
     model_.set_load(target);
     rep.message = "no fraction of the load down to 1/64 converges from the cold start: " + rep.message;
+    if (lift > 0.0)
+      rep.message += fmt::format(
+          "; the oil supply alone holds {:.4g} N on the fed grooves (lubricant.supply.pressure times their area), "
+          "{} the load {:.4g} N: no steady state exists at a load the supply lifts the gear off, and the "
+          "load ramp starts only above it",
+          lift, lift >= target ? "more than" : "a share of", target);
     return rep;
   }
   const double reached = walk([&](double w) { model_.set_load(w); }, start, target, start, state,

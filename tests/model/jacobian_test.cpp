@@ -35,6 +35,7 @@ struct EffectSet {
   FrictionLaw friction = FrictionLaw::empirical;
   CavitationModel cavitation_model = CavitationModel::reynolds;
   int grooved_film = 0;  // 1 or 2: three tapered-land grooves on that washer face (film 2 slides)
+  bool fed = false;      // oil supplied at the bore and into the grooves
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -81,6 +82,7 @@ TEST_P(JacobianTest, MatchesCentralDifferences) {
     g.land = {LandShape::taper, 1e-6, 0.5};
     s.washer.grooves = g;
   }
+  if (e.fed) s.lubricant.supply = OilSupply{2e5, SupplyInlet::both};
   BearingModel m(s);
   m.set_newton_form(e.cavitation == CavitationRow::minimum);
   const SparsePattern& p = m.pattern();
@@ -186,7 +188,13 @@ INSTANTIATE_TEST_SUITE_P(
                                 FrictionLaw::empirical, CavitationModel::reynolds, 2},
                       EffectSet{"grooved_standing_film_jfo", true, true, true, true, 545.0,
                                 CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, false,
-                                FrictionLaw::empirical, CavitationModel::jfo, 1}),
+                                FrictionLaw::empirical, CavitationModel::jfo, 1},
+                      EffectSet{"fed_grooves_jfo", true, true, true, true, 545.0, CarrierTemperature::load_frame,
+                                CavitationRow::fischer_burmeister, true, FrictionLaw::empirical,
+                                CavitationModel::jfo, 2, true},
+                      EffectSet{"fed_grooves_reynolds", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, false,
+                                FrictionLaw::empirical, CavitationModel::reynolds, 2, true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -8,6 +8,7 @@
 // r_{i+½}Δθ/Δr sum 1/r where the exact solution integrates it).
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -46,6 +47,31 @@ TEST(OilSupply, AtRestTheBoreFedFilmIsTheAnnulusRadialFlowToSecondOrder) {
   EXPECT_LT(coarse, 1e-3);
   // Second order: halving Δr divides the error by about 4 (observed order > 1.8).
   EXPECT_GT(coarse / fine, std::pow(2.0, 1.8));
+}
+
+// The flow of the same annulus, Q = π h³ p_s / (6 μ ln(r_o/r_i)), enters at the bore and
+// leaves at the rim. The discrete film's is p_s over the sum of its radial faces'
+// resistances, Σ Δr/(2π r_{i+½}) · 12μ/h³: the midpoint rule of ∫ dr/(2π r), whose
+// error is Δr²/24 · ∫ (1/r)'' dr / (2π) relative to the integral; the test allows 1.5 times that.
+TEST(OilSupply, AtRestTheBoreFedFilmPassesTheAnnulusFlow) {
+  Scene s = testing::wide_parallel_annulus(0.0, 1000.0);
+  s.lubricant.supply = OilSupply{5e5};
+  s.mesh.radial_nodes = 9;
+  s.mesh.circumferential_nodes = 24;
+  const testing::SolvedFilm solved = testing::solved_film_and_state(s);
+  const FilmMesh& m = solved.film.mesh;
+  const double h = solved.film.gap[std::size_t(m.node(4, 0))], mu = s.lubricant.constant_viscosity;
+  const double ri = m.inner_radius(), ro = m.outer_radius(), dr = (ro - ri) / (m.radial_nodes() - 1);
+  const double exact = std::numbers::pi * h * h * h * 5e5 / (6 * mu * std::log(ro / ri));
+  const double midpoint_error = dr * dr / 24 * (1 / (ri * ri) - 1 / (ro * ro)) / std::log(ro / ri);
+  ASSERT_TRUE(solved.state.flows.has_value());
+  const FilmFlows& q = *solved.state.flows;
+  std::cout << "Q " << q.supplied << " m3/s, closed form " << exact << ", rim " << q.outer << "\n";
+  EXPECT_NEAR(q.supplied, exact, 1.5 * midpoint_error * exact);
+  EXPECT_EQ(q.supplied, -q.inner);
+  EXPECT_EQ(q.grooves, 0.0);
+  // Every node's balance to the residual tolerance 1e-10 of its flow scale; 9·24 nodes.
+  EXPECT_NEAR(q.outer, q.supplied, 1e-7 * q.supplied);
 }
 
 TEST(OilSupply, WithoutSupplyBothEdgesAreAmbient) {

@@ -141,6 +141,10 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"grooves_on_a_turning_washer", 9, 14, {"geometry.washer.grooves", "needs operating.sliding: washer_gear"}},
     {"groove_width_without_unit", 9, 32, {"geometry.washer.grooves.width: '0.2' has no unit", "a length", "an angle"}},
     {"land_with_two_shapes", 13, 13, {"geometry.washer.grooves.land", "expected one shape", "taper and step"}},
+    {"groove_wider_than_pitch", 9, 33, {"geometry.washer.grooves.width", "leave no land", "the pitch is 30 deg"}},
+    {"groove_through_the_washer", 9, 45, {"geometry.washer.grooves.depth", "cut through the washer", "0.635 mm thick"}},
+    {"supply_into_missing_grooves", 8, 33, {"lubricant.supply.at", "needs grooves to feed", "at: inner_radius"}},
+    {"supply_into_grooves_of_the_standing_film", 13, 33, {"lubricant.supply.at: oil supplied at 'both'", "sliding film's face"}},
   };
   return cases;
 }

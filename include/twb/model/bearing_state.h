@@ -1,6 +1,7 @@
 // What twb reports of one solved state of the bearing (docs/physics.md section 9), in SI units.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "twb/model/operating_limits.h"
@@ -13,6 +14,15 @@ struct RigidPosition {
 };
 
 // Everything reported per solved state (docs/physics.md section 9).
+// The sliding film's oil flows (m³/s, docs/physics.md section 14), from the face fluxes of
+// its Reynolds balances. At a steady state with a full film supplied = leaving.
+struct FilmFlows {
+  double supplied = 0;  // into the film from every fed boundary: the bore and the grooves
+  double inner = 0;     // leaving at the inner radius (negative: entering, as from a fed bore)
+  double outer = 0;     // leaving at the outer radius
+  double grooves = 0;   // out of the fed grooves into the lands and across the rims
+};
+
 struct BearingState {
   double load = 0, speed = 0;
   double washer_mean_temperature = 0;  // K, area-weighted
@@ -32,6 +42,7 @@ struct BearingState {
   double force_balance_error = 0, moment_balance_error = 0;  // relative to the load
   double complementarity_error = 0;  // max |min(p̂, ŵ)|
   double max_contact_pressure = 0;   // Pa, nominal asperity pressure where either film is tightest
+  std::optional<FilmFlows> flows;    // with hydrodynamics
   RigidPosition position;
   // The limits of the model and the oil this state exceeds (operating_limits.h).
   std::vector<LimitExcess> limits;

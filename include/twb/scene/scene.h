@@ -154,10 +154,17 @@ struct ViscositySource {
   double largest_error = 0.0;           // over every fitted temperature
 };
 
-// Oil fed to the film under pressure (docs/physics.md section 14). So far at the inner
-// radius: the sliding film's inner edge holds the supply pressure instead of ambient.
+// Where the supplied oil enters the sliding film: its inner edge (fed from the bore), its
+// grooves (every node inside a groove, edges excluded), or both.
+enum class SupplyInlet { inner_radius, grooves, both };
+
+// Oil fed to the film under pressure (docs/physics.md section 14): the fed boundaries and
+// nodes hold the supply pressure instead of ambient.
 struct OilSupply {
   double pressure = 0.0;  // Pa, gauge
+  SupplyInlet at = SupplyInlet::inner_radius;
+  bool feeds_bore() const { return at != SupplyInlet::grooves; }
+  bool feeds_grooves() const { return at != SupplyInlet::inner_radius; }
 };
 
 struct Lubricant {
