@@ -1,0 +1,124 @@
+#include "model/film_face_flows.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/average_gap.h"
+#include "physics/flow_factors.h"
+
+namespace twb {
+
+namespace {
+
+// Poiseuille conductance φ·max(h, 0)³/(12 μ) at a face, and its slopes in h and T.
+struct Conductance {
+  double g, dg_dh, dg_dt;
+};
+
+}  // namespace
+
+FilmFaceFlows::FilmFaceFlows(const BearingModel& model, const Film& film, std::span<const double> u)
+    : model_(model),
+      film_(film),
+      u_(u),
+      op_(film.mesh),
+      plane_(film.plane(model.position(u))),
+      jfo_(film.content_offset >= 0),
+      fed_(std::size_t(op_.interior_count()), 0) {
+  const FilmMesh& m = film.mesh;
+  // A node on a fed groove holds the supply's pressure, full of oil: like an edge node,
+  // a boundary of the lands' flow (docs/physics.md section 14).
+  if (film.groove_pressure)
+    for (int i = 1; i < m.radial_nodes() - 1; ++i)
+      for (int j = 0; j < m.circumferential_nodes(); ++j) fed_[std::size_t(op_.interior_index(i, j))] = film.fed_node(i, j);
+  node_t_.resize(std::size_t(m.node_count()));
+  for (int n = 0; n < m.node_count(); ++n) node_t_[std::size_t(n)] = model.apply(model.viscosity_temperature_form(film, n), u);
+  delta_ = model.node_shapes(u, film);
+}
+
+// An edge node holds its edge's pressure (ambient, or the supply's at a fed bore), a fed
+// node the groove's.
+double FilmFaceFlows::pressure(int k, int i) const {
+  if (free(k)) return model_.pressure_scale() * u_[std::size_t(pressure_column(k))];
+  return k >= 0 ? *film_.groove_pressure : film_.edge_pressure(i);
+}
+
+FaceFlow FilmFaceFlows::evaluate(const ReynoldsFace& f) const {
+  const Scene& scene = model_.scene();
+  const FilmMesh& m = film_.mesh;
+  const double omega = scene.operating.speed;
+  const bool factors = scene.effects.flow_factors;
+  const double sigma = film_.sigma;
+  const bool deformed = !delta_.empty();
+
+  auto conductance = [&](double h, double t_face) {
+    const double hp = std::max(h, 0.0);
+    const ValueSlope mu = model_.viscosity(t_face);
+    ValueSlope phi{1.0, 0.0};
+    if (factors) {
+      const ValueSlope fp = pressure_flow_factor(h / sigma);
+      phi = {fp.value, fp.slope / sigma};
+    }
+    const double g = phi.value * hp * hp * hp / (12.0 * mu.value);
+    const double dg_dh = (phi.slope * hp * hp * hp + phi.value * 3.0 * hp * hp) / (12.0 * mu.value);
+    return Conductance{g, dg_dh, -g * mu.slope / mu.value};
+  };
+  // The gap the moving surface drags across a circumferential face: h̄T + σ φs with flow
+  // factors, h without (docs/physics.md section 3); its slope in h.
+  auto carried_gap = [&](double h) {
+    if (!factors) return ValueSlope{h, 1.0};
+    const ValueSlope gap = average_gap(h, sigma);
+    const ValueSlope phis = shear_flow_factor_Phi_s(h / sigma);
+    return ValueSlope{gap.value + sigma * film_.shear_weight * phis.value, gap.slope + film_.shear_weight * phis.slope};
+  };
+
+  FaceFlow out;
+  out.face = f;
+  out.circumferential = f.kind == ReynoldsFace::Kind::circumferential;
+  const double x = f.r * std::cos(f.theta), y = f.r * std::sin(f.theta);
+  out.na = m.node(f.ia, f.ja);
+  out.nb = m.node(f.ib, f.jb);
+  // A face lies midway between its two nodes: the shape is their mean there. A
+  // circumferential face lies within one column of the relief; a radial face on a
+  // relief's edge has half its length on either side, each with its own gap
+  // (docs/physics.md section 14), so its conductance is the mean of the two.
+  FaceRelief::Halves relief{0.0, 0.0};
+  if (!film_.relief.flat())
+    relief = out.circumferential ? FaceRelief::Halves{film_.relief.in_column(f.ja, 0.5), film_.relief.in_column(f.ja, 0.5)}
+                                 : film_.relief.node_halves(f.ja);
+  const double smooth =
+      plane_.at(x, y) + (deformed ? 0.5 * (delta_[std::size_t(out.na)] + delta_[std::size_t(out.nb)]) : 0.0);
+  const double h = smooth + relief.before;
+  out.dh = film_.gap_gradient(x, y);
+  const double t_face = 0.5 * (node_t_[std::size_t(out.na)] + node_t_[std::size_t(out.nb)]);
+  Conductance g = conductance(h, t_face);
+  if (relief.after != relief.before) {
+    const Conductance other = conductance(smooth + relief.after, t_face);
+    g = {0.5 * (g.g + other.g), 0.5 * (g.dg_dh + other.dg_dh), 0.5 * (g.dg_dt + other.dg_dt)};
+  }
+  const ValueSlope carried = out.circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
+  // Mass-conserving cavitation (docs/physics.md section 12): the Couette flux carries the
+  // film content θ of its upwind node (θ = 1 on the flooded edges and grooves).
+  out.upwind = ReynoldsOperator::upwind_node(f, omega);
+  const double theta = out.circumferential ? content(out.upwind) : 1.0;
+  out.flux = ReynoldsOperator::flux(f, omega, g.g, theta * carried.value, pressure(f.a, f.ia), pressure(f.b, f.ib));
+  out.dq_dh = out.flux.dq_dg * g.dg_dh + out.flux.dq_dcarried * theta * carried.slope;
+  out.dq_dt = out.flux.dq_dg * g.dg_dt * 0.5;
+  out.dq_dtheta = out.flux.dq_dcarried * carried.value;
+  return out;
+}
+
+void FilmFaceFlows::add_gradient(Assembler& a, Index row, double c, const FaceFlow& flow) const {
+  const std::array<Index, 3> rigid_cols = film_.rigid_columns();
+  const double p_ref = model_.pressure_scale();
+  for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[std::size_t(d)], c * flow.dq_dh * flow.dh[std::size_t(d)]);
+  a.add_derivative(row, pressure_column(flow.face.a), c * flow.flux.dq_dpa * p_ref);
+  a.add_derivative(row, pressure_column(flow.face.b), c * flow.flux.dq_dpb * p_ref);
+  a.add_form(row, c * flow.dq_dt, model_.viscosity_temperature_form(film_, flow.na));
+  a.add_form(row, c * flow.dq_dt, model_.viscosity_temperature_form(film_, flow.nb));
+  a.add_form(row, c * flow.dq_dh * 0.5, model_.shape_form(film_, flow.na));
+  a.add_form(row, c * flow.dq_dh * 0.5, model_.shape_form(film_, flow.nb));
+  if (jfo_ && flow.circumferential) a.add_derivative(row, content_column(flow.upwind), c * flow.dq_dtheta);
+}
+
+}  // namespace twb
