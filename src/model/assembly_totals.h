@@ -31,6 +31,9 @@ struct FilmTotals {
   // Flows of the sliding film (m³/s, docs/physics.md section 14): leaving it at its inner
   // and at its outer radius, and out of its fed grooves into it.
   double inner_flow = 0, outer_flow = 0, groove_flow = 0;
+  // With convection: the heat the oil takes up and carries out of the film (W, docs/physics.md
+  // section 15), as the heat balances hold it.
+  double convected_heat = 0;
 };
 
 struct AssemblyTotals {

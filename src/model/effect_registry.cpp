@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "model/bearing_model.h"
+#include "model/convection_effect.h"
 #include "model/deformation_effect.h"
 #include "model/film_loads_effect.h"
 #include "model/heat_effect.h"
@@ -20,6 +21,7 @@ void BearingModel::register_effects() {
   effects_.push_back(std::make_unique<FilmLoadsEffect>(setup));  // contact, fluid force, shear and friction heat
   if (fx.thermal) effects_.push_back(std::make_unique<HeatEffect>(setup));
   if (fx.thermal_deformation) effects_.push_back(std::make_unique<DeformationEffect>(setup));
+  if (fx.convection) effects_.push_back(std::make_unique<ConvectionEffect>(setup));  // rewrites the fed grooves' heat rows
 }
 
 }  // namespace twb

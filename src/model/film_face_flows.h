@@ -46,6 +46,12 @@ class FilmFaceFlows {
   void for_each(Visit&& visit) const {
     op_.for_each_face([&](const ReynoldsFace& f) { visit(evaluate(f)); });
   }
+  // Visits the edge rows' circumferential half faces (ReynoldsOperator::edge_face).
+  template <class Visit>
+  void for_each_edge_face(Visit&& visit) const {
+    for (const int i : {0, film_.mesh.radial_nodes() - 1})
+      for (int j = 0; j < film_.mesh.circumferential_nodes(); ++j) visit(evaluate(op_.edge_face(i, j)));
+  }
   // d(row) += c · ∇Q of a face, in the order the Reynolds rows have always summed it.
   void add_gradient(Assembler& a, Index row, double c, const FaceFlow& flow) const;
 

@@ -44,6 +44,12 @@ ReynoldsFace ReynoldsOperator::circumferential_face(int i, int j) const {
           circumferential_geometry(i), mesh_.dr()};
 }
 
+ReynoldsFace ReynoldsOperator::edge_face(int i, int j) const {
+  j = mesh_.wrap(j);
+  return {ReynoldsFace::Kind::circumferential, -1, i, j, i, mesh_.wrap(j + 1), -1, -1, mesh_.radius(i),
+          mesh_.angle(j) + 0.5 * mesh_.dtheta(), 0.0, 0.5 * mesh_.dr()};
+}
+
 ReynoldsFaceFlux ReynoldsOperator::flux(const ReynoldsFace& face, double omega, double g, double carried,
                                         double pa, double pb) {
   const double dp = pb - pa;

@@ -75,6 +75,11 @@ class ReynoldsOperator {
   ReynoldsFace circumferential_face(int i, int j) const;  // between (i, j) and (i, j+1)
   template <class Visit>
   void for_each_face(Visit&& visit) const;
+  // The circumferential face of an edge row's half volume [r_i, r_i + Δr/2] (or its mirror
+  // at the outer edge), between (i, j) and (i, j+1): the Couette flow alone crosses it (the
+  // edge's pressure is uniform). No balance of the Reynolds equation has it; the oil's heat
+  // does (convection, docs/physics.md section 15). a = b = −1, index −1.
+  ReynoldsFace edge_face(int i, int j) const;
 
   // Mass-conserving cavitation (docs/physics.md section 12): the node whose film content θ the
   // Couette flow carries through a face, the one the sliding comes from (first-order

@@ -36,6 +36,10 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::string
       flows.push_back(t.number(std::string(q) + "_m3_s", Style::scientific));
       flows.push_back(t.number(std::string(q) + "_l_min"));
     }
+  // The heat the oil carries where some state has convection.
+  std::optional<ResultTable::Column> carried;
+  if (std::any_of(rows.begin(), rows.end(), [](const SolvedState& r) { return r.state.heat_carried.has_value(); }))
+    carried = t.number("heat_carried_W");
   // The error bars' columns only where some state has them.
   std::vector<ResultTable::Column> errors;
   if (std::any_of(rows.begin(), rows.end(), [](const SolvedState& r) { return !r.mesh_errors.empty(); }))
@@ -71,6 +75,7 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::string
     // never a verdict of safety.
     t.put_text(fails_by, failure_names(s.limits));
     t.put_text(limits, limit_names(s.limits));
+    if (carried) t.put_number(*carried, s.heat_carried);
     if (!flows.empty()) {
       const std::optional<FilmFlows>& q = s.flows;
       const std::array<double, 4> m3_s =

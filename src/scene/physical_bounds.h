@@ -70,6 +70,9 @@ inline constexpr Range constant_viscosity{.low = 1e-6, .high = 1e3,
                                           .reason = "from gases (1e-5 Pa s) to bitumen-like fluids (1e3 Pa s)"};
 inline constexpr Range kinematic_viscosity{.low = 1e-7, .high = 1e-1,
                                            .reason = "an oil's kinematic viscosity, 0.1 to 1e5 cSt"};
+inline constexpr double kLowestSupplyTemperature = 233.15;  // K, -40 degC: about an ATF's pour point
+inline constexpr Range oil_specific_heat{.low = 1000.0, .high = 4000.0,
+                                         .reason = "an oil's specific heat, 1000 to 4000 J/(kg K) (ATFs: about 2000)"};
 inline constexpr Range oil_density{.low = 500.0, .high = 2000.0, .reason = "an oil's density, 500 to 2000 kg/m^3"};
 inline constexpr Range oil_expansion{.low = 0.0, .high = 2e-3,
                                      .reason = "an oil's volumetric expansion, about 6.5e-4 1/K"};

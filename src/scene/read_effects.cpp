@@ -85,6 +85,7 @@ Effects read_effects(const MapReader& scene) {
       const MapReader no_options(options_node, {});
       if (effect.name == kFlowFactors) effects.flow_factors = true;
       if (effect.name == kAsperityContact) effects.asperity_contact = true;
+      if (effect.name == kConvection) effects.convection = true;
     }
     listed.push_back(std::move(effect));
   }
@@ -106,6 +107,12 @@ Effects read_effects(const MapReader& scene) {
           "{}: effect 'thermal_deformation' needs 'thermal' (the bodies deform with their "
           "temperatures); add thermal to 'effects'",
           effect.item.path()));
+    if (effect.name == kConvection && !(effects.thermal && effects.hydrodynamics))
+      effect.item.fail(fmt::format(
+          "{}: effect 'convection' needs 'thermal' and 'hydrodynamics' (the film's flow carries the film's "
+          "temperature); add {} to 'effects'",
+          effect.item.path(),
+          !effects.thermal && !effects.hydrodynamics ? "both" : effects.thermal ? "hydrodynamics" : "thermal"));
   }
   return effects;
 }

@@ -30,6 +30,12 @@ OilDensity read_density(const MapReader& viscosity, bool required, std::string_v
   return d;
 }
 
+// The density the oil carries its heat with (convection) is the data sheet's, at 15 degC.
+void take_density(const OilDensity& d, Lubricant& l) {
+  l.density = d.at(288.15);
+  l.density_expansion = d.expansion * d.value / l.density;
+}
+
 void read_fitted_viscosity(const MapReader& viscosity, bool data_sheet, Lubricant& l) {
   ViscosityFit fit;
   if (data_sheet) {
@@ -45,6 +51,7 @@ void read_fitted_viscosity(const MapReader& viscosity, bool data_sheet, Lubrican
     }
     const OilDensity d = read_density(viscosity, true, "to turn the kinematic viscosities into dynamic ones");
     fit = fit_data_sheet(nu40, nu100, d.value, d.reference, d.expansion);
+    take_density(d, l);
   } else {
     viscosity.restrict_to({"model", "points", "density", "density_temperature", "density_expansion"},
                           "with model: table");
@@ -57,6 +64,7 @@ void read_fitted_viscosity(const MapReader& viscosity, bool data_sheet, Lubrican
                              "S0, three or more fit mu_infinity too)",
                              table.path(), rows.size(), rows.size() == 1 ? "" : "s"));
     const OilDensity d = read_density(viscosity, false, "");
+    if (d.value > 0) take_density(d, l);
     std::vector<ViscosityPoint> points;
     std::vector<double> kinematic;
     for (const Node& row : rows) {
@@ -115,16 +123,28 @@ void read_fitted_viscosity(const MapReader& viscosity, bool data_sheet, Lubrican
 void read_lubricant(const MapReader& scene, Scene& out) {
   const MapReader oil = scene.map("lubricant", {std::begin(kLubricantKeys), std::end(kLubricantKeys)});
   Lubricant& l = out.lubricant;
+  l.conductivity = oil.quantity("conductivity", si::conductivity, bounds::oil_conductivity, l.conductivity);
+  l.max_temperature = oil.quantity("max_temperature", si::temperature, bounds::absolute_temperature, l.max_temperature);
+  l.flash_temperature =
+      oil.quantity("flash_temperature", si::temperature, bounds::absolute_temperature, l.flash_temperature);
   if (oil.has("supply")) {
     // Whether the grooves it feeds exist is checked with the grooves (read_grooves.cpp).
     const MapReader supply = oil.map("supply", {std::begin(kSupplyKeys), std::end(kSupplyKeys)});
     l.supply = OilSupply{supply.quantity("pressure", si::stress, bounds::supply_pressure),
                          read_choice(supply, "at", kSupplyInlets, SupplyInlet::inner_radius)};
+    if (supply.has("temperature")) {
+      // From an ATF's pour point to below the oil's own flash point.
+      const Range fed{.low = bounds::kLowestSupplyTemperature, .high = l.flash_temperature, .high_open = true,
+                      .reason = "oil fed between an ATF's pour point (-40 degC) and the oil's flash point "
+                                "(lubricant.flash_temperature)"};
+      l.supply->temperature = supply.quantity("temperature", si::temperature, fed);
+    }
+    l.supply->carry_over = supply.quantity("carry_over", si::dimensionless,
+                                           Range{.low = 0.0, .high = 1.0, .high_open = true,
+                                                 .reason = "a share of the hot oil, from 0 up to (not) 1"},
+                                           l.supply->carry_over);
   }
-  l.conductivity = oil.quantity("conductivity", si::conductivity, bounds::oil_conductivity, l.conductivity);
-  l.max_temperature = oil.quantity("max_temperature", si::temperature, bounds::absolute_temperature, l.max_temperature);
-  l.flash_temperature =
-      oil.quantity("flash_temperature", si::temperature, bounds::absolute_temperature, l.flash_temperature);
+  l.specific_heat = oil.quantity("specific_heat", si::specific_heat, bounds::oil_specific_heat, l.specific_heat);
 
   const MapReader viscosity =
       oil.map("viscosity", {"model", "mu_infinity", "G0", "S0", "value", "kv40", "kv100", "density",
@@ -144,6 +164,8 @@ void read_lubricant(const MapReader& scene, Scene& out) {
     viscosity.restrict_to({"model", "value"}, "with model: constant");
     l.constant_viscosity = viscosity.quantity("value", si::viscosity, bounds::constant_viscosity, l.constant_viscosity);
   }
+  l.density = oil.quantity("density", si::density, bounds::oil_density, l.density);
+  l.density_expansion = oil.quantity("density_expansion", si::expansion, bounds::oil_expansion, l.density_expansion);
 }
 
 void read_operating(const MapReader& scene, Scene& out) {

@@ -31,8 +31,9 @@ inline constexpr EnumNames<SupplyInlet, 3> kSupplyInlets{
 // The lubricant's keys: read with the operating point, and again by the grooves, which
 // check that a supply into the grooves has grooves to feed.
 inline constexpr std::string_view kLubricantKeys[] = {"conductivity", "viscosity", "max_temperature",
-                                                       "flash_temperature", "supply"};
-inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at"};
+                                                       "flash_temperature", "supply", "density",
+                                                       "density_expansion", "specific_heat"};
+inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
     {"roelands", "constant"}, {ViscosityModel::roelands, ViscosityModel::constant}};
@@ -67,8 +68,9 @@ inline constexpr std::string_view kFlowFactors = "flow_factors";
 inline constexpr std::string_view kAsperityContact = "asperity_contact";
 inline constexpr std::string_view kThermal = "thermal";
 inline constexpr std::string_view kThermalDeformation = "thermal_deformation";
-inline constexpr std::array<std::string_view, 5> kEffectNames{kHydrodynamics, kFlowFactors, kAsperityContact,
-                                                              kThermal, kThermalDeformation};
+inline constexpr std::string_view kConvection = "convection";
+inline constexpr std::array<std::string_view, 6> kEffectNames{kHydrodynamics, kFlowFactors, kAsperityContact,
+                                                              kThermal, kThermalDeformation, kConvection};
 
 // The three bodies, in stacking order along z.
 inline constexpr std::array<std::string_view, 3> kComponentNames{"carrier", "washer", "gear"};

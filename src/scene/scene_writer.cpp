@@ -64,6 +64,7 @@ void write_effects(Writer& w, const Effects& e) {
                           kCarrierTemperatures.name(e.carrier_temperature)));
   if (e.thermal_deformation)
     w.line(1, fmt::format("- thermal_deformation: {{face_expansion: {}}}", kFaceExpansions.name(e.face_expansion)));
+  if (e.convection) w.line(1, "- convection");
 }
 
 // As resolved: the width as the angle of its whole cells, the land's inlet as the share
@@ -142,8 +143,15 @@ void write_operation(Writer& w, const Scene& s) {
   w.entry(1, "conductivity", quantity(l.conductivity, "W/(m K)"));
   w.entry(1, "max_temperature", quantity(l.max_temperature, "K"));
   w.entry(1, "flash_temperature", quantity(l.flash_temperature, "K"));
+  w.entry(1, "density", quantity(l.density, "kg/m^3"), "at 15 degC");
+  w.entry(1, "density_expansion", quantity(l.density_expansion, "1/K"));
+  w.entry(1, "specific_heat", quantity(l.specific_heat, "J/(kg K)"));
   if (l.supply)
-    w.line(1, fmt::format("supply: {{pressure: {} Pa, at: {}}}", l.supply->pressure, kSupplyInlets.name(l.supply->at)));
+    w.line(1, fmt::format("supply: {{pressure: {} Pa, at: {}{}, carry_over: {}}}", l.supply->pressure,
+                          kSupplyInlets.name(l.supply->at),
+                          l.supply->temperature ? fmt::format(", temperature: {}", quantity(*l.supply->temperature, "K"))
+                                                : std::string(),
+                          l.supply->carry_over));
   w.line(1, "viscosity:");
   w.entry(2, "model", std::string(kViscosityModels.name(l.viscosity_model)));
   if (l.viscosity_model == ViscosityModel::roelands) {

@@ -41,6 +41,7 @@ std::string result_columns_json() {
   SolvedState with_errors;
   with_errors.mesh_errors.assign(std::size(kMeshErrorQuantities), 0.0);
   with_errors.state.flows = FilmFlows{};
+  with_errors.state.heat_carried = 0.0;
   Json tables;
   tables["states"] = columns(states_table({with_errors}, parameter, true), states_table({}, {}, false));
   tables["distress"] = columns(distress_table({}, parameter, true), distress_table({}, {}, false));

@@ -36,6 +36,7 @@ struct EffectSet {
   CavitationModel cavitation_model = CavitationModel::reynolds;
   int grooved_film = 0;  // 1 or 2: three tapered-land grooves on that washer face (film 2 slides)
   bool fed = false;      // oil supplied at the bore and into the grooves
+  bool convection = false;
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -82,7 +83,8 @@ TEST_P(JacobianTest, MatchesCentralDifferences) {
     g.land = {LandShape::taper, 1e-6, 0.5};
     s.washer.grooves = g;
   }
-  if (e.fed) s.lubricant.supply = OilSupply{2e5, SupplyInlet::both};
+  if (e.fed) s.lubricant.supply = OilSupply{2e5, SupplyInlet::both, s.operating.ambient + 15.0};
+  s.effects.convection = e.convection;
   BearingModel m(s);
   m.set_newton_form(e.cavitation == CavitationRow::minimum);
   const SparsePattern& p = m.pattern();
@@ -194,7 +196,13 @@ INSTANTIATE_TEST_SUITE_P(
                                 CavitationModel::jfo, 2, true},
                       EffectSet{"fed_grooves_reynolds", true, true, true, true, 545.0,
                                 CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, false,
-                                FrictionLaw::empirical, CavitationModel::reynolds, 2, true}),
+                                FrictionLaw::empirical, CavitationModel::reynolds, 2, true},
+                      EffectSet{"convection", true, true, true, true, 545.0, CarrierTemperature::load_frame,
+                                CavitationRow::fischer_burmeister, false, FrictionLaw::empirical,
+                                CavitationModel::reynolds, 0, false, true},
+                      EffectSet{"convection_fed_grooves_jfo_deformation", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
+                                FrictionLaw::empirical, CavitationModel::jfo, 2, true, true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

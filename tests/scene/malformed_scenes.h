@@ -107,7 +107,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"empty_required_value", 8, 3, {"operating.load: expected a force", "got no value"}},
     {"map_where_scalar_expected", 8, 9, {"operating.load: expected a force", "got a map"}},
     {"list_where_map_expected", 5, 11, {"'geometry.washer' must be a map (allowed keys: inner_diameter, outer_diameter, thickness, grooves); got a list"}},
-    {"scalar_where_list_expected", 2, 10, {"effects: expected a list of effects (hydrodynamics, flow_factors, asperity_contact, thermal, thermal_deformation); got the value 'hydrodynamics'"}},
+    {"scalar_where_list_expected", 2, 10, {"effects: expected a list of effects (hydrodynamics, flow_factors, asperity_contact, thermal, thermal_deformation, convection); got the value 'hydrodynamics'"}},
     {"scalar_where_map_expected", 12, 7, {"'mesh' must be a map (allowed keys: radial_nodes, circumferential_nodes, contact_quadrature, flat_contact_quadrature); got the value '17'"}},
     {"not_a_whole_number", 12, 22, {"mesh.radial_nodes: '9.5' is not a whole number", "expected a whole number in [3, 1025]"}},
     {"not_a_boolean", 12, 18, {"output.fields: 'yes' is not a boolean; allowed: true, false"}},
@@ -143,6 +143,9 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"land_with_two_shapes", 13, 13, {"geometry.washer.grooves.land", "expected one shape", "taper and step"}},
     {"groove_wider_than_pitch", 9, 33, {"geometry.washer.grooves.width", "leave no land", "the pitch is 30 deg"}},
     {"groove_through_the_washer", 9, 45, {"geometry.washer.grooves.depth", "cut through the washer", "0.635 mm thick"}},
+    {"convection_without_thermal", 2, 44, {"effect 'convection' needs 'thermal' and 'hydrodynamics'", "add thermal"}},
+    {"supply_temperature_above_flash_point", 9, 42, {"lubricant.supply.temperature", "flash point"}},
+    {"supply_temperature_below_pour_point", 8, 42, {"lubricant.supply.temperature", "pour point"}},
     {"supply_into_missing_grooves", 8, 33, {"lubricant.supply.at", "needs grooves to feed", "at: inner_radius"}},
     {"supply_into_grooves_of_the_standing_film", 13, 33, {"lubricant.supply.at: oil supplied at 'both'", "sliding film's face"}},
   };

@@ -75,7 +75,13 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   if (a.lubricant.supply) {
     EXPECT_EQ(a.lubricant.supply->pressure, b.lubricant.supply->pressure);
     EXPECT_EQ(a.lubricant.supply->at, b.lubricant.supply->at);
+    EXPECT_EQ(a.lubricant.supply->temperature, b.lubricant.supply->temperature);
+    EXPECT_EQ(a.lubricant.supply->carry_over, b.lubricant.supply->carry_over);
   }
+  EXPECT_EQ(a.lubricant.density, b.lubricant.density);
+  EXPECT_EQ(a.lubricant.density_expansion, b.lubricant.density_expansion);
+  EXPECT_EQ(a.lubricant.specific_heat, b.lubricant.specific_heat);
+  EXPECT_EQ(a.effects.convection, b.effects.convection);
   EXPECT_EQ(a.operating.load, b.operating.load);
   EXPECT_EQ(a.operating.speed, b.operating.speed);
   EXPECT_EQ(a.operating.sliding, b.operating.sliding);
@@ -269,6 +275,10 @@ INSTANTIATE_TEST_SUITE_P(
                                                         "depth: 50 um}}") +
                           "lubricant: {supply: {pressure: 2 bar, at: both}}\n"
                           "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n"},
+        RoundTripCase{"convection_with_a_cool_supply",
+                      with_thermal(kMinimalScene, "thermal, convection") +
+                          "lubricant: {density: 870 kg/m^3, specific_heat: 1950 J/(kg K), supply: {pressure: 1 bar, "
+                          "at: inner_radius, temperature: 60 degC, carry_over: 0.5}}\n"},
         RoundTripCase{"oil_supply_at_the_bore",
                       std::string(kMinimalScene) + "lubricant: {supply: {pressure: 3.5 bar, at: inner_radius}}\n"},
         RoundTripCase{"mass_conserving_cavitation",

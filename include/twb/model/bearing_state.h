@@ -39,6 +39,8 @@ struct BearingState {
   double friction_coefficient = 0;
   bool friction_clamped = false;
   double heat_generated = 0, heat_to_ambient = 0, energy_error = 0;
+  // With convection: the heat the oil carries out of the film (W, docs/physics.md section 15).
+  std::optional<double> heat_carried;
   double force_balance_error = 0, moment_balance_error = 0;  // relative to the load
   double complementarity_error = 0;  // max |min(p̂, ŵ)|
   double max_contact_pressure = 0;   // Pa, nominal asperity pressure where either film is tightest

@@ -72,6 +72,9 @@ struct Effects {
   // docs/physics.md section 11 (needs thermal): the films' shapes follow the bodies' temperatures.
   bool thermal_deformation = false;
   FaceExpansion face_expansion = FaceExpansion::free;
+  // docs/physics.md section 15 (needs thermal and hydrodynamics): the oil carries its
+  // heat with the film's flow.
+  bool convection = false;
 };
 
 struct Material {
@@ -163,6 +166,11 @@ enum class SupplyInlet { inner_radius, grooves, both };
 struct OilSupply {
   double pressure = 0.0;  // Pa, gauge
   SupplyInlet at = SupplyInlet::inner_radius;
+  // With convection (docs/physics.md section 15): the temperature the supplied oil enters
+  // at (none: the ambient, the sump's), and the share of the hot oil a land delivers into
+  // a groove that the groove passes on unmixed with supply oil.
+  std::optional<double> temperature{};  // K
+  double carry_over = 0.7;
   bool feeds_bore() const { return at != SupplyInlet::grooves; }
   bool feeds_grooves() const { return at != SupplyInlet::inner_radius; }
 };
@@ -181,6 +189,13 @@ struct Lubricant {
   double max_temperature = 423.15;    // K, 150 degC
   double flash_temperature = 453.15;  // K, 180 degC
   std::optional<OilSupply> supply{};  // none: both edges at ambient
+  // The heat the oil carries (convection, docs/physics.md section 15): its density at
+  // 15 degC with its volumetric expansion (the data sheet's where it gives one), and its
+  // specific heat, typical of transmission fluids.
+  double density = 850.0;            // kg/m^3 at 15 degC
+  double density_expansion = 6.5e-4;  // 1/K
+  double specific_heat = 2000.0;     // J/(kg K)
+  double density_at(double t) const { return density * (1.0 - density_expansion * (t - 288.15)); }
 };
 
 // Failure criteria a scene may add besides the oil's and the materials' temperatures

@@ -1,0 +1,35 @@
+// Convection (docs/physics.md section 15): the oil carries the film's temperature with the
+// film's flow. It adds to the sliding film's node heat balances the heat that warms the
+// oil flowing in (first-order upwind, the Reynolds face fluxes of FilmFaceFlows), and
+// makes the nodes of fed grooves hold the groove's mixed temperature
+// (film_convection.cpp). No unknowns of its own.
+#pragma once
+
+#include <vector>
+
+#include "model/effect_assembler.h"
+
+namespace twb {
+
+struct FilmTotals;
+class FilmFaceFlows;
+
+class ConvectionEffect final : public EffectAssembler {
+ public:
+  explicit ConvectionEffect(ModelSetup& setup);
+  void add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const override;
+
+ private:
+  void add_film(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const;
+  // The mixed temperature rows of one fed groove at one radius (docs/physics.md section 15).
+  struct Delivery;
+  void add_groove_mixing(std::span<const double> u, const Film& film, const FilmFaceFlows& flows,
+                         const std::vector<int>& nodes, const std::vector<Delivery>& delivered, Assembler& a,
+                         FilmTotals& totals) const;
+
+  const BearingModel& model_;
+  double heat_capacity_ = 0.0;  // ρ c of the oil, J/(m³ K), at the sump's temperature
+  double supply_rise_ = 0.0;    // the supply's temperature above ambient, K
+};
+
+}  // namespace twb
