@@ -99,7 +99,19 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
   // of the start, the start's branch must get there without a turning point and land on
   // that light load's own cold start. If it does not, the search starts from the light load.
   if (out.fold_proven) return out;
-  const double light = settings.load_start * light_load_fraction;
+  double light = settings.load_start * light_load_fraction;
+  std::vector<double> light_state;
+  SteadyReport light_start;
+  if (model.scene().lubricant.supply) {
+    // Oil fed under pressure lifts the gear off a load light enough, which then has no
+    // steady state: the light load is the lightest of a tenth, a fifth, … of the start
+    // that has one, up to two thirds of the start.
+    for (;; light *= 2.0) {
+      model.set_load(light);
+      light_start = steady.solve_cold(light_state);
+      if (light_start.converged || 2.0 * light > settings.load_start / 1.5) break;
+    }
+  }
   if (progress) progress(fmt::format("  is the start on the cool branch? following it down to {:.3g} N", light));
   std::vector<double> down = u;
   NaturalSettings natural;
@@ -108,8 +120,7 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
   natural.min_step = settings.bracket_width * light;
   const NaturalReport descent = continue_in_parameter(model, down, settings.load_start, light, natural);
   model.set_load(light);
-  std::vector<double> light_state;
-  const SteadyReport light_start = steady.solve_cold(light_state);
+  if (!model.scene().lubricant.supply) light_start = steady.solve_cold(light_state);
   if (descent.reached_target && light_start.converged && same_state(down, light_state)) return out;
   if (!light_start.converged) {
     // No reference to judge by: the search from the start as it is, and say so.
