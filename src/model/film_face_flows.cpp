@@ -23,14 +23,15 @@ FilmFaceFlows::FilmFaceFlows(const BearingModel& model, const Film& film, std::s
       u_(u),
       op_(film.mesh),
       plane_(film.plane(model.position(u))),
-      jfo_(film.content_offset >= 0),
-      fed_(std::size_t(op_.interior_count()), 0) {
+      jfo_(film.content_offset >= 0) {
   const FilmMesh& m = film.mesh;
   // A node on a fed groove holds the supply's pressure, full of oil: like an edge node,
   // a boundary of the lands' flow (docs/physics.md section 14).
-  if (film.groove_pressure)
+  if (film.groove_pressure) {
+    fed_.assign(std::size_t(op_.interior_count()), 0);
     for (int i = 1; i < m.radial_nodes() - 1; ++i)
       for (int j = 0; j < m.circumferential_nodes(); ++j) fed_[std::size_t(op_.interior_index(i, j))] = film.fed_node(i, j);
+  }
   node_t_.resize(std::size_t(m.node_count()));
   for (int n = 0; n < m.node_count(); ++n) node_t_[std::size_t(n)] = model.apply(model.viscosity_temperature_form(film, n), u);
   delta_ = model.node_shapes(u, film);

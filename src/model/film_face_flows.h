@@ -35,8 +35,8 @@ class FilmFaceFlows {
   const ReynoldsOperator& grid() const { return op_; }
   // Whether interior node k holds a fed groove's pressure (Film::fed_node): a boundary of
   // the lands' flow with no balance of its own.
-  bool fed(int k) const { return k >= 0 && fed_[std::size_t(k)]; }
-  bool free(int k) const { return k >= 0 && !fed_[std::size_t(k)]; }
+  bool fed(int k) const { return k >= 0 && !fed_.empty() && fed_[std::size_t(k)]; }
+  bool free(int k) const { return k >= 0 && !fed(k); }
   // The pressure and content columns of interior node k, −1 where the value is held.
   Index pressure_column(int k) const { return free(k) ? film_.pressure_offset + k : -1; }
   Index content_column(int k) const { return jfo_ && free(k) ? film_.content_offset + k : -1; }
@@ -66,7 +66,7 @@ class FilmFaceFlows {
   ReynoldsOperator op_;
   GapPlane plane_;
   bool jfo_;
-  std::vector<char> fed_;
+  std::vector<char> fed_;  // per interior node; empty where no groove is fed
   std::vector<double> node_t_, delta_;
 };
 
