@@ -94,14 +94,8 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   build_shape_forms();
 
   Assembler structure(layout_.size());
-  std::vector<double> u = cold_start();
-  assemble(u, structure, nullptr);
+  assemble(cold_start(), structure, nullptr);
   pattern_ = structure.finish_structure();
-  // One searched Jacobian pass records where each entry lands (sparse_assembly.h).
-  std::vector<double> r(u.size()), jac(std::size_t(pattern_.nnz()));
-  Assembler recorder(&pattern_, r, jac);
-  recorder.record_slots(&slot_tape_);
-  assemble(u, recorder, nullptr);
 }
 
 const Film& BearingModel::sliding_film() const { return films_[0].sliding ? films_[0] : films_[1]; }
@@ -315,7 +309,17 @@ std::vector<double> BearingModel::cold_start() const {
 
 void BearingModel::evaluate(std::span<const double> u, std::span<double> residual,
                             std::span<double> jacobian) const {
-  Assembler a(&pattern_, residual, jacobian, &slot_tape_);
+  if (!slot_tape_ && !jacobian.empty()) {
+    // The first Jacobian pass searches for each entry and records where it lands; the
+    // later ones replay that (sparse_assembly.h). Kept only once the pass is whole.
+    std::vector<Index> tape;
+    Assembler recorder(&pattern_, residual, jacobian);
+    recorder.record_slots(&tape);
+    assemble(u, recorder, nullptr);
+    slot_tape_ = std::move(tape);
+    return;
+  }
+  Assembler a(&pattern_, residual, jacobian, slot_tape_ ? &*slot_tape_ : nullptr);
   assemble(u, a, nullptr);
 }
 

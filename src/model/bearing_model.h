@@ -232,7 +232,9 @@ class BearingModel final : public SegregatedSystem {
   std::tuple<Component, Component, Component, AsperityParameters> roughness_origin_;  // the scene's surfaces
   double sigma_ref_ = 0, gamma_ref_ = 0, p_ref_ = 0;
   SparsePattern pattern_;
-  std::vector<Index> slot_tape_;  // where each Jacobian entry of a pass lands (sparse_assembly.h)
+  // Where each Jacobian entry of a pass lands (sparse_assembly.h), recorded by the first
+  // Jacobian pass of evaluate(): a model is used by one thread at a time (study/parallel.h).
+  mutable std::optional<std::vector<Index>> slot_tape_;
   std::vector<std::vector<LinearForm>> viscosity_forms_;  // per film, per node
 
   // Thermal deformation's shapes (film_shape.cpp): δ = form · u per film, per node.

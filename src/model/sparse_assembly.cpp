@@ -48,9 +48,11 @@ void Assembler::scale_row(Index row, double a) {
 
 SparsePattern Assembler::finish_structure() const {
   // The entries bucketed by row (a counting sort: the structure pass records every
-  // contribution, some million on 17×132, mostly repeats), then each row's columns
-  // sorted and made unique. Every diagonal is kept: KLU needs no structurally singular
-  // rows, and the pseudo-time solver adds c_j on the diagonal of differential unknowns.
+  // contribution, some million on 17×132, mostly repeats), then each row's columns made
+  // unique by marking the columns seen (a row's bucket holds its repeats, so the sort
+  // after it is of the few distinct columns). Every diagonal is kept: KLU needs no
+  // structurally singular rows, and the pseudo-time solver adds c_j on the diagonal of
+  // differential unknowns.
   std::vector<Index> start(std::size_t(n_) + 1, 0);
   for (const auto& e : entries_) ++start[std::size_t(e.first) + 1];
   for (Index i = 0; i < n_; ++i) start[std::size_t(i) + 1] += start[std::size_t(i)] + 1;
@@ -61,12 +63,16 @@ SparsePattern Assembler::finish_structure() const {
   SparsePattern p;
   p.rows = p.cols = n_;
   p.row_start.assign(std::size_t(n_) + 1, 0);
-  p.column.reserve(columns.size());
+  std::vector<Index> seen_in_row(std::size_t(n_), -1);
   for (Index r = 0; r < n_; ++r) {
-    const auto first = columns.begin() + std::ptrdiff_t(start[std::size_t(r)]);
-    const auto last = columns.begin() + std::ptrdiff_t(start[std::size_t(r) + 1]);
-    std::sort(first, last);
-    p.column.insert(p.column.end(), first, std::unique(first, last));
+    const std::size_t first = p.column.size();
+    for (Index k = start[std::size_t(r)]; k < start[std::size_t(r) + 1]; ++k) {
+      const Index c = columns[std::size_t(k)];
+      if (seen_in_row[std::size_t(c)] == r) continue;
+      seen_in_row[std::size_t(c)] = r;
+      p.column.push_back(c);
+    }
+    std::sort(p.column.begin() + std::ptrdiff_t(first), p.column.end());
     p.row_start[std::size_t(r) + 1] = Index(p.column.size());
   }
   return p;

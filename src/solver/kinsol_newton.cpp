@@ -61,7 +61,9 @@ struct KinsolNewton::Callbacks {
   // and `point` holds that point).
   Index watched = -1;
   double watched_step = 0.0, watched_residual = 0.0;
+  NewtonSettings::WatchedQuantities quantities;
   std::optional<double> last_watched;
+  std::optional<std::vector<double>> last_quantities;
   bool watched_settled = false;
   bool full_steps = false;  // KINSOL runs without a line search
   double tolerance = 0.0;
@@ -88,6 +90,7 @@ struct KinsolNewton::Callbacks {
     step_norms.clear();
     next_with_jacobian = true;
     last_watched.reset();
+    last_quantities.reset();
     watched_settled = false;
   }
   // At a new Newton point u: true when the step to it settled the watched unknown.
@@ -99,6 +102,14 @@ struct KinsolNewton::Callbacks {
     if (!small_step) return false;
     assemble_at(u, false);
     watched_settled = max_norm(point_residual) <= watched_residual;
+    return watched_settled;
+  }
+  // At a Newton point u just assembled: true when the caller's quantities settled there.
+  bool settles_quantities(std::span<const double> u) {
+    if (!quantities.at || shift || !(max_norm(point_residual) <= watched_residual)) return false;
+    std::vector<double> now = quantities.at(u);
+    watched_settled = last_quantities && quantities.settled(*last_quantities, now);
+    last_quantities = std::move(now);
     return watched_settled;
   }
 };
@@ -119,6 +130,7 @@ int residual_fn(N_Vector y, N_Vector f, void* data) {
     // failed call stops KINSOL, and solve() takes the point from the cache.
     if ((newton_point || cb->full_steps) && cb->settles_watched(u)) return -1;
     cb->assemble_at(u, newton_point && !cb->expects_convergence());
+    if ((newton_point || cb->full_steps) && cb->settles_quantities(u)) return -1;
     cb->next_with_jacobian = false;
     std::copy(cb->point_residual.begin(), cb->point_residual.end(), r.begin());
     if (cb->shift)
@@ -236,6 +248,7 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   callbacks_->watched = s.watched;
   callbacks_->watched_step = s.watched_step;
   callbacks_->watched_residual = s.watched_residual;
+  callbacks_->quantities = s.quantities;
   callbacks_->forget();
 
   auto run = [&](int strategy, int max_iterations) {
@@ -243,6 +256,7 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
     callbacks_->next_with_jacobian = true;  // KINSOL's first request is a Jacobian's point
     callbacks_->step_norms.clear();
     callbacks_->last_watched.reset();
+    callbacks_->last_quantities.reset();
     callbacks_->full_steps = strategy == KIN_NONE;
     const int result = KINSol(kin_.get(), y_.get(), strategy, scale_.get(), residual_scale_.get());
     callbacks_->failure.rethrow_internal();

@@ -6,6 +6,7 @@
 // zero pivot or large pivot growth: sparse_lu.h).
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -43,6 +44,16 @@ struct NewtonSettings {
   Index watched = -1;
   double watched_step = 0.0;
   double watched_residual = 1e-3;
+  // The same for a caller that needs quantities of the state to a known accuracy (a
+  // state's reported quantities on the refined mesh, for their error bars): at each
+  // Newton point whose residual is within `watched_residual`, `quantities.at(u)`; Newton
+  // stops at the first point where `quantities.settled(before, now)` says the step from
+  // the last such point moved them little enough. Not on a pseudo-time step's solve.
+  struct WatchedQuantities {
+    std::function<std::vector<double>(std::span<const double>)> at;
+    std::function<bool(const std::vector<double>& before, const std::vector<double>& now)> settled;
+  };
+  WatchedQuantities quantities{};
 };
 
 struct NewtonReport {

@@ -13,6 +13,10 @@ namespace twb {
 
 namespace {
 
+// How closely the refined state's quantities are solved: a part of their distance from
+// the coarse ones (refine_state).
+constexpr double kRefinedSettling = 1e-3;
+
 // How far a state's quantity k is from its extrapolation, relative: temperatures count
 // from the ambient (their error relative to the rise).
 double relative_offset(const Scene& scene, std::size_t k, double coarse, double extrapolated) {
@@ -37,7 +41,26 @@ bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const
                   std::string& why, SparseLu::Ordering ordering, long* newton_iterations, long* jacobians) {
   fine.set_load(model.load());
   std::vector<double> v = fine.interpolated_from(model, u);
-  SteadySolver solver(fine, newton_settings(model.scene()), ordering);
+  const std::vector<double> coarse = mesh_error_quantities(state.state);
+  // The bars need the refined quantities to a small part of their distance from the
+  // coarse ones only: Newton stops once its step moves each by at most 1e-3 of that
+  // distance (past the first steps Newton's error is within about one step:
+  // NewtonSettings::watched), or at the tolerance, whichever comes first. The bar then
+  // differs from the fully converged one's by about 1e-3 of itself.
+  NewtonSettings newton = newton_settings(model.scene());
+  newton.watched_residual = 1e-2;
+  std::vector<double> described_at, described;  // the last point the quantities were read at
+  newton.quantities.at = [&](std::span<const double> w) {
+    described_at.assign(w.begin(), w.end());
+    described = mesh_error_quantities(fine.describe(w));
+    return described;
+  };
+  newton.quantities.settled = [&](const std::vector<double>& before, const std::vector<double>& now) {
+    for (std::size_t k = 0; k < now.size(); ++k)
+      if (!(std::abs(now[k] - before[k]) <= kRefinedSettling * std::abs(now[k] - coarse[k]))) return false;
+    return true;
+  };
+  SteadySolver solver(fine, newton, ordering);
   const SteadyReport rep = solver.solve(v);
   if (newton_iterations) *newton_iterations += rep.iterations;
   if (jacobians) *jacobians += rep.jacobian_evaluations;
@@ -47,8 +70,7 @@ bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const
                       rep.message);
     return false;
   }
-  const std::vector<double> coarse = mesh_error_quantities(state.state);
-  const std::vector<double> fine_values = mesh_error_quantities(fine.describe(v));
+  const std::vector<double> fine_values = v == described_at ? described : mesh_error_quantities(fine.describe(v));
   state.mesh_errors.clear();
   for (std::size_t k = 0; k < coarse.size(); ++k) {
     const MeshErrorEstimate e = richardson_extrapolation(coarse[k], fine_values[k], kTwoGridSafety);

@@ -62,5 +62,15 @@ TEST(SlotTape, LeavingTheTapeStillPlacesEveryEntry) {
   EXPECT_THROW(a.add_derivative(1, 0, 1.0), std::logic_error);  // outside the pattern
 }
 
+// The structure pass records every contribution, repeats and all: each entry appears
+// once in its row, the row's columns in order, every diagonal among them.
+TEST(SlotTape, StructureHoldsEachEntryOnceInOrder) {
+  Assembler structure(3);
+  for (auto [r, c] : {std::pair{0, 2}, {2, 0}, {0, 2}, {2, 1}, {0, 1}, {2, 0}, {0, 2}}) structure.add_derivative(r, c, 0.0);
+  const SparsePattern p = structure.finish_structure();
+  EXPECT_EQ(p.row_start, (std::vector<Index>{0, 3, 4, 7}));
+  EXPECT_EQ(p.column, (std::vector<Index>{0, 1, 2, 1, 0, 1, 2}));
+}
+
 }  // namespace
 }  // namespace twb
