@@ -18,27 +18,9 @@ namespace {
 
 inline constexpr EnumNames<int, 2> kGroovedFaces{{"film_1", "film_2"}, {1, 2}};
 
-inline constexpr Range groove_depth{.low = 1e-7, .high = 5e-3,
-                                    .reason = "a groove from 0.1 um to 5 mm deep (thrust washers: 10 to 100 um)"};
 inline constexpr Range land_depth{.low = 1e-8, .high = 1e-3, .reason = "a taper or step from 10 nm to 1 mm deep"};
 inline constexpr Range land_fraction{.low = 0.0, .low_open = true, .high = 1.0,
                                      .reason = "a share of the land's angle, above 0 and at most 1"};
-
-// A groove's width is a length (at the washer's mean radius) or an angle; a bare number
-// would be neither for sure.
-double groove_angle(const MapReader& grooves, double mean_radius) {
-  const Node node = grooves.get("width", "a length (e.g. 2 mm) or an angle (e.g. 10 deg)");
-  const std::string text = node.yaml().Scalar();
-  if (std::none_of(text.begin(), text.end(), [](unsigned char c) { return std::isalpha(c); }))
-    node.fail(fmt::format("{}: '{}' has no unit; give the groove's width as a length (e.g. 2 mm, at the mean radius) "
-                          "or an angle (e.g. 10 deg)",
-                          node.path(), text));
-  try {
-    return to_si(text, si::length) / mean_radius;
-  } catch (const QuantityError&) {
-    return grooves.quantity("width", si::angle, {.low = 0.0, .low_open = true, .high = 2 * std::numbers::pi});
-  }
-}
 
 Land read_land(const MapReader& grooves) {
   Land land;
@@ -67,6 +49,46 @@ Land read_land(const MapReader& grooves) {
 
 }  // namespace
 
+// A bare number would be neither a length nor an angle for sure.
+double groove_angle(const Node& node, double mean_radius) {
+  const std::string text = node.yaml().Scalar();
+  if (std::none_of(text.begin(), text.end(), [](unsigned char c) { return std::isalpha(c); }))
+    node.fail(fmt::format("{}: '{}' has no unit; give the groove's width as a length (e.g. 2 mm, at the mean radius) "
+                          "or an angle (e.g. 10 deg)",
+                          node.path(), text));
+  try {
+    return to_si(text, si::length) / mean_radius;
+  } catch (const QuantityError&) {
+    return node.quantity(si::angle, {.low = 0.0, .low_open = true, .high = 2 * std::numbers::pi});
+  }
+}
+
+void check_groove_parameter(const MapReader& scene, const Scene& out) {
+  const Study& s = out.study;
+  if (s.parameter != MapParameter::groove_count && s.parameter != MapParameter::groove_width &&
+      s.parameter != MapParameter::groove_depth)
+    return;
+  const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
+  const MapReader axis = study.map(study.has("family") ? "family" : "parameter", {"name", "values"});
+  if (!out.washer.grooves) {
+    const Node name = axis.get("name", "");
+    name.fail(fmt::format("{}: {} varies the washer's grooves, and the scene has none; give them in "
+                          "geometry.washer.grooves",
+                          name.path(), name.yaml().Scalar()));
+  }
+  const std::vector<Node> items = axis.get("values", "").list("");
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    Scene trial = out;
+    Grooves g = *out.washer.grooves;
+    g.width = g.written_width;
+    if (s.parameter == MapParameter::groove_count) g.count = int(s.parameter_values[k]);
+    if (s.parameter == MapParameter::groove_width) g.width = s.parameter_values[k];
+    if (s.parameter == MapParameter::groove_depth) g.depth = s.parameter_values[k];
+    if (const std::optional<GroovesNotPlaced> not_placed = place_grooves(trial, g))
+      items[k].fail(fmt::format("{}: {}", items[k].path(), not_placed->why));
+  }
+}
+
 void read_grooves(const MapReader& scene, Scene& out) {
   const MapReader geometry(scene.get("geometry", ""), {"carrier", "washer", "gear"});
   const MapReader washer(geometry.get("washer", ""), {"inner_diameter", "outer_diameter", "thickness", "grooves"});
@@ -91,45 +113,54 @@ void read_grooves(const MapReader& scene, Scene& out) {
   g.film = read_choice(grooves, "face", kGroovedFaces, 2);
   if (feeds_grooves && g.film != 2)
     refuse_groove_supply(scene, "the grooves in the sliding film's face (face: film_2 with sliding: washer_gear)");
-  g.depth = grooves.quantity("depth", si::length, groove_depth);
-  if (g.depth >= out.washer.thickness) {
-    const Node node = grooves.get("depth", "");
-    node.fail(fmt::format("{}: a groove {:.4g} mm deep would cut through the washer, {:.4g} mm thick; it must be "
-                          "shallower than the washer",
-                          node.path(), g.depth * 1e3, out.washer.thickness * 1e3));
-  }
+  g.depth = grooves.quantity("depth", si::length, bounds::groove_depth);
   g.land = read_land(grooves);
-  const double width = groove_angle(grooves, 0.5 * (out.washer.inner_radius + out.washer.outer_radius));
-  const double pitch_angle = 2 * std::numbers::pi / g.count;
-  if (width >= pitch_angle) {
-    const Node node = grooves.get("width", "");
-    node.fail(fmt::format("{}: {} grooves {:.4g} deg wide leave no land between them: the pitch is {:.4g} deg "
-                          "(360 deg / count), and a groove must be narrower",
-                          node.path(), g.count, width * 180 / std::numbers::pi, pitch_angle * 180 / std::numbers::pi));
+  g.width = groove_angle(grooves.get("width", "a length (e.g. 2 mm) or an angle (e.g. 10 deg)"),
+                         0.5 * (out.washer.inner_radius + out.washer.outer_radius));
+  if (const std::optional<GroovesNotPlaced> not_placed = place_grooves(out, g)) {
+    const Node node = grooves.get(not_placed->key, "");
+    node.fail(fmt::format("{}: {}", node.path(), not_placed->why));
   }
+}
 
+}  // namespace twb::scene_io
+
+namespace twb {
+
+std::optional<GroovesNotPlaced> place_grooves(Scene& scene, Grooves g) {
+  g.written_width = g.width;
+  const double pitch_angle = 2 * std::numbers::pi / g.count;
+  if (!(g.width < pitch_angle))
+    return GroovesNotPlaced{"width", fmt::format("{} grooves {:.4g} deg wide leave no land between them: the pitch "
+                                                 "is {:.4g} deg (360 deg / count), and a groove must be narrower",
+                                                 g.count, g.width * 180 / std::numbers::pi,
+                                                 pitch_angle * 180 / std::numbers::pi)};
+  if (!(g.depth < scene.washer.thickness))
+    return GroovesNotPlaced{"depth", fmt::format("a groove {:.4g} mm deep would cut through the washer, {:.4g} mm "
+                                                 "thick; it must be shallower than the washer",
+                                                 g.depth * 1e3, scene.washer.thickness * 1e3)};
   // Every edge on a node line: a whole number of cells per groove pitch, and at least
   // one cell for the groove, the land, and a shaped inlet and the flat rest after a step.
-  MeshSettings& mesh = out.mesh;
+  MeshSettings& mesh = scene.mesh;
   const int least_pitch = g.land.shape == LandShape::step ? 3 : 2;
   const int pitch = std::max(least_pitch, int(std::lround(double(mesh.circumferential_nodes) / g.count)));
-  if (g.count * pitch > bounds::kMostCircumferentialNodes) {
-    const Node node = grooves.get("count", "");
-    node.fail(fmt::format("{}: {} grooves of at least {} cells each need {} circumferential nodes, more than the "
-                          "{} a machine's memory allows",
-                          node.path(), g.count, pitch, g.count * pitch, bounds::kMostCircumferentialNodes));
-  }
+  if (g.count * pitch > scene_io::bounds::kMostCircumferentialNodes)
+    return GroovesNotPlaced{"count", fmt::format("{} grooves of at least {} cells each need {} circumferential nodes, "
+                                                 "more than the {} a machine's memory allows",
+                                                 g.count, pitch, g.count * pitch,
+                                                 scene_io::bounds::kMostCircumferentialNodes)};
   mesh.circumferential_nodes = g.count * pitch;
   const double cell = 2 * std::numbers::pi / mesh.circumferential_nodes;
   const int land_least = g.land.shape == LandShape::step ? 2 : 1;
-  g.cells = std::clamp(int(std::lround(width / cell)), 1, pitch - land_least);
+  g.cells = std::clamp(int(std::lround(g.width / cell)), 1, pitch - land_least);
   g.width = g.cells * cell;
   if (g.land.shape != LandShape::flat) {
     const int land_cells = pitch - g.cells;
     const int most = g.land.shape == LandShape::step ? land_cells - 1 : land_cells;
     g.land.fraction = double(std::clamp(int(std::lround(g.land.fraction * land_cells)), 1, most)) / land_cells;
   }
-  out.washer.grooves = g;
+  scene.washer.grooves = g;
+  return std::nullopt;
 }
 
-}  // namespace twb::scene_io
+}  // namespace twb

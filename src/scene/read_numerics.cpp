@@ -92,19 +92,38 @@ double read_bracket_width(const MapReader& study, double fallback) {
 void read_map_parameter(const MapReader& study, Study& s, const Scene& scene, const char* key = "parameter") {
   if (!study.has(key)) return;
   const MapReader p = study.map(key, {"name", "values"});
-  s.parameter = kMapParameters.values[p.get("name", "friction_coefficient, gear_tilt or roughness")
+  s.parameter = kMapParameters.values[p.get("name", "friction_coefficient, gear_tilt, roughness, groove_count, "
+                                                  "groove_width or groove_depth")
                                           .choice(kMapParameters.names)];
   const Node values = p.get("values", "a list of values, e.g. [0.05, 0.1, 0.2]");
   const std::vector<Node> items = values.list("a list of values, e.g. [0.05, 0.1, 0.2]");
   if (items.empty())
     values.fail(fmt::format("{}: the list is empty; give at least one value", values.path()));
+  // A groove's values are checked against the grooves once those are read
+  // (check_groove_parameter).
   for (const Node& item : items) {
-    if (s.parameter == MapParameter::friction_coefficient)
-      s.parameter_values.push_back(item.quantity(si::dimensionless, bounds::friction_coefficient));
-    else if (s.parameter == MapParameter::gear_tilt)
-      s.parameter_values.push_back(item.quantity(si::angle, bounds::tilt));
-    else
-      s.parameter_values.push_back(item.quantity(si::length, bounds::roughness));
+    switch (s.parameter) {
+      case MapParameter::friction_coefficient:
+        s.parameter_values.push_back(item.quantity(si::dimensionless, bounds::friction_coefficient));
+        break;
+      case MapParameter::gear_tilt:
+        s.parameter_values.push_back(item.quantity(si::angle, bounds::tilt));
+        break;
+      case MapParameter::roughness:
+        s.parameter_values.push_back(item.quantity(si::length, bounds::roughness));
+        break;
+      case MapParameter::groove_count:
+        s.parameter_values.push_back(item.integer(1, 360, "grooves round the face"));
+        break;
+      case MapParameter::groove_width:
+        s.parameter_values.push_back(groove_angle(item, 0.5 * (scene.washer.inner_radius + scene.washer.outer_radius)));
+        break;
+      case MapParameter::groove_depth:
+        s.parameter_values.push_back(item.quantity(si::length, bounds::groove_depth));
+        break;
+      case MapParameter::none:
+        break;
+    }
   }
   if (s.parameter == MapParameter::friction_coefficient && scene.friction.law != FrictionLaw::constant) {
     const Node name = p.get("name", "");
@@ -196,9 +215,7 @@ void refuse_every_state(const MapReader& study, const Study& s, const char* type
 }
 
 void read_study(const MapReader& scene, Scene& out) {
-  const MapReader study = scene.map("study", {"type", "load_start", "load_end", "load_steps", "speeds",
-                                              "parameter", "bracket_width", "duration", "error_estimate",
-                                              "from", "to", "family"});
+  const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   Study& s = out.study;
   s.type = read_choice(study, "type", kStudyTypes, s.type);
   switch (s.type) {

@@ -14,6 +14,7 @@ Scene read_scene(const Node& root) {
   read_operation(scene, out);
   read_numerics(scene, out);
   read_grooves(scene, out);
+  check_groove_parameter(scene, out);
   return out;
 }
 

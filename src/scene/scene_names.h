@@ -33,6 +33,9 @@ inline constexpr EnumNames<SupplyInlet, 3> kSupplyInlets{
 inline constexpr std::string_view kLubricantKeys[] = {"conductivity", "viscosity", "max_temperature",
                                                        "flash_temperature", "supply", "density",
                                                        "density_expansion", "specific_heat"};
+inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start", "load_end", "load_steps",
+                                                   "speeds",        "parameter",  "bracket_width", "duration",
+                                                   "error_estimate", "from",       "to",       "family"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
@@ -58,9 +61,10 @@ inline constexpr EnumNames<ErrorEstimate, 3> kErrorEstimates{
     {"none", "richardson", "every_state"},
     {ErrorEstimate::none, ErrorEstimate::richardson, ErrorEstimate::every_state}};
 
-inline constexpr EnumNames<MapParameter, 3> kMapParameters{
-    {"friction_coefficient", "gear_tilt", "roughness"},
-    {MapParameter::friction_coefficient, MapParameter::gear_tilt, MapParameter::roughness}};
+inline constexpr EnumNames<MapParameter, 6> kMapParameters{
+    {"friction_coefficient", "gear_tilt", "roughness", "groove_count", "groove_width", "groove_depth"},
+    {MapParameter::friction_coefficient, MapParameter::gear_tilt, MapParameter::roughness, MapParameter::groove_count,
+     MapParameter::groove_width, MapParameter::groove_depth}};
 
 // Effects in the order the model stacks them.
 inline constexpr std::string_view kHydrodynamics = "hydrodynamics";

@@ -22,6 +22,11 @@ void read_numerics(const MapReader& scene, Scene& out);
 // geometry.washer.grooves, after the rest: they round the mesh to their edges and need
 // the sliding film
 void read_grooves(const MapReader& scene, Scene& out);
+// A groove's width at `node`: a length at the washer's mean radius, or an angle (rad).
+double groove_angle(const Node& node, double mean_radius);
+// A map's or family's groove parameter (groove_count, groove_width, groove_depth): the
+// scene has grooves, and every value places them (read after the grooves).
+void check_groove_parameter(const MapReader& scene, const Scene& out);
 
 // The whole scene from the root of the (overridden) YAML tree.
 Scene read_scene(const Node& root);

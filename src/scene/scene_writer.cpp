@@ -67,16 +67,17 @@ void write_effects(Writer& w, const Effects& e) {
   if (e.convection) w.line(1, "- convection");
 }
 
-// As resolved: the width as the angle of its whole cells, the land's inlet as the share
-// of its whole cells (docs/physics.md section 14).
+// The width as the scene gave it, which the grid rounds again to the same whole cells (a
+// groove parameter places the grooves anew from it), with what the grid holds beside it;
+// the land's inlet as the share of its whole cells (docs/physics.md section 14).
 void write_grooves(Writer& w, const Grooves& g, const Scene& s) {
   w.line(2, "grooves:");
   w.entry(3, "count", fmt::format("{}", g.count));
   w.entry(3, "face", g.film == 1 ? "film_1" : "film_2");
   const double mean_radius = 0.5 * (s.washer.inner_radius + s.washer.outer_radius);
-  w.entry(3, "width", quantity(g.width, "rad"),
-          fmt::format("{} cells of the {} round the grid; {:.4g} mm at the mean radius", g.cells,
-                      s.mesh.circumferential_nodes, 1e3 * g.width * mean_radius));
+  w.entry(3, "width", quantity(g.written_width, "rad"),
+          fmt::format("on the grid: {} cells of the {} round it, {:.6g} rad, {:.4g} mm at the mean radius", g.cells,
+                      s.mesh.circumferential_nodes, g.width, 1e3 * g.width * mean_radius));
   w.entry(3, "depth", quantity(g.depth, "m"));
   if (g.land.shape == LandShape::flat) return;
   w.line(3, "land:");
@@ -212,11 +213,13 @@ void write_numerics(Writer& w, const Scene& s) {
   }
   // A map's second axis, or a distress curve's family of curves.
   auto map_parameter = [&](const char* key) {
-    const char* unit = st.parameter == MapParameter::gear_tilt   ? "rad"
-                       : st.parameter == MapParameter::roughness ? "m"
-                                                                 : "1";
+    const char* unit = st.parameter == MapParameter::gear_tilt || st.parameter == MapParameter::groove_width ? "rad"
+                       : st.parameter == MapParameter::roughness || st.parameter == MapParameter::groove_depth ? "m"
+                                                                                                               : "1";
     std::string values;
-    for (double v : st.parameter_values) values += (values.empty() ? "" : ", ") + quantity(v, unit);
+    for (double v : st.parameter_values)
+      values += (values.empty() ? "" : ", ") +
+                (st.parameter == MapParameter::groove_count ? fmt::format("{}", int(v)) : quantity(v, unit));
     w.line(1, std::string(key) + ":");
     w.entry(2, "name", std::string(kMapParameters.name(st.parameter)));
     w.entry(2, "values", fmt::format("[{}]", values));

@@ -51,7 +51,8 @@ std::string result_columns_json() {
   tables["fields"] = columns(fields_table({}), fields_table({}));
 
   Json run_parameters = Json::array();
-  for (MapParameter p : {MapParameter::friction_coefficient, MapParameter::gear_tilt, MapParameter::roughness})
+  for (MapParameter p : {MapParameter::friction_coefficient, MapParameter::gear_tilt, MapParameter::roughness,
+                         MapParameter::groove_count, MapParameter::groove_width, MapParameter::groove_depth})
     run_parameters.push_back(parameter_column(p));
   Json curve_parameters = Json::array();
   for (CurveParameter p : {CurveParameter::speed, CurveParameter::friction_coefficient, CurveParameter::gear_tilt,

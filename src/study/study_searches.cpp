@@ -37,6 +37,12 @@ std::string parameter_column(MapParameter p) {
       return "gear_tilt_rad";
     case MapParameter::roughness:
       return "roughness_Rq_m";
+    case MapParameter::groove_count:
+      return "groove_count";
+    case MapParameter::groove_width:
+      return "groove_width_rad";
+    case MapParameter::groove_depth:
+      return "groove_depth_m";
     case MapParameter::none:
       break;
   }
@@ -54,6 +60,20 @@ Scene with_parameter(Scene scene, MapParameter p, double value) {
     case MapParameter::roughness:
       set_roughness(scene, value);
       break;
+    case MapParameter::groove_count:
+    case MapParameter::groove_width:
+    case MapParameter::groove_depth: {
+      // The grooves placed anew on the grid from the width the scene gave (the scene
+      // reader checked that every value can be).
+      Grooves g = *scene.washer.grooves;
+      g.width = g.written_width;
+      if (p == MapParameter::groove_count) g.count = int(value);
+      if (p == MapParameter::groove_width) g.width = value;
+      if (p == MapParameter::groove_depth) g.depth = value;
+      if (const std::optional<GroovesNotPlaced> not_placed = place_grooves(scene, g))
+        throw InternalError("grooves the scene reader accepted cannot be placed: " + not_placed->why);
+      break;
+    }
     case MapParameter::none:
       break;
   }
@@ -65,8 +85,12 @@ std::vector<Variant> parameter_variants(const Scene& scene, std::string& column)
   column = parameter_column(st.parameter);
   if (st.parameter == MapParameter::none) return {Variant{}};
   std::vector<Variant> out;
-  for (double value : st.parameter_values)
-    out.push_back({with_parameter(scene, st.parameter, value), value, {}, fmt::format(", {} = {:.6g}", column, value)});
+  for (double value : st.parameter_values) {
+    Scene variant = with_parameter(scene, st.parameter, value);
+    // A groove's width as the grid holds it (whole cells), which is what was solved.
+    if (st.parameter == MapParameter::groove_width) value = variant.washer.grooves->width;
+    out.push_back({std::move(variant), value, {}, fmt::format(", {} = {:.6g}", column, value)});
+  }
   return out;
 }
 

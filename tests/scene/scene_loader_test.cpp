@@ -39,6 +39,7 @@ void expect_same_component(const Component& a, const Component& b) {
   EXPECT_EQ(a.grooves->count, b.grooves->count);
   EXPECT_EQ(a.grooves->film, b.grooves->film);
   EXPECT_EQ(a.grooves->width, b.grooves->width);
+  EXPECT_EQ(a.grooves->written_width, b.grooves->written_width);
   EXPECT_EQ(a.grooves->depth, b.grooves->depth);
   EXPECT_EQ(a.grooves->cells, b.grooves->cells);
   EXPECT_EQ(a.grooves->land.shape, b.grooves->land.shape);
@@ -279,6 +280,27 @@ INSTANTIATE_TEST_SUITE_P(
                       with_thermal(kMinimalScene, "thermal, convection") +
                           "lubricant: {density: 870 kg/m^3, specific_heat: 1950 J/(kg K), supply: {pressure: 1 bar, "
                           "at: inner_radius, temperature: 60 degC, carry_over: 0.5}}\n"},
+        RoundTripCase{"distress_maps_over_the_grooves",
+                      std::string(testing::kSceneBodies).replace(std::string(testing::kSceneBodies).find("thickness: 0.635 mm}"), 20,
+                                                        "thickness: 0.635 mm, grooves: {count: 8, width: 2 mm, "
+                                                        "depth: 50 um}}") +
+                          "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n"
+                          "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 3 kN,\n"
+                          "        parameter: {name: groove_count, values: [4, 6, 12]}}\n"},
+        RoundTripCase{"distress_map_over_the_groove_width",
+                      std::string(testing::kSceneBodies).replace(std::string(testing::kSceneBodies).find("thickness: 0.635 mm}"), 20,
+                                                        "thickness: 0.635 mm, grooves: {count: 8, width: 2 mm, "
+                                                        "depth: 50 um}}") +
+                          "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n"
+                          "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 3 kN,\n"
+                          "        parameter: {name: groove_width, values: [1 mm, 10 deg]}}\n"},
+        RoundTripCase{"distress_map_over_the_groove_depth",
+                      std::string(testing::kSceneBodies).replace(std::string(testing::kSceneBodies).find("thickness: 0.635 mm}"), 20,
+                                                        "thickness: 0.635 mm, grooves: {count: 8, width: 2 mm, "
+                                                        "depth: 50 um}}") +
+                          "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n"
+                          "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 3 kN,\n"
+                          "        parameter: {name: groove_depth, values: [10 um, 0.1 mm]}}\n"},
         RoundTripCase{"oil_supply_at_the_bore",
                       std::string(kMinimalScene) + "lubricant: {supply: {pressure: 3.5 bar, at: inner_radius}}\n"},
         RoundTripCase{"mass_conserving_cavitation",

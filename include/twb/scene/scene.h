@@ -42,7 +42,7 @@ enum class StudyType { point, load_sweep, distress_map, transient, sliding_choic
 
 // The optional second axis of a distress map or load sweep (besides speed).
 // roughness: the Rq of every surface (see docs/scenes.md for how the texture scales).
-enum class MapParameter { none, friction_coefficient, gear_tilt, roughness };
+enum class MapParameter { none, friction_coefficient, gear_tilt, roughness, groove_count, groove_width, groove_depth };
 
 // A parameter of the bearing a fold curve is continued in (study type distress_curve),
 // set on a built model without rebuilding it.
@@ -112,7 +112,8 @@ struct Land {
 struct Grooves {
   int count = 0;
   int film = 2;        // the film whose washer face is grooved
-  double width = 0.0;  // rad
+  double width = 0.0;  // rad, whole cells of the grid (resolved)
+  double written_width = 0.0;  // rad, as the scene gave it: a groove parameter places the grooves anew from it
   double depth = 0.0;  // m
   Land land;
   int cells = 0;       // of the grid, per groove (resolved)
@@ -290,5 +291,17 @@ struct Scene {
 // a texture scaled in height by k = new/old combined σ: McCool's spectral moments m0, m2,
 // m4 all scale with k², so σs ∝ k, R ∝ 1/k and η is unchanged (docs/physics.md section 4).
 void set_roughness(Scene& scene, double rq);
+
+// The washer's grooves g (count, width as an angle, depth, land, face) placed on the
+// scene's grid (docs/physics.md section 14): the circumferential node count rounded to a
+// whole number of cells per groove pitch, the groove's and the shaped inlet's widths to
+// whole cells. Where they cannot be: which of the grooves' keys is at fault (`width`: a
+// groove at least as wide as its pitch; `depth`: at least as deep as the washer;
+// `count`: more nodes than allowed) and why; the scene is then unchanged.
+struct GroovesNotPlaced {
+  const char* key;
+  std::string why;
+};
+std::optional<GroovesNotPlaced> place_grooves(Scene& scene, Grooves g);
 
 }  // namespace twb

@@ -24,6 +24,9 @@ PARAMETER_FORMATS = {
     "friction_coefficient": "dry friction coefficient {:g}",
     "gear_tilt_rad": r"$\gamma_{{tilt}}$ = {:g} rad",
     "roughness_Rq_m": r"$R_q$ = {:g} m",
+    "groove_count": "{:g} grooves",
+    "groove_width_rad": "grooves {:.3g} rad wide",
+    "groove_depth_m": "grooves {:g} m deep",
 }
 
 
