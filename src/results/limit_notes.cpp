@@ -23,7 +23,8 @@ struct FirstExcess {
 
 }  // namespace
 
-std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, const std::vector<DistressRow>& distress) {
+std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, const std::vector<DistressRow>& distress,
+                                     const std::string& parameter_column) {
   std::map<Run, std::map<LimitKind, FirstExcess>> first;
   for (const SolvedState& r : states) {
     if (!r.converged) continue;
@@ -40,7 +41,9 @@ std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, con
     for (const DistressRow& d : distress)
       if (d.speed == speed && d.parameter == parameter && d.sliding == sliding) w_d = d.distress_load;
     const std::string where = fmt::format("{:.6g} rad/s{}{}", speed,
-                                          parameter ? fmt::format(", parameter {:.6g}", *parameter) : "",
+                                          parameter ? fmt::format(", {} = {:.6g}", parameter_column.empty() ? "parameter" : parameter_column,
+                                                                  *parameter)
+                                                    : "",
                                           sliding ? ", sliding " + std::string(scene_name(*sliding)) : "");
     for (const auto& [kind, f] : kinds) {
       const bool before_distress = w_d && f.cool_branch && f.load < *w_d;

@@ -14,7 +14,9 @@
 namespace twb {
 
 // One line per run and limit exceeded (runs in order, limits in LimitKind order), each
-// at the lightest load past it; empty when no state exceeds a limit.
-std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, const std::vector<DistressRow>& distress);
+// at the lightest load past it; empty when no state exceeds a limit. A run's parameter
+// value is named by its column (e.g. groove_count), "parameter" where none is given.
+std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, const std::vector<DistressRow>& distress,
+                                     const std::string& parameter_column = "parameter");
 
 }  // namespace twb
