@@ -9,7 +9,10 @@ oil supplied.
 
 DIR holds one results directory per variant (flat, flat_convection, grooved, fed,
 fed_convection; those missing are skipped). Writes DIR/summary.csv and
-DIR/grooved_washers.png. Exit status: 0 done, 2 bad usage or no variant found.
+DIR/grooved_washers.png. Where DIR holds the maps over the grooves' count, width
+and depth (groove_count, groove_width, groove_depth), DIR/groove_parameters.csv and
+DIR/groove_parameters.png: the failure load and every criterion's load against each.
+Exit status: 0 done, 2 bad usage or no variant found.
 """
 import math
 import pathlib
@@ -93,6 +96,54 @@ def figure(table, load, path):
     fig.savefig(path, dpi=120)
 
 
+# The maps over one property of the fed grooved washer's grooves: its results directory,
+# its column in distress.csv, the axis label and the factor from the column's unit.
+GROOVE_PARAMETERS = [
+    ("groove_count", "groove_count", "number of grooves", 1.0),
+    ("groove_width", "groove_width_rad", "groove width (deg, whole cells)", 180.0 / math.pi),
+    ("groove_depth", "groove_depth_m", "groove depth (µm)", 1e6),
+]
+# Every criterion's own load in distress.csv, and how the figure draws it.
+CRITERIA = [
+    ("W_d_N", "thermo-viscous distress (W_d; none: no fold up to load_end)", "k^-"),
+    ("W_oil_temperature_N", "oil's maximum temperature", "C1s--"),
+    ("W_flash_temperature_N", "oil's flash point", "C3v:"),
+]
+
+
+def groove_parameters(root):
+    out = []
+    for name, column, _, factor in GROOVE_PARAMETERS:
+        path = root / name / "distress.csv"
+        if not path.exists():
+            continue
+        distress = pd.read_csv(path)
+        for _, row in distress.iterrows():
+            entry = {"parameter": name, "value": row[column], "value_shown": row[column] * factor,
+                     "speed_rad_s": row["speed_rad_s"], "W_fail_N": row["W_fail_N"], "criterion": row["criterion"]}
+            for key, _, _ in CRITERIA:
+                entry[key] = row[key] if key in row else math.nan
+            out.append(entry)
+    return pd.DataFrame(out)
+
+
+def groove_figure(table, path):
+    shown = [p for p in GROOVE_PARAMETERS if (table["parameter"] == p[0]).any()]
+    fig, axes = plt.subplots(1, len(shown), figsize=(4.2 * len(shown), 4.0), squeeze=False, sharey=True)
+    for ax, (name, _, label, _) in zip(axes[0], shown):
+        rows = table[table["parameter"] == name].sort_values("value")
+        ax.plot(rows["value_shown"], rows["W_fail_N"], "o", color="C0", markersize=8, label="W_fail", zorder=3)
+        for key, criterion, style in CRITERIA:
+            ax.plot(rows["value_shown"], rows[key], style, label=criterion)
+        ax.set_xlabel(label)
+        ax.set_yscale("log")
+    axes[0][0].set_ylabel("load (N)")
+    axes[0][0].legend(fontsize=7)
+    fig.suptitle("the fed, oil-cooled grooved washer at 545 rad/s: where it fails against its grooves")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
 def main(argv):
     args = [a for a in argv[1:]]
     load = 100.0
@@ -108,13 +159,20 @@ def main(argv):
         return 2
     root = pathlib.Path(args[0])
     table = summarize(root, load)
-    if table.empty:
+    grooves = groove_parameters(root)
+    if table.empty and grooves.empty:
         print(f"grooved_washer_summary.py: no variant's results in {root}", file=sys.stderr)
         return 2
-    table.to_csv(root / "summary.csv", index=False)
-    figure(table, load, root / "grooved_washers.png")
-    with pd.option_context("display.width", 200, "display.max_columns", 20):
-        print(table.drop(columns=["label"]).to_string(index=False))
+    if not table.empty:
+        table.to_csv(root / "summary.csv", index=False)
+        figure(table, load, root / "grooved_washers.png")
+        with pd.option_context("display.width", 200, "display.max_columns", 20):
+            print(table.drop(columns=["label"]).to_string(index=False))
+    if not grooves.empty:
+        grooves.to_csv(root / "groove_parameters.csv", index=False)
+        groove_figure(grooves, root / "groove_parameters.png")
+        with pd.option_context("display.width", 200, "display.max_columns", 20):
+            print(grooves.to_string(index=False))
     return 0
 
 
