@@ -10,6 +10,8 @@ import sys
 import tempfile
 import unittest
 
+from result_files import write
+
 SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "grooved_washer_summary.py")
 
 DISTRESS_HEADER = "speed_rad_s,{}W_fail_N,criterion,W_d_N,W_oil_temperature_N,W_flash_temperature_N\n"
@@ -17,12 +19,6 @@ STATES = ("speed_rad_s,load_N,branch,T_mean_C,T_max_C,heat_carried_W,Q_supply_l_
           "545,50,cool,26,60,2,0.05\n"
           "545,150,cool,30,100,6,0.07\n"
           "545,400,hot,90,300,20,0.09\n")
-
-
-def write(path, text):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(text)
 
 
 def rows(path):

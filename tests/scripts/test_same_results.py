@@ -9,17 +9,13 @@ import sys
 import tempfile
 import unittest
 
+from result_files import write
+
 SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "same_results.py")
 
 STATES = ("load_N,T_mean_C,wall_ms,branch\n"
           "100,30.65482386,69.014,cool\n"
           "115,30.94110021,23.7,cool\n")
-
-
-def write(path, text):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(text)
 
 
 def compare(before, after):
