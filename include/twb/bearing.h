@@ -1,7 +1,9 @@
 // A thrust washer bearing as a program that embeds twb sees it: built from a scene
 // (twb/scene/scene_loader.h), it solves steady states at the loads and speeds asked for
 // and runs the study its scene names. The model, its solvers and their settings stay
-// behind this class (docs/api.md).
+// behind this class (docs/api.md). One thread at a time per Bearing: its model keeps
+// what it learned between solves (the last state, where its Jacobian's entries land);
+// separate Bearings may solve on separate threads.
 #pragma once
 
 #include <memory>
