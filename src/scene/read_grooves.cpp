@@ -12,6 +12,7 @@
 #include "scene_names.h"
 #include "scene_sections.h"
 #include "quantity.h"
+#include "twb/error_family.h"
 
 namespace twb::scene_io {
 namespace {
@@ -79,12 +80,7 @@ void check_groove_parameter(const MapReader& scene, const Scene& out) {
   const std::vector<Node> items = axis.get("values", "").list("");
   for (std::size_t k = 0; k < items.size(); ++k) {
     Scene trial = out;
-    Grooves g = *out.washer.grooves;
-    g.width = g.written_width;
-    if (s.parameter == MapParameter::groove_count) g.count = int(s.parameter_values[k]);
-    if (s.parameter == MapParameter::groove_width) g.width = s.parameter_values[k];
-    if (s.parameter == MapParameter::groove_depth) g.depth = s.parameter_values[k];
-    if (const std::optional<GroovesNotPlaced> not_placed = place_grooves(trial, g))
+    if (const std::optional<GroovesNotPlaced> not_placed = place_groove_parameter(trial, s.parameter, s.parameter_values[k]))
       items[k].fail(fmt::format("{}: {}", items[k].path(), not_placed->why));
   }
 }
@@ -161,6 +157,19 @@ std::optional<GroovesNotPlaced> place_grooves(Scene& scene, Grooves g) {
   }
   scene.washer.grooves = g;
   return std::nullopt;
+}
+
+std::optional<GroovesNotPlaced> place_groove_parameter(Scene& scene, MapParameter p, double value) {
+  if (!scene.washer.grooves) throw InternalError("place_groove_parameter: the scene has no grooves");
+  Grooves g = *scene.washer.grooves;
+  g.width = g.written_width;
+  switch (p) {
+    case MapParameter::groove_count: g.count = int(value); break;
+    case MapParameter::groove_width: g.width = value; break;
+    case MapParameter::groove_depth: g.depth = value; break;
+    default: throw InternalError("place_groove_parameter: not a property of the grooves");
+  }
+  return place_grooves(scene, g);
 }
 
 }  // namespace twb

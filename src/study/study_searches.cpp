@@ -63,14 +63,8 @@ Scene with_parameter(Scene scene, MapParameter p, double value) {
     case MapParameter::groove_count:
     case MapParameter::groove_width:
     case MapParameter::groove_depth: {
-      // The grooves placed anew on the grid from the width the scene gave (the scene
-      // reader checked that every value can be).
-      Grooves g = *scene.washer.grooves;
-      g.width = g.written_width;
-      if (p == MapParameter::groove_count) g.count = int(value);
-      if (p == MapParameter::groove_width) g.width = value;
-      if (p == MapParameter::groove_depth) g.depth = value;
-      if (const std::optional<GroovesNotPlaced> not_placed = place_grooves(scene, g))
+      // The scene reader checked that every value can be placed.
+      if (const std::optional<GroovesNotPlaced> not_placed = place_groove_parameter(scene, p, value))
         throw InternalError("grooves the scene reader accepted cannot be placed: " + not_placed->why);
       break;
     }

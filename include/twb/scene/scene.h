@@ -303,5 +303,8 @@ struct GroovesNotPlaced {
   std::string why;
 };
 std::optional<GroovesNotPlaced> place_grooves(Scene& scene, Grooves g);
+// The scene's grooves with one property (a map's groove_count, groove_width or
+// groove_depth) set to `value`, placed anew from the width the scene gave.
+std::optional<GroovesNotPlaced> place_groove_parameter(Scene& scene, MapParameter p, double value);
 
 }  // namespace twb
