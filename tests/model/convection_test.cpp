@@ -88,16 +88,8 @@ TEST(Convection, TheHeatBalanceClosesWithTheHeatTheOilCarries) {
   Scene paper = testing::table1_scene(true, true, true, true, 545.0, 200.0);
   testing::use_coarse_mesh(paper);
   Scene grooved = paper;
-  grooved.operating.sliding = SlidingFilm::washer_gear;
-  grooved.mesh.circumferential_nodes = 32;
-  Grooves g;
-  g.count = 4;
-  g.cells = 2;
-  g.width = 2 * 2 * std::numbers::pi / 32;
-  g.depth = 30e-6;
-  g.land = {LandShape::taper, 4e-6, 0.5};
-  grooved.washer.grooves = g;
-  grooved.effects.cavitation = CavitationModel::jfo;
+  testing::use_four_grooves(grooved);
+  grooved.washer.grooves->land = {LandShape::taper, 4e-6, 0.5};
   grooved.lubricant.supply = OilSupply{0.5e5, SupplyInlet::both, paper.operating.ambient + 10.0, 0.7};
   for (Scene s : {paper, grooved}) {
     s.effects.convection = true;

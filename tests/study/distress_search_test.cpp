@@ -205,15 +205,7 @@ INSTANTIATE_TEST_SUITE_P(Bearing, DetectorRobustness,
 // branch it started on. Before, it stopped at a tenth and said it could not check.
 TEST(DistressSearchWithSupply, TheStartsBranchIsCheckedAboveTheLoadTheSupplyLifts) {
   Scene s = coarse_scene(545.0);
-  s.operating.sliding = SlidingFilm::washer_gear;
-  s.mesh.circumferential_nodes = 32;
-  Grooves g;
-  g.count = 4;
-  g.cells = 2;
-  g.width = 2 * 2 * std::numbers::pi / 32;
-  g.depth = 30e-6;
-  s.washer.grooves = g;
-  s.effects.cavitation = CavitationModel::jfo;
+  testing::use_four_grooves(s);
   s.lubricant.supply = OilSupply{1e5, SupplyInlet::both};
   BearingModel model(s);
   // A tenth of the start is below what the supply lifts: no steady state there.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 
 #include "twb/scene/scene.h"
 
@@ -49,6 +50,21 @@ inline Scene wide_parallel_annulus(double speed, double load) {
 inline void use_coarse_mesh(Scene& s) {
   s.mesh.radial_nodes = 5;
   s.mesh.circumferential_nodes = 24;
+}
+
+// Four grooves 2 cells wide and 30 µm deep on a 32-node grid, in the face of film 2,
+// which slides (the coarse grooved washer of the model and study tests), with JFO
+// cavitation, as the oil supply into the grooves needs.
+inline void use_four_grooves(Scene& s) {
+  s.operating.sliding = SlidingFilm::washer_gear;
+  s.mesh.circumferential_nodes = 32;
+  Grooves g;
+  g.count = 4;
+  g.cells = 2;
+  g.width = g.written_width = 2 * 2 * std::numbers::pi / 32;
+  g.depth = 30e-6;
+  s.washer.grooves = g;
+  s.effects.cavitation = CavitationModel::jfo;
 }
 
 }  // namespace twb::testing
