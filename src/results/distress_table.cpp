@@ -10,16 +10,11 @@ std::string criterion_name(const FailureCriterion& criterion) {
   return criterion.distress ? "distress" : std::string(limit_name(criterion.limit));
 }
 
-namespace {
-
-// A criterion's own load column: W_<criterion>{suffix}_N, the body's colon an underscore.
 std::string criterion_column(LimitKind kind, const char* suffix) {
   std::string name(limit_name(kind));
   std::replace(name.begin(), name.end(), ':', '_');
   return "W_" + name + suffix + "_N";
 }
-
-}  // namespace
 
 ResultTable distress_table(const std::vector<DistressRow>& rows, const std::string& parameter_column,
                            bool sliding_column) {

@@ -258,6 +258,19 @@ void read_study(const MapReader& scene, Scene& out) {
       refuse_every_state(study, s, "distress_curve");
       read_map_parameter(study, s, out, "family");
       break;
+    case StudyType::sensitivity:
+      // The state at the operating point, and with a load range the failure load there.
+      study.restrict_to({"type", "parameters", "load_start", "load_end", "bracket_width"}, "with type: sensitivity");
+      if (study.has("load_start") || study.has("load_end")) read_load_range(study, s, " (distress is searched between them)");
+      s.bracket_width = read_bracket_width(study, s.bracket_width);
+      if (study.has("parameters")) {
+        const Node list = study.get("parameters", "");
+        for (const Node& item : list.list("scene paths of inputs, e.g. [geometry.gear.tilt, surfaces.washer.Rq]"))
+          s.parameters.push_back(item.scalar("the scene path of an input, e.g. geometry.gear.tilt"));
+        if (s.parameters.empty()) list.fail(fmt::format("{}: an empty list; leave the key out to differentiate against "
+                                                        "every input the scene file writes", list.path()));
+      }
+      break;
     case StudyType::distress_map: {
       study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate"},
                         "with type: distress_map");

@@ -35,7 +35,8 @@ inline constexpr std::string_view kLubricantKeys[] = {"conductivity", "viscosity
                                                        "density_expansion", "specific_heat"};
 inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start", "load_end", "load_steps",
                                                    "speeds",        "parameter",  "bracket_width", "duration",
-                                                   "error_estimate", "from",       "to",       "family"};
+                                                   "error_estimate", "from",       "to",       "family",
+                                                   "parameters"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
@@ -44,10 +45,10 @@ inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
 inline constexpr EnumNames<FrictionLaw, 2> kFrictionLaws{
     {"empirical", "constant"}, {FrictionLaw::empirical, FrictionLaw::constant}};
 
-inline constexpr EnumNames<StudyType, 6> kStudyTypes{
-    {"point", "load_sweep", "distress_map", "transient", "sliding_choice", "distress_curve"},
+inline constexpr EnumNames<StudyType, 7> kStudyTypes{
+    {"point", "load_sweep", "distress_map", "transient", "sliding_choice", "distress_curve", "sensitivity"},
     {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient,
-     StudyType::sliding_choice, StudyType::distress_curve}};
+     StudyType::sliding_choice, StudyType::distress_curve, StudyType::sensitivity}};
 
 inline constexpr EnumNames<CurveParameter, 6> kCurveParameters{
     {"speed", "friction_coefficient", "gear_tilt", "ambient_temperature", "viscosity_scale", "roughness"},

@@ -85,6 +85,7 @@ double Node::quantity(const SiUnit& unit, const Range& range) const {
                      range.describe(), has_unit ? fmt::format(" {}", unit.symbol) : std::string(),
                      with_reason(range.reason)));
   }
+  if (provenance_) provenance_->note_quantity(path_, value, unit.symbol);
   return value;
 }
 

@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <yaml-cpp/mark.h>
@@ -31,10 +32,22 @@ class Provenance {
     const auto found = by_path_.find(path);
     return found != by_path_.end() ? found->second : parent;
   }
+  // Every quantity the readers took from the text, as they took it (SI value, SI unit):
+  // what makes each of the scene's numbers a parameter (Scene::inputs).
+  struct ReadQuantity {
+    std::string path;
+    double value;
+    std::string_view unit;
+  };
+  void note_quantity(const std::string& path, double value, std::string_view unit) const {
+    read_.push_back({path, value, unit});
+  }
+  const std::vector<ReadQuantity>& quantities_read() const { return read_; }
 
  private:
   const Origin* file_;
   std::map<std::string, const Origin*> by_path_;
+  mutable std::vector<ReadQuantity> read_;
 };
 
 // Throws the InputError for text at `mark` of `origin`. A key node created by an override

@@ -200,7 +200,7 @@ void write_numerics(Writer& w, const Scene& s) {
   w.line(0, "study:");
   w.entry(1, "type", std::string(kStudyTypes.name(s.study.type)));
   const Study& st = s.study;
-  if (st.type != StudyType::point) {
+  if (st.type != StudyType::point && !(st.type == StudyType::sensitivity && st.load_end == 0.0)) {
     w.entry(1, "load_start", quantity(st.load_start, "N"));
     w.entry(1, "load_end", quantity(st.load_end, "N"));
   }
@@ -230,6 +230,12 @@ void write_numerics(Writer& w, const Scene& s) {
   if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map || st.type == StudyType::distress_curve)
     w.entry(1, "error_estimate", std::string(kErrorEstimates.name(st.error_estimate)));
   if (st.type == StudyType::transient) w.entry(1, "duration", quantity(st.duration, "s"));
+  if (st.type == StudyType::sensitivity) {
+    w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
+    std::string paths;
+    for (const std::string& p : st.parameters) paths += (paths.empty() ? "" : ", ") + p;
+    if (!paths.empty()) w.entry(1, "parameters", fmt::format("[{}]", paths));
+  }
   if (st.type == StudyType::distress_curve) {
     const char* unit = st.curve_parameter == CurveParameter::speed                  ? "rad/s"
                        : st.curve_parameter == CurveParameter::gear_tilt            ? "rad"

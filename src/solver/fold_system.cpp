@@ -117,6 +117,17 @@ std::pair<std::vector<double>, double> FoldSystem::null_vector_and_curvature(std
   return {unit_null_vector(std::move(vg)), bend / push};
 }
 
+std::vector<double> FoldSystem::left_null_vector(std::span<const double> x) const {
+  const auto n = std::size_t(base().size());
+  std::vector<double> f(n), base_jac(std::size_t(base().pattern().nnz())), vg;
+  if (!solve_bordered(x, f, base_jac, vg)) return {};
+  std::vector<double> w(n + 1, 0.0);
+  w[n] = 1.0;
+  lu_->solve_transposed(w);
+  w.resize(n);
+  return w;
+}
+
 std::vector<double> FoldSystem::unit_null_vector(std::vector<double> vg) const {
   vg.resize(std::size_t(base().size()));
   const double size = metric().state_norm(vg);

@@ -56,6 +56,11 @@ class FoldSystem final : public BorderedSystem {
   // bordered matrix is singular, and κ.
   std::pair<std::vector<double>, double> null_vector_and_curvature(std::span<const double> x) const;
 
+  // The left null vector ψ of J at a fold x (ψᵀJ = 0: the transposed bordered solve's
+  // w, whose last entry is g = 0 there), scaled so that ψᵀb = 1; empty where the bordered
+  // matrix is singular. What a fold's load responds to: dλ*/dp = −ψᵀF_p / ψᵀF_λ.
+  std::vector<double> left_null_vector(std::span<const double> x) const;
+
   // A singular bordered matrix (far from the fold) gives a non-finite residual, which
   // KINSOL's line search treats as a step too long.
   void evaluate(std::span<const double> x, std::span<double> residual, std::span<double> jacobian) const override;

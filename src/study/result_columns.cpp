@@ -49,6 +49,7 @@ std::string result_columns_json() {
   tables["fold_curve"] = columns(fold_curve_table({}, parameter, family), fold_curve_table({}, parameter));
   tables["trajectory"] = columns(trajectory_table({}, parameter, true), trajectory_table({}, {}, false));
   tables["fields"] = columns(fields_table({}), fields_table({}));
+  tables["sensitivity"] = columns(sensitivity_table({}), sensitivity_table({}));
 
   Json run_parameters = Json::array();
   for (MapParameter p : {MapParameter::friction_coefficient, MapParameter::gear_tilt, MapParameter::roughness,

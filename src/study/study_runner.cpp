@@ -27,6 +27,7 @@
 #include "twb/error_family.h"
 #include "study/search_error_bars.h"
 #include "study/study_searches.h"
+#include "study/sensitivity.h"
 
 namespace twb {
 
@@ -44,17 +45,8 @@ SolvedState record(const BearingModel& model, const std::vector<double>& u, cons
 }
 
 void run_point(BearingModel& model, StudyOutcome& out) {
-  SteadySolver solver(model, newton_settings(model.scene()));
   std::vector<double> u;
-  const SteadyReport rep = solver.solve_cold(u);
-  out.timings.newton_iterations += rep.iterations;
-  out.timings.jacobian_evaluations += rep.jacobian_evaluations;
-  if (!rep.converged) {
-    out.solver_failed = true;
-    out.message = fmt::format("no steady state at {:.6g} N: {}", model.load(), rep.message);
-    return;
-  }
-  out.states.push_back(record(model, u, rep));
+  if (!solve_operating_point(model, out, u)) return;
   if (model.scene().study.error_estimate == ErrorEstimate::none) return;
   // Its error bars (state_error.h), with the warning where the mesh is more than 5 % off.
   std::string why;
@@ -274,6 +266,9 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
     case StudyType::distress_curve:
       run_distress_curve(model, out, progress, threads);
       break;
+    case StudyType::sensitivity:
+      run_sensitivity(model, out, progress, threads);
+      break;
   }
   // Searches run on worker threads count their own (run_searches); the rest ran here.
   const StudyType type = model.scene().study.type;
@@ -293,7 +288,7 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
   out.timings.states = int(out.states.size());
   // Continuation and distress searches count their work in states, transients and
   // factorizations; their Newton iterations are those that solved the reported states.
-  if (type != StudyType::point && type != StudyType::transient)
+  if (type != StudyType::point && type != StudyType::transient && type != StudyType::sensitivity)
     for (const SolvedState& s : out.states) out.timings.newton_iterations += s.iterations;
   out.timings.solve_ms = elapsed_ms(t0);
   return out;

@@ -143,6 +143,8 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"land_with_two_shapes", 13, 13, {"geometry.washer.grooves.land", "expected one shape", "taper and step"}},
     {"groove_wider_than_pitch", 9, 33, {"geometry.washer.grooves.width", "leave no land", "the pitch is 30 deg"}},
     {"groove_through_the_washer", 9, 45, {"geometry.washer.grooves.depth", "cut through the washer", "0.635 mm thick"}},
+    {"sensitivity_parameter_not_an_input", 15, 36, {"study.parameters[1]: 'geometry.gear.tillt' names no number of the bearing", "did you mean 'geometry.gear.tilt'?"}},
+    {"sensitivity_parameter_outside_the_bearing", 16, 7, {"study.parameters[0]: 'mesh.radial_nodes' is not in the bearing's sections", "geometry, materials, surfaces, lubricant, limits, operating, friction"}},
     {"groove_parameter_without_grooves", 19, 21, {"study.parameter.name: groove_count varies the washer's grooves", "the scene has none"}},
     {"groove_width_value_wider_than_pitch", 20, 51, {"study.parameter.values[1]", "12 grooves 40 deg wide leave no land", "the pitch is 30 deg"}},
     {"groove_count_value_leaves_no_land", 21, 47, {"study.parameter.values[1]", "40 grooves 10 deg wide", "the pitch is 9 deg"}},

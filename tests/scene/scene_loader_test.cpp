@@ -105,6 +105,7 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.study.parameter_values, b.study.parameter_values);
   EXPECT_EQ(a.study.bracket_width, b.study.bracket_width);
   EXPECT_EQ(a.study.duration, b.study.duration);
+  EXPECT_EQ(a.study.parameters, b.study.parameters);
   EXPECT_EQ(a.output.directory, b.output.directory);
   EXPECT_EQ(a.output.fields, b.output.fields);
 }
@@ -301,6 +302,12 @@ INSTANTIATE_TEST_SUITE_P(
                           "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n"
                           "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 3 kN,\n"
                           "        parameter: {name: groove_depth, values: [10 um, 0.1 mm]}}\n"},
+        RoundTripCase{"sensitivity_at_the_point",
+                      std::string(kMinimalScene) + "study: {type: sensitivity}\n"},
+        RoundTripCase{"sensitivity_of_the_fold_to_named_inputs",
+                      std::string(kMinimalScene) +
+                          "study: {type: sensitivity, load_start: 100 N, load_end: 400 N, bracket_width: 0.001,\n"
+                          "        parameters: [geometry.gear.tilt, surfaces.washer.Rq, materials.carrier.thermal_expansion]}\n"},
         RoundTripCase{"oil_supply_at_the_bore",
                       std::string(kMinimalScene) + "lubricant: {supply: {pressure: 3.5 bar, at: inner_radius}}\n"},
         RoundTripCase{"mass_conserving_cavitation",

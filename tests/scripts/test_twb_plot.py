@@ -436,6 +436,37 @@ class TwbPlotTest(unittest.TestCase):
         self.assertIn("545 rad/s, dry friction coefficient 0.05, 1200 N", trajectory)
         self.assertIn("545 rad/s, dry friction coefficient 0.2, 1200 N", trajectory)
 
+    def test_sensitivity_tornado(self):
+        """sensitivity.csv of a sensitivity study: a tornado of W_d's elasticities, the
+        largest on top, rows without an elasticity left out; the torque's without a W_d."""
+        d = self.results_dir("sensitivity")
+        rows = ["quantity,value,parameter,parameter_value,parameter_unit,derivative,elasticity,step",
+                "torque_Nm,0.9,operating.load,500,N,0.0013,0.74,0.05",
+                "W_d_N,188.4,operating.ambient,297.15,K,-5.48,-8.64,0.0297",
+                "W_d_N,188.4,geometry.gear.tilt,0.002,rad,-105613,-1.12,2e-07",
+                "W_d_N,188.4,materials.gear.density,7850,kg/m^3,0,,0.785",
+                "W_d_N,188.4,lubricant.viscosity.G0,3.545,1,250.8,4.72,0.0003545"]
+        write(os.path.join(d, "sensitivity.csv"), rows)
+        result = plot(d, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        out_dir = os.path.join(d, "figures")
+        self.assert_figures(out_dir, ("sensitivity",), formats=("svg",))
+        text = self.svg_text(os.path.join(out_dir, "sensitivity.svg"))
+        for label in ("operating.ambient", "lubricant.viscosity.G0", "geometry.gear.tilt", "W_d (188.4 N)"):
+            self.assertIn(label, text)
+        self.assertNotIn("materials.gear.density", text)
+        read = tp.read_sensitivity(os.path.join(d, "sensitivity.csv"))
+        self.assertEqual(len(read), 5)
+        self.assertIsNone(read[3]["elasticity"])
+        self.assertEqual(read[1]["parameter"], "operating.ambient")
+        write(os.path.join(d, "sensitivity.csv"), rows[:2])
+        self.assertEqual(plot(d, "--format", "svg").returncode, 0)
+        self.assertIn("friction torque", self.svg_text(os.path.join(out_dir, "sensitivity.svg")))
+        write(os.path.join(d, "sensitivity.csv"), rows[:2] + ["W_d_N,188.4,operating.speed,545,rad/s,oops,0.4,0.05"])
+        broken = plot(d, "--format", "svg")
+        self.assertEqual(broken.returncode, 2)
+        self.assertIn("sensitivity.csv: line 3", broken.stderr)
+
     def test_sliding_comparison(self):
         d = os.path.join(self.tmp, "sliding")
         os.makedirs(d)

@@ -45,6 +45,10 @@ struct FailureCriterion {
   static FailureCriterion crossing(LimitKind kind) { return {false, kind}; }
   bool operator==(const FailureCriterion&) const = default;
 };
+// A criterion's own load column: W_<criterion>{suffix}_N, the body's colon an underscore
+// (W_material_temperature_washer_N, W_flash_temperature_error_N).
+std::string criterion_column(LimitKind kind, const char* suffix = "");
+
 // "distress", or the criterion's limit_name: distress.csv's criterion column.
 std::string criterion_name(const FailureCriterion& criterion);
 

@@ -38,7 +38,7 @@ enum class FrictionLaw { constant, empirical };
 
 // sliding_choice: both sliding configurations over a load grid, the one of lower
 // friction torque kept (docs/physics.md section 2, the paper's "Component Rotational Speed").
-enum class StudyType { point, load_sweep, distress_map, transient, sliding_choice, distress_curve };
+enum class StudyType { point, load_sweep, distress_map, transient, sliding_choice, distress_curve, sensitivity };
 
 // The optional second axis of a distress map or load sweep (besides speed).
 // roughness: the Rq of every surface (see docs/scenes.md for how the texture scales).
@@ -262,6 +262,9 @@ struct Study {
   ErrorEstimate error_estimate = ErrorEstimate::richardson;
   // transient: pseudo-time span in s; 0 marches until the state settles or runs away.
   double duration = 0.0;
+  // sensitivity: the inputs differentiated against, by their scene paths (empty: every
+  // input the scene file writes, Scene::inputs).
+  std::vector<std::string> parameters;
 };
 
 struct Output {
@@ -269,8 +272,23 @@ struct Output {
   bool fields = false;  // write p, h, T, contact pressure on the polar grid
 };
 
+// A continuous input of the bearing (docs/physics.md section 16): the number the scene
+// file writes at `path` ("geometry.gear.tilt", "lubricant.viscosity.kv40"), in SI; unit
+// is the SI unit's udunits2 symbol, "1" for a pure number.
+struct SceneInput {
+  std::string path;
+  double value = 0.0;
+  std::string unit;
+};
+
 struct Scene {
   std::string source;  // path of the scene file, for messages
+  // The scene's tree as it was read (its bases and overrides merged), YAML: read again
+  // with an input changed (scene_inputs.h), it is validated exactly like the file.
+  std::string written;
+  // Every continuous input the reader took from the bearing's sections (geometry,
+  // materials, surfaces, lubricant, limits, operating, friction), in the order read.
+  std::vector<SceneInput> inputs;
   Effects effects;
   Component carrier, washer, gear;
   AsperityParameters asperities;

@@ -11,6 +11,7 @@
 #include "twb/results/distress_table.h"
 #include "twb/results/fold_curve_table.h"
 #include "twb/results/run_timings.h"
+#include "twb/results/sensitivity_table.h"
 #include "twb/results/sliding_table.h"
 #include "twb/results/states_table.h"
 #include "twb/results/trajectory_table.h"
@@ -29,6 +30,7 @@ struct StudyOutcome {
   // distress_curve: the fold along the curve parameter (fold_curve.csv) and its column
   std::vector<FoldCurveRow> fold_curve;
   std::string fold_curve_column;
+  std::vector<SensitivityRow> sensitivity;  // sensitivity: each quantity against each input
   std::vector<std::string> summary;  // lines for the end of the run's output (e.g. the cusp)
   // The solvers' own words where a search went on regardless (twb run --verbose).
   std::vector<std::string> diagnostics;

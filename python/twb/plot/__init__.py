@@ -24,10 +24,10 @@ from .fields import default_state, make_field_maps, select_fields  # noqa: E402
 from .figures import make_figures  # noqa: E402
 from .runs import Data, Run, merge, read_run  # noqa: E402
 from .tables import (DistressRow, InputError, fields_path, read_distress, read_fields,  # noqa: E402
-                     read_fold_curve, read_sliding, read_states, read_trajectory)
+                     read_fold_curve, read_sensitivity, read_sliding, read_states, read_trajectory)
 
 __all__ = [
     "Data", "DistressRow", "InputError", "Run", "default_state", "fields_path", "main",
     "make_field_maps", "make_figures", "merge", "read_distress", "read_fields", "read_fold_curve",
-    "read_run", "read_sliding", "read_states", "read_trajectory", "select_fields",
+    "read_run", "read_sensitivity", "read_sliding", "read_states", "read_trajectory", "select_fields",
 ]

@@ -5,6 +5,7 @@ and what cannot be drawn is said on stderr, so a missing figure is never a silen
 import sys
 
 from .distress import figure_distress_map, figure_fold_curve
+from .sensitivity import figure_tornado
 from .sliding import figure_sliding
 from .states import (LOAD_FIGURES, figure_contact_vs_hmin, figure_stribeck, figure_stribeck_by_friction,
                      figure_vs_load)
@@ -51,4 +52,11 @@ def make_figures(data, out_dir, formats):
         save(figure_trajectory(data), out_dir, "transient_trajectory", formats, written)
     if data.sliding:
         save(figure_sliding(data), out_dir, "sliding_comparison", formats, written)
+    for k, (name, rows) in enumerate(data.sensitivities):
+        fig = figure_tornado(rows)
+        stem = "sensitivity" if len(data.sensitivities) == 1 else f"sensitivity_{k + 1}_{name}"
+        if fig is None:
+            print(f"twb_plot: note: {name}: sensitivity.csv has no elasticities to draw", file=sys.stderr)
+        else:
+            save(fig, out_dir, stem, formats, written)
     return written

@@ -12,7 +12,7 @@ import numpy as np
 
 from .style import Style, parameter_label, speed_key, speed_label
 from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_distress, read_fold_curve,
-                     read_sliding, read_states, read_trajectory, STATE_ERROR_COLUMNS)
+                     read_sensitivity, read_sliding, read_states, read_trajectory, STATE_ERROR_COLUMNS)
 
 
 def friction_setting(path):
@@ -45,6 +45,7 @@ class Run:
     friction: object = None
     has_fields: bool = False
     fold_curve: object = None  # (parameter column, rows) of fold_curve.csv
+    sensitivity: list = field(default_factory=list)  # rows of sensitivity.csv
 
 
 def read_run(directory):
@@ -68,6 +69,9 @@ def read_run(directory):
     fold_curve_path = os.path.join(directory, "fold_curve.csv")
     if os.path.isfile(fold_curve_path):
         run.fold_curve = read_fold_curve(fold_curve_path)
+    sensitivity_path = os.path.join(directory, "sensitivity.csv")
+    if os.path.isfile(sensitivity_path):
+        run.sensitivity = read_sensitivity(sensitivity_path)
     run.friction = friction_setting(os.path.join(directory, "run.json"))
     run.has_fields = os.path.isdir(os.path.join(directory, "fields"))
     return run
@@ -84,6 +88,7 @@ class Data:
     sliding: list           # rows of sliding.csv
     speed_style: Style
     fold_curves: list = field(default_factory=list)  # (run name, parameter column, rows)
+    sensitivities: list = field(default_factory=list)  # (run name, rows of sensitivity.csv)
     rpm: bool = False       # speeds drawn in rpm
 
 
@@ -139,4 +144,5 @@ def merge(runs):
             + [speed_key(row["speed_rad_s"]) for row in sliding])
     data = Data(states, friction, parameters, distress, trajectories, sliding, Style(keys))
     data.fold_curves = [(r.name,) + r.fold_curve for r in runs if r.fold_curve is not None]
+    data.sensitivities = [(r.name, r.sensitivity) for r in runs if r.sensitivity]
     return data

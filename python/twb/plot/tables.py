@@ -58,6 +58,8 @@ DISTRESS_TAIL = _written("distress", ("W_d_N", "bracket_low_N", "bracket_high_N"
 # Written since W_d has an error bar (study.error_estimate: richardson), before the method.
 DISTRESS_ERROR_COLUMNS = _written("distress", ("W_d_fine_N", "W_d_extrapolated_N", "W_d_error_N"))
 SLIDING_COLUMNS = tuple(_TABLES["sliding"]["columns"])
+SENSITIVITY_COLUMNS = tuple(_TABLES["sensitivity"]["columns"])
+SENSITIVITY_TEXTS = tuple(_TABLES["sensitivity"]["texts"])
 # The columns twb adds after the speed when a study runs several configurations: the
 # value of its second parameter, and the film that slides.
 PARAMETER_COLUMNS = tuple(_DEFINITION["run_parameters"])
@@ -253,6 +255,23 @@ def read_sliding(path):
         if row["chosen"] not in (0.0, 1.0):
             raise InputError(f"{path}: line {line}: column 'chosen': expected 0 or 1, "
                              f"got {fields[header.index('chosen')].strip()!r}")
+        rows.append(row)
+    return rows
+
+
+def read_sensitivity(path):
+    """sensitivity.csv: one dict per (quantity, parameter) row; elasticity None where
+    twb left it empty (a quantity or an input of zero)."""
+    records = _records(path)
+    header = _header(path, records, SENSITIVITY_COLUMNS, "sensitivity.csv")
+    rows = []
+    for line, fields in records:
+        _check_width(path, line, fields, header)
+        row = {}
+        for c in SENSITIVITY_COLUMNS:
+            text = fields[header.index(c)]
+            row[c] = text.strip() if c in SENSITIVITY_TEXTS else _number(path, line, c, text,
+                                                                        optional=c == "elasticity")
         rows.append(row)
     return rows
 

@@ -1,0 +1,90 @@
+#include "twb/scene/scene_inputs.h"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "scene/key_suggestion.h"
+#include "scene/quantity.h"
+#include "twb/scene/scene_loader.h"
+
+namespace twb {
+
+namespace {
+
+constexpr std::string_view kInputSections[] = {"geometry.", "materials.", "surfaces.", "lubricant.",
+                                               "limits.",   "operating.", "friction."};
+
+// The SI units a resolved scene writes its numbers in (scene_writer.cpp), the angle before
+// the pure number: udunits2 takes both for "rad".
+constexpr std::array kUnits = {&si::length,        &si::angle,         &si::angular_speed, &si::force,
+                               &si::time,          &si::temperature,   &si::stress,        &si::conductivity,
+                               &si::density,       &si::specific_heat, &si::viscosity,     &si::kinematic_viscosity,
+                               &si::areal_density, &si::expansion};
+
+// The resolved scene's number at `path`, if it writes one there.
+std::optional<SceneInput> resolved_input(const Scene& scene, const std::string& path) {
+  YAML::Node node = YAML::Load(describe_scene(scene));
+  std::string_view rest = path;
+  while (!rest.empty()) {
+    const std::size_t dot = rest.find('.');
+    const std::string key(rest.substr(0, dot));
+    if (!node.IsMap() || !node[key]) return std::nullopt;
+    node = node[key];
+    rest = dot == std::string_view::npos ? std::string_view() : rest.substr(dot + 1);
+  }
+  if (!node.IsScalar()) return std::nullopt;
+  const std::string text = node.Scalar();
+  if (text.find_first_of(" \t") == std::string::npos) {
+    try {
+      return SceneInput{path, to_si(text, si::dimensionless), "1"};
+    } catch (const QuantityError&) {
+      return std::nullopt;  // a name (an enum value), not a number
+    }
+  }
+  for (const SiUnit* unit : kUnits) {
+    try {
+      return SceneInput{path, to_si(text, *unit), std::string(unit->symbol)};
+    } catch (const QuantityError&) {
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+bool is_bearing_input_path(std::string_view path) {
+  if (path.find('[') != std::string_view::npos) return false;
+  return std::any_of(std::begin(kInputSections), std::end(kInputSections),
+                     [&](std::string_view section) { return path.starts_with(section); });
+}
+
+SceneInput scene_input(const Scene& scene, const std::string& path) {
+  for (const SceneInput& in : scene.inputs)
+    if (in.path == path) return in;
+  if (is_bearing_input_path(path))
+    if (std::optional<SceneInput> resolved = resolved_input(scene, path)) return *resolved;
+  std::vector<std::string_view> paths;
+  for (const SceneInput& in : scene.inputs) paths.push_back(in.path);
+  const std::string why = is_bearing_input_path(path)
+                              ? "names no number of the bearing the scene writes or defaults"
+                              : "is not in the bearing's sections (geometry, materials, surfaces, lubricant, limits, "
+                                "operating, friction)";
+  throw std::invalid_argument(fmt::format("'{}' {}{}", path, why,
+                                          scene_io::allowed_after(scene_io::closest_match(path, paths), paths)));
+}
+
+std::string input_override(const std::string& path, double value, std::string_view unit) {
+  return unit == "1" ? fmt::format("{}={:.17g}", path, value) : fmt::format("{}={:.17g} {}", path, value, unit);
+}
+
+Scene with_inputs(const Scene& scene, std::span<const std::pair<std::string, double>> values) {
+  std::vector<std::string> overrides;
+  for (const auto& [path, value] : values) overrides.push_back(input_override(path, value, scene_input(scene, path).unit));
+  return load_scene_text(scene.written, scene.source, overrides);
+}
+
+}  // namespace twb
