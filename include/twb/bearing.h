@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "twb/model/unknown_block.h"
@@ -43,6 +44,13 @@ class Bearing {
   // start finds the cool one if it can. The state says neither (its `branch` is empty);
   // a load sweep study follows and names the branches.
   SolvedState solve(double load, double speed);
+  // How the last state solve() found moves with one input (docs/physics.md section 16):
+  // (name, d quantity / d input) for torque_Nm, f_eff, T_mean_C, T_max_C, hmin_over_sigma
+  // and fluid_share, per SI unit of the input at `path` ("geometry.gear.tilt",
+  // "operating.speed"; a temperature per kelvin). Throws std::logic_error before any
+  // solve, std::invalid_argument for a path that names no input, InputError where the
+  // input's neighbourhood (±2·10⁻⁴ of it) leaves its range.
+  std::vector<std::pair<std::string, double>> sensitivity(const std::string& path);
   // Forgets the last state: the next solve starts cold, as `twb run` on a point does.
   void forget_state();
 
@@ -56,6 +64,7 @@ class Bearing {
   std::unique_ptr<BearingModel> model_;
   std::vector<double> state_;
   double scene_load_ = 0.0, scene_speed_ = 0.0;  // where the scene puts the bearing
+  double state_load_ = 0.0, state_speed_ = 0.0;  // where state_ was solved
 };
 
 }  // namespace twb

@@ -226,6 +226,14 @@ class Bearing:
         (the last good state is kept for the next warm start)."""
         return self._bearing.solve(float(load), float(speed))
 
+    def sensitivity(self, path):
+        """How the last state solved moves with one input of the scene, by its path
+        ("geometry.gear.tilt", "lubricant.viscosity.kv40", "operating.speed"): a mapping
+        of torque_Nm, f_eff, T_mean_C, T_max_C, hmin_over_sigma and fluid_share to their
+        derivatives per SI unit of the input (a temperature's per kelvin); docs/physics.md
+        section 16. ValueError for a path that names no input."""
+        return self._bearing.sensitivity(str(path))
+
     def forget_state(self):
         """The next solve starts cold."""
         self._bearing.forget_state()

@@ -6,6 +6,12 @@
 #include "study/steady_solver.h"
 #include "study/study_runner.h"
 #include "study/study_support.h"
+#include "study/sensitivity.h"
+#include "solver/sparse_lu.h"
+#include "twb/scene/scene_inputs.h"
+
+#include <mutex>
+#include <stdexcept>
 
 namespace twb {
 
@@ -56,6 +62,8 @@ SolvedState Bearing::solve(double load, double speed) {
   if (!rep.converged)
     throw SolverFailure(fmt::format("no steady state at {:.6g} N, {:.6g} rad/s: {}", load, speed, rep.message), -1);
   state_ = u;
+  state_load_ = load;
+  state_speed_ = speed;
   SolvedState row = solved_state(*model_, u);
   row.converged = true;
   row.iterations = rep.iterations;
@@ -65,6 +73,28 @@ SolvedState Bearing::solve(double load, double speed) {
 }
 
 void Bearing::forget_state() { state_.clear(); }
+
+std::vector<std::pair<std::string, double>> Bearing::sensitivity(const std::string& path) {
+  if (state_.empty()) throw std::logic_error("Bearing::sensitivity: no state solved yet (call solve first)");
+  const SceneInput input = scene_input(model_->scene(), path);
+  const OperatingPoint at(*model_, state_load_, state_speed_, scene_load_, scene_speed_);
+  const auto n = std::size_t(model_->size());
+  std::vector<double> f(n), jac(std::size_t(model_->pattern().nnz()));
+  model_->evaluate(state_, f, jac);
+  SparseLu lu(model_->pattern(), SparseLu::Ordering::minimum_degree);
+  if (!lu.factor(jac))
+    throw SolverFailure(fmt::format("the state at {:.6g} N has a singular Jacobian (a fold): it does not move "
+                                    "smoothly with {}",
+                                    state_load_, path),
+                        -1);
+  InputNeighbours neighbours = input_neighbours(*model_, input);
+  std::mutex solve_lock;
+  const std::vector<double> d = state_derivatives(neighbours, state_, state_load_, lu, solve_lock);
+  std::vector<std::pair<std::string, double>> out;
+  const std::vector<StateQuantity> names = state_quantities(BearingState{});
+  for (std::size_t k = 0; k < names.size(); ++k) out.emplace_back(names[k].name, d[k]);
+  return out;
+}
 
 StudyOutcome Bearing::run_study(const ProgressReport& progress, const RunOptions& options) {
   return twb::run_study(*model_, progress, options);

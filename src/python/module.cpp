@@ -263,5 +263,17 @@ PYBIND11_MODULE(_twb, m) {
              return state;
            },
            py::arg("load"), py::arg("speed"))
+      .def("sensitivity",
+           [](twb::Bearing& b, const std::string& path) {
+             std::vector<std::pair<std::string, double>> d;
+             {
+               py::gil_scoped_release no_gil;
+               d = b.sensitivity(path);
+             }
+             py::dict out;
+             for (const auto& [name, value] : d) out[py::str(name)] = value;
+             return out;
+           },
+           py::arg("path"))
       .def("forget_state", &twb::Bearing::forget_state);
 }

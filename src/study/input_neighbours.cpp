@@ -27,16 +27,24 @@ double InputNeighbours::load_at(std::size_t k, double load) const {
   return input.path == kLoadInput ? load + kOffsets[k] * step : load;
 }
 
-InputNeighbours input_neighbours(const Scene& scene, const SceneInput& input) {
+InputNeighbours input_neighbours(const BearingModel& base, SceneInput input) {
+  // The operating point stands where the base model stands (a Bearing solves at loads and
+  // speeds of its own), not where the scene file put it.
+  if (input.path == kLoadInput) input.value = base.load();
+  if (input.path == kSpeedInput) input.value = base.speed();
   InputNeighbours n;
   n.input = input;
   n.step = kInputStep * (input.value != 0.0 ? std::abs(input.value) : step_floor(input.unit));
   for (std::size_t k = 0; k < 4; ++k) {
-    const std::pair<std::string, double> set[] = {{input.path, input.value + InputNeighbours::kOffsets[k] * n.step}};
-    n.at[k] = std::make_unique<BearingModel>(with_inputs(scene, set));
+    const double value = input.value + InputNeighbours::kOffsets[k] * n.step;
+    const std::pair<std::string, double> set[] = {{input.path, value}};
+    // The load's neighbours keep the base's scales (its pressure scale is the scene
+    // load's): a load is set on a built model, as a continuation sets it.
+    n.at[k] = std::make_unique<BearingModel>(input.path == kLoadInput ? base.scene() : with_inputs(base.scene(), set));
+    n.at[k]->set_speed(input.path == kSpeedInput ? value : base.speed());
     // (The Jacobian's pattern may differ: it is the cold start's, and only the residual
     // is differenced.)
-    if (n.at[k]->size() != n.at[0]->size())
+    if (n.at[k]->size() != base.size())
       throw std::invalid_argument(fmt::format("{} changes the bearing's unknowns within ±{:.3g} {}: a discrete input",
                                               input.path, 2.0 * n.step, input.unit));
   }

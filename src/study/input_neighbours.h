@@ -18,8 +18,10 @@ namespace twb {
 // order one that vanish at the state) both far below the solver's tolerance.
 inline constexpr double kInputStep = 1e-4;
 
-// The input a load continuation already moves: its neighbours stand at their own loads.
+// The operating point's inputs: a built model's load and speed are set on it (a Bearing
+// solves at points of its own), so their neighbours stand at the base model's ± kδ.
 inline constexpr const char* kLoadInput = "operating.load";
+inline constexpr const char* kSpeedInput = "operating.speed";
 
 // The bearing at an input's p + kδ, k = −2, −1, 1, 2, each at the load the caller sets.
 struct InputNeighbours {
@@ -32,9 +34,11 @@ struct InputNeighbours {
   double load_at(std::size_t k, double load) const;
 };
 
-// Throws InputError where p ± δ leaves the input's range, std::invalid_argument where it
-// changes the unknowns (a discrete input).
-InputNeighbours input_neighbours(const Scene& scene, const SceneInput& input);
+// The neighbours of `base` (built from its scene, at its speed) in one input. Throws
+// InputError where p ± 2δ leaves the input's range, std::invalid_argument where it
+// changes the unknowns (a discrete input). Curve parameters set on `base` other than its
+// load and speed are not carried over: the neighbours are the scene's.
+InputNeighbours input_neighbours(const BearingModel& base, SceneInput input);
 
 // F_p at (u, load), in the model's scaled rows.
 std::vector<double> residual_derivative(InputNeighbours& n, std::span<const double> u, double load);

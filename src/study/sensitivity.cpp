@@ -53,6 +53,23 @@ std::vector<StateQuantity> state_quantities(const BearingState& s) {
           {"fluid_share", s.fluid_share, false}};
 }
 
+std::vector<double> state_derivatives(InputNeighbours& n, std::span<const double> u, double load, const SparseLu& lu,
+                                      std::mutex& solve_lock) {
+  std::vector<double> u_p = residual_derivative(n, u, load);
+  {
+    const std::lock_guard<std::mutex> hold(solve_lock);
+    lu.solve(u_p);  // J⁻¹F_p: the state moves by −u_p per unit of p
+  }
+  return neighbour_derivative(n.step, [&](std::size_t k) {
+    std::vector<double> moved(u.begin(), u.end());
+    for (std::size_t j = 0; j < moved.size(); ++j) moved[j] -= InputNeighbours::kOffsets[k] * n.step * u_p[j];
+    n.at[k]->set_load(n.load_at(k, load));
+    std::vector<double> values;
+    for (const StateQuantity& q : state_quantities(n.at[k]->describe(moved))) values.push_back(q.value);
+    return values;
+  });
+}
+
 void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads) {
   const Scene& scene = model.scene();
   const Study& st = scene.study;
@@ -146,25 +163,9 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
   run_in_parallel(inputs.size(), threads, [&](std::size_t i) {
     InputResponse& r = response[i];
     try {
-      InputNeighbours nb = input_neighbours(scene, inputs[i]);
-      if (nb.at[0]->size() != model.size()) {
-        r.why = fmt::format("{} changes the bearing's unknowns", inputs[i].path);
-        return;
-      }
+      InputNeighbours nb = input_neighbours(model, inputs[i]);
       r.step = nb.step;
-      std::vector<double> u_p = residual_derivative(nb, u, load);
-      {
-        const std::lock_guard<std::mutex> hold(solve_lock);
-        lu.solve(u_p);  // J⁻¹F_p: the state moves by −u_p per unit of p
-      }
-      r.state = neighbour_derivative(nb.step, [&](std::size_t k) {
-        std::vector<double> moved(u);
-        for (std::size_t j = 0; j < n; ++j) moved[j] -= InputNeighbours::kOffsets[k] * nb.step * u_p[j];
-        nb.at[k]->set_load(nb.load_at(k, load));
-        std::vector<double> values;
-        for (const StateQuantity& q : state_quantities(nb.at[k]->describe(moved))) values.push_back(q.value);
-        return values;
-      });
+      r.state = state_derivatives(nb, u, load, lu, solve_lock);
       // The failure loads do not depend on the operating load.
       if (inputs[i].path != kLoadInput)
         for (const SettledCrossing& c : crossings) r.crossing_loads.push_back(crossing_load_derivative(nb, c, solve_lock));

@@ -15,11 +15,13 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "model/bearing_model.h"
+#include "solver/sparse_lu.h"
 #include "study/input_neighbours.h"
 #include "twb/study/study_outcome.h"
 
@@ -32,6 +34,11 @@ struct StateQuantity {
   bool temperature;  // written in °C; its elasticity is relative to its rise above the ambient
 };
 std::vector<StateQuantity> state_quantities(const BearingState& s);
+
+// dq/dp of each of state_quantities at state u of the neighbours' base (at `load`), J's
+// factors there in `lu`, its back-substitution under `solve_lock`.
+std::vector<double> state_derivatives(InputNeighbours& n, std::span<const double> u, double load, const SparseLu& lu,
+                                      std::mutex& solve_lock);
 
 // The study: the state at the scene's operating point (and with a load range, its fold)
 // and every quantity's derivative against every input, on `threads` threads (the same

@@ -231,6 +231,22 @@ class Points(unittest.TestCase):
         self.assertAlmostEqual(warm["f_eff"], cold["f_eff"], delta=1e-7 * cold["f_eff"])
         self.assertLess(warm["iterations"], cold["iterations"])
 
+    def test_bearing_sensitivity_of_the_last_state(self):
+        """d f_eff / d speed at 120 N, 545 rad/s against the states at 545 +- 0.545 rad/s:
+        the centred difference's truncation is far below its 1e-3 allowance (the C++
+        test, tests/bearing/bearing_sensitivity_test.cpp, checks every quantity)."""
+        bearing = twb.Bearing(SCENE, COARSE)
+        with self.assertRaises(Exception):
+            bearing.sensitivity("operating.speed")  # nothing solved yet
+        bearing.solve(120, 545)
+        d = bearing.sensitivity("operating.speed")
+        self.assertEqual(set(d), {"torque_Nm", "f_eff", "T_mean_C", "T_max_C", "hmin_over_sigma", "fluid_share"})
+        up = twb.Bearing(SCENE, COARSE).solve(120, 545.545)["f_eff"]
+        down = twb.Bearing(SCENE, COARSE).solve(120, 544.455)["f_eff"]
+        self.assertAlmostEqual(d["f_eff"], (up - down) / 1.09, delta=1e-3 * abs(d["f_eff"]))
+        with self.assertRaises(ValueError):
+            bearing.sensitivity("geometry.gear.tilted")
+
 
 class Example(unittest.TestCase):
     def test_wd_over_speed_runs_and_draws(self):
