@@ -6,6 +6,7 @@
 #include "study/steady_solver.h"
 #include "study/study_runner.h"
 #include "study/study_support.h"
+#include "study/operating_point.h"
 #include "study/sensitivity.h"
 #include "solver/sparse_lu.h"
 #include "twb/scene/scene_inputs.h"
@@ -64,12 +65,7 @@ SolvedState Bearing::solve(double load, double speed) {
   state_ = u;
   state_load_ = load;
   state_speed_ = speed;
-  SolvedState row = solved_state(*model_, u);
-  row.converged = true;
-  row.iterations = rep.iterations;
-  row.residual = rep.residual_norm;
-  row.wall_ms = rep.wall_ms;
-  return row;
+  return recorded_state(*model_, u, rep);
 }
 
 void Bearing::forget_state() { state_.clear(); }

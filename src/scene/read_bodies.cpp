@@ -117,10 +117,15 @@ Roughness read_roughness(const MapReader& surfaces, std::string_view component) 
 
 // A profile file named in the scene: relative to the scene file's directory (to the
 // working directory when an override named it).
+// The path as resolved is noted, so that the scene read again from its tree (an input
+// changed, scene_inputs.h) finds the same file whichever file named it.
 std::string profile_path(const Node& node) {
   const std::filesystem::path named(node.scalar("the path of a roughness profile file (CSV)"));
-  if (named.is_absolute() || !node.origin()->is_file) return named.string();
-  return (std::filesystem::path(node.origin()->name).parent_path() / named).string();
+  const std::string resolved = named.is_absolute() || !node.origin()->is_file
+                                   ? named.string()
+                                   : (std::filesystem::path(node.origin()->name).parent_path() / named).string();
+  if (node.provenance()) node.provenance()->note_resolved_path(node.path(), std::filesystem::absolute(resolved).string());
+  return resolved;
 }
 
 // docs/physics.md section 13: one profile of the combined surface, or one per face of the film

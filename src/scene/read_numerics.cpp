@@ -92,9 +92,19 @@ double read_bracket_width(const MapReader& study, double fallback) {
 void read_map_parameter(const MapReader& study, Study& s, const Scene& scene, const char* key = "parameter") {
   if (!study.has(key)) return;
   const MapReader p = study.map(key, {"name", "values"});
-  s.parameter = kMapParameters.values[p.get("name", "friction_coefficient, gear_tilt, roughness, groove_count, "
-                                                  "groove_width or groove_depth")
-                                          .choice(kMapParameters.names)];
+  const Node name = p.get("name", "friction_coefficient, gear_tilt, roughness, groove_count, groove_width, "
+                                  "groove_depth, or an input's scene path such as geometry.gear.tilt");
+  // A scene path (it has a dot; no named parameter does): its values are read once every
+  // input is known (check_input_axis).
+  if (name.yaml().IsScalar() && name.yaml().Scalar().find('.') != std::string::npos) {
+    s.parameter = MapParameter::scene_input;
+    s.parameter_path = name.yaml().Scalar();
+    const Node values = p.get("values", "a list of values, e.g. [1 mrad, 2 mrad]");
+    if (values.list("a list of values, e.g. [1 mrad, 2 mrad]").empty())
+      values.fail(fmt::format("{}: the list is empty; give at least one value", values.path()));
+    return;
+  }
+  s.parameter = kMapParameters.values[name.choice(kMapParameters.names)];
   const Node values = p.get("values", "a list of values, e.g. [0.05, 0.1, 0.2]");
   const std::vector<Node> items = values.list("a list of values, e.g. [0.05, 0.1, 0.2]");
   if (items.empty())
@@ -122,6 +132,7 @@ void read_map_parameter(const MapReader& study, Study& s, const Scene& scene, co
         s.parameter_values.push_back(item.quantity(si::length, bounds::groove_depth));
         break;
       case MapParameter::none:
+      case MapParameter::scene_input:
         break;
     }
   }

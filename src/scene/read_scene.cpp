@@ -10,7 +10,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include "scene_names.h"
+#include "twb/scene/input_error.h"
 #include "twb/scene/scene_inputs.h"
+#include "twb/scene/scene_loader.h"
 
 namespace twb::scene_io {
 
@@ -28,17 +30,91 @@ std::vector<SceneInput> inputs_read(const Provenance& provenance) {
   return out;
 }
 
+// The tree as read, with every file a value names as the reader resolved it.
+std::string written_tree(const Node& root) {
+  YAML::Node tree = YAML::Clone(root.yaml());
+  for (const auto& [path, resolved] : root.provenance()->resolved_paths()) {
+    // "surfaces.asperities.profile" or "surfaces.asperities.profile[1]"
+    YAML::Node node;
+    node.reset(tree);
+    std::string_view rest = path;
+    while (!rest.empty()) {
+      const std::size_t dot = rest.find('.');
+      std::string key(rest.substr(0, dot));
+      rest = dot == std::string_view::npos ? std::string_view() : rest.substr(dot + 1);
+      const std::size_t bracket = key.find('[');
+      YAML::Node next;
+      next.reset(node[key.substr(0, bracket)]);
+      if (bracket != std::string::npos) {
+        const std::size_t index = std::stoul(key.substr(bracket + 1));
+        YAML::Node item;
+        item.reset(next[index]);
+        next.reset(item);
+      }
+      node.reset(next);
+    }
+    node = resolved;
+  }
+  YAML::Emitter written;
+  written << tree;
+  return written.c_str();
+}
+
 // A sensitivity study's parameters name inputs of this scene.
 void check_study_parameters(const MapReader& scene, const Scene& out) {
   if (out.study.parameters.empty()) return;
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   const std::vector<Node> items = study.get("parameters", "").list("");
   for (const Node& item : items) {
+    const std::string path = item.yaml().Scalar();
+    SceneInput input;
     try {
-      scene_input(out, item.yaml().Scalar());
+      input = scene_input(out, path);
     } catch (const std::invalid_argument& e) {
       item.fail(fmt::format("{}: {}", item.path(), e.what()));
     }
+    const bool written = std::any_of(out.inputs.begin(), out.inputs.end(), [&](const SceneInput& in) { return in.path == path; });
+    if (written) continue;
+    // A default the scene resolved to may be one derived from what the file gives (the
+    // summit density of an eta_R_sigma, a data sheet's Roelands constants), which the
+    // reader refuses beside it: tried once here rather than at every difference step.
+    // (As a point study: the trial must not check these parameters again.)
+    try {
+      load_scene_text(out.written, out.source, {input_override(path, input.value, input.unit), "study={type: point}"});
+    } catch (const InputError& e) {
+      item.fail(fmt::format("{}: '{}' cannot be set in this scene: {}", item.path(), path, e.message()));
+    }
+  }
+}
+
+// A map's or family's axis over an input's scene path: the path names an input other than
+// the load and the speed (the search's and the map's own axes), and every value, in the
+// input's unit, makes a scene the reader accepts (tried once each, as a point study).
+void check_input_axis(const MapReader& scene, Scene& out) {
+  Study& s = out.study;
+  if (s.parameter != MapParameter::scene_input) return;
+  const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
+  const MapReader axis = study.map(study.has("family") ? "family" : "parameter", {"name", "values"});
+  const Node name = axis.get("name", "");
+  if (s.parameter_path == "operating.load" || s.parameter_path == "operating.speed")
+    name.fail(fmt::format("{}: {} is an axis of every search already ({}); a map's parameter is another input",
+                          name.path(), s.parameter_path,
+                          s.parameter_path == "operating.load" ? "the load it continues in" : "study.speeds"));
+  SceneInput input;
+  try {
+    input = scene_input(out, s.parameter_path);
+  } catch (const std::invalid_argument& e) {
+    name.fail(fmt::format("{}: {}", name.path(), e.what()));
+  }
+  s.parameter_unit = input.unit;
+  for (const Node& item : axis.get("values", "").list("")) {
+    const double value = item.quantity(si::of_symbol(input.unit), Range{});
+    try {
+      load_scene_text(out.written, out.source, {input_override(input.path, value, input.unit), "study={type: point}"});
+    } catch (const InputError& e) {
+      item.fail(fmt::format("{}: {}", item.path(), e.message()));
+    }
+    s.parameter_values.push_back(value);
   }
 }
 
@@ -54,11 +130,10 @@ Scene read_scene(const Node& root) {
   read_numerics(scene, out);
   read_grooves(scene, out);
   check_groove_parameter(scene, out);
-  YAML::Emitter written;
-  written << root.yaml();
-  out.written = written.c_str();
+  out.written = written_tree(root);
   out.inputs = inputs_read(*root.provenance());
   check_study_parameters(scene, out);
+  check_input_axis(scene, out);
   return out;
 }
 

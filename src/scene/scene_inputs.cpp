@@ -1,7 +1,6 @@
 #include "twb/scene/scene_inputs.h"
 
 #include <algorithm>
-#include <array>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -18,13 +17,6 @@ namespace {
 constexpr std::string_view kInputSections[] = {"geometry.", "materials.", "surfaces.", "lubricant.",
                                                "limits.",   "operating.", "friction."};
 
-// The SI units a resolved scene writes its numbers in (scene_writer.cpp), the angle before
-// the pure number: udunits2 takes both for "rad".
-constexpr std::array kUnits = {&si::length,        &si::angle,         &si::angular_speed, &si::force,
-                               &si::time,          &si::temperature,   &si::stress,        &si::conductivity,
-                               &si::density,       &si::specific_heat, &si::viscosity,     &si::kinematic_viscosity,
-                               &si::areal_density, &si::expansion};
-
 // The resolved scene's number at `path`, if it writes one there.
 std::optional<SceneInput> resolved_input(const Scene& scene, const std::string& path) {
   YAML::Node node = YAML::Load(describe_scene(scene));
@@ -33,7 +25,9 @@ std::optional<SceneInput> resolved_input(const Scene& scene, const std::string& 
     const std::size_t dot = rest.find('.');
     const std::string key(rest.substr(0, dot));
     if (!node.IsMap() || !node[key]) return std::nullopt;
-    node = node[key];
+    // reset, not assignment: assigning a yaml-cpp node writes into the tree it refers to
+    YAML::Node child = node[key];
+    node.reset(child);
     rest = dot == std::string_view::npos ? std::string_view() : rest.substr(dot + 1);
   }
   if (!node.IsScalar()) return std::nullopt;
@@ -45,7 +39,7 @@ std::optional<SceneInput> resolved_input(const Scene& scene, const std::string& 
       return std::nullopt;  // a name (an enum value), not a number
     }
   }
-  for (const SiUnit* unit : kUnits) {
+  for (const SiUnit* unit : si::all) {
     try {
       return SceneInput{path, to_si(text, *unit), std::string(unit->symbol)};
     } catch (const QuantityError&) {
@@ -69,10 +63,11 @@ SceneInput scene_input(const Scene& scene, const std::string& path) {
     if (std::optional<SceneInput> resolved = resolved_input(scene, path)) return *resolved;
   std::vector<std::string_view> paths;
   for (const SceneInput& in : scene.inputs) paths.push_back(in.path);
-  const std::string why = is_bearing_input_path(path)
-                              ? "names no number of the bearing the scene writes or defaults"
-                              : "is not in the bearing's sections (geometry, materials, surfaces, lubricant, limits, "
-                                "operating, friction)";
+  const std::string why =
+      is_bearing_input_path(path) ? "names no number of the bearing the scene writes or defaults"
+      : path.find('[') != std::string::npos
+          ? "is an item of a list, which is no input (a viscosity table's points, a map's values)"
+          : "is not in the bearing's sections (geometry, materials, surfaces, lubricant, limits, operating, friction)";
   throw std::invalid_argument(fmt::format("'{}' {}{}", path, why,
                                           scene_io::allowed_after(scene_io::closest_match(path, paths), paths)));
 }

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <yaml-cpp/mark.h>
@@ -43,11 +44,19 @@ class Provenance {
     read_.push_back({path, value, unit});
   }
   const std::vector<ReadQuantity>& quantities_read() const { return read_; }
+  // A file a value names, as the reader resolved it (relative to the file that named
+  // it): the tree read again elsewhere must name the same file.
+  void note_resolved_path(const std::string& path, std::string resolved) const {
+    resolved_paths_.emplace_back(path, std::move(resolved));
+  }
+  const std::vector<std::pair<std::string, std::string>>& resolved_paths() const { return resolved_paths_; }
 
  private:
   const Origin* file_;
   std::map<std::string, const Origin*> by_path_;
+  // What the readers saw, noted as they read (the readers hold the provenance const).
   mutable std::vector<ReadQuantity> read_;
+  mutable std::vector<std::pair<std::string, std::string>> resolved_paths_;
 };
 
 // Throws the InputError for text at `mark` of `origin`. A key node created by an override

@@ -219,9 +219,12 @@ void write_numerics(Writer& w, const Scene& s) {
     std::string values;
     for (double v : st.parameter_values)
       values += (values.empty() ? "" : ", ") +
-                (st.parameter == MapParameter::groove_count ? fmt::format("{}", int(v)) : quantity(v, unit));
+                (st.parameter == MapParameter::groove_count ? fmt::format("{}", int(v))
+                 : st.parameter == MapParameter::scene_input ? quantity(v, st.parameter_unit)
+                                                              : quantity(v, unit));
     w.line(1, std::string(key) + ":");
-    w.entry(2, "name", std::string(kMapParameters.name(st.parameter)));
+    w.entry(2, "name", st.parameter == MapParameter::scene_input ? st.parameter_path
+                                                                  : std::string(kMapParameters.name(st.parameter)));
     w.entry(2, "values", fmt::format("[{}]", values));
   };
   if (st.parameter != MapParameter::none && st.type != StudyType::distress_curve) map_parameter("parameter");

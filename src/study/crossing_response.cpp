@@ -1,12 +1,13 @@
 #include "study/crossing_response.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "model/limit_thresholds.h"
 #include "study/steady_solver.h"
-#include "study_support.h"
+#include "study/study_support.h"
 
 namespace twb {
 
@@ -17,7 +18,9 @@ namespace {
 double margin_of(const BearingModel& m, LimitKind kind, std::span<const double> u) {
   const std::optional<double> margin = failure_margin(
       kind, LimitValues::of(m.describe(u), m.scene().effects.thermal), OperatingLimits::of(m.scene()));
-  return margin ? *margin : 0.0;
+  // A criterion the base applies that a neighbour does not (an input that switches it off).
+  if (!margin) throw std::invalid_argument(fmt::format("the criterion {} does not apply", limit_name(kind)));
+  return *margin;
 }
 
 }  // namespace
@@ -50,12 +53,10 @@ std::optional<SettledCrossing> settle_crossing(BearingModel& model, LimitKind ki
     model.parameter_derivative(u, u_load);
     c.lu->solve(u_load);  // J⁻¹F_W: the state moves by −u_load per newton
     const double dw = kInputStep * load;
-    c.margin_slope = neighbour_derivative(dw, [&](std::size_t k) {
-      const double s = InputNeighbours::kOffsets[k] * dw;
-      std::vector<double> moved(u);
-      for (std::size_t j = 0; j < n; ++j) moved[j] -= s * u_load[j];
+    c.margin_slope = stencil_derivative(kCentred, dw, [&](std::size_t k) {
+      const double s = kCentred.offsets[k] * dw;
       model.set_load(load + s);
-      return std::vector<double>{margin_of(model, kind, moved)};
+      return std::vector<double>{margin_of(model, kind, moved_state(u, u_load, s))};
     })[0];
     model.set_load(load);
     const double margin = margin_of(model, kind, u);
@@ -81,11 +82,9 @@ double crossing_load_derivative(InputNeighbours& n, const SettledCrossing& cross
     const std::lock_guard<std::mutex> hold(solve_lock);
     crossing.lu->solve(u_p);
   }
-  const double margin_input = neighbour_derivative(n.step, [&](std::size_t k) {
-    std::vector<double> moved(crossing.u);
-    for (std::size_t j = 0; j < moved.size(); ++j) moved[j] -= InputNeighbours::kOffsets[k] * n.step * u_p[j];
+  const double margin_input = n.derivative([&](std::size_t k) {
     n.at[k]->set_load(n.load_at(k, crossing.load));
-    return std::vector<double>{margin_of(*n.at[k], crossing.kind, moved)};
+    return std::vector<double>{margin_of(*n.at[k], crossing.kind, moved_state(crossing.u, u_p, n.stencil.offsets[k] * n.step))};
   })[0];
   return -margin_input / crossing.margin_slope;
 }

@@ -8,39 +8,38 @@
 
 #include <fmt/format.h>
 
-#include "solver/continuation_metric.h"
-#include "solver/fold_system.h"
-#include "solver/sparse_lu.h"
-#include "study/distress_search.h"
+#include "results/result_cells.h"
 #include "study/crossing_response.h"
+#include "study/distress_search.h"
+#include "study/fold_response.h"
+#include "study/operating_point.h"
 #include "study/parallel.h"
-#include "twb/results/distress_table.h"
-#include "study/steady_solver.h"
-#include "study_support.h"
+#include "study/study_support.h"
 #include "twb/error_family.h"
-#include "twb/scene/input_error.h"
+#include "twb/results/distress_table.h"
 #include "twb/scene/scene_inputs.h"
 
 namespace twb {
 
 namespace {
 
-constexpr double kCelsius = 273.15;
-
-double dot(std::span<const double> a, std::span<const double> b) {
-  double s = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) s += a[k] * b[k];
-  return s;
-}
-
-// What one input moves: each state quantity's derivative, W_d's and each crossing's.
+// What one input moves: each state quantity's derivative, W_d's and each crossing's, and
+// why any of them is missing.
 struct InputResponse {
   std::vector<double> state;
   std::optional<double> fold_load;
   std::vector<std::optional<double>> crossing_loads;
   double step = 0.0;
-  std::string why;  // where the input could not be differentiated
+  std::string why;
 };
+
+// A derivative or nothing: a non-finite one (a neighbour's state past a table's range, a
+// margin that vanished) is a reason, never a cell.
+std::optional<double> finite(double d, const char* what, std::string& why) {
+  if (std::isfinite(d)) return d;
+  why += fmt::format("{}the derivative of {} is not finite", why.empty() ? "" : "; ", what);
+  return std::nullopt;
+}
 
 }  // namespace
 
@@ -60,12 +59,11 @@ std::vector<double> state_derivatives(InputNeighbours& n, std::span<const double
     const std::lock_guard<std::mutex> hold(solve_lock);
     lu.solve(u_p);  // J⁻¹F_p: the state moves by −u_p per unit of p
   }
-  return neighbour_derivative(n.step, [&](std::size_t k) {
-    std::vector<double> moved(u.begin(), u.end());
-    for (std::size_t j = 0; j < moved.size(); ++j) moved[j] -= InputNeighbours::kOffsets[k] * n.step * u_p[j];
+  return n.derivative([&](std::size_t k) {
     n.at[k]->set_load(n.load_at(k, load));
     std::vector<double> values;
-    for (const StateQuantity& q : state_quantities(n.at[k]->describe(moved))) values.push_back(q.value);
+    for (const StateQuantity& q : state_quantities(n.at[k]->describe(moved_state(u, u_p, n.stencil.offsets[k] * n.step))))
+      values.push_back(q.value);
     return values;
   });
 }
@@ -73,9 +71,6 @@ std::vector<double> state_derivatives(InputNeighbours& n, std::span<const double
 void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads) {
   const Scene& scene = model.scene();
   const Study& st = scene.study;
-  auto say = [&](const std::string& s) {
-    if (progress) progress(s);
-  };
   std::vector<SceneInput> inputs;
   if (st.parameters.empty())
     inputs = scene.inputs;
@@ -99,12 +94,11 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
     return;
   }
 
-  // The fold in the study's load range, and its left null vector.
-  std::optional<FoldPoint> fold;
-  std::vector<double> psi;
-  double psi_load = 0.0;  // ψᵀF_W
-  std::vector<SettledCrossing> crossings;  // each criterion the branch crosses, settled
-  std::optional<double> failure_load;
+  // With a load range: the failure search, its fold and every criterion's crossing, each
+  // settled to the solver's tolerance.
+  std::optional<SettledFold> fold;
+  std::vector<SettledCrossing> crossings;
+  std::string setting;  // the rows W_fail's are: W_d_N or a crossing's column
   if (st.load_end > 0.0) {
     DistressSearchSettings settings;
     settings.load_start = st.load_start;
@@ -114,46 +108,25 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
     DistressSearch found = search_distress(model, settings, progress);
     add_search_work(out.timings, found.counts);
     out.distress.push_back(found.row);
+    std::string why;
     if (found.fold && found.fold_proven) {
-      // The search settles the fold's load to its bracket, not its state to the residual's
-      // tolerance; ψ and F_p need the fold itself (off it, ψ is no left null vector and
-      // the derivative is off by the distance).
-      fold = locate_fold_near(model, found.fold->u, found.fold->lambda, found.fold->null_vector,
-                              newton_settings(scene));
-      if (fold->u.empty()) {
-        out.summary.push_back("sensitivity: the fold could not be located to the solver's tolerance (" + fold->message +
-                              "): no derivatives of W_d");
-        fold.reset();
-      }
+      fold = settle_fold(model, *found.fold, why);
+      if (!fold) out.summary.push_back("sensitivity: no derivatives of W_d: " + why);
+    } else {
+      out.summary.push_back("sensitivity: no proven fold in the load range, so no derivatives of W_d (" +
+                            found.row.method + ")");
     }
-    if (fold) {
-      const ParameterScope at_fold(model, fold->lambda);
-      std::vector<double> f_load(n);
-      model.parameter_derivative(fold->u, f_load);
-      const ContinuationMetric metric = ContinuationMetric::of(model, std::abs(fold->lambda));
-      const FoldSystem system(model, metric, f_load, fold->null_vector);
-      std::vector<double> x = fold->u;
-      x.push_back(fold->lambda / metric.parameter_scale());
-      psi = system.left_null_vector(x);
-      if (!psi.empty()) psi_load = dot(psi, f_load);
-    }
-    if (!psi.empty() && !(std::abs(psi_load) > 0.0)) psi.clear();
     for (std::size_t c = 0; c < found.crossing_states.size(); ++c) {
       if (found.crossing_states[c].second.empty()) continue;
-      std::string why;
       std::optional<SettledCrossing> settled = settle_crossing(model, kFailureCriteria[c], found.crossing_states[c].first,
                                                                found.crossing_states[c].second, why);
       if (settled)
         crossings.push_back(std::move(*settled));
       else
-        out.summary.push_back(fmt::format("sensitivity: no derivatives of {}: {}",
-                                          criterion_column(kFailureCriteria[c]), why));
+        out.summary.push_back(fmt::format("sensitivity: no derivatives of {}: {}", criterion_column(kFailureCriteria[c]), why));
     }
-    failure_load = found.row.failure_load;
-    if (!found.fold || !found.fold_proven)
-      out.summary.push_back("sensitivity: no fold in the load range, so no derivatives of W_d (" + found.row.method + ")");
-    else if (fold && psi.empty())
-      out.summary.push_back("sensitivity: the fold's left null vector could not be found: no derivatives of W_d");
+    if (const std::optional<FailureCriterion>& c = found.row.criterion)
+      setting = c->distress ? "W_d_N" : criterion_column(c->limit);
   }
 
   // Each input on its own models; J's back-substitutions one at a time (KLU's solve
@@ -165,56 +138,54 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
     try {
       InputNeighbours nb = input_neighbours(model, inputs[i]);
       r.step = nb.step;
-      r.state = state_derivatives(nb, u, load, lu, solve_lock);
+      std::vector<double> state = state_derivatives(nb, u, load, lu, solve_lock);
+      for (double d : state)
+        if (!finite(d, "a state quantity", r.why)) return;
+      r.state = std::move(state);
       // The failure loads do not depend on the operating load.
-      if (inputs[i].path != kLoadInput)
-        for (const SettledCrossing& c : crossings) r.crossing_loads.push_back(crossing_load_derivative(nb, c, solve_lock));
-      if (fold && !psi.empty() && inputs[i].path != kLoadInput)
-        r.fold_load = -dot(psi, residual_derivative(nb, fold->u, fold->lambda)) / psi_load;
+      if (inputs[i].path == kLoadInput) return;
+      if (fold) r.fold_load = finite(fold_load_derivative(nb, *fold), "W_d", r.why);
+      for (const SettledCrossing& c : crossings)
+        r.crossing_loads.push_back(
+            finite(crossing_load_derivative(nb, c, solve_lock), criterion_column(c.kind).c_str(), r.why));
     } catch (const InternalError&) {
       throw;  // a bug: no fallback may hide it
     } catch (const std::exception& e) {
-      r.why = e.what();
+      r.why += (r.why.empty() ? "" : "; ") + std::string(e.what());
     }
   });
 
-  const std::vector<StateQuantity> quantities = state_quantities(at_point);
   const double ambient = scene.operating.ambient;
-  auto row = [&](const char* name, double value, double reference, const SceneInput& in, double derivative, double step) {
+  auto row = [&](const std::string& name, double value, double reference, const SceneInput& in, double derivative,
+                 double step) {
     SensitivityRow& r = out.sensitivity.emplace_back();
     r.quantity = name;
     r.value = value;
     r.parameter = in.path;
     r.parameter_value = in.value;
     r.parameter_unit = in.unit;
-    r.derivative = derivative;
-    if (reference != 0.0 && in.value != 0.0) r.elasticity = derivative * in.value / reference;
+    r.derivative = derivative == 0.0 ? 0.0 : derivative;  // no "-0" in the file
+    if (reference != 0.0 && in.value != 0.0) r.elasticity = r.derivative * in.value / reference;
     r.step = step;
   };
+  const std::vector<StateQuantity> quantities = state_quantities(at_point);
   for (std::size_t k = 0; k < quantities.size(); ++k)
     for (std::size_t i = 0; i < inputs.size(); ++i) {
       if (response[i].state.empty()) continue;
       const StateQuantity& q = quantities[k];
-      row(q.name, q.temperature ? q.value - kCelsius : q.value, q.temperature ? q.value - ambient : q.value, inputs[i],
+      row(q.name, q.temperature ? q.value - cells::kelvin_offset : q.value, q.temperature ? q.value - ambient : q.value, inputs[i],
           response[i].state[k], response[i].step);
     }
-  if (fold)
+  // Each failure load's rows, then W_fail's: those of the criterion that sets it.
+  auto failure_rows = [&](const std::string& name, double w, auto derivative_of) {
     for (std::size_t i = 0; i < inputs.size(); ++i)
-      if (response[i].fold_load) row("W_d_N", fold->lambda, fold->lambda, inputs[i], *response[i].fold_load, response[i].step);
-  for (std::size_t c = 0; c < crossings.size(); ++c) {
-    const std::string name = criterion_column(crossings[c].kind);
-    for (std::size_t i = 0; i < inputs.size(); ++i)
-      if (c < response[i].crossing_loads.size() && response[i].crossing_loads[c])
-        row(name.c_str(), crossings[c].load, crossings[c].load, inputs[i], *response[i].crossing_loads[c], response[i].step);
-  }
-  // W_fail's rows: those of the failure load that sets it (docs/physics.md section 8).
-  std::string setting;
-  if (failure_load) {
-    auto sets = [&](double w) { return std::abs(w - *failure_load) <= st.bracket_width * *failure_load; };
-    if (fold && !psi.empty() && sets(fold->lambda)) setting = "W_d_N";
-    for (const SettledCrossing& c : crossings)
-      if (setting.empty() && sets(c.load)) setting = criterion_column(c.kind);
-  }
+      if (const std::optional<double> d = derivative_of(response[i])) row(name, w, w, inputs[i], *d, response[i].step);
+  };
+  if (fold) failure_rows("W_d_N", fold->load, [](const InputResponse& r) { return r.fold_load; });
+  for (std::size_t c = 0; c < crossings.size(); ++c)
+    failure_rows(criterion_column(crossings[c].kind), crossings[c].load, [c](const InputResponse& r) {
+      return c < r.crossing_loads.size() ? r.crossing_loads[c] : std::nullopt;
+    });
   for (std::size_t k = 0, end = out.sensitivity.size(); k < end && !setting.empty(); ++k)
     if (out.sensitivity[k].quantity == setting) {
       SensitivityRow copy = out.sensitivity[k];
@@ -222,10 +193,15 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
       out.sensitivity.push_back(std::move(copy));
     }
   for (std::size_t i = 0; i < inputs.size(); ++i)
-    if (!response[i].why.empty()) out.summary.push_back(fmt::format("sensitivity: {}: not differentiated: {}", inputs[i].path, response[i].why));
+    if (!response[i].why.empty())
+      out.summary.push_back(fmt::format("sensitivity: {}: {}: {}", inputs[i].path,
+                                        response[i].state.empty() ? "not differentiated" : "only partly differentiated",
+                                        response[i].why));
 
   // The inputs that matter most to the answer: W_fail's where there is one, else the torque's.
-  const char* headline = !setting.empty() ? "W_fail_N" : "torque_Nm";
+  const bool has_failure = std::any_of(out.sensitivity.begin(), out.sensitivity.end(),
+                                       [](const SensitivityRow& r) { return r.quantity == "W_fail_N"; });
+  const char* headline = has_failure ? "W_fail_N" : "torque_Nm";
   std::vector<const SensitivityRow*> ranked;
   for (const SensitivityRow& r : out.sensitivity)
     if (r.quantity == headline && r.elasticity) ranked.push_back(&r);
@@ -235,7 +211,7 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
   std::string top;
   for (std::size_t k = 0; k < std::min<std::size_t>(5, ranked.size()); ++k)
     top += fmt::format("{}{} {:+.3g}", k ? ", " : "", ranked[k]->parameter, *ranked[k]->elasticity);
-  say(fmt::format("sensitivities to {} inputs", inputs.size()));
+  if (progress) progress(fmt::format("sensitivities to {} inputs", inputs.size()));
   out.summary.push_back(fmt::format("sensitivity of {} to {} inputs; largest elasticities (relative change per relative "
                                     "change): {}",
                                     headline, inputs.size(), top.empty() ? "none" : top));

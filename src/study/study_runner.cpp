@@ -27,6 +27,7 @@
 #include "twb/error_family.h"
 #include "study/search_error_bars.h"
 #include "study/study_searches.h"
+#include "study/operating_point.h"
 #include "study/sensitivity.h"
 
 namespace twb {
@@ -34,15 +35,6 @@ namespace twb {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-SolvedState record(const BearingModel& model, const std::vector<double>& u, const SteadyReport& rep) {
-  SolvedState row = solved_state(model, u);
-  row.converged = rep.converged;
-  row.iterations = rep.iterations;
-  row.residual = rep.residual_norm;
-  row.wall_ms = rep.wall_ms;
-  return row;
-}
 
 void run_point(BearingModel& model, StudyOutcome& out) {
   std::vector<double> u;
@@ -215,7 +207,7 @@ void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport&
     out.message = fmt::format("no steady state before the step, at {:.6g} N: {}", st.load_start, rep.message);
     return;
   }
-  out.states.push_back(record(model, u, rep));
+  out.states.push_back(recorded_state(model, u, rep));
   if (progress) progress(fmt::format("steady at {:.6g} N; stepping to {:.6g} N", st.load_start, st.load_end));
   StepMarch march = march_load_step(model, u, st.load_start, st.load_end, TransientSettings{}, newton, st.duration);
   out.timings.newton_iterations += rep.iterations + march.newton_iterations;

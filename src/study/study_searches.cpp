@@ -1,6 +1,7 @@
 #include "study/study_searches.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -11,6 +12,8 @@
 #include <thread>
 
 #include <fmt/format.h>
+
+#include "twb/scene/scene_inputs.h"
 
 #include "distress_curve.h"
 #include "load_step_march.h"
@@ -29,6 +32,23 @@
 
 namespace twb {
 
+std::string input_column(const std::string& path, const std::string& unit) {
+  if (unit == "1") return path;
+  std::string suffix;
+  for (char c : unit)  // "W/(m K)" -> "W_m_K", "rad/s" -> "rad_s"
+    if (std::isalnum(static_cast<unsigned char>(c)))
+      suffix += c;
+    else if (!suffix.empty() && suffix.back() != '_')
+      suffix += '_';
+  while (!suffix.empty() && suffix.back() == '_') suffix.pop_back();
+  return path + "_" + suffix;
+}
+
+std::string parameter_column(const Study& study) {
+  if (study.parameter == MapParameter::scene_input) return input_column(study.parameter_path, study.parameter_unit);
+  return parameter_column(study.parameter);
+}
+
 std::string parameter_column(MapParameter p) {
   switch (p) {
     case MapParameter::friction_coefficient:
@@ -44,13 +64,20 @@ std::string parameter_column(MapParameter p) {
     case MapParameter::groove_depth:
       return "groove_depth_m";
     case MapParameter::none:
+    case MapParameter::scene_input:
       break;
   }
   return {};
 }
 
-Scene with_parameter(Scene scene, MapParameter p, double value) {
+Scene with_parameter(Scene scene, const Study& study, double value) {
+  const MapParameter p = study.parameter;
   switch (p) {
+    case MapParameter::scene_input: {
+      // The scene reader tried every value.
+      const std::pair<std::string, double> set[] = {{study.parameter_path, value}};
+      return with_inputs(scene, set);
+    }
     case MapParameter::friction_coefficient:
       scene.friction.coefficient = value;
       break;
@@ -76,11 +103,11 @@ Scene with_parameter(Scene scene, MapParameter p, double value) {
 
 std::vector<Variant> parameter_variants(const Scene& scene, std::string& column) {
   const Study& st = scene.study;
-  column = parameter_column(st.parameter);
+  column = parameter_column(st);
   if (st.parameter == MapParameter::none) return {Variant{}};
   std::vector<Variant> out;
   for (double value : st.parameter_values) {
-    Scene variant = with_parameter(scene, st.parameter, value);
+    Scene variant = with_parameter(scene, st, value);
     // A groove's width as the grid holds it (whole cells), which is what was solved.
     if (st.parameter == MapParameter::groove_width) value = variant.washer.grooves->width;
     out.push_back({std::move(variant), value, {}, fmt::format(", {} = {:.6g}", column, value)});

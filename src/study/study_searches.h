@@ -21,8 +21,12 @@ class SearchScheduler;
 
 // The name of a parameter's column in the results, with its unit.
 std::string parameter_column(MapParameter p);
+// The study's second axis' column: a named parameter's, or an input's path with its SI
+// unit, e.g. "geometry.gear.tilt_rad", "materials.washer.conductivity_W_m_K".
+std::string parameter_column(const Study& study);
+std::string input_column(const std::string& path, const std::string& unit);
 // Applies a study's second parameter to a scene.
-Scene with_parameter(Scene scene, MapParameter p, double value);
+Scene with_parameter(Scene scene, const Study& study, double value);
 
 // One configuration of the bearing a study searches at every speed: the scene's own
 // (no scene here), a parameter value, or a sliding film.

@@ -4,9 +4,6 @@
 
 #include <chrono>
 #include <span>
-#include <vector>
-
-#include <fmt/format.h>
 
 #include "model/bearing_model.h"
 #include "results/run_record.h"
@@ -14,8 +11,6 @@
 #include "twb/scene/scene.h"
 #include "solver/kinsol_newton.h"
 #include "study/distress_search.h"
-#include "study/steady_solver.h"
-#include "twb/study/study_outcome.h"
 
 namespace twb {
 
@@ -46,28 +41,6 @@ inline void add_search_work(RunTimings& timings, const SearchCounts& counts) {
   timings.transients += counts.transients;
   timings.ida_steps += counts.ida_steps;
   timings.ida_factorizations += counts.ida_factorizations;
-}
-
-// The operating point solved from the cold start and recorded in out.states (with its
-// Newton work in out.timings); false, with out.solver_failed and the reason, where it
-// has no steady state.
-inline bool solve_operating_point(BearingModel& model, StudyOutcome& out, std::vector<double>& u) {
-  SteadySolver solver(model, newton_settings(model.scene()));
-  const SteadyReport rep = solver.solve_cold(u);
-  out.timings.newton_iterations += rep.iterations;
-  out.timings.jacobian_evaluations += rep.jacobian_evaluations;
-  if (!rep.converged) {
-    out.solver_failed = true;
-    out.message = fmt::format("no steady state at {:.6g} N: {}", model.load(), rep.message);
-    return false;
-  }
-  SolvedState row = solved_state(model, u);
-  row.converged = true;
-  row.iterations = rep.iterations;
-  row.residual = rep.residual_norm;
-  row.wall_ms = rep.wall_ms;
-  out.states.push_back(std::move(row));
-  return true;
 }
 
 }  // namespace twb

@@ -11,6 +11,7 @@
 #include "../../src/scene/roughness_profile.h"
 #include "scene_test_support.h"
 #include "physics/summit_statistics.h"
+#include "twb/scene/scene_inputs.h"
 
 namespace twb {
 namespace {
@@ -78,6 +79,12 @@ TEST(RoughnessProfile, RelativePathIsReadFromTheScenesDirectory) {
   const TempScene scene(scene_with_profile("twb_relative_profile.csv"));
   const Scene s = load_scene(scene.path());
   EXPECT_EQ(s.asperities.profile->files.front(), profile.path());
+  // The tree the scene keeps names the file as resolved, so the scene read again with an
+  // input changed (scene_inputs.h) reads the same file wherever the tree is read from.
+  const std::string absolute = std::filesystem::absolute(profile.path()).string();
+  EXPECT_NE(s.written.find(absolute), std::string::npos) << s.written;
+  const std::pair<std::string, double> set[] = {{"operating.load", 600.0}};
+  EXPECT_EQ(with_inputs(s, set).asperities.profile->files.front(), absolute);
   // A narrow band of two modes: legal, with the warning.
   ASSERT_EQ(s.warnings.size(), 2u);  // the band, and an Rq unlike the surfaces'
   EXPECT_NE(s.warnings[0].find("bandwidth"), std::string::npos);

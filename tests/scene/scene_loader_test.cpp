@@ -106,6 +106,8 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.study.bracket_width, b.study.bracket_width);
   EXPECT_EQ(a.study.duration, b.study.duration);
   EXPECT_EQ(a.study.parameters, b.study.parameters);
+  EXPECT_EQ(a.study.parameter_path, b.study.parameter_path);
+  EXPECT_EQ(a.study.parameter_unit, b.study.parameter_unit);
   EXPECT_EQ(a.output.directory, b.output.directory);
   EXPECT_EQ(a.output.fields, b.output.fields);
 }
@@ -308,6 +310,10 @@ INSTANTIATE_TEST_SUITE_P(
                       std::string(kMinimalScene) +
                           "study: {type: sensitivity, load_start: 100 N, load_end: 400 N, bracket_width: 0.001,\n"
                           "        parameters: [geometry.gear.tilt, surfaces.washer.Rq, materials.carrier.thermal_expansion]}\n"},
+        RoundTripCase{"distress_map_over_an_input_by_its_path",
+                      std::string(kMinimalScene) +
+                          "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 3 kN,\n"
+                          "        parameter: {name: materials.carrier.conductivity, values: [30 W/(m K), 90 W/(m K)]}}\n"},
         RoundTripCase{"oil_supply_at_the_bore",
                       std::string(kMinimalScene) + "lubricant: {supply: {pressure: 3.5 bar, at: inner_radius}}\n"},
         RoundTripCase{"mass_conserving_cavitation",

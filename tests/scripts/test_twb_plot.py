@@ -233,6 +233,22 @@ class TwbPlotTest(unittest.TestCase):
                       "fold of the steady branch"):
             self.assertIn(label, text)
 
+    def test_distress_map_over_an_input_by_its_scene_path(self):
+        """A map's axis named by a scene path: its column is the path with its unit, the
+        only kind of column with a dot, read as the run's parameter."""
+        d = self.results_dir(
+            "map_path",
+            distress=["speed_rad_s,materials.carrier.conductivity_W_m_K,W_d_N,bracket_low_N,bracket_high_N,fold_N,"
+                      "method",
+                      "545,30,142.9,142.7,143.0,142.9,runaway; fold at 142.9 N",
+                      "545,90,173.3,173.1,173.4,173.3,runaway; fold at 173.3 N"])
+        out_dir = os.path.join(self.tmp, "figs_path")
+        result = plot(d, "--out", out_dir, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        text = self.svg_text(os.path.join(out_dir, "distress_map.svg"))
+        for label in ("materials.carrier.conductivity_W_m_K = 30", "materials.carrier.conductivity_W_m_K = 90"):
+            self.assertIn(label, text)
+
     def test_distress_map_with_error_bars(self):
         """distress.csv as twb writes it with study.error_estimate: richardson: the three
         columns before the method, drawn as the mesh-converged W_d with its bar; a row
@@ -437,8 +453,9 @@ class TwbPlotTest(unittest.TestCase):
         self.assertIn("545 rad/s, dry friction coefficient 0.2, 1200 N", trajectory)
 
     def test_sensitivity_tornado(self):
-        """sensitivity.csv of a sensitivity study: a tornado of W_d's elasticities, the
-        largest on top, rows without an elasticity left out; the torque's without a W_d."""
+        """sensitivity.csv of a sensitivity study: a tornado of W_fail's elasticities (here
+        W_d's: no W_fail rows), the largest on top, rows without an elasticity left out;
+        the torque's without a failure load."""
         d = self.results_dir("sensitivity")
         rows = ["quantity,value,parameter,parameter_value,parameter_unit,derivative,elasticity,step",
                 "torque_Nm,0.9,operating.load,500,N,0.0013,0.74,0.05",

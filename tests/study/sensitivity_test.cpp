@@ -21,6 +21,7 @@
 #include "solver/fold_location.h"
 #include "study/crossing_response.h"
 #include "study/distress_search.h"
+#include "study/input_neighbours.h"
 #include "twb/results/distress_table.h"
 #include "study/sensitivity.h"
 #include "study/steady_solver.h"
@@ -182,6 +183,35 @@ TEST(Sensitivity, CrossingLoadDerivativesMatchTheCrossingSettledAgain) {
     ASSERT_NE(fail, nullptr) << path;
     EXPECT_EQ(fail->derivative, row->derivative) << path;
   }
+}
+
+// An input at a bound of its range (a dry friction coefficient of zero, range >= 0): the
+// one-sided fourth-order stencil, against the one-sided second-order difference of whole
+// solves, (−3f(0) + 4f(Δ) − f(2Δ))/2Δ, whose truncation the same difference at 2Δ measures.
+TEST(Sensitivity, AnInputAtItsBoundIsDifferencedOneSided) {
+  const Scene scene = load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
+                                 {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24",
+                                  "solver.residual_tolerance=1e-12", "operating.load=175 N",
+                                  "friction={law: constant, coefficient: 0}",
+                                  "study={type: sensitivity, parameters: [friction.coefficient]}"});
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  const InputNeighbours n = input_neighbours(model, scene_input(scene, "friction.coefficient"));
+  EXPECT_EQ(n.stencil.offsets, kForward.offsets);
+  BearingModel base(scene);
+  std::vector<double> u;
+  ASSERT_TRUE(SteadySolver(base, newton_settings(scene)).solve_cold(u).converged);
+  const double delta = 1e-3;
+  std::vector<std::vector<StateQuantity>> q;  // at 0, Δ, 2Δ, 4Δ
+  for (double k : {0.0, 1.0, 2.0, 4.0}) q.push_back(state_quantities(solved_at(scene, "friction.coefficient", k * delta, u)));
+  const SensitivityRow* torque = find_row(out, "torque_Nm", "friction.coefficient");
+  ASSERT_NE(torque, nullptr);
+  const std::size_t k = 0;  // the torque: what dry friction moves first
+  const double d1 = (-3 * q[0][k].value + 4 * q[1][k].value - q[2][k].value) / (2 * delta);
+  const double d2 = (-3 * q[0][k].value + 4 * q[2][k].value - q[3][k].value) / (4 * delta);
+  EXPECT_GT(std::abs(d1), 0.0);
+  EXPECT_NEAR(torque->derivative, d1, 2 * std::abs(d2 - d1) + 1e-6 * std::abs(q[0][k].value)) << "(at 2Δ: " << d2 << ")";
 }
 
 TEST(Sensitivity, EveryWrittenInputByDefaultAndNoneTwice) {

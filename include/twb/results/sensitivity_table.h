@@ -2,7 +2,9 @@
 // quantity's derivative with respect to each input, one row per pair:
 //   quantity, value, parameter, parameter_value, parameter_unit, derivative, elasticity, step
 // quantity: torque_Nm, f_eff, T_mean_C, T_max_C, hmin_over_sigma, fluid_share of the state at
-// the operating point, and W_d_N, the fold's load, where the study's load range has one.
+// the operating point; with a load range, W_d_N (the fold's load), W_<criterion>_N (each
+// criterion's crossing, as distress.csv names it) and W_fail_N (the rows of the one that
+// sets the failure load).
 // value is the quantity's (°C for temperatures), parameter the input's scene path and
 // parameter_value its SI value in parameter_unit; derivative is d quantity / d parameter in
 // their SI units (a temperature's per kelvin); elasticity the relative change of the

@@ -42,7 +42,10 @@ enum class StudyType { point, load_sweep, distress_map, transient, sliding_choic
 
 // The optional second axis of a distress map or load sweep (besides speed).
 // roughness: the Rq of every surface (see docs/scenes.md for how the texture scales).
-enum class MapParameter { none, friction_coefficient, gear_tilt, roughness, groove_count, groove_width, groove_depth };
+// scene_input: any input of the scene by its path (Study::parameter_path; scene_inputs.h).
+enum class MapParameter {
+  none, friction_coefficient, gear_tilt, roughness, groove_count, groove_width, groove_depth, scene_input
+};
 
 // A parameter of the bearing a fold curve is continued in (study type distress_curve),
 // set on a built model without rebuilding it.
@@ -252,7 +255,9 @@ struct Study {
   std::vector<double> speeds;  // rad/s
   // load_sweep, distress_map: the second axis
   MapParameter parameter = MapParameter::none;
-  std::vector<double> parameter_values;  // SI (dimensionless, rad, m)
+  std::string parameter_path;             // scene_input: the input's path, e.g. "geometry.gear.tilt"
+  std::string parameter_unit;             // scene_input: its SI unit ("rad"; "1" for a pure number)
+  std::vector<double> parameter_values;  // SI (dimensionless, rad, m; scene_input: the input's SI unit)
   // Distress bracket refined by bisection to (high − low)/high <= bracket_width.
   double bracket_width = 0.002;
   // distress_curve: the fold continued in this parameter from `from` to `to` (SI).

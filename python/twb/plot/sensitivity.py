@@ -1,13 +1,13 @@
 """What the answer hangs on: a tornado of the elasticities of one quantity of a
-sensitivity study (W_d where the study found the fold, else the friction torque), the
-inputs ranked by how much a relative change of each moves it."""
+sensitivity study (W_fail where the study located a failure load, else W_d, else the
+friction torque), the inputs ranked by how much a relative change of each moves it."""
 
 import matplotlib.pyplot as plt
 import numpy as np
 
 # The quantity a tornado shows, by preference: the failure load, then the friction torque.
-HEADLINES = ("W_d_N", "torque_Nm")
-LABELS = {"W_d_N": "W_d", "torque_Nm": "friction torque"}
+HEADLINES = ("W_fail_N", "W_d_N", "torque_Nm")
+LABELS = {"W_fail_N": "W_fail", "W_d_N": "W_d", "torque_Nm": "friction torque"}
 
 
 def headline(rows):
@@ -34,7 +34,7 @@ def figure_tornado(rows, shown=15):
     ax.axvline(0.0, color="black", linewidth=0.8)
     value = ranked[-1]["value"]
     ax.set_xlabel(f"elasticity of {LABELS[q]}: % change per % change of the input")
-    ax.set_title(f"What {LABELS[q]} ({value:.4g}{' N' if q == 'W_d_N' else ' N m'}) hangs on")
+    ax.set_title(f"What {LABELS[q]} ({value:.4g}{' N m' if q == 'torque_Nm' else ' N'}) hangs on")
     ax.grid(axis="x", alpha=0.3)
     fig.tight_layout()
     return fig

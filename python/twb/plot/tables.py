@@ -63,6 +63,12 @@ SENSITIVITY_TEXTS = tuple(_TABLES["sensitivity"]["texts"])
 # The columns twb adds after the speed when a study runs several configurations: the
 # value of its second parameter, and the film that slides.
 PARAMETER_COLUMNS = tuple(_DEFINITION["run_parameters"])
+
+
+def is_parameter_column(name):
+    """A study's second axis: a named parameter's column, or an input's scene path with its
+    unit (geometry.gear.tilt_rad): the only column names with a dot."""
+    return name in PARAMETER_COLUMNS or "." in name
 SLIDING_LABELS = {
     "carrier_washer": "film 1 slides (washer stuck to the gear)",
     "washer_gear": "film 2 slides (washer stuck to the carrier)",
@@ -144,7 +150,7 @@ def _check_width(path, line, fields, header):
 
 def _run_tags(path, line, fields, header):
     """The run a row belongs to: ((parameter column, value) or None, sliding film or None)."""
-    parameter = next((c for c in header if c in PARAMETER_COLUMNS), None)
+    parameter = next((c for c in header if is_parameter_column(c)), None)
     tag = None
     if parameter is not None:
         tag = (parameter, _number(path, line, parameter, fields[header.index(parameter)],
@@ -217,7 +223,7 @@ def read_fold_curve(path):
     line, header = _header_line(path, records, expected)
     errors = tuple(header[-len(FOLD_CURVE_ERROR):]) == FOLD_CURVE_ERROR
     body = header[:-len(FOLD_CURVE_ERROR)] if errors else header
-    family = body[0] if len(body) == len(FOLD_CURVE_TAIL) + 2 and body[0] in PARAMETER_COLUMNS else None
+    family = body[0] if len(body) == len(FOLD_CURVE_TAIL) + 2 and is_parameter_column(body[0]) else None
     first = 1 if family else 0
     if len(body) != len(FOLD_CURVE_TAIL) + 1 + first or body[first] not in FOLD_CURVE_PARAMETERS \
             or tuple(body[first + 1:]) != FOLD_CURVE_TAIL:
@@ -306,7 +312,7 @@ def _read_distress_by_name(path, records, line, header):
     written = set(_TABLES["distress"]["columns"]) | set(PARAMETER_COLUMNS)
     if (len(middle) > 1 or header[0] != "speed_rad_s" or tuple(header[-2:]) != ("failure", "method")
             or any(c not in header for c in DISTRESS_TAIL + FAILURE_COLUMNS)
-            or any(c not in written for c in header)):
+            or any(c not in written and not is_parameter_column(c) for c in header)):
         raise InputError(f"{path}: line {line}: expected the header speed_rad_s[,<parameter>][,sliding],"
                          f"W_fail_N,criterion,W_d_N,...,failure,method, got {','.join(header)}")
     column = {c: k for k, c in enumerate(header)}

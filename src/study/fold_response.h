@@ -1,0 +1,30 @@
+// How the fold's load moves with an input (study type sensitivity, docs/physics.md
+// section 16): dW_d/dp = −ψᵀF_p / ψᵀF_W, ψ the left null vector of J at the fold.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/bearing_model.h"
+#include "solver/fold_location.h"
+#include "study/input_neighbours.h"
+
+namespace twb {
+
+struct SettledFold {
+  double load = 0.0;        // W_d, N, to the solver's tolerance
+  std::vector<double> u;    // the state there
+  std::vector<double> psi;  // ψ, ψᵀb = 1
+  double psi_load = 0.0;    // ψᵀF_W
+};
+
+// The fold a search found, located again to the solver's tolerance (the search settles
+// its load to the bracket only; off the fold ψ is no left null vector and the derivative
+// is off by the distance), with ψ; none with the reason. The model's load is given back.
+std::optional<SettledFold> settle_fold(BearingModel& model, const FoldPoint& found, std::string& why);
+
+// dW_d/dp for the input of `n`.
+double fold_load_derivative(InputNeighbours& n, const SettledFold& fold);
+
+}  // namespace twb
