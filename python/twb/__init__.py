@@ -136,6 +136,11 @@ class Scene:
             counts[block["effect"]] = counts.get(block["effect"], 0) + block["size"]
         return counts
 
+    def inputs(self):
+        """Every input the scene file writes, by its scene path: [(path, SI value, SI unit)],
+        what a sensitivity study's parameters, a map's axis and Bearing.sensitivity name."""
+        return list(self._scene.inputs())
+
     def sources(self):
         """Where each value was written: [(path, file, line)] (scenes that extend scenes)."""
         if self._text is not None:

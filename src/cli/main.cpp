@@ -82,6 +82,15 @@ std::string viscosity_fit_table(const twb::Lubricant& l) {
   return out;
 }
 
+// Every input the scene file writes, by the path a sensitivity study or a map's axis names
+// it with (docs/physics.md section 16).
+std::string inputs_table(const twb::Scene& scene) {
+  std::string out = "inputs (scene paths for a sensitivity study's parameters or a map's axis; SI):\n";
+  for (const twb::SceneInput& in : scene.inputs)
+    out += fmt::format("  {:<44} {:.10g}{}\n", in.path, in.value, in.unit == "1" ? "" : " " + in.unit);
+  return out;
+}
+
 void print_warnings(const twb::Scene& scene, std::ostream& out) {
   for (const std::string& w : scene.warnings) out << "twb: warning: " << w << "\n";
 }
@@ -90,7 +99,7 @@ int check(const std::string& path, const std::vector<std::string>& overrides) {
   const twb::Scene scene = twb::load_scene(path, overrides);
   const twb::BearingModel model(scene);
   std::cout << twb::describe_scene(scene) << "\n" << profile_table(scene.asperities)
-            << viscosity_fit_table(scene.lubricant) << unknowns_table(model.layout())
+            << viscosity_fit_table(scene.lubricant) << inputs_table(scene) << unknowns_table(model.layout())
             << fmt::format("jacobian nonzeros: {}\n", model.pattern().nnz());
   // A scene that extends others: where each value was written.
   const std::vector<twb::ValueSource> sources = twb::scene_value_sources(path, overrides);

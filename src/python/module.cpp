@@ -225,7 +225,12 @@ PYBIND11_MODULE(_twb, m) {
       .def("resolved_yaml", [](const twb::Scene& s) { return twb::describe_scene(s); })
       .def("resolved_text", [](const twb::Scene& s) { return yaml_to_python(YAML::Load(twb::describe_scene(s))); })
       .def("record_json", [](const twb::Scene& s) { return twb::scene_record_json(s); })
-      .def("unknowns", &unknowns_list);
+      .def("unknowns", &unknowns_list)
+      .def("inputs", [](const twb::Scene& s) {
+        py::list out;
+        for (const twb::SceneInput& in : s.inputs) out.append(py::make_tuple(in.path, in.value, in.unit));
+        return out;
+      });
 
   m.def("load_scene", &twb::load_scene, py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
         py::call_guard<py::gil_scoped_release>());

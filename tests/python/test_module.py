@@ -231,6 +231,12 @@ class Points(unittest.TestCase):
         self.assertAlmostEqual(warm["f_eff"], cold["f_eff"], delta=1e-7 * cold["f_eff"])
         self.assertLess(warm["iterations"], cold["iterations"])
 
+    def test_scene_inputs_by_their_paths(self):
+        inputs = {path: (value, unit) for path, value, unit in twb.Scene(SCENE).inputs()}
+        self.assertEqual(inputs["geometry.gear.tilt"], (0.002, "rad"))
+        self.assertEqual(inputs["operating.speed"], (545.0, "rad/s"))
+        self.assertNotIn("mesh.radial_nodes", inputs)
+
     def test_bearing_sensitivity_of_the_last_state(self):
         """d f_eff / d speed at 120 N, 545 rad/s against the states at 545 +- 0.545 rad/s:
         the centred difference's truncation is far below its 1e-3 allowance (the C++

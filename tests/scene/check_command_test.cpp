@@ -49,5 +49,22 @@ TEST(CheckCommandPaperScene, ValidSceneExitsWithStatus0) {
   EXPECT_EQ(result.status, 0) << result.err;
 }
 
+// What a sensitivity study's parameters or a map's axis may name: the inputs by their
+// paths, with their SI values (docs/physics.md section 16).
+TEST(CheckCommandPaperScene, ListsTheInputsByTheirPaths) {
+  const std::string command =
+      std::string("'") + TWB_BINARY + "' check '" + testing::source_path("configs/jackson_green_2006.yaml") + "'";
+  std::string out;
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe) != nullptr) out += buffer.data();
+  EXPECT_EQ(pclose(pipe), 0);
+  EXPECT_NE(out.find("inputs (scene paths for a sensitivity study's parameters or a map's axis; SI):"), std::string::npos);
+  EXPECT_NE(out.find("geometry.gear.tilt"), std::string::npos);
+  EXPECT_NE(out.find(" 0.002 rad\n"), std::string::npos) << out;
+  EXPECT_NE(out.find(" 545 rad/s\n"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace twb
