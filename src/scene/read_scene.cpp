@@ -4,12 +4,14 @@
 #include "scene_sections.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include "scene_names.h"
+#include "tree_path.h"
 #include "twb/scene/input_error.h"
 #include "twb/scene/scene_inputs.h"
 #include "twb/scene/scene_loader.h"
@@ -33,31 +35,22 @@ std::vector<SceneInput> inputs_read(const Provenance& provenance) {
 // The tree as read, with every file a value names as the reader resolved it.
 std::string written_tree(const Node& root) {
   YAML::Node tree = YAML::Clone(root.yaml());
-  for (const auto& [path, resolved] : root.provenance()->resolved_paths()) {
-    // "surfaces.asperities.profile" or "surfaces.asperities.profile[1]"
-    YAML::Node node;
-    node.reset(tree);
-    std::string_view rest = path;
-    while (!rest.empty()) {
-      const std::size_t dot = rest.find('.');
-      std::string key(rest.substr(0, dot));
-      rest = dot == std::string_view::npos ? std::string_view() : rest.substr(dot + 1);
-      const std::size_t bracket = key.find('[');
-      YAML::Node next;
-      next.reset(node[key.substr(0, bracket)]);
-      if (bracket != std::string::npos) {
-        const std::size_t index = std::stoul(key.substr(bracket + 1));
-        YAML::Node item;
-        item.reset(next[index]);
-        next.reset(item);
-      }
-      node.reset(next);
-    }
-    node = resolved;
-  }
+  for (const auto& [path, resolved] : root.provenance()->resolved_paths())
+    if (std::optional<YAML::Node> node = node_at(tree, path)) *node = resolved;
   YAML::Emitter written;
   written << tree;
   return written.c_str();
+}
+
+// Why the scene refuses an input at `value`, if it does: the scene read again with it,
+// as a point study (a trial must not check a study's parameters or axis again).
+std::optional<InputError> refused(const Scene& out, const SceneInput& input, double value) {
+  try {
+    load_scene_text(out.written, out.source, {input_override(input.path, value, input.unit), "study={type: point}"});
+  } catch (const InputError& e) {
+    return e;
+  }
+  return std::nullopt;
 }
 
 // A sensitivity study's parameters name inputs of this scene.
@@ -78,12 +71,8 @@ void check_study_parameters(const MapReader& scene, const Scene& out) {
     // A default the scene resolved to may be one derived from what the file gives (the
     // summit density of an eta_R_sigma, a data sheet's Roelands constants), which the
     // reader refuses beside it: tried once here rather than at every difference step.
-    // (As a point study: the trial must not check these parameters again.)
-    try {
-      load_scene_text(out.written, out.source, {input_override(path, input.value, input.unit), "study={type: point}"});
-    } catch (const InputError& e) {
-      item.fail(fmt::format("{}: '{}' cannot be set in this scene: {}", item.path(), path, e.message()));
-    }
+    if (const std::optional<InputError> e = refused(out, input, input.value))
+      item.fail(fmt::format("{}: '{}' cannot be set in this scene: {}", item.path(), path, e->message()));
   }
 }
 
@@ -109,11 +98,8 @@ void check_input_axis(const MapReader& scene, Scene& out) {
   s.parameter_unit = input.unit;
   for (const Node& item : axis.get("values", "").list("")) {
     const double value = item.quantity(si::of_symbol(input.unit), Range{});
-    try {
-      load_scene_text(out.written, out.source, {input_override(input.path, value, input.unit), "study={type: point}"});
-    } catch (const InputError& e) {
-      item.fail(fmt::format("{}: {}", item.path(), e.message()));
-    }
+    if (const std::optional<InputError> e = refused(out, input, value))
+      item.fail(fmt::format("{}: {}", item.path(), e->message()));
     s.parameter_values.push_back(value);
   }
 }

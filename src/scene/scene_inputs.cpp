@@ -8,6 +8,7 @@
 
 #include "scene/key_suggestion.h"
 #include "scene/quantity.h"
+#include "scene/tree_path.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {
@@ -19,19 +20,9 @@ constexpr std::string_view kInputSections[] = {"geometry.", "materials.", "surfa
 
 // The resolved scene's number at `path`, if it writes one there.
 std::optional<SceneInput> resolved_input(const Scene& scene, const std::string& path) {
-  YAML::Node node = YAML::Load(describe_scene(scene));
-  std::string_view rest = path;
-  while (!rest.empty()) {
-    const std::size_t dot = rest.find('.');
-    const std::string key(rest.substr(0, dot));
-    if (!node.IsMap() || !node[key]) return std::nullopt;
-    // reset, not assignment: assigning a yaml-cpp node writes into the tree it refers to
-    YAML::Node child = node[key];
-    node.reset(child);
-    rest = dot == std::string_view::npos ? std::string_view() : rest.substr(dot + 1);
-  }
-  if (!node.IsScalar()) return std::nullopt;
-  const std::string text = node.Scalar();
+  const std::optional<YAML::Node> node = scene_io::node_at(YAML::Load(describe_scene(scene)), path);
+  if (!node || !node->IsScalar()) return std::nullopt;
+  const std::string text = node->Scalar();
   if (text.find_first_of(" \t") == std::string::npos) {
     try {
       return SceneInput{path, to_si(text, si::dimensionless), "1"};

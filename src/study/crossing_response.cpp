@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "model/limit_thresholds.h"
+#include "study/failure_load.h"
 #include "study/steady_solver.h"
 #include "study/study_support.h"
 
@@ -16,8 +17,7 @@ namespace {
 // The criterion's margin of state u of model m, against m's own scene's limits (a limit
 // can be the input itself).
 double margin_of(const BearingModel& m, LimitKind kind, std::span<const double> u) {
-  const std::optional<double> margin = failure_margin(
-      kind, LimitValues::of(m.describe(u), m.scene().effects.thermal), OperatingLimits::of(m.scene()));
+  const std::optional<double> margin = state_margin(m, u, kind, OperatingLimits::of(m.scene()));
   // A criterion the base applies that a neighbour does not (an input that switches it off).
   if (!margin) throw std::invalid_argument(fmt::format("the criterion {} does not apply", limit_name(kind)));
   return *margin;

@@ -67,11 +67,6 @@ class BranchSegment {
   BranchStates known_;
 };
 
-std::optional<double> margin_of(const BearingModel& model, std::span<const double> u, LimitKind kind,
-                                const OperatingLimits& limits) {
-  return failure_margin(kind, LimitValues::of(model.describe(u), model.scene().effects.thermal), limits);
-}
-
 // Where the margin crosses zero between loads a (within, margin fa > 0) and b (past,
 // fb <= 0), the branch continued from `segment`'s states.
 double locate_crossing(BearingModel& model, BranchSegment& segment, LimitKind kind, const OperatingLimits& limits,
@@ -80,7 +75,7 @@ double locate_crossing(BearingModel& model, BranchSegment& segment, LimitKind ki
   std::map<double, double> known{{a, fa}, {b, fb}};
   auto margin = [&](double load) {
     const auto [it, fresh] = known.try_emplace(load, 0.0);
-    if (fresh) it->second = *margin_of(model, segment.at(load), kind, limits);
+    if (fresh) it->second = *state_margin(model, segment.at(load), kind, limits);
     return it->second;
   };
   // The bracket [a, b] is narrowed until its relative width is the search's; TOMS 748
@@ -103,6 +98,11 @@ double locate_crossing(BearingModel& model, BranchSegment& segment, LimitKind ki
 }
 
 }  // namespace
+
+std::optional<double> state_margin(const BearingModel& model, std::span<const double> u, LimitKind kind,
+                                   const OperatingLimits& limits) {
+  return failure_margin(kind, LimitValues::of(model.describe(u), model.scene().effects.thermal), limits);
+}
 
 std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pair<double, std::vector<double>>& state,
                                     double& slope, double width, double load_end, long& solves, std::string& why,

@@ -10,11 +10,13 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 
 #include "fold_proof.h"
 #include "model/bearing_model.h"
+#include "model/limit_thresholds.h"
 #include "solver/kinsol_newton.h"
 #include "twb/results/distress_table.h"
 
@@ -24,6 +26,11 @@ struct FailureSettings {
   double load_start = 0.0, load_end = 0.0;  // N: the searched range
   double bracket_width = 0.002;             // relative: how closely a crossing is located
 };
+
+// How far state u of `model` is from crossing criterion `kind` (limit_thresholds.h:
+// failure_margin); none where the limits do not apply it.
+std::optional<double> state_margin(const BearingModel& model, std::span<const double> u, LimitKind kind,
+                                   const OperatingLimits& limits);
 
 // Fills row.criterion_loads, failure_load, criterion and failure from the branch's states
 // (load, state) in rising load, its end at the fold included where there is one, and

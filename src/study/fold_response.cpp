@@ -1,6 +1,7 @@
 #include "study/fold_response.h"
 
 #include <cmath>
+#include <numeric>
 
 #include "solver/continuation_metric.h"
 #include "solver/fold_system.h"
@@ -10,11 +11,7 @@ namespace twb {
 
 namespace {
 
-double dot(std::span<const double> a, std::span<const double> b) {
-  double s = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) s += a[k] * b[k];
-  return s;
-}
+double dot(std::span<const double> a, std::span<const double> b) { return std::inner_product(a.begin(), a.end(), b.begin(), 0.0); }
 
 }  // namespace
 
