@@ -282,6 +282,30 @@ void read_study(const MapReader& scene, Scene& out) {
                                                         "every input the scene file writes", list.path()));
       }
       break;
+    case StudyType::reliability: {
+      // The inputs' distributions are read once every input is known (read_uncertain_inputs).
+      study.restrict_to({"type", "inputs", "load_start", "load_end", "bracket_width", "probabilities", "monte_carlo"},
+                        "with type: reliability");
+      read_load_range(study, s, " (the failure search at the scene's inputs runs between them)");
+      s.bracket_width = read_bracket_width(study, s.bracket_width);
+      study.get("inputs", "a map from input paths to distributions, e.g. {geometry.gear.tilt: {distribution: normal, "
+                          "mean: 0.5 mrad, sd: 0.1 mrad}}");
+      if (study.has("probabilities")) {
+        const Node list = study.get("probabilities", "");
+        for (const Node& item : list.list("failure probabilities, e.g. [1e-4, 1e-3, 1e-2]"))
+          s.probabilities.push_back(item.quantity(
+              si::dimensionless, Range{.low = 0.0, .low_open = true, .high = 1.0, .high_open = true,
+                                       .reason = "a probability of failure whose load is wanted, e.g. 1e-3"}));
+      }
+      const MapReader sampling = study.map("monte_carlo", {"cov", "max_samples", "seed"});
+      s.sampling_cov = sampling.quantity(
+          "cov", si::dimensionless,
+          Range{.low = 0.0, .low_open = true, .high = 1.0, .reason = "the estimate's coefficient of variation, e.g. 0.1"},
+          s.sampling_cov);
+      s.max_samples = sampling.integer("max_samples", 0, 1000000, s.max_samples, "samples at most; 0: no Monte Carlo check");
+      s.seed = sampling.integer("seed", 0, int(s.seed), "the samples' seed");
+      break;
+    }
     case StudyType::distress_map: {
       study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate"},
                         "with type: distress_map");

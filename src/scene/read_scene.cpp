@@ -42,6 +42,8 @@ std::string written_tree(const Node& root) {
   return written.c_str();
 }
 
+}  // namespace
+
 // Why the scene refuses an input at `value`, if it does: the scene read again with it,
 // as a point study (a trial must not check a study's parameters or axis again).
 std::optional<InputError> refused(const Scene& out, const SceneInput& input, double value) {
@@ -52,6 +54,8 @@ std::optional<InputError> refused(const Scene& out, const SceneInput& input, dou
   }
   return std::nullopt;
 }
+
+namespace {
 
 // A sensitivity study's parameters name inputs of this scene.
 void check_study_parameters(const MapReader& scene, const Scene& out) {
@@ -120,6 +124,7 @@ Scene read_scene(const Node& root) {
   out.inputs = inputs_read(*root.provenance());
   check_study_parameters(scene, out);
   check_input_axis(scene, out);
+  read_uncertain_inputs(scene, out);
   return out;
 }
 

@@ -36,7 +36,7 @@ inline constexpr std::string_view kLubricantKeys[] = {"conductivity", "viscosity
 inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start", "load_end", "load_steps",
                                                    "speeds",        "parameter",  "bracket_width", "duration",
                                                    "error_estimate", "from",       "to",       "family",
-                                                   "parameters"};
+                                                   "parameters", "inputs", "probabilities", "monte_carlo"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
@@ -45,10 +45,15 @@ inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
 inline constexpr EnumNames<FrictionLaw, 2> kFrictionLaws{
     {"empirical", "constant"}, {FrictionLaw::empirical, FrictionLaw::constant}};
 
-inline constexpr EnumNames<StudyType, 7> kStudyTypes{
-    {"point", "load_sweep", "distress_map", "transient", "sliding_choice", "distress_curve", "sensitivity"},
+inline constexpr EnumNames<StudyType, 8> kStudyTypes{
+    {"point", "load_sweep", "distress_map", "transient", "sliding_choice", "distress_curve", "sensitivity",
+     "reliability"},
     {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient,
-     StudyType::sliding_choice, StudyType::distress_curve, StudyType::sensitivity}};
+     StudyType::sliding_choice, StudyType::distress_curve, StudyType::sensitivity, StudyType::reliability}};
+inline constexpr EnumNames<InputDistribution, 4> kInputDistributions{
+    {"normal", "lognormal", "uniform", "truncated_normal"},
+    {InputDistribution::normal, InputDistribution::lognormal, InputDistribution::uniform,
+     InputDistribution::truncated_normal}};
 
 inline constexpr EnumNames<CurveParameter, 6> kCurveParameters{
     {"speed", "friction_coefficient", "gear_tilt", "ambient_temperature", "viscosity_scale", "roughness"},

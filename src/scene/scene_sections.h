@@ -3,7 +3,10 @@
 // documents what they accept.
 #pragma once
 
+#include <optional>
+
 #include "scene_node.h"
+#include "twb/scene/input_error.h"
 #include "twb/scene/scene.h"
 
 namespace twb::scene_io {
@@ -27,6 +30,12 @@ double groove_angle(const Node& node, double mean_radius);
 // A map's or family's groove parameter (groove_count, groove_width, groove_depth): the
 // scene has grooves, and every value places them (read after the grooves).
 void check_groove_parameter(const MapReader& scene, const Scene& out);
+
+// Why the scene refuses an input at `value`, if it does (the scene read again with it).
+std::optional<InputError> refused(const Scene& out, const SceneInput& input, double value);
+// A reliability study's uncertain inputs: `study.inputs`, each an input of the scene with
+// a distribution the scene accepts (read once the scene's inputs are known).
+void read_uncertain_inputs(const MapReader& scene, Scene& out);
 
 // The whole scene from the root of the (overridden) YAML tree.
 Scene read_scene(const Node& root);

@@ -239,6 +239,25 @@ void write_numerics(Writer& w, const Scene& s) {
     for (const std::string& p : st.parameters) paths += (paths.empty() ? "" : ", ") + p;
     if (!paths.empty()) w.entry(1, "parameters", fmt::format("[{}]", paths));
   }
+  if (st.type == StudyType::reliability) {
+    w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
+    w.line(1, "inputs:");
+    for (const UncertainInput& in : st.uncertain_inputs) {
+      std::string d = fmt::format("{{distribution: {}", kInputDistributions.name(in.distribution));
+      if (in.distribution != InputDistribution::uniform)
+        d += fmt::format(", mean: {}, sd: {}", quantity(in.mean, in.unit), quantity(in.sd, in.unit));
+      if (in.distribution == InputDistribution::uniform || in.distribution == InputDistribution::truncated_normal)
+        d += fmt::format(", lower: {}, upper: {}", quantity(in.lower, in.unit), quantity(in.upper, in.unit));
+      w.entry(2, in.path, d + "}");
+    }
+    std::string probabilities;
+    for (double p : st.probabilities) probabilities += (probabilities.empty() ? "" : ", ") + quantity(p, "1");
+    if (!probabilities.empty()) w.entry(1, "probabilities", fmt::format("[{}]", probabilities));
+    w.line(1, "monte_carlo:");
+    w.entry(2, "cov", quantity(st.sampling_cov, "1"));
+    w.entry(2, "max_samples", fmt::format("{}", st.max_samples));
+    w.entry(2, "seed", fmt::format("{}", st.seed));
+  }
   if (st.type == StudyType::distress_curve) {
     const char* unit = st.curve_parameter == CurveParameter::speed                  ? "rad/s"
                        : st.curve_parameter == CurveParameter::gear_tilt            ? "rad"

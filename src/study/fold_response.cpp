@@ -25,6 +25,8 @@ std::optional<SettledFold> settle_fold(BearingModel& model, const FoldPoint& fou
   SettledFold out;
   out.load = fold.lambda;
   out.u = fold.u;
+  out.null_vector = fold.null_vector;
+  out.curvature = fold.curvature;
   std::vector<double> f_load(out.u.size());
   model.parameter_derivative(out.u, f_load);
   const ContinuationMetric metric = ContinuationMetric::of(model, std::abs(fold.lambda));

@@ -17,6 +17,8 @@ struct SettledFold {
   std::vector<double> u;    // the state there
   std::vector<double> psi;  // ψ, ψᵀb = 1
   double psi_load = 0.0;    // ψᵀF_W
+  std::vector<double> null_vector;  // of J there: where Newton on the fold system starts from it
+  double curvature = 0.0;           // FoldPoint::curvature: > 0 where the branch's load is largest
 };
 
 // The fold a search found, located again to the solver's tolerance (the search settles

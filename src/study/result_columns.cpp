@@ -50,6 +50,8 @@ std::string result_columns_json() {
   tables["trajectory"] = columns(trajectory_table({}, parameter, true), trajectory_table({}, {}, false));
   tables["fields"] = columns(fields_table({}), fields_table({}));
   tables["sensitivity"] = columns(sensitivity_table({}), sensitivity_table({}));
+  tables["reliability"] = columns(reliability_table({}), reliability_table({}));
+  tables["design_point"] = columns(design_point_table({}), design_point_table({}));
 
   Json run_parameters = Json::array();
   for (MapParameter p : {MapParameter::friction_coefficient, MapParameter::gear_tilt, MapParameter::roughness,

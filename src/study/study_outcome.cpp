@@ -12,14 +12,19 @@ std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
   const bool sliding = out.sliding_column;
   std::vector<NamedTable> tables;
   tables.push_back({"states", states_table(out.states, parameter, sliding)});
-  if (type != StudyType::point && type != StudyType::transient && type != StudyType::sensitivity)
+  if (type != StudyType::point && type != StudyType::transient && type != StudyType::sensitivity &&
+      type != StudyType::reliability)
     tables.push_back({"distress", distress_table(out.distress, parameter, sliding)});
   if (type == StudyType::sliding_choice) tables.push_back({"sliding", sliding_table(out.sliding)});
   if (type == StudyType::distress_curve)
     tables.push_back({"fold_curve", fold_curve_table(out.fold_curve, out.fold_curve_column, parameter)});
-  if (type == StudyType::sensitivity && !out.distress.empty())
+  if ((type == StudyType::sensitivity || type == StudyType::reliability) && !out.distress.empty())
     tables.push_back({"distress", distress_table(out.distress, parameter, sliding)});
   if (type == StudyType::sensitivity) tables.push_back({"sensitivity", sensitivity_table(out.sensitivity)});
+  if (type == StudyType::reliability) {
+    tables.push_back({"reliability", reliability_table(out.reliability)});
+    tables.push_back({"design_point", design_point_table(out.design_points)});
+  }
   if (!out.trajectory.empty()) tables.push_back({"trajectory", trajectory_table(out.trajectory, parameter, sliding)});
   return tables;
 }

@@ -108,6 +108,21 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.study.parameters, b.study.parameters);
   EXPECT_EQ(a.study.parameter_path, b.study.parameter_path);
   EXPECT_EQ(a.study.parameter_unit, b.study.parameter_unit);
+  ASSERT_EQ(a.study.uncertain_inputs.size(), b.study.uncertain_inputs.size());
+  for (std::size_t i = 0; i < a.study.uncertain_inputs.size(); ++i) {
+    const UncertainInput &x = a.study.uncertain_inputs[i], &y = b.study.uncertain_inputs[i];
+    EXPECT_EQ(x.path, y.path);
+    EXPECT_EQ(x.unit, y.unit);
+    EXPECT_EQ(x.distribution, y.distribution);
+    EXPECT_EQ(x.mean, y.mean);
+    EXPECT_EQ(x.sd, y.sd);
+    EXPECT_EQ(x.lower, y.lower);
+    EXPECT_EQ(x.upper, y.upper);
+  }
+  EXPECT_EQ(a.study.probabilities, b.study.probabilities);
+  EXPECT_EQ(a.study.sampling_cov, b.study.sampling_cov);
+  EXPECT_EQ(a.study.max_samples, b.study.max_samples);
+  EXPECT_EQ(a.study.seed, b.study.seed);
   EXPECT_EQ(a.output.directory, b.output.directory);
   EXPECT_EQ(a.output.fields, b.output.fields);
 }
@@ -310,6 +325,16 @@ INSTANTIATE_TEST_SUITE_P(
                       std::string(kMinimalScene) +
                           "study: {type: sensitivity, load_start: 100 N, load_end: 400 N, bracket_width: 0.001,\n"
                           "        parameters: [geometry.gear.tilt, surfaces.washer.Rq, materials.carrier.thermal_expansion]}\n"},
+        RoundTripCase{"reliability_of_every_distribution",
+                      std::string(kMinimalScene) +
+                          "study: {type: reliability, load_start: 100 N, load_end: 400 N, bracket_width: 0.001,\n"
+                          "        inputs: {operating.ambient: {distribution: normal, sd: 3 degC},\n"
+                          "                 geometry.gear.tilt: {distribution: truncated_normal, sd: 0.3 mrad, lower: 1 mrad,\n"
+                          "                                      upper: 3 mrad},\n"
+                          "                 surfaces.asperities.summit_radius: {distribution: lognormal, sd: 4 um},\n"
+                          "                 materials.carrier.conductivity: {distribution: uniform, lower: 45 W/(m K),\n"
+                          "                                                  upper: 60 W/(m K)}},\n"
+                          "        probabilities: [1e-4, 0.01], monte_carlo: {cov: 0.05, max_samples: 500, seed: 7}}\n"},
         RoundTripCase{"distress_map_over_an_input_by_its_path",
                       std::string(kMinimalScene) +
                           "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 3 kN,\n"

@@ -38,7 +38,9 @@ enum class FrictionLaw { constant, empirical };
 
 // sliding_choice: both sliding configurations over a load grid, the one of lower
 // friction torque kept (docs/physics.md section 2, the paper's "Component Rotational Speed").
-enum class StudyType { point, load_sweep, distress_map, transient, sliding_choice, distress_curve, sensitivity };
+enum class StudyType {
+  point, load_sweep, distress_map, transient, sliding_choice, distress_curve, sensitivity, reliability
+};
 
 // The optional second axis of a distress map or load sweep (besides speed).
 // roughness: the Rq of every surface (see docs/scenes.md for how the texture scales).
@@ -52,6 +54,19 @@ enum class MapParameter {
 // viscosity_scale multiplies the oil's viscosity at every temperature (1: the scene's oil).
 // roughness: the Rq of every surface (set_roughness).
 enum class CurveParameter { speed, friction_coefficient, gear_tilt, ambient_temperature, viscosity_scale, roughness };
+
+// An uncertain input's distribution (study type reliability, docs/physics.md section 17).
+// normal: mean, sd; lognormal: the input's own mean and sd (its logarithm normal);
+// uniform: lower, upper; truncated_normal: the normal (mean, sd) cut to [lower, upper].
+enum class InputDistribution { normal, lognormal, uniform, truncated_normal };
+
+struct UncertainInput {
+  std::string path;  // the input's scene path, e.g. "geometry.gear.tilt"
+  std::string unit;  // its SI unit
+  InputDistribution distribution = InputDistribution::normal;
+  double mean = 0.0, sd = 0.0;        // SI (normal, lognormal, truncated_normal)
+  double lower = 0.0, upper = 0.0;    // SI (uniform, truncated_normal)
+};
 
 // How a distress search estimates the discretization error of W_d.
 enum class ErrorEstimate {
@@ -270,6 +285,15 @@ struct Study {
   // sensitivity: the inputs differentiated against, by their scene paths (empty: every
   // input the scene file writes, Scene::inputs).
   std::vector<std::string> parameters;
+  // reliability: the uncertain inputs (independent), the failure probabilities whose loads
+  // are wanted (inverse FORM), and the Monte Carlo check: importance sampling round the
+  // design point until the estimate's coefficient of variation is `sampling_cov` (none
+  // with max_samples 0), its samples drawn from `seed`.
+  std::vector<UncertainInput> uncertain_inputs;
+  std::vector<double> probabilities;
+  double sampling_cov = 0.1;
+  int max_samples = 4000;
+  long seed = 1;
 };
 
 struct Output {

@@ -10,6 +10,7 @@
 
 #include "twb/results/distress_table.h"
 #include "twb/results/fold_curve_table.h"
+#include "twb/results/reliability_table.h"
 #include "twb/results/run_timings.h"
 #include "twb/results/sensitivity_table.h"
 #include "twb/results/sliding_table.h"
@@ -31,6 +32,8 @@ struct StudyOutcome {
   std::vector<FoldCurveRow> fold_curve;
   std::string fold_curve_column;
   std::vector<SensitivityRow> sensitivity;  // sensitivity: each quantity against each input
+  std::vector<ReliabilityRow> reliability;   // reliability: each probability of failure
+  std::vector<DesignPointRow> design_points;  // reliability: the inputs at each design point
   std::vector<std::string> summary;  // lines for the end of the run's output (e.g. the cusp)
   // The solvers' own words where a search went on regardless (twb run --verbose).
   std::vector<std::string> diagnostics;

@@ -1,0 +1,104 @@
+#include "scene/input_distribution.h"
+
+#include <cmath>
+
+#include <boost/math/distributions/normal.hpp>
+#include <fmt/format.h>
+
+namespace twb {
+
+namespace {
+
+const boost::math::normal kStandard;
+
+// Φ(u) and its complement, each accurate in its own tail.
+double lower_tail(double u) { return boost::math::cdf(kStandard, u); }
+double upper_tail(double u) { return boost::math::cdf(boost::math::complement(kStandard, u)); }
+double density(double u) { return boost::math::pdf(kStandard, u); }
+
+// The lognormal's parameters from the input's own mean m and sd s:
+// σ² = ln(1 + s²/m²), μ = ln m − σ²/2.
+double log_sd(const UncertainInput& in) { return std::sqrt(std::log1p((in.sd / in.mean) * (in.sd / in.mean))); }
+double log_mean(const UncertainInput& in) { return std::log(in.mean) - 0.5 * log_sd(in) * log_sd(in); }
+
+// A truncated normal's standardized bounds.
+struct Cut {
+  double a, b;
+};
+Cut cut(const UncertainInput& in) { return {(in.lower - in.mean) / in.sd, (in.upper - in.mean) / in.sd}; }
+
+// z of the truncated law at u: the mass Φ(u) of the standard normal mapped onto the
+// mass between the bounds, kept in the tail where it is small so that it stays exact.
+double truncated_z(const UncertainInput& in, double u) {
+  const Cut c = cut(in);
+  if (u <= 0.0) {
+    const double p = lower_tail(c.a) + lower_tail(u) * (lower_tail(c.b) - lower_tail(c.a));
+    return boost::math::quantile(kStandard, p);
+  }
+  const double q = upper_tail(c.b) + upper_tail(u) * (upper_tail(c.a) - upper_tail(c.b));
+  return boost::math::quantile(boost::math::complement(kStandard, q));
+}
+
+}  // namespace
+
+double input_at(const UncertainInput& in, double u) {
+  switch (in.distribution) {
+    case InputDistribution::normal:
+      return in.mean + in.sd * u;
+    case InputDistribution::lognormal:
+      return std::exp(log_mean(in) + log_sd(in) * u);
+    case InputDistribution::uniform:
+      return u <= 0.0 ? in.lower + (in.upper - in.lower) * lower_tail(u) : in.upper - (in.upper - in.lower) * upper_tail(u);
+    case InputDistribution::truncated_normal:
+      return in.mean + in.sd * truncated_z(in, u);
+  }
+  return in.mean;
+}
+
+double input_slope(const UncertainInput& in, double u) {
+  switch (in.distribution) {
+    case InputDistribution::normal:
+      return in.sd;
+    case InputDistribution::lognormal:
+      return log_sd(in) * input_at(in, u);
+    case InputDistribution::uniform:
+      return (in.upper - in.lower) * density(u);
+    case InputDistribution::truncated_normal: {
+      // dx/du = sd·(Φ(b) − Φ(a))·φ(u)/φ(z)
+      const Cut c = cut(in);
+      const double mass = u <= 0.0 ? lower_tail(c.b) - lower_tail(c.a) : upper_tail(c.a) - upper_tail(c.b);
+      return in.sd * mass * density(u) / density(truncated_z(in, u));
+    }
+  }
+  return in.sd;
+}
+
+double input_mean(const UncertainInput& in) {
+  switch (in.distribution) {
+    case InputDistribution::uniform:
+      return 0.5 * (in.lower + in.upper);
+    case InputDistribution::truncated_normal: {
+      const Cut c = cut(in);
+      return in.mean + in.sd * (density(c.a) - density(c.b)) / (lower_tail(c.b) - lower_tail(c.a));
+    }
+    default:
+      return in.mean;
+  }
+}
+
+std::string describe(const UncertainInput& in) {
+  switch (in.distribution) {
+    case InputDistribution::normal:
+      return fmt::format("normal(mean {:.6g} {}, sd {:.6g} {})", in.mean, in.unit, in.sd, in.unit);
+    case InputDistribution::lognormal:
+      return fmt::format("lognormal(mean {:.6g} {}, sd {:.6g} {})", in.mean, in.unit, in.sd, in.unit);
+    case InputDistribution::uniform:
+      return fmt::format("uniform({:.6g} {} to {:.6g} {})", in.lower, in.unit, in.upper, in.unit);
+    case InputDistribution::truncated_normal:
+      return fmt::format("truncated_normal(mean {:.6g} {}, sd {:.6g} {}, {:.6g} to {:.6g} {})", in.mean, in.unit, in.sd,
+                         in.unit, in.lower, in.upper, in.unit);
+  }
+  return in.path;
+}
+
+}  // namespace twb

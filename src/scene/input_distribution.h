@@ -1,0 +1,21 @@
+// An uncertain input in the standard normal space a reliability analysis works in
+// (docs/physics.md section 17): independent inputs, each x = F⁻¹(Φ(u)) of its own
+// standard normal u (the Rosenblatt transform of independent variables).
+#pragma once
+
+#include <string>
+
+#include "twb/scene/scene.h"
+
+namespace twb {
+
+// x(u) in the input's SI unit.
+double input_at(const UncertainInput& input, double u);
+// dx/du at u: how the input moves with its standard normal variable (> 0).
+double input_slope(const UncertainInput& input, double u);
+// The input's mean (uniform: the middle; truncated_normal: of the truncated law), SI.
+double input_mean(const UncertainInput& input);
+// "normal(mean 0.5 mrad, sd 0.1 mrad)" style, in SI: for messages and the results.
+std::string describe(const UncertainInput& input);
+
+}  // namespace twb

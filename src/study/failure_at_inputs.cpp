@@ -1,0 +1,278 @@
+#include "study/failure_at_inputs.h"
+
+#include <cmath>
+#include <limits>
+#include <mutex>
+
+#include <fmt/format.h>
+
+#include "model/limit_thresholds.h"
+#include "study/crossing_response.h"
+#include "study/failure_load.h"
+#include "study/fold_response.h"
+#include "study/input_neighbours.h"
+#include "study/parallel.h"
+#include "twb/error_family.h"
+#include "twb/scene/input_error.h"
+#include "twb/scene/scene_inputs.h"
+
+namespace twb {
+
+// A bearing at inputs x with the criteria followed there settled on it.
+struct FailureLoadAtInputs::Settled {
+  std::vector<double> x;
+  std::unique_ptr<BearingModel> model;
+  std::optional<SettledFold> fold;
+  std::vector<SettledCrossing> crossings;
+  // W_fail and what sets it; from a search at x whose failure could not be settled
+  // (distress by bisection alone), its row's load without a way to follow it.
+  double load = std::numeric_limits<double>::infinity();
+  std::string criterion;
+  bool searched = false;
+
+  // W_fail from what is settled.
+  void set_failure() {
+    load = std::numeric_limits<double>::infinity();
+    if (fold && fold->load < load) {
+      load = fold->load;
+      criterion = "distress";
+    }
+    for (const SettledCrossing& c : crossings)
+      if (c.load < load) {
+        load = c.load;
+        criterion = criterion_name(FailureCriterion::crossing(c.kind));
+      }
+  }
+  // What a failure search on `model` found, each criterion settled to the solver's
+  // tolerance. A failure it located that cannot be settled (distress by bisection): its
+  // load, without a way to follow or differentiate it.
+  void take(const DistressSearch& found, std::string& why) {
+    if (found.fold && found.fold_proven) fold = settle_fold(*model, *found.fold, why);
+    for (std::size_t c = 0; c < found.crossing_states.size(); ++c) {
+      const auto& [at_load, u] = found.crossing_states[c];
+      if (u.empty()) continue;
+      if (std::optional<SettledCrossing> settled = settle_crossing(*model, kFailureCriteria[c], at_load, u, why))
+        crossings.push_back(std::move(*settled));
+    }
+    set_failure();
+    if (found.row.failure_load && *found.row.failure_load < load) {
+      load = *found.row.failure_load;
+      criterion = found.row.criterion ? criterion_name(*found.row.criterion) : "distress";
+      fold.reset();
+      crossings.clear();
+    }
+  }
+  // The state where W_fail is set.
+  std::span<const double> failing_state() const {
+    for (const SettledCrossing& c : crossings)
+      if (c.load == load) return c.u;
+    return fold->u;
+  }
+};
+
+FailureLoadAtInputs::FailureLoadAtInputs(const Scene& scene, std::vector<std::string> paths, std::vector<double> scales,
+                                         DistressSearchSettings search, int threads)
+    : scene_(scene), paths_(std::move(paths)), scales_(std::move(scales)), search_(std::move(search)), threads_(threads) {
+  search_.march_past_distress = false;
+  for (const std::string& p : paths_) scene_values_.push_back(scene_input(scene_, p).value);
+}
+
+FailureLoadAtInputs::~FailureLoadAtInputs() = default;
+
+std::unique_ptr<BearingModel> FailureLoadAtInputs::model_at(std::span<const double> x, std::string& why) const {
+  std::vector<std::pair<std::string, double>> set;
+  for (std::size_t i = 0; i < paths_.size(); ++i) set.emplace_back(paths_[i], x[i]);
+  try {
+    return std::make_unique<BearingModel>(with_inputs(scene_, set));
+  } catch (const InputError& e) {
+    why = e.message();
+    return nullptr;
+  }
+}
+
+const DistressSearch& FailureLoadAtInputs::search_scene_inputs(const SearchProgress& progress) {
+  BearingModel model(scene_);
+  scene_search_ = search_distress(model, search_, progress);
+  ++searches_;
+  std::string why;
+  // The search's own model is the scene's: settled again on one kept with the anchor.
+  auto s = std::make_unique<Settled>();
+  s->x = scene_values_;
+  s->model = std::make_unique<BearingModel>(scene_);
+  s->searched = true;
+  s->take(scene_search_, why);
+  anchors_.push_back(std::move(s));
+  return scene_search_;
+}
+
+std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settle_once(const Settled& from,
+                                                                              std::span<const double> x,
+                                                                              std::string& why) const {
+  auto s = std::make_unique<Settled>();
+  s->x.assign(x.begin(), x.end());
+  s->model = model_at(x, why);
+  if (!s->model) return nullptr;
+  if (from.fold) {
+    FoldPoint start;
+    start.u = from.fold->u;
+    start.lambda = from.fold->load;
+    start.null_vector = from.fold->null_vector;
+    s->fold = settle_fold(*s->model, start, why);
+    if (!s->fold) return nullptr;
+    // A fold where the load is least is the hot branch's recovery, not distress.
+    if (!(s->fold->curvature > 0.0)) {
+      why = fmt::format("Newton from the fold at {:.6g} N reached the hot branch's fold at {:.6g} N, not distress",
+                        from.fold->load, s->fold->load);
+      return nullptr;
+    }
+  }
+  for (const SettledCrossing& f : from.crossings) {
+    std::optional<SettledCrossing> settled = settle_crossing(*s->model, f.kind, f.load, f.u, why);
+    if (!settled) return nullptr;
+    s->crossings.push_back(std::move(*settled));
+  }
+  s->set_failure();
+  return s;
+}
+
+std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::walk(const Settled& from, std::span<const double> x,
+                                                                       std::string& why) const {
+  // Newton reaches a few percent of the load from a settled point: the move from `from`
+  // to x is walked in steps, each halved where Newton fails and doubled after it succeeds.
+  std::unique_ptr<Settled> here;
+  const Settled* last = &from;
+  double done = 0.0, step = 1.0;
+  std::vector<double> at(x.size());
+  while (done < 1.0) {
+    step = std::min(step, 1.0 - done);
+    for (std::size_t i = 0; i < x.size(); ++i) at[i] = from.x[i] + (done + step) * (x[i] - from.x[i]);
+    std::string failed;
+    std::unique_ptr<Settled> next = settle_once(*last, at, failed);
+    if (!next) {
+      if (failed.empty() || step < kLeastStep) {
+        why = failed;
+        return nullptr;
+      }
+      step *= 0.5;
+      continue;
+    }
+    done += step;
+    step *= 2.0;
+    if (here && keeping_) remember(std::move(here));
+    here = std::move(next);
+    last = here.get();
+  }
+  return here;
+}
+
+void FailureLoadAtInputs::remember(std::unique_ptr<Settled> s) const {
+  s->model.reset();
+  const std::lock_guard<std::mutex> hold(anchors_lock_);
+  anchors_.push_back(std::move(s));
+}
+
+std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::searched_at(std::span<const double> x,
+                                                                              std::string& why) const {
+  auto s = std::make_unique<Settled>();
+  s->x.assign(x.begin(), x.end());
+  s->model = model_at(x, why);
+  if (!s->model) return nullptr;
+  s->searched = true;
+  const DistressSearch found = search_distress(*s->model, search_, {});
+  ++searches_;
+  if (found.failed) {
+    why = "no steady state at the search's light load: " + found.message;
+    return nullptr;
+  }
+  s->take(found, why);
+  return s;
+}
+
+std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settled_at(std::span<const double> x,
+                                                                             std::string& why) const {
+  const Settled* nearest = nullptr;
+  double least = std::numeric_limits<double>::infinity();
+  std::vector<std::shared_ptr<const Settled>> anchors;
+  {
+    const std::lock_guard<std::mutex> hold(anchors_lock_);
+    anchors = anchors_;
+  }
+  for (const std::shared_ptr<const Settled>& a : anchors) {
+    if (!a->fold && a->crossings.empty()) continue;  // nothing to follow from it
+    double d = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) d += std::pow((x[i] - a->x[i]) / scales_[i], 2);
+    if (d < least) least = d, nearest = a.get();
+  }
+  if (nearest) {
+    std::string moved;
+    if (std::unique_ptr<Settled> s = walk(*nearest, x, moved)) {
+      // A criterion not followed that the failing state has crossed fails the bearing
+      // at a lower load: found by a search.
+      const OperatingLimits limits = OperatingLimits::of(s->model->scene());
+      bool crossed = false;
+      for (LimitKind kind : kFailureCriteria) {
+        bool followed = false;
+        for (const SettledCrossing& c : s->crossings) followed |= c.kind == kind;
+        const std::optional<double> m = followed ? std::nullopt : state_margin(*s->model, s->failing_state(), kind, limits);
+        crossed |= m && *m < 0.0;
+      }
+      if (!crossed) return s;
+    } else if (!model_at(x, why)) {
+      return nullptr;  // outside an input's range: no search either
+    }
+  }
+  return searched_at(x, why);
+}
+
+std::optional<FailureAtInputs> FailureLoadAtInputs::at(std::span<const double> x, bool gradient, std::string& why) const {
+  std::unique_ptr<Settled> s = settled_at(x, why);
+  if (!s) return std::nullopt;
+  FailureAtInputs out;
+  out.load = s->load;
+  out.criterion = s->criterion;
+  out.searched = s->searched;
+  const bool followable = s->fold || !s->crossings.empty();
+  if (!gradient) {
+    if (keeping_ && followable) remember(std::move(s));
+    return out;
+  }
+  if (!std::isfinite(s->load)) {
+    why = fmt::format("no failure up to {:.6g} N there, so no gradient", search_.load_end);
+    return std::nullopt;
+  }
+  if (!s->fold && s->crossings.empty()) {
+    why = "the failure there was located by bisection only (no fold to follow), so no gradient";
+    return std::nullopt;
+  }
+  const SettledCrossing* crossing = nullptr;
+  for (const SettledCrossing& c : s->crossings)
+    if (c.load == s->load) crossing = &c;
+  out.gradient.assign(paths_.size(), 0.0);
+  std::vector<std::string> failed(paths_.size());
+  std::mutex solve_lock;
+  run_in_parallel(paths_.size(), threads_, [&](std::size_t i) {
+    try {
+      InputNeighbours nb = input_neighbours(*s->model, scene_input(s->model->scene(), paths_[i]));
+      out.gradient[i] = crossing ? crossing_load_derivative(nb, *crossing, solve_lock) : fold_load_derivative(nb, *s->fold);
+      if (!std::isfinite(out.gradient[i])) failed[i] = paths_[i] + ": the derivative is not finite";
+    } catch (const InternalError&) {
+      throw;
+    } catch (const std::exception& e) {
+      failed[i] = paths_[i] + ": " + e.what();
+    }
+  });
+  for (const std::string& f : failed)
+    if (!f.empty()) {
+      why = "W_fail's derivative in " + f;
+      return std::nullopt;
+    }
+  if (keeping_) remember(std::move(s));
+  return out;
+}
+
+void FailureLoadAtInputs::keep(std::span<const double> x) {
+  std::string why;
+  if (std::unique_ptr<Settled> s = settled_at(x, why); s && (s->fold || !s->crossings.empty())) remember(std::move(s));
+}
+
+}  // namespace twb

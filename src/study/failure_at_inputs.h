@@ -1,0 +1,90 @@
+// The failure load at inputs other than the scene's (study type reliability,
+// docs/physics.md section 17): W_fail(x), the least load of the criteria the failure
+// search located at the scene's own inputs, each followed to x by Newton from the
+// nearest point already settled (the fold on the minimally augmented system, a limit's
+// crossing on its margin's root), on the bearing built from the scene read again with x.
+// Where Newton cannot reach x in one move, the move is halved (up to three times);
+// where it still cannot, or where a criterion not crossed at the scene's inputs is
+// crossed below the followed one at x, the failure search runs again at x. ∇W_fail by
+// the left null vector (the fold) or the margin's slopes (a crossing), as the
+// sensitivity study takes them.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/bearing_model.h"
+#include "solver/fold_location.h"
+#include "study/distress_search.h"
+#include "twb/scene/scene.h"
+
+namespace twb {
+
+// The failure load at x: `load` (+∞ where nothing fails up to the search's load_end),
+// the criterion setting it (distress.csv's words), and with a gradient dW_fail/dx_i in
+// the inputs' SI units.
+struct FailureAtInputs {
+  double load = 0.0;
+  std::string criterion;
+  std::vector<double> gradient;
+  bool searched = false;  // found by a failure search at x, not by Newton from a settled point
+};
+
+class FailureLoadAtInputs {
+ public:
+  // `paths`: the inputs x stands for, in order; `scales` their typical moves (SI), by
+  // which the nearest settled point is chosen. The scene's study is not read. A gradient
+  // is taken over `threads` threads.
+  FailureLoadAtInputs(const Scene& scene, std::vector<std::string> paths, std::vector<double> scales,
+                      DistressSearchSettings search, int threads);
+  ~FailureLoadAtInputs();
+
+  // The search at the scene's own inputs; its row (the nominal failure), and whether it
+  // located a failure below load_end.
+  const DistressSearch& search_scene_inputs(const SearchProgress& progress);
+  std::span<const double> scene_values() const { return scene_values_; }
+
+  // W_fail at x; none, with why, where x is outside an input's range or no state can be
+  // settled there. Safe to call from several threads at once.
+  std::optional<FailureAtInputs> at(std::span<const double> x, bool gradient, std::string& why) const;
+
+  // Settle at x and keep it as a point later moves start from (e.g. the design point).
+  void keep(std::span<const double> x);
+  // Whether every point settled is kept too (each later move then starts nearer): for a
+  // sequence of evaluations on one thread (FORM), not for samples spread over threads,
+  // whose results must not depend on which thread settled what first.
+  void keep_every_point(bool keep) { keeping_ = keep; }
+
+  long searches() const { return searches_; }  // failure searches run (the scene's one included)
+
+ private:
+  struct Settled;  // a model at some x with its criteria settled
+  std::unique_ptr<Settled> settle_once(const Settled& from, std::span<const double> x, std::string& why) const;
+  std::unique_ptr<Settled> walk(const Settled& from, std::span<const double> x, std::string& why) const;
+  void remember(std::unique_ptr<Settled> s) const;
+  std::unique_ptr<Settled> searched_at(std::span<const double> x, std::string& why) const;
+  std::unique_ptr<Settled> settled_at(std::span<const double> x, std::string& why) const;
+  std::unique_ptr<BearingModel> model_at(std::span<const double> x, std::string& why) const;
+
+  Scene scene_;
+  std::vector<std::string> paths_;
+  std::vector<double> scene_values_, scales_;
+  DistressSearchSettings search_;
+  int threads_ = 1;
+  DistressSearch scene_search_;
+  // The points moves start from: the scene's inputs, and while keeping, every point
+  // settled on the way.
+  mutable std::vector<std::shared_ptr<const Settled>> anchors_;
+  mutable std::mutex anchors_lock_;
+  bool keeping_ = false;
+  static constexpr double kLeastStep = 1.0 / 64.0;  // of a move: below it, Newton is given up
+  mutable std::atomic<long> searches_{0};
+};
+
+}  // namespace twb

@@ -1,0 +1,71 @@
+#include "study/importance_sampling.h"
+
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+
+#include <boost/math/distributions/normal.hpp>
+
+#include "study/parallel.h"
+
+namespace twb {
+
+std::vector<double> standard_normal_sample(std::uint64_t seed, std::uint64_t i, std::size_t dimension) {
+  // mt19937_64's sequence is fixed by the standard; the uniform from its top 53 bits and
+  // Boost's quantile (not std::normal_distribution, whose algorithm is the library's
+  // choice) keep the variates the same on every platform.
+  std::seed_seq sequence{std::uint32_t(seed), std::uint32_t(seed >> 32), std::uint32_t(i), std::uint32_t(i >> 32)};
+  std::mt19937_64 generator(sequence);
+  const boost::math::normal standard;
+  std::vector<double> u(dimension);
+  for (double& x : u) x = boost::math::quantile(standard, (double(generator() >> 11) + 0.5) * 0x1.0p-53);
+  return u;
+}
+
+SamplingEstimate importance_sampling(const FailureIndicator& fails, std::span<const double> centre,
+                                     const SamplingSettings& settings) {
+  const std::size_t n = centre.size();
+  const double shift = 0.5 * std::inner_product(centre.begin(), centre.end(), centre.begin(), 0.0);
+  SamplingEstimate e;
+  double sum = 0.0, sum_squares = 0.0;  // of the weighted indicator
+  const int batch = std::max(1, settings.batch);
+  while (e.samples < settings.max_samples) {
+    const int count = int(std::min<long>(batch, settings.max_samples - e.samples));
+    std::vector<std::optional<double>> weighted(static_cast<std::size_t>(count));
+    run_in_parallel(std::size_t(count), settings.threads, [&](std::size_t k) {
+      std::vector<double> u = standard_normal_sample(settings.seed, std::uint64_t(e.samples) + k, n);
+      for (std::size_t j = 0; j < n; ++j) u[j] += centre[j];
+      const std::optional<bool> failed = fails(u);
+      if (!failed) return;
+      // φ(u)/φ(u − u*) = exp(|u*|²/2 − u·u*)
+      weighted[k] = *failed ? std::exp(shift - std::inner_product(u.begin(), u.end(), centre.begin(), 0.0))
+                            : 0.0;
+    });
+    for (const std::optional<double>& w : weighted) {
+      ++e.samples;
+      if (!w) {
+        ++e.unresolved;
+        continue;
+      }
+      if (*w > 0.0) ++e.failures;
+      sum += *w;
+      sum_squares += *w * *w;
+    }
+    const double resolved = double(e.samples - e.unresolved);
+    if (resolved > 0.0) {
+      e.probability = sum / resolved;
+      const double variance = std::max(0.0, sum_squares / resolved - e.probability * e.probability) / resolved;
+      e.cov = e.probability > 0.0 ? std::sqrt(variance) / e.probability : std::numeric_limits<double>::infinity();
+      e.low = std::max(0.0, e.probability - 1.96 * std::sqrt(variance));
+      e.high = e.probability + 1.96 * std::sqrt(variance);
+    }
+    if (e.samples >= settings.min_samples && e.cov <= settings.cov) {
+      e.reached = true;
+      break;
+    }
+  }
+  return e;
+}
+
+}  // namespace twb

@@ -1,0 +1,211 @@
+#include "study/reliability.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <mutex>
+
+#include <fmt/format.h>
+
+#include "scene/scene_names.h"
+#include "study/failure_at_inputs.h"
+#include "study/failure_load.h"
+#include "study/first_order_reliability.h"
+#include "study/importance_sampling.h"
+#include "scene/input_distribution.h"
+#include "study/study_support.h"
+
+namespace twb {
+
+namespace {
+
+// Where the inputs stand at a design point, one row each.
+void add_design_point(StudyOutcome& out, const char* method, const DesignPoint& p,
+                      const std::vector<UncertainInput>& inputs) {
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const UncertainInput& in = inputs[i];
+    DesignPointRow& r = out.design_points.emplace_back();
+    r.method = method;
+    r.load = p.load;
+    r.probability = p.probability;
+    r.parameter = in.path;
+    r.parameter_unit = in.unit;
+    r.distribution = std::string(scene_io::kInputDistributions.name(in.distribution));
+    const bool centred = in.distribution != InputDistribution::uniform;
+    const bool bounded = in.distribution == InputDistribution::uniform || in.distribution == InputDistribution::truncated_normal;
+    if (centred) r.mean = in.mean, r.sd = in.sd;
+    if (bounded) r.lower = in.lower, r.upper = in.upper;
+    r.design_value = input_at(in, p.u[i]);
+    r.u = p.u[i];
+    r.alpha = p.alpha[i];
+    r.importance = p.alpha[i] * p.alpha[i];
+    r.derivative = p.gradient[i] / input_slope(in, p.u[i]);
+  }
+}
+
+// "geometry.gear.tilt 0.000731 rad (importance 0.81), ...", by importance.
+std::string design_point_words(const DesignPoint& p, const std::vector<UncertainInput>& inputs) {
+  std::vector<std::size_t> order(inputs.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::abs(p.alpha[a]) > std::abs(p.alpha[b]);
+  });
+  std::string words;
+  for (std::size_t i : order)
+    words += fmt::format("{}{} {:.4g} {} (importance {:.2f})", words.empty() ? "" : ", ", inputs[i].path,
+                         input_at(inputs[i], p.u[i]), inputs[i].unit, p.alpha[i] * p.alpha[i]);
+  return words;
+}
+
+}  // namespace
+
+void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads) {
+  const Scene& scene = model.scene();
+  const Study& st = scene.study;
+  const std::vector<UncertainInput>& inputs = st.uncertain_inputs;
+  const std::size_t n = inputs.size();
+  std::vector<std::string> paths;
+  std::vector<double> scales;
+  for (const UncertainInput& in : inputs) {
+    paths.push_back(in.path);
+    scales.push_back(input_slope(in, 0.0));
+  }
+  DistressSearchSettings settings;
+  settings.load_start = st.load_start;
+  settings.load_end = st.load_end;
+  settings.bracket_width = st.bracket_width;
+  FailureLoadAtInputs failure(scene, paths, scales, settings, threads);
+
+  // The failure search at the scene's own inputs: where every move starts from.
+  const DistressSearch& found = failure.search_scene_inputs(progress);
+  add_search_work(out.timings, found.counts);
+  out.distress.push_back(found.row);
+  const double load = model.load(), speed = model.speed();
+  if (!found.row.failure_load) {
+    out.summary.push_back(fmt::format("reliability: the scene's inputs do not fail up to {:.6g} N ({}): no failure "
+                                      "load to take the probability of; widen load_end",
+                                      st.load_end, found.row.method));
+    return;
+  }
+
+  // W_fail at the inputs x(u), and its gradient in u.
+  std::atomic<long> evaluations{0};
+  const FailureLoadFunction h = [&](std::span<const double> u, bool gradient,
+                                    std::string& why) -> std::optional<FailureLoadValue> {
+    ++evaluations;
+    std::vector<double> x(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = input_at(inputs[i], u[i]);
+    const std::optional<FailureAtInputs> f = failure.at(x, gradient, why);
+    if (!f) return std::nullopt;
+    FailureLoadValue v{f->load, {}};
+    for (std::size_t i = 0; i < f->gradient.size(); ++i) v.gradient.push_back(f->gradient[i] * input_slope(inputs[i], u[i]));
+    return v;
+  };
+
+  // FORM at the operating load.
+  if (progress) progress(fmt::format("reliability: FORM at {:.6g} N", load));
+  failure.keep_every_point(true);
+  const DesignPoint form = design_point(h, n, load);
+  ReliabilityRow& row = out.reliability.emplace_back();
+  row.method = "form";
+  row.load = load;
+  row.speed = speed;
+  row.converged = form.converged;
+  row.evaluations = form.evaluations;
+  if (!form.u.empty()) {
+    row.probability = form.probability;
+    row.beta = form.beta;
+    add_design_point(out, "form", form, inputs);
+  }
+  if (!form.converged) {
+    out.summary.push_back("reliability: FORM did not find the design point: " + form.why);
+    if (form.u.empty()) out.reliability.pop_back();
+    return;
+  }
+  out.summary.push_back(fmt::format("reliability at {:.6g} N, {:.6g} rad/s: P_f = {:.3g} by FORM (β = {:.3f}; W_fail "
+                                    "{:.6g} N at the scene's inputs, {} failure loads evaluated)",
+                                    load, speed, form.probability, form.beta, *found.row.failure_load, form.evaluations));
+  out.summary.push_back("reliability: design point: " + design_point_words(form, inputs));
+  std::vector<double> x_star(n);
+  for (std::size_t i = 0; i < n; ++i) x_star[i] = input_at(inputs[i], form.u[i]);
+  failure.keep(x_star);
+
+  // The Monte Carlo check round the design point: its samples start from the points
+  // FORM settled, none from each other's.
+  failure.keep_every_point(false);
+  if (st.max_samples > 0) {
+    if (progress) progress(fmt::format("reliability: importance sampling to a coefficient of variation of {:.3g}", st.sampling_cov));
+    std::mutex first_lock;
+    std::string first_why;
+    const long before = evaluations;
+    const FailureIndicator fails = [&](std::span<const double> u) -> std::optional<bool> {
+      std::string why;
+      const std::optional<FailureLoadValue> v = h(u, false, why);
+      if (!v) {
+        const std::lock_guard<std::mutex> hold(first_lock);
+        if (first_why.empty()) first_why = why;
+        return std::nullopt;
+      }
+      return v->load <= load;
+    };
+    SamplingSettings sampling;
+    sampling.cov = st.sampling_cov;
+    sampling.max_samples = st.max_samples;
+    sampling.min_samples = std::min(100, st.max_samples);
+    sampling.seed = std::uint64_t(st.seed);
+    sampling.threads = threads;
+    const SamplingEstimate e = importance_sampling(fails, form.u, sampling);
+    ReliabilityRow& mc = out.reliability.emplace_back();
+    mc.method = "monte_carlo";
+    mc.load = load;
+    mc.speed = speed;
+    mc.probability = e.probability;
+    if (e.failures > 0) mc.cov = e.cov;
+    mc.low = e.low;
+    mc.high = e.high;
+    mc.samples = e.samples;
+    mc.failures = e.failures;
+    mc.unresolved = e.unresolved;
+    mc.evaluations = evaluations - before;
+    mc.converged = e.reached;
+    out.summary.push_back(fmt::format(
+        "reliability: Monte Carlo (importance sampling round the design point): P_f = {:.3g}, 95 % interval [{:.3g}, "
+        "{:.3g}], coefficient of variation {:.3g} from {} samples ({} failed{}){}",
+        e.probability, e.low, e.high, e.cov, e.samples, e.failures,
+        e.unresolved ? fmt::format(", {} unresolved: {}", e.unresolved, first_why) : "",
+        e.reached ? "" : fmt::format("; the coefficient of variation {:.3g} was not reached in {} samples", st.sampling_cov,
+                                     st.max_samples)));
+    if (e.failures > 0 && (form.probability < e.low || form.probability > e.high))
+      out.summary.push_back("reliability: FORM's probability lies outside the Monte Carlo interval: W_fail bends between "
+                            "the mean inputs and the design point; trust the Monte Carlo estimate");
+  }
+
+  // The loads at the failure probabilities asked for.
+  failure.keep_every_point(true);
+  for (const double p : st.probabilities) {
+    if (progress) progress(fmt::format("reliability: the load at P_f = {:.3g}", p));
+    const DesignPoint inverse = inverse_design_point(h, n, p);
+    if (!inverse.converged) {
+      out.summary.push_back(fmt::format("reliability: no load found at P_f = {:.3g}: {}", p, inverse.why));
+      continue;
+    }
+    ReliabilityRow& r = out.reliability.emplace_back();
+    r.method = "inverse_form";
+    r.load = inverse.load;
+    r.speed = speed;
+    r.probability = p;
+    r.beta = inverse.beta;
+    r.evaluations = inverse.evaluations;
+    r.converged = true;
+    add_design_point(out, "inverse_form", inverse, inputs);
+    out.summary.push_back(fmt::format("reliability: the load at P_f = {:.3g} is {:.6g} N (inverse FORM, β = {:.3f}); "
+                                      "design point: {}",
+                                      p, inverse.load, inverse.beta, design_point_words(inverse, inputs)));
+  }
+  if (failure.searches() > 1)
+    out.summary.push_back(fmt::format("reliability: {} of the failure loads needed a failure search of their own (Newton "
+                                      "could not follow one from a settled point)",
+                                      failure.searches() - 1));
+}
+
+}  // namespace twb
