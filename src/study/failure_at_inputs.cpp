@@ -18,6 +18,19 @@
 
 namespace twb {
 
+namespace {
+
+// The fold system's difference step along a move, as a fraction of it: the centred
+// difference's truncation (ε² of the second derivative) far below the prediction's own
+// error (the move's square).
+constexpr double kTangentStep = 1e-3;
+
+// Newton from a predicted fold converges in a few iterations (quadratically from the
+// prediction's O(|d|²) error); one that needs more is better spent on a shorter move.
+constexpr int kFollowIterations = 12;
+
+}  // namespace
+
 // A bearing at inputs x with the criteria followed there settled on it.
 struct FailureLoadAtInputs::Settled {
   std::vector<double> x;
@@ -113,11 +126,24 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settle_once(c
   s->model = model_at(x, why);
   if (!s->model) return nullptr;
   if (from.fold) {
+    // Newton on the fold system from the fold predicted along the move's tangent, else
+    // from the settled fold itself.
     FoldPoint start;
     start.u = from.fold->u;
     start.lambda = from.fold->load;
     start.null_vector = from.fold->null_vector;
-    s->fold = settle_fold(*s->model, start, why);
+    std::vector<double> behind(x.size()), ahead(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      behind[i] = from.x[i] - kTangentStep * (x[i] - from.x[i]);
+      ahead[i] = from.x[i] + kTangentStep * (x[i] - from.x[i]);
+    }
+    std::string unused;
+    const std::unique_ptr<BearingModel> at_from = model_at(from.x, unused), at_behind = model_at(behind, unused),
+                                        at_ahead = model_at(ahead, unused);
+    if (at_from && at_behind && at_ahead)
+      if (std::optional<FoldPoint> predicted = predicted_fold(*at_from, *at_behind, *at_ahead, kTangentStep, *from.fold))
+        start = std::move(*predicted);
+    s->fold = settle_fold(*s->model, start, why, kFollowIterations);
     if (!s->fold) return nullptr;
     // A fold where the load is least is the hot branch's recovery, not distress.
     if (!(s->fold->curvature > 0.0)) {

@@ -5,6 +5,7 @@
 
 #include "solver/continuation_metric.h"
 #include "solver/fold_system.h"
+#include "solver/sparse_lu.h"
 #include "study/study_support.h"
 
 namespace twb {
@@ -15,8 +16,10 @@ double dot(std::span<const double> a, std::span<const double> b) { return std::i
 
 }  // namespace
 
-std::optional<SettledFold> settle_fold(BearingModel& model, const FoldPoint& found, std::string& why) {
-  const FoldPoint fold = locate_fold_near(model, found.u, found.lambda, found.null_vector, newton_settings(model.scene()));
+std::optional<SettledFold> settle_fold(BearingModel& model, const FoldPoint& found, std::string& why, int max_iterations) {
+  NewtonSettings newton = newton_settings(model.scene());
+  if (max_iterations > 0) newton.max_iterations = max_iterations;
+  const FoldPoint fold = locate_fold_near(model, found.u, found.lambda, found.null_vector, newton);
   if (fold.u.empty()) {
     why = "the fold could not be located to the solver's tolerance: " + fold.message;
     return std::nullopt;
@@ -45,6 +48,41 @@ std::optional<SettledFold> settle_fold(BearingModel& model, const FoldPoint& fou
     return std::nullopt;
   }
   return out;
+}
+
+std::optional<FoldPoint> predicted_fold(BearingModel& at, BearingModel& behind, BearingModel& ahead, double epsilon,
+                                        const SettledFold& fold) {
+  const ParameterScope at_fold(at, fold.load);
+  std::vector<double> f_load(fold.u.size());
+  at.parameter_derivative(fold.u, f_load);
+  const ContinuationMetric metric = ContinuationMetric::of(at, std::abs(fold.load));
+  std::vector<double> x = fold.u;
+  x.push_back(fold.load / metric.parameter_scale());
+  // G at the fold on each bearing, with one set of borders: one function of t.
+  auto residual = [&](BearingModel& m, std::span<double> jacobian) {
+    const ParameterScope keep(m);
+    const FoldSystem system(m, metric, f_load, fold.null_vector);
+    std::vector<double> g(x.size());
+    system.evaluate(x, g, jacobian);
+    return g;
+  };
+  const FoldSystem system(at, metric, f_load, fold.null_vector);
+  std::vector<double> g(x.size()), jacobian(std::size_t(system.pattern().nnz()));
+  system.evaluate(x, g, jacobian);
+  SparseLu lu(system.pattern(), SparseLu::Ordering::minimum_degree);
+  if (!lu.factor(jacobian)) return std::nullopt;
+  const std::vector<double> g_ahead = residual(ahead, {}), g_behind = residual(behind, {});
+  std::vector<double> step(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) step[i] = (g_ahead[i] - g_behind[i]) / (2.0 * epsilon);
+  lu.solve(step);  // −(u', μ')
+  for (const double s : step)
+    if (!std::isfinite(s)) return std::nullopt;
+  FoldPoint predicted;
+  predicted.u.resize(fold.u.size());
+  for (std::size_t i = 0; i < fold.u.size(); ++i) predicted.u[i] = x[i] - step[i];
+  predicted.lambda = (x.back() - step.back()) * metric.parameter_scale();
+  predicted.null_vector = fold.null_vector;
+  return predicted;
 }
 
 double fold_load_derivative(InputNeighbours& n, const SettledFold& fold) {
