@@ -141,7 +141,8 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settle_once(c
     const std::unique_ptr<BearingModel> at_from = model_at(from.x, unused), at_behind = model_at(behind, unused),
                                         at_ahead = model_at(ahead, unused);
     if (at_from && at_behind && at_ahead)
-      if (std::optional<FoldPoint> predicted = predicted_fold(*at_from, *at_behind, *at_ahead, kTangentStep, *from.fold))
+      if (std::optional<FoldPoint> predicted = predicted_fold(*at_from, *at_behind, *at_ahead, kTangentStep, *from.fold);
+          predicted && predicted->lambda > 0.0)  // (a long move's line may cross zero load)
         start = std::move(*predicted);
     s->fold = settle_fold(*s->model, start, why, kFollowIterations);
     if (!s->fold) return nullptr;
@@ -173,7 +174,14 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::walk(const Se
     step = std::min(step, 1.0 - done);
     for (std::size_t i = 0; i < x.size(); ++i) at[i] = from.x[i] + (done + step) * (x[i] - from.x[i]);
     std::string failed;
-    std::unique_ptr<Settled> next = settle_once(*last, at, failed);
+    std::unique_ptr<Settled> next;
+    try {
+      next = settle_once(*last, at, failed);
+    } catch (const InternalError&) {
+      throw;  // a bug: no shorter step may hide it
+    } catch (const std::exception& e) {
+      failed = e.what();  // a load or state a step cannot take: a shorter one may
+    }
     if (!next) {
       if (failed.empty() || step < kLeastStep) {
         why = failed;

@@ -83,7 +83,9 @@ class FailureLoadAtInputs {
   mutable std::vector<std::shared_ptr<const Settled>> anchors_;
   mutable std::mutex anchors_lock_;
   bool keeping_ = false;
-  static constexpr double kLeastStep = 1.0 / 64.0;  // of a move: below it, Newton is given up
+  // Of a move: below it Newton is given up for a failure search at the target, which costs
+  // about as much as three failed steps (a wall of non-smoothness, a cusp).
+  static constexpr double kLeastStep = 0.25;
   mutable std::atomic<long> searches_{0};
 };
 
