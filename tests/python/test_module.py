@@ -162,6 +162,18 @@ class Scenes(unittest.TestCase):
         self.assertIn("by the flash temperature", failure[0])
         self.assertEqual(list(r.distress["criterion"]), ["flash_temperature"])
 
+    def test_reliability_tables(self):
+        """A reliability study's answers reach Python as its tables: FORM's probability and
+        the design point, each input's importance summing to one (sampling left out:
+        the C++ test checks it)."""
+        r = twb.run(os.path.join(ROOT, "configs", "studies", "reliability.yaml"),
+                    overrides=dict(COARSE, **{"study.monte_carlo": "{max_samples: 0}", "study.probabilities": "[]"}))
+        self.assertEqual(list(r.reliability["method"]), ["form"], r.summary)
+        self.assertEqual(r.reliability["converged"][0], 1)
+        self.assertGreater(r.reliability["probability"][0], 0.0)
+        self.assertEqual(len(r.design_point["parameter"]), 4)
+        self.assertAlmostEqual(sum(r.design_point["importance"]), 1.0, delta=1e-12)
+
     def test_sources_of_an_extending_scene(self):
         scene = twb.Scene(os.path.join(ROOT, "configs", "studies", "distress_map.yaml"))
         files = {os.path.basename(f) for _, f, _ in scene.sources()}

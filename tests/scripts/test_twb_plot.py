@@ -484,6 +484,43 @@ class TwbPlotTest(unittest.TestCase):
         self.assertEqual(broken.returncode, 2)
         self.assertIn("sensitivity.csv: line 3", broken.stderr)
 
+    def test_reliability_figure(self):
+        """reliability.csv and design_point.csv of a reliability study: the probability of
+        failure against load (FORM, inverse FORM, the sampled estimate with its interval)
+        and the importances at FORM's design point; a malformed number is located."""
+        d = self.results_dir("reliability")
+        rows = ["method,load_N,speed_rad_s,probability,beta,cov,low,high,samples,failures,unresolved,evaluations,converged",
+                "form,150,545,0.16,0.994,,,,,,,4,1",
+                "monte_carlo,150,545,0.154,,0.098,0.124,0.184,150,72,0,150,1",
+                "inverse_form,102.08,545,0.001,3.09,,,,,,,9,1",
+                "inverse_form,114.5,545,0.01,2.326,,,,,,,7,1"]
+        design = ["method,load_N,probability,parameter,parameter_unit,distribution,mean,sd,lower,upper,"
+                  "design_value,u,alpha,importance,derivative",
+                  "form,150,0.16,geometry.gear.tilt,rad,truncated_normal,0.002,0.0003,0.001,0.003,0.0022,0.70,0.70,0.49,-79417",
+                  "form,150,0.16,materials.washer.conductivity,W/(m K),uniform,,,50,70,60.1,0.01,0.01,0.0001,0.3",
+                  "inverse_form,102.08,0.001,geometry.gear.tilt,rad,truncated_normal,0.002,0.0003,0.001,0.003,0.0027,2.2,0.71,0.5,-80000"]
+        write(os.path.join(d, "reliability.csv"), rows)
+        write(os.path.join(d, "design_point.csv"), design)
+        result = plot(d, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        out_dir = os.path.join(d, "figures")
+        self.assert_figures(out_dir, ("reliability",), formats=("svg",))
+        text = self.svg_text(os.path.join(out_dir, "reliability.svg"))
+        for label in ("Probability of failure at 545 rad/s", "150 samples", "β = 0.99", "geometry.gear.tilt",
+                      "materials.washer.conductivity"):
+            self.assertIn(label, text)
+        read = tp.read_reliability(os.path.join(d, "reliability.csv"))
+        self.assertEqual([r["method"] for r in read], ["form", "monte_carlo", "inverse_form", "inverse_form"])
+        self.assertIsNone(read[0]["cov"])
+        self.assertEqual(read[1]["samples"], 150)
+        points = tp.read_design_point(os.path.join(d, "design_point.csv"))
+        self.assertIsNone(points[1]["mean"])
+        self.assertEqual(points[1]["parameter_unit"], "W/(m K)")
+        write(os.path.join(d, "reliability.csv"), rows[:2] + ["monte_carlo,150,545,oops,,0.1,0.1,0.2,150,72,0,150,1"])
+        broken = plot(d, "--format", "svg")
+        self.assertEqual(broken.returncode, 2)
+        self.assertIn("reliability.csv: line 3", broken.stderr)
+
     def test_sliding_comparison(self):
         d = os.path.join(self.tmp, "sliding")
         os.makedirs(d)

@@ -23,11 +23,12 @@ from .cli import main  # noqa: E402
 from .fields import default_state, make_field_maps, select_fields  # noqa: E402
 from .figures import make_figures  # noqa: E402
 from .runs import Data, Run, merge, read_run  # noqa: E402
-from .tables import (DistressRow, InputError, fields_path, read_distress, read_fields,  # noqa: E402
-                     read_fold_curve, read_sensitivity, read_sliding, read_states, read_trajectory)
+from .tables import (DistressRow, InputError, fields_path, read_design_point, read_distress,  # noqa: E402
+                     read_fields, read_fold_curve, read_reliability, read_sensitivity, read_sliding,
+                     read_states, read_trajectory)
 
 __all__ = [
     "Data", "DistressRow", "InputError", "Run", "default_state", "fields_path", "main",
-    "make_field_maps", "make_figures", "merge", "read_distress", "read_fields", "read_fold_curve",
-    "read_run", "read_sensitivity", "read_sliding", "read_states", "read_trajectory", "select_fields",
+    "make_field_maps", "make_figures", "merge", "read_design_point", "read_distress", "read_fields",
+    "read_fold_curve", "read_reliability", "read_run", "read_sensitivity", "read_sliding", "read_states", "read_trajectory", "select_fields",
 ]

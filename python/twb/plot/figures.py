@@ -5,6 +5,7 @@ and what cannot be drawn is said on stderr, so a missing figure is never a silen
 import sys
 
 from .distress import figure_distress_map, figure_fold_curve
+from .reliability import figure_failure_probability
 from .sensitivity import figure_tornado
 from .sliding import figure_sliding
 from .states import (LOAD_FIGURES, figure_contact_vs_hmin, figure_stribeck, figure_stribeck_by_friction,
@@ -57,6 +58,13 @@ def make_figures(data, out_dir, formats):
         stem = "sensitivity" if len(data.sensitivities) == 1 else f"sensitivity_{k + 1}_{name}"
         if fig is None:
             print(f"twb_plot: note: {name}: sensitivity.csv has no elasticities to draw", file=sys.stderr)
+        else:
+            save(fig, out_dir, stem, formats, written)
+    for k, (name, rows, design) in enumerate(data.reliabilities):
+        fig = figure_failure_probability(rows, design)
+        stem = "reliability" if len(data.reliabilities) == 1 else f"reliability_{k + 1}_{name}"
+        if fig is None:
+            print(f"twb_plot: note: {name}: reliability.csv has no probability to draw", file=sys.stderr)
         else:
             save(fig, out_dir, stem, formats, written)
     return written

@@ -11,8 +11,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .style import Style, parameter_label, speed_key, speed_label
-from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_distress, read_fold_curve,
-                     read_sensitivity, read_sliding, read_states, read_trajectory, STATE_ERROR_COLUMNS)
+from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_design_point, read_distress,
+                     read_fold_curve, read_reliability, read_sensitivity, read_sliding, read_states,
+                     read_trajectory, STATE_ERROR_COLUMNS)
 
 
 def friction_setting(path):
@@ -46,6 +47,8 @@ class Run:
     has_fields: bool = False
     fold_curve: object = None  # (parameter column, rows) of fold_curve.csv
     sensitivity: list = field(default_factory=list)  # rows of sensitivity.csv
+    reliability: list = field(default_factory=list)  # rows of reliability.csv
+    design_point: list = field(default_factory=list)  # rows of design_point.csv
 
 
 def read_run(directory):
@@ -72,6 +75,12 @@ def read_run(directory):
     sensitivity_path = os.path.join(directory, "sensitivity.csv")
     if os.path.isfile(sensitivity_path):
         run.sensitivity = read_sensitivity(sensitivity_path)
+    reliability_path = os.path.join(directory, "reliability.csv")
+    if os.path.isfile(reliability_path):
+        run.reliability = read_reliability(reliability_path)
+        design_path = os.path.join(directory, "design_point.csv")
+        if os.path.isfile(design_path):
+            run.design_point = read_design_point(design_path)
     run.friction = friction_setting(os.path.join(directory, "run.json"))
     run.has_fields = os.path.isdir(os.path.join(directory, "fields"))
     return run
@@ -89,6 +98,8 @@ class Data:
     speed_style: Style
     fold_curves: list = field(default_factory=list)  # (run name, parameter column, rows)
     sensitivities: list = field(default_factory=list)  # (run name, rows of sensitivity.csv)
+    # (run name, rows of reliability.csv, rows of design_point.csv)
+    reliabilities: list = field(default_factory=list)
     rpm: bool = False       # speeds drawn in rpm
 
 
@@ -145,4 +156,5 @@ def merge(runs):
     data = Data(states, friction, parameters, distress, trajectories, sliding, Style(keys))
     data.fold_curves = [(r.name,) + r.fold_curve for r in runs if r.fold_curve is not None]
     data.sensitivities = [(r.name, r.sensitivity) for r in runs if r.sensitivity]
+    data.reliabilities = [(r.name, r.reliability, r.design_point) for r in runs if r.reliability]
     return data

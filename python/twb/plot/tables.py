@@ -60,6 +60,10 @@ DISTRESS_ERROR_COLUMNS = _written("distress", ("W_d_fine_N", "W_d_extrapolated_N
 SLIDING_COLUMNS = tuple(_TABLES["sliding"]["columns"])
 SENSITIVITY_COLUMNS = tuple(_TABLES["sensitivity"]["columns"])
 SENSITIVITY_TEXTS = tuple(_TABLES["sensitivity"]["texts"])
+RELIABILITY_COLUMNS = tuple(_TABLES["reliability"]["columns"])
+RELIABILITY_TEXTS = tuple(_TABLES["reliability"]["texts"])
+DESIGN_POINT_COLUMNS = tuple(_TABLES["design_point"]["columns"])
+DESIGN_POINT_TEXTS = tuple(_TABLES["design_point"]["texts"])
 # The columns twb adds after the speed when a study runs several configurations: the
 # value of its second parameter, and the film that slides.
 PARAMETER_COLUMNS = tuple(_DEFINITION["run_parameters"])
@@ -265,21 +269,41 @@ def read_sliding(path):
     return rows
 
 
-def read_sensitivity(path):
-    """sensitivity.csv: one dict per (quantity, parameter) row; elasticity None where
-    twb left it empty (a quantity or an input of zero)."""
+def _read_rows(path, columns, texts, what, optional):
+    """One dict per row of a table twb writes: its text columns as text, the others
+    numbers (None where empty and the column is optional)."""
     records = _records(path)
-    header = _header(path, records, SENSITIVITY_COLUMNS, "sensitivity.csv")
+    header = _header(path, records, columns, what)
     rows = []
     for line, fields in records:
         _check_width(path, line, fields, header)
         row = {}
-        for c in SENSITIVITY_COLUMNS:
+        for c in columns:
             text = fields[header.index(c)]
-            row[c] = text.strip() if c in SENSITIVITY_TEXTS else _number(path, line, c, text,
-                                                                        optional=c == "elasticity")
+            row[c] = text.strip() if c in texts else _number(path, line, c, text, optional=optional(c))
         rows.append(row)
     return rows
+
+
+def read_sensitivity(path):
+    """sensitivity.csv: one dict per (quantity, parameter) row; elasticity None where
+    twb left it empty (a quantity or an input of zero)."""
+    return _read_rows(path, SENSITIVITY_COLUMNS, SENSITIVITY_TEXTS, "sensitivity.csv",
+                      lambda c: c == "elasticity")
+
+
+def read_reliability(path):
+    """reliability.csv: one dict per answer (method form, monte_carlo or inverse_form);
+    a value that does not apply to the method (a sampling's interval for FORM) None."""
+    return _read_rows(path, RELIABILITY_COLUMNS, RELIABILITY_TEXTS, "reliability.csv",
+                      lambda c: c not in ("load_N", "probability"))
+
+
+def read_design_point(path):
+    """design_point.csv: one dict per (answer, input); a distribution's parameter it
+    does not have (a uniform's mean) None."""
+    return _read_rows(path, DESIGN_POINT_COLUMNS, DESIGN_POINT_TEXTS, "design_point.csv",
+                      lambda c: c in ("mean", "sd", "lower", "upper"))
 
 
 @dataclass
