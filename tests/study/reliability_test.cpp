@@ -5,7 +5,8 @@
 // standard errors (a 0.3 % chance to miss for a seed; the test is deterministic). The
 // design points must lie on the failure surface: a failure search of its own at each
 // design point's inputs finds the fold at the operating load (FORM: to its |g| ≤ 1e-4 W
-// and the fold's Newton tolerance) or at the inverse FORM's load.
+// and the fold's Newton tolerance) or at the inverse FORM's load, also past the cusp
+// where another criterion sets it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,27 +29,32 @@ Scene paper_scene(const std::vector<std::string>& more) {
   return load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml", overrides);
 }
 
-// The fold's load at the scene's inputs with the ambient at `ambient`, by a search of its own.
-double fold_load_at(const Scene& scene, double ambient) {
+// The failure search at the scene's inputs with the ambient at `ambient`.
+DistressRow failure_at(const Scene& scene, double ambient) {
   const std::pair<std::string, double> set[] = {{"operating.ambient", ambient}};
   BearingModel model(with_inputs(scene, set));
   DistressSearchSettings settings;
   settings.load_start = 50.0;
   settings.load_end = 400.0;
   settings.march_past_distress = false;
-  const DistressSearch found = search_distress(model, settings, {});
-  EXPECT_TRUE(found.row.fold_load.has_value()) << found.row.method;
-  return found.row.fold_load.value_or(0.0);
+  return search_distress(model, settings, {}).row;
+}
+
+// Its fold's load: where W_fail is thermo-viscous distress, located to Newton's tolerance.
+double fold_load_at(const Scene& scene, double ambient) {
+  const DistressRow row = failure_at(scene, ambient);
+  EXPECT_TRUE(row.fold_load.has_value()) << row.method;
+  return row.fold_load.value_or(0.0);
 }
 
 TEST(ReliabilityStudy, DesignPointsLieOnTheFailureSurfaceAndSamplingAgrees) {
   const Scene scene = paper_scene({"operating.load=150 N",
                                    "study={type: reliability, load_start: 50 N, load_end: 400 N, inputs: "
-                                   "{operating.ambient: {distribution: normal, sd: 3 K}}, probabilities: [1e-2], "
+                                   "{operating.ambient: {distribution: normal, sd: 3 K}}, probabilities: [1e-2, 1e-3], "
                                    "monte_carlo: {cov: 0.1, max_samples: 1000}}"});
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {}, RunOptions{.threads = 2});
-  ASSERT_EQ(out.reliability.size(), 3u) << (out.summary.empty() ? "" : out.summary.back());
+  ASSERT_EQ(out.reliability.size(), 4u) << (out.summary.empty() ? "" : out.summary.back());
   const ReliabilityRow& form = out.reliability[0];
   const ReliabilityRow& mc = out.reliability[1];
   const ReliabilityRow& inverse = out.reliability[2];
@@ -57,7 +63,7 @@ TEST(ReliabilityStudy, DesignPointsLieOnTheFailureSurfaceAndSamplingAgrees) {
   ASSERT_EQ(inverse.method, "inverse_form");
   EXPECT_TRUE(form.converged);
   EXPECT_TRUE(inverse.converged);
-  ASSERT_EQ(out.design_points.size(), 2u);
+  ASSERT_EQ(out.design_points.size(), 3u);
 
   // FORM: the design point's ambient fails the bearing at 150 N, and β is its distance.
   const DesignPointRow& star = out.design_points[0];
@@ -72,13 +78,23 @@ TEST(ReliabilityStudy, DesignPointsLieOnTheFailureSurfaceAndSamplingAgrees) {
   EXPECT_EQ(*mc.unresolved, 0);
   EXPECT_NEAR(mc.probability, form.probability, 3.0 * *mc.cov * mc.probability);
 
-  // Inverse FORM: at the load it gives, the inputs a β of 2.33 away fail. (At 1e-3 the
-  // ambient, 9 K above its mean, lies past this mesh's cusp near 305.8 K, where the
-  // fold vanishes: see docs/physics.md section 17.)
+  // Inverse FORM: at the load it gives, the inputs a β of 2.33 away fail.
   const DesignPointRow& inverse_star = out.design_points[1];
   EXPECT_NEAR(inverse_star.u, reliability_index(1e-2), 1e-3 * reliability_index(1e-2));
   EXPECT_NEAR(fold_load_at(scene, inverse_star.design_value), inverse.load, 1e-6 * inverse.load);
   EXPECT_LT(inverse.load, 150.0);
+
+  // At 1e-3 the ambient, 9 K above its mean, lies past this mesh's cusp (near 305.8 K):
+  // no thermo-viscous distress there, and the bearing fails by the flash temperature,
+  // which Newton cannot follow the fold to; the search at those inputs finds it, to its
+  // bracket width (0.002).
+  const ReliabilityRow& past_cusp = out.reliability[3];
+  const DesignPointRow& past_cusp_star = out.design_points[2];
+  EXPECT_TRUE(past_cusp.converged);
+  const DistressRow there = failure_at(scene, past_cusp_star.design_value);
+  EXPECT_FALSE(there.distress_load.has_value()) << there.method;
+  ASSERT_TRUE(there.failure_load.has_value());
+  EXPECT_NEAR(*there.failure_load, past_cusp.load, 0.002 * past_cusp.load);
 }
 
 }  // namespace
