@@ -20,9 +20,9 @@ namespace twb {
 
 namespace {
 
-// The fold system's difference step along a move, as a fraction of it: the centred
-// difference's truncation (ε² of the second derivative) far below the prediction's own
-// error (the move's square).
+// The fold system's difference step along a move, as a fraction of it: the forward
+// difference's truncation (ε of the move's bend) far below the prediction's own error
+// (the move's square).
 constexpr double kTangentStep = 1e-3;
 
 // Newton from a predicted fold converges in a few iterations (quadratically from the
@@ -87,7 +87,6 @@ FailureLoadAtInputs::FailureLoadAtInputs(const Scene& scene, std::vector<std::st
                                          DistressSearchSettings search, int threads)
     : scene_(scene), paths_(std::move(paths)), scales_(std::move(scales)), search_(std::move(search)), threads_(threads) {
   search_.march_past_distress = false;
-  for (const std::string& p : paths_) scene_values_.push_back(scene_input(scene_, p).value);
 }
 
 FailureLoadAtInputs::~FailureLoadAtInputs() = default;
@@ -103,19 +102,18 @@ std::unique_ptr<BearingModel> FailureLoadAtInputs::model_at(std::span<const doub
   }
 }
 
-const DistressSearch& FailureLoadAtInputs::search_scene_inputs(const SearchProgress& progress) {
-  BearingModel model(scene_);
-  scene_search_ = search_distress(model, search_, progress);
-  ++searches_;
-  std::string why;
-  // The search's own model is the scene's: settled again on one kept with the anchor.
+const DistressSearch* FailureLoadAtInputs::search_at(std::span<const double> x, const SearchProgress& progress,
+                                                     std::string& why) {
   auto s = std::make_unique<Settled>();
-  s->x = scene_values_;
-  s->model = std::make_unique<BearingModel>(scene_);
+  s->x.assign(x.begin(), x.end());
+  s->model = model_at(x, why);
+  if (!s->model) return nullptr;
   s->searched = true;
-  s->take(scene_search_, why);
-  anchors_.push_back(std::move(s));
-  return scene_search_;
+  first_search_ = search_distress(*s->model, search_, progress);
+  ++searches_;
+  s->take(first_search_, why);
+  remember(std::move(s));
+  return &first_search_;
 }
 
 std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settle_once(const Settled& from,
@@ -132,16 +130,12 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settle_once(c
     start.u = from.fold->u;
     start.lambda = from.fold->load;
     start.null_vector = from.fold->null_vector;
-    std::vector<double> behind(x.size()), ahead(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      behind[i] = from.x[i] - kTangentStep * (x[i] - from.x[i]);
-      ahead[i] = from.x[i] + kTangentStep * (x[i] - from.x[i]);
-    }
+    std::vector<double> ahead(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) ahead[i] = from.x[i] + kTangentStep * (x[i] - from.x[i]);
     std::string unused;
-    const std::unique_ptr<BearingModel> at_from = model_at(from.x, unused), at_behind = model_at(behind, unused),
-                                        at_ahead = model_at(ahead, unused);
-    if (at_from && at_behind && at_ahead)
-      if (std::optional<FoldPoint> predicted = predicted_fold(*at_from, *at_behind, *at_ahead, kTangentStep, *from.fold);
+    const std::unique_ptr<BearingModel> at_from = model_at(from.x, unused), at_ahead = model_at(ahead, unused);
+    if (at_from && at_ahead)
+      if (std::optional<FoldPoint> predicted = predicted_fold(*at_from, *at_ahead, kTangentStep, *from.fold);
           predicted && predicted->lambda > 0.0)  // (a long move's line may cross zero load)
         start = std::move(*predicted);
     s->fold = settle_fold(*s->model, start, why, kFollowIterations);
@@ -239,7 +233,20 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settled_at(st
   }
   if (nearest) {
     std::string moved;
-    if (std::unique_ptr<Settled> s = walk(*nearest, x, moved)) {
+    std::unique_ptr<Settled> s;
+    if (least == 0.0 && nearest->crossings.empty()) {
+      // A settled fold's own inputs (FORM's start at the medians the search ran at): its
+      // fold, on a bearing built again.
+      s = std::make_unique<Settled>();
+      s->x.assign(x.begin(), x.end());
+      s->model = model_at(x, why);
+      if (!s->model) return nullptr;
+      s->fold = nearest->fold;
+      s->set_failure();
+    } else {
+      s = walk(*nearest, x, moved);
+    }
+    if (s) {
       // A criterion not followed that the failing state has crossed fails the bearing
       // at a lower load: found by a search.
       const OperatingLimits limits = OperatingLimits::of(s->model->scene());
@@ -286,7 +293,8 @@ std::optional<FailureAtInputs> FailureLoadAtInputs::at(std::span<const double> x
   std::mutex solve_lock;
   run_in_parallel(paths_.size(), threads_, [&](std::size_t i) {
     try {
-      InputNeighbours nb = input_neighbours(*s->model, scene_input(s->model->scene(), paths_[i]));
+      // Second order: its δ² truncation (10⁻⁸ relative) is far below FORM's tolerance.
+      InputNeighbours nb = input_neighbours(*s->model, scene_input(s->model->scene(), paths_[i]), 2);
       out.gradient[i] = crossing ? crossing_load_derivative(nb, *crossing, solve_lock) : fold_load_derivative(nb, *s->fold);
       if (!std::isfinite(out.gradient[i])) failed[i] = paths_[i] + ": the derivative is not finite";
     } catch (const InternalError&) {

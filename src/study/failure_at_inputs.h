@@ -1,11 +1,11 @@
-// The failure load at inputs other than the scene's (study type reliability,
-// docs/physics.md section 17): W_fail(x), the least load of the criteria the failure
-// search located at the scene's own inputs, each followed to x by Newton from the
-// nearest point already settled (the fold on the minimally augmented system, a limit's
-// crossing on its margin's root), on the bearing built from the scene read again with x.
-// Where Newton cannot reach x in one move, the move is halved (up to three times);
-// where it still cannot, or where a criterion not crossed at the scene's inputs is
-// crossed below the followed one at x, the failure search runs again at x. ∇W_fail by
+// The failure load at any inputs (study type reliability, docs/physics.md section 17):
+// W_fail(x), the least load of the criteria a failure search located at one x, each
+// followed to another by Newton from the nearest point already settled (the fold on the
+// minimally augmented system from its predicted move, a limit's crossing on its
+// margin's root), on the bearing built from the scene read again with x. Where Newton
+// cannot reach x in one move, the move is walked in shorter steps (down to a quarter);
+// where it still cannot, or where a criterion not followed is crossed below the followed
+// one at x, the failure search runs again at x. ∇W_fail by
 // the left null vector (the fold) or the margin's slopes (a crossing), as the
 // sensitivity study takes them.
 #pragma once
@@ -45,10 +45,9 @@ class FailureLoadAtInputs {
                       DistressSearchSettings search, int threads);
   ~FailureLoadAtInputs();
 
-  // The search at the scene's own inputs; its row (the nominal failure), and whether it
-  // located a failure below load_end.
-  const DistressSearch& search_scene_inputs(const SearchProgress& progress);
-  std::span<const double> scene_values() const { return scene_values_; }
+  // The failure search at inputs x (e.g. the inputs' medians), whose criteria every
+  // later move starts from; none, with why, where the scene refuses x.
+  const DistressSearch* search_at(std::span<const double> x, const SearchProgress& progress, std::string& why);
 
   // W_fail at x; none, with why, where x is outside an input's range or no state can be
   // settled there. Safe to call from several threads at once.
@@ -61,7 +60,7 @@ class FailureLoadAtInputs {
   // whose results must not depend on which thread settled what first.
   void keep_every_point(bool keep) { keeping_ = keep; }
 
-  long searches() const { return searches_; }  // failure searches run (the scene's one included)
+  long searches() const { return searches_; }  // failure searches run (search_at's included)
 
  private:
   struct Settled;  // a model at some x with its criteria settled
@@ -74,11 +73,11 @@ class FailureLoadAtInputs {
 
   Scene scene_;
   std::vector<std::string> paths_;
-  std::vector<double> scene_values_, scales_;
+  std::vector<double> scales_;
   DistressSearchSettings search_;
   int threads_ = 1;
-  DistressSearch scene_search_;
-  // The points moves start from: the scene's inputs, and while keeping, every point
+  DistressSearch first_search_;
+  // The points moves start from: the first search's, and while keeping, every point
   // settled on the way.
   mutable std::vector<std::shared_ptr<const Settled>> anchors_;
   mutable std::mutex anchors_lock_;

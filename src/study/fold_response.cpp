@@ -50,30 +50,27 @@ std::optional<SettledFold> settle_fold(BearingModel& model, const FoldPoint& fou
   return out;
 }
 
-std::optional<FoldPoint> predicted_fold(BearingModel& at, BearingModel& behind, BearingModel& ahead, double epsilon,
-                                        const SettledFold& fold) {
+std::optional<FoldPoint> predicted_fold(BearingModel& at, BearingModel& ahead, double epsilon, const SettledFold& fold) {
   const ParameterScope at_fold(at, fold.load);
   std::vector<double> f_load(fold.u.size());
   at.parameter_derivative(fold.u, f_load);
   const ContinuationMetric metric = ContinuationMetric::of(at, std::abs(fold.load));
   std::vector<double> x = fold.u;
   x.push_back(fold.load / metric.parameter_scale());
-  // G at the fold on each bearing, with one set of borders: one function of t.
-  auto residual = [&](BearingModel& m, std::span<double> jacobian) {
-    const ParameterScope keep(m);
-    const FoldSystem system(m, metric, f_load, fold.null_vector);
-    std::vector<double> g(x.size());
-    system.evaluate(x, g, jacobian);
-    return g;
-  };
   const FoldSystem system(at, metric, f_load, fold.null_vector);
   std::vector<double> g(x.size()), jacobian(std::size_t(system.pattern().nnz()));
   system.evaluate(x, g, jacobian);
   SparseLu lu(system.pattern(), SparseLu::Ordering::minimum_degree);
   if (!lu.factor(jacobian)) return std::nullopt;
-  const std::vector<double> g_ahead = residual(ahead, {}), g_behind = residual(behind, {});
+  // G at the fold on the bearing ahead, with the same borders: one function of t.
+  std::vector<double> g_ahead(x.size());
+  {
+    const ParameterScope keep(ahead);
+    const FoldSystem moved(ahead, metric, f_load, fold.null_vector);
+    moved.evaluate(x, g_ahead, {});
+  }
   std::vector<double> step(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) step[i] = (g_ahead[i] - g_behind[i]) / (2.0 * epsilon);
+  for (std::size_t i = 0; i < x.size(); ++i) step[i] = (g_ahead[i] - g[i]) / epsilon;
   lu.solve(step);  // −(u', μ')
   for (const double s : step)
     if (!std::isfinite(s)) return std::nullopt;

@@ -31,13 +31,12 @@ std::optional<SettledFold> settle_fold(BearingModel& model, const FoldPoint& fou
 
 // The fold of the bearing moved along a line of inputs, predicted to first order from a
 // settled one: the fold system G(u, λ; t) = [F; g] = 0 (fold_system.h) at inputs
-// x(t) = x_a + t·d, differentiated in t, J_G·(u', λ') = −G_t, G_t a centred difference
-// over `behind` and `ahead`, the bearings at t = ∓ε (the same borders, the fold's own
-// unknowns); `at` the bearing at t = 0. The prediction for t = 1: off the fold by O(|d|²)
-// rather than O(|d|), so that Newton on the fold system reaches much further. None where
-// the fold system's Jacobian is singular there.
-std::optional<FoldPoint> predicted_fold(BearingModel& at, BearingModel& behind, BearingModel& ahead, double epsilon,
-                                        const SettledFold& fold);
+// x(t) = x_a + t·d, differentiated in t, J_G·(u', λ') = −G_t, G_t a forward difference
+// to `ahead`, the bearing at t = ε (the same borders, the fold's own unknowns; its O(ε)
+// error is far below the prediction's own); `at` the bearing at t = 0. The prediction
+// for t = 1: off the fold by O(|d|²) rather than O(|d|), so that Newton on the fold
+// system reaches much further. None where the fold system's Jacobian is singular there.
+std::optional<FoldPoint> predicted_fold(BearingModel& at, BearingModel& ahead, double epsilon, const SettledFold& fold);
 
 // dW_d/dp for the input of `n`.
 double fold_load_derivative(InputNeighbours& n, const SettledFold& fold);

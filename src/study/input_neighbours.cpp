@@ -1,5 +1,6 @@
 #include "study/input_neighbours.h"
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -65,7 +66,7 @@ double InputNeighbours::load_at(std::size_t k, double load) const {
   return input.path == kLoadInput ? load + stencil.offsets[k] * step : load;
 }
 
-InputNeighbours input_neighbours(const BearingModel& base, SceneInput input) {
+InputNeighbours input_neighbours(const BearingModel& base, SceneInput input, int order) {
   // The operating point stands where the base model stands (a Bearing solves at loads and
   // speeds of its own), not where the scene file put it.
   if (input.path == kLoadInput) input.value = base.load();
@@ -74,7 +75,9 @@ InputNeighbours input_neighbours(const BearingModel& base, SceneInput input) {
   n.input = input;
   n.step = kInputStep * (input.value != 0.0 ? std::abs(input.value) : step_floor(input.unit));
   std::optional<InputError> first;
-  for (const Stencil* stencil : {&kCentred, &kForward, &kBackward}) {
+  const std::array<const Stencil*, 3> stencils =
+      order == 2 ? std::array{&kCentred2, &kForward2, &kBackward2} : std::array{&kCentred, &kForward, &kBackward};
+  for (const Stencil* stencil : stencils) {
     try {
       n.at = built_at(base, input, n.step, *stencil);
       n.stencil = *stencil;

@@ -32,6 +32,11 @@ struct Stencil {
 inline const Stencil kCentred{{-2.0, -1.0, 1.0, 2.0}, {1.0, -8.0, 8.0, -1.0}};
 inline const Stencil kForward{{0.0, 1.0, 2.0, 3.0, 4.0}, {-25.0, 48.0, -36.0, 16.0, -3.0}};
 inline const Stencil kBackward{{0.0, -1.0, -2.0, -3.0, -4.0}, {25.0, -48.0, 36.0, -16.0, 3.0}};
+// Second order, for a caller whose own tolerance is far above δ² (FORM's 10⁻³): half the
+// bearings.
+inline const Stencil kCentred2{{-1.0, 1.0}, {-6.0, 6.0}};
+inline const Stencil kForward2{{0.0, 1.0, 2.0}, {-18.0, 24.0, -6.0}};
+inline const Stencil kBackward2{{0.0, -1.0, -2.0}, {18.0, -24.0, 6.0}};
 
 // Σ_k w_k v(k) / 12δ: the derivative at s = 0 of a quantity (or several) taken at each of
 // the stencil's points k (s = o_k·δ).
@@ -59,7 +64,8 @@ struct InputNeighbours {
 // stencil fits, std::invalid_argument where the input changes the unknowns (a discrete
 // input). Curve parameters set on `base` other than its load and speed are not carried
 // over: the neighbours are the scene's.
-InputNeighbours input_neighbours(const BearingModel& base, SceneInput input);
+// `order` 4 (the sensitivity study's) or 2 (kCentred2 and its one-sided pair).
+InputNeighbours input_neighbours(const BearingModel& base, SceneInput input, int order = 4);
 
 // F_p at (u, load), in the model's scaled rows.
 std::vector<double> residual_derivative(InputNeighbours& n, std::span<const double> u, double load);

@@ -76,13 +76,23 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
   settings.bracket_width = st.bracket_width;
   FailureLoadAtInputs failure(scene, paths, scales, settings, threads);
 
-  // The failure search at the scene's own inputs: where every move starts from.
-  const DistressSearch& found = failure.search_scene_inputs(progress);
+  // The failure search at the inputs' medians (u = 0, where FORM starts): where every
+  // move starts from.
+  std::vector<double> medians(n);
+  for (std::size_t i = 0; i < n; ++i) medians[i] = input_at(inputs[i], 0.0);
+  std::string why;
+  const DistressSearch* searched = failure.search_at(medians, progress, why);
+  if (!searched) {
+    out.solver_failed = true;
+    out.message = "the scene refuses the inputs' medians: " + why;
+    return;
+  }
+  const DistressSearch& found = *searched;
   add_search_work(out.timings, found.counts);
   out.distress.push_back(found.row);
   const double load = model.load(), speed = model.speed();
   if (!found.row.failure_load) {
-    out.summary.push_back(fmt::format("reliability: the scene's inputs do not fail up to {:.6g} N ({}): no failure "
+    out.summary.push_back(fmt::format("reliability: the inputs' medians do not fail up to {:.6g} N ({}): no failure "
                                       "load to take the probability of; widen load_end",
                                       st.load_end, found.row.method));
     return;
@@ -123,7 +133,7 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
     return;
   }
   out.summary.push_back(fmt::format("reliability at {:.6g} N, {:.6g} rad/s: P_f = {:.3g} by FORM (β = {:.3f}; W_fail "
-                                    "{:.6g} N at the scene's inputs, {} failure loads evaluated)",
+                                    "{:.6g} N at the inputs' medians, {} failure loads evaluated)",
                                     load, speed, form.probability, form.beta, *found.row.failure_load, form.evaluations));
   out.summary.push_back("reliability: design point: " + design_point_words(form, inputs));
   std::vector<double> x_star(n);

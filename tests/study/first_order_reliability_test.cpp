@@ -9,6 +9,7 @@
 #include "scene/input_distribution.h"
 #include "study/first_order_reliability.h"
 #include "study/importance_sampling.h"
+#include "study/input_neighbours.h"
 
 namespace twb {
 namespace {
@@ -176,6 +177,18 @@ TEST(InputDistribution, TransformsMatchTheDistributionsQuantiles) {
   const double sigma = std::sqrt(std::log1p(std::pow(1e-7 / 4.5e-7, 2)));
   EXPECT_NEAR(input_at(lognormal, 0.0) * std::exp(0.5 * sigma * sigma), 4.5e-7, 1e-20);
   EXPECT_NEAR(input_mean(uniform), 4e-6, 1e-20);
+}
+
+// FORM's gradients take the second-order stencils: exact on a quadratic (to rounding),
+// each of them, so a wrong weight or offset shows.
+TEST(InputStencils, SecondOrderStencilsAreExactOnQuadratics) {
+  const double step = 1e-3, p = 0.7;
+  const auto f = [&](double x) { return 3.0 - 2.0 * x + 5.0 * x * x; };
+  for (const Stencil* s : {&kCentred2, &kForward2, &kBackward2}) {
+    const std::vector<double> d =
+        stencil_derivative(*s, step, [&](std::size_t k) { return std::vector<double>{f(p + s->offsets[k] * step)}; });
+    EXPECT_NEAR(d[0], -2.0 + 10.0 * p, 1e-9);
+  }
 }
 
 }  // namespace
