@@ -87,16 +87,17 @@ double input_mean(const UncertainInput& in) {
 }
 
 std::string describe(const UncertainInput& in) {
+  // "0.0005 rad"; a pure number without its "1".
+  const auto q = [&](double v) { return in.unit == "1" ? fmt::format("{:.6g}", v) : fmt::format("{:.6g} {}", v, in.unit); };
   switch (in.distribution) {
     case InputDistribution::normal:
-      return fmt::format("normal(mean {:.6g} {}, sd {:.6g} {})", in.mean, in.unit, in.sd, in.unit);
+      return fmt::format("normal(mean {}, sd {})", q(in.mean), q(in.sd));
     case InputDistribution::lognormal:
-      return fmt::format("lognormal(mean {:.6g} {}, sd {:.6g} {})", in.mean, in.unit, in.sd, in.unit);
+      return fmt::format("lognormal(mean {}, sd {})", q(in.mean), q(in.sd));
     case InputDistribution::uniform:
-      return fmt::format("uniform({:.6g} {} to {:.6g} {})", in.lower, in.unit, in.upper, in.unit);
+      return fmt::format("uniform({} to {})", q(in.lower), q(in.upper));
     case InputDistribution::truncated_normal:
-      return fmt::format("truncated_normal(mean {:.6g} {}, sd {:.6g} {}, {:.6g} to {:.6g} {})", in.mean, in.unit, in.sd,
-                         in.unit, in.lower, in.upper, in.unit);
+      return fmt::format("truncated_normal(mean {}, sd {}, {} to {})", q(in.mean), q(in.sd), q(in.lower), q(in.upper));
   }
   return in.path;
 }

@@ -52,8 +52,9 @@ std::string design_point_words(const DesignPoint& p, const std::vector<Uncertain
   });
   std::string words;
   for (std::size_t i : order)
-    words += fmt::format("{}{} {:.4g} {} (importance {:.2f})", words.empty() ? "" : ", ", inputs[i].path,
-                         input_at(inputs[i], p.u[i]), inputs[i].unit, p.alpha[i] * p.alpha[i]);
+    words += fmt::format("{}{} {:.4g}{} (importance {:.2f})", words.empty() ? "" : ", ", inputs[i].path,
+                         input_at(inputs[i], p.u[i]), inputs[i].unit == "1" ? "" : " " + inputs[i].unit,
+                         p.alpha[i] * p.alpha[i]);
   return words;
 }
 
