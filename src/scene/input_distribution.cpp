@@ -27,16 +27,22 @@ struct Cut {
 };
 Cut cut(const UncertainInput& in) { return {(in.lower - in.mean) / in.sd, (in.upper - in.mean) / in.sd}; }
 
+// Which tail the truncated law's masses are kept in: the upper one where the cut lies
+// above the mean, or where it straddles it and u > 0; the lower one otherwise. Both are
+// exact where small (a cut at 8 to 10 sd keeps its mass).
+bool upper(const Cut& c, double u) { return c.a > 0.0 || (c.b > 0.0 && u > 0.0); }
+
+// The cut's mass, in the tail chosen.
+double mass(const Cut& c, double u) {
+  return upper(c, u) ? upper_tail(c.a) - upper_tail(c.b) : lower_tail(c.b) - lower_tail(c.a);
+}
+
 // z of the truncated law at u: the mass Φ(u) of the standard normal mapped onto the
-// mass between the bounds, kept in the tail where it is small so that it stays exact.
+// mass between the bounds.
 double truncated_z(const UncertainInput& in, double u) {
   const Cut c = cut(in);
-  if (u <= 0.0) {
-    const double p = lower_tail(c.a) + lower_tail(u) * (lower_tail(c.b) - lower_tail(c.a));
-    return boost::math::quantile(kStandard, p);
-  }
-  const double q = upper_tail(c.b) + upper_tail(u) * (upper_tail(c.a) - upper_tail(c.b));
-  return boost::math::quantile(boost::math::complement(kStandard, q));
+  if (!upper(c, u)) return boost::math::quantile(kStandard, lower_tail(c.a) + lower_tail(u) * mass(c, u));
+  return boost::math::quantile(boost::math::complement(kStandard, upper_tail(c.b) + upper_tail(u) * mass(c, u)));
 }
 
 }  // namespace
@@ -63,27 +69,11 @@ double input_slope(const UncertainInput& in, double u) {
       return log_sd(in) * input_at(in, u);
     case InputDistribution::uniform:
       return (in.upper - in.lower) * density(u);
-    case InputDistribution::truncated_normal: {
+    case InputDistribution::truncated_normal:
       // dx/du = sd·(Φ(b) − Φ(a))·φ(u)/φ(z)
-      const Cut c = cut(in);
-      const double mass = u <= 0.0 ? lower_tail(c.b) - lower_tail(c.a) : upper_tail(c.a) - upper_tail(c.b);
-      return in.sd * mass * density(u) / density(truncated_z(in, u));
-    }
+      return in.sd * mass(cut(in), u) * density(u) / density(truncated_z(in, u));
   }
   return in.sd;
-}
-
-double input_mean(const UncertainInput& in) {
-  switch (in.distribution) {
-    case InputDistribution::uniform:
-      return 0.5 * (in.lower + in.upper);
-    case InputDistribution::truncated_normal: {
-      const Cut c = cut(in);
-      return in.mean + in.sd * (density(c.a) - density(c.b)) / (lower_tail(c.b) - lower_tail(c.a));
-    }
-    default:
-      return in.mean;
-  }
 }
 
 std::string describe(const UncertainInput& in) {

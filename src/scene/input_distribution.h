@@ -13,8 +13,6 @@ namespace twb {
 double input_at(const UncertainInput& input, double u);
 // dx/du at u: how the input moves with its standard normal variable (> 0).
 double input_slope(const UncertainInput& input, double u);
-// The input's mean (uniform: the middle; truncated_normal: of the truncated law), SI.
-double input_mean(const UncertainInput& input);
 // "normal(mean 0.5 mrad, sd 0.1 mrad)" style, in SI: for messages and the results.
 std::string describe(const UncertainInput& input);
 

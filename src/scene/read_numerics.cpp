@@ -286,7 +286,14 @@ void read_study(const MapReader& scene, Scene& out) {
       // The inputs' distributions are read once every input is known (read_uncertain_inputs).
       study.restrict_to({"type", "inputs", "load_start", "load_end", "bracket_width", "probabilities", "monte_carlo"},
                         "with type: reliability");
-      read_load_range(study, s, " (the failure search at the scene's inputs runs between them)");
+      read_load_range(study, s, " (the failure search at the inputs' medians runs between them)");
+      // A sample that does not fail up to load_end must be known to survive the operating load.
+      if (!(out.operating.load > s.load_start && out.operating.load < s.load_end)) {
+        const Node end = study.get("load_end", "");
+        end.fail(fmt::format("{}: the operating load {:.6g} N must lie between load_start and load_end: the "
+                             "probability of failure at it needs each failure search to reach past it",
+                             end.path(), out.operating.load));
+      }
       s.bracket_width = read_bracket_width(study, s.bracket_width);
       study.get("inputs", "a map from input paths to distributions, e.g. {geometry.gear.tilt: {distribution: normal, "
                           "mean: 0.5 mrad, sd: 0.1 mrad}}");

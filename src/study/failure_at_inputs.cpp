@@ -15,6 +15,7 @@
 #include "twb/error_family.h"
 #include "twb/scene/input_error.h"
 #include "twb/scene/scene_inputs.h"
+#include "twb/scene/scene_loader.h"
 
 namespace twb {
 
@@ -85,7 +86,13 @@ struct FailureLoadAtInputs::Settled {
 
 FailureLoadAtInputs::FailureLoadAtInputs(const Scene& scene, std::vector<std::string> paths, std::vector<double> scales,
                                          DistressSearchSettings search, int threads)
-    : scene_(scene), paths_(std::move(paths)), scales_(std::move(scales)), search_(std::move(search)), threads_(threads) {
+    // The bearing's scene without its study: every bearing at other inputs reads it again,
+    // and a study read again would check its own inputs round the moved ones.
+    : scene_(load_scene_text(scene.written, scene.source, {"study={type: point}"})),
+      paths_(std::move(paths)),
+      scales_(std::move(scales)),
+      search_(std::move(search)),
+      threads_(threads) {
   search_.march_past_distress = false;
 }
 
@@ -177,7 +184,7 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::walk(const Se
       failed = e.what();  // a load or state a step cannot take: a shorter one may
     }
     if (!next) {
-      if (failed.empty() || step < kLeastStep) {
+      if (failed.empty() || 0.5 * step < kLeastStep) {
         why = failed;
         return nullptr;
       }
@@ -209,8 +216,11 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::searched_at(s
   const DistressSearch found = search_distress(*s->model, search_, {});
   ++searches_;
   if (found.failed) {
-    why = "no steady state at the search's light load: " + found.message;
-    return nullptr;
+    // No steady state even at the light load: the bearing fails below load_start, at
+    // any load the study asks about.
+    s->load = 0.0;
+    s->criterion = "no steady state at " + std::to_string(search_.load_start) + " N";
+    return s;
   }
   s->take(found, why);
   return s;

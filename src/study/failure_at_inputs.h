@@ -39,7 +39,7 @@ struct FailureAtInputs {
 class FailureLoadAtInputs {
  public:
   // `paths`: the inputs x stands for, in order; `scales` their typical moves (SI), by
-  // which the nearest settled point is chosen. The scene's study is not read. A gradient
+  // which the nearest settled point is chosen. The scene's study is left out. A gradient
   // is taken over `threads` threads.
   FailureLoadAtInputs(const Scene& scene, std::vector<std::string> paths, std::vector<double> scales,
                       DistressSearchSettings search, int threads);
@@ -82,8 +82,8 @@ class FailureLoadAtInputs {
   mutable std::vector<std::shared_ptr<const Settled>> anchors_;
   mutable std::mutex anchors_lock_;
   bool keeping_ = false;
-  // Of a move: below it Newton is given up for a failure search at the target, which costs
-  // about as much as three failed steps (a wall of non-smoothness, a cusp).
+  // Of a move: the shortest step tried (1, ½, ¼) before Newton is given up for a failure
+  // search at the target, which costs about as much as three failed steps (past a cusp).
   static constexpr double kLeastStep = 0.25;
   mutable std::atomic<long> searches_{0};
 };

@@ -20,8 +20,9 @@ void finish(DesignPoint& p, const std::vector<double>& u, const FailureLoadValue
   p.load = v.load;
   p.gradient = v.gradient;
   const double n = norm(v.gradient);
-  p.alpha.resize(u.size());
-  for (std::size_t i = 0; i < u.size(); ++i) p.alpha[i] = -v.gradient[i] / n;
+  p.alpha.assign(u.size(), 0.0);
+  if (n > 0.0)  // (a vanishing gradient leaves no direction: no shares)
+    for (std::size_t i = 0; i < u.size(); ++i) p.alpha[i] = -v.gradient[i] / n;
   p.beta = dot(p.alpha, u);  // u* = β α: β > 0 where the mean inputs survive
   p.probability = failure_probability(p.beta);
 }

@@ -14,6 +14,7 @@
 #include "study/importance_sampling.h"
 #include "scene/input_distribution.h"
 #include "study/study_support.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -117,22 +118,22 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
   if (progress) progress(fmt::format("reliability: FORM at {:.6g} N", load));
   failure.keep_every_point(true);
   const DesignPoint form = design_point(h, n, load);
+  // A probability only from a design point found: an unconverged iterate's is no answer.
+  if (!form.converged) {
+    out.solver_failed = true;
+    out.message = "FORM did not find the design point: " + form.why;
+    out.summary.push_back("reliability: " + out.message);
+    return;
+  }
   ReliabilityRow& row = out.reliability.emplace_back();
   row.method = "form";
   row.load = load;
   row.speed = speed;
-  row.converged = form.converged;
+  row.converged = true;
   row.evaluations = form.evaluations;
-  if (!form.u.empty()) {
-    row.probability = form.probability;
-    row.beta = form.beta;
-    add_design_point(out, "form", form, inputs);
-  }
-  if (!form.converged) {
-    out.summary.push_back("reliability: FORM did not find the design point: " + form.why);
-    if (form.u.empty()) out.reliability.pop_back();
-    return;
-  }
+  row.probability = form.probability;
+  row.beta = form.beta;
+  add_design_point(out, "form", form, inputs);
   out.summary.push_back(fmt::format("reliability at {:.6g} N, {:.6g} rad/s: P_f = {:.3g} by FORM (β = {:.3f}; W_fail "
                                     "{:.6g} N at the inputs' medians, {} failure loads evaluated)",
                                     load, speed, form.probability, form.beta, *found.row.failure_load, form.evaluations));
@@ -151,7 +152,14 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
     const long before = evaluations;
     const FailureIndicator fails = [&](std::span<const double> u) -> std::optional<bool> {
       std::string why;
-      const std::optional<FailureLoadValue> v = h(u, false, why);
+      std::optional<FailureLoadValue> v;
+      try {
+        v = h(u, false, why);
+      } catch (const InternalError&) {
+        throw;  // a bug: no sample may hide it
+      } catch (const std::exception& e) {
+        why = e.what();  // one sample's, not the study's
+      }
       if (!v) {
         const std::lock_guard<std::mutex> hold(first_lock);
         if (first_why.empty()) first_why = why;
@@ -178,7 +186,8 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
     mc.failures = e.failures;
     mc.unresolved = e.unresolved;
     mc.evaluations = evaluations - before;
-    mc.converged = e.reached;
+    // Unresolved samples are left out, and they need not be like the others.
+    mc.converged = e.reached && e.unresolved == 0;
     out.summary.push_back(fmt::format(
         "reliability: Monte Carlo (importance sampling round the design point): P_f = {:.3g}, 95 % interval [{:.3g}, "
         "{:.3g}], coefficient of variation {:.3g} from {} samples ({} failed{}){}",

@@ -150,6 +150,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"reliability_normal_reaches_refused_value", 15, 25, {"study.inputs.geometry.gear.tilt: normal(mean 0.0005 rad, sd 0.0002 rad) reaches -0.0003 rad within 4 standard deviations, which the scene refuses", "bound it (truncated_normal with lower and upper)"}},
     {"reliability_uniform_bounds_reversed", 15, 71, {"study.inputs.operating.ambient.upper: '20 degC' must be greater than lower '30 degC'"}},
     {"reliability_unknown_distribution", 15, 39, {"study.inputs.operating.ambient.distribution: unknown value 'weibull'", "normal, lognormal, uniform, truncated_normal"}},
+    {"reliability_operating_load_outside_range", 13, 13, {"study.load_end: the operating load 500 N must lie between load_start and load_end"}},
     {"reliability_no_inputs", 14, 11, {"study.inputs: no uncertain inputs; give a map from input paths to distributions"}},
     {"input_axis_is_the_speed", 15, 21, {"study.parameter.name: operating.speed is an axis of every search already", "study.speeds"}},
     {"input_axis_value_out_of_range", 17, 26, {"study.parameter.values[1]: materials.carrier.conductivity: '-5 W/(m K)'", "out of range"}},

@@ -327,7 +327,7 @@ INSTANTIATE_TEST_SUITE_P(
                           "        parameters: [geometry.gear.tilt, surfaces.washer.Rq, materials.carrier.thermal_expansion]}\n"},
         RoundTripCase{"reliability_of_every_distribution",
                       std::string(kMinimalScene) +
-                          "study: {type: reliability, load_start: 100 N, load_end: 400 N, bracket_width: 0.001,\n"
+                          "study: {type: reliability, load_start: 100 N, load_end: 1500 N, bracket_width: 0.001,\n"
                           "        inputs: {operating.ambient: {distribution: normal, sd: 3 degC},\n"
                           "                 geometry.gear.tilt: {distribution: truncated_normal, sd: 0.3 mrad, lower: 1 mrad,\n"
                           "                                      upper: 3 mrad},\n"

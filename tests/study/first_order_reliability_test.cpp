@@ -176,8 +176,14 @@ TEST(InputDistribution, TransformsMatchTheDistributionsQuantiles) {
   // The lognormal keeps the input's own mean: E[x] = exp(μ + σ²/2).
   const double sigma = std::sqrt(std::log1p(std::pow(1e-7 / 4.5e-7, 2)));
   EXPECT_NEAR(input_at(lognormal, 0.0) * std::exp(0.5 * sigma * sigma), 4.5e-7, 1e-20);
-  EXPECT_NEAR(input_mean(uniform), 4e-6, 1e-20);
-}
+
+  // A cut far in the upper tail (8 to 10 sd) keeps its mass: x spans the cut, not stuck
+  // at its lower end, and the slope stays positive.
+  const UncertainInput far{"f", "1", InputDistribution::truncated_normal, 0.0, 1.0, 8.0, 10.0};
+  EXPECT_GT(input_at(far, 0.0), 8.0 + 1e-3);
+  EXPECT_LT(input_at(far, 0.0), 8.2);  // the mass is crowded at the lower cut: median ≈ 8 + ln 2/8
+  EXPECT_NEAR(input_at(far, 0.0), 8.0 + std::log(2.0) / 8.0, 1e-2);
+  EXPECT_GT(input_slope(far, 0.0), 0.0);}
 
 // FORM's gradients take the second-order stencils: exact on a quadratic (to rounding),
 // each of them, so a wrong weight or offset shows.

@@ -10,7 +10,8 @@ import numpy as np
 def figure_failure_probability(rows, design):
     """P_f (log scale) against load, and the design point's importances. None without a
     FORM or inverse FORM row to draw."""
-    form = [r for r in rows if r["method"] in ("form", "inverse_form") and r["probability"] > 0.0]
+    form = [r for r in rows if r["method"] in ("form", "inverse_form") and r["probability"] > 0.0
+            and r["converged"] == 1]
     if not form:
         return None
     form.sort(key=lambda r: r["load_N"])
