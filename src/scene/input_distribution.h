@@ -9,6 +9,13 @@
 
 namespace twb {
 
+// Which parameters a law has: a mean and sd (normal, lognormal, truncated_normal), and
+// bounds (uniform, truncated_normal).
+inline bool has_mean_and_sd(InputDistribution d) { return d != InputDistribution::uniform; }
+inline bool has_bounds(InputDistribution d) {
+  return d == InputDistribution::uniform || d == InputDistribution::truncated_normal;
+}
+
 // x(u) in the input's SI unit.
 double input_at(const UncertainInput& input, double u);
 // dx/du at u: how the input moves with its standard normal variable (> 0).

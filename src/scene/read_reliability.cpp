@@ -31,7 +31,7 @@ double spread(const MapReader& d, const char* key, const SiUnit& unit) {
   const double value = node.quantity(unit, Range{});
   const std::string text = node.yaml().Scalar();
   const std::size_t space = text.find_first_of(" \t");
-  const double zero = space == std::string::npos ? 0.0 : to_si("0" + text.substr(space), unit);
+  const double zero = space == std::string::npos ? 0.0 : to_si(fmt::format("0{}", text.substr(space)), unit);
   if (!range.contains(value - zero))
     node.fail(fmt::format("{}: '{}' must be {} ({})", node.path(), text, range.describe(), range.reason));
   return value - zero;
@@ -58,9 +58,8 @@ UncertainInput read_distribution(const Node& entry, const SceneInput& input, con
     case InputDistribution::truncated_normal:
       break;
   }
-  const bool centred = u.distribution != InputDistribution::uniform;
-  const bool bounded = u.distribution == InputDistribution::uniform || u.distribution == InputDistribution::truncated_normal;
-  if (centred) {
+  const bool bounded = has_bounds(u.distribution);
+  if (has_mean_and_sd(u.distribution)) {
     const Range mean_range = u.distribution == InputDistribution::lognormal
                                  ? Range{.low = 0.0, .low_open = true, .reason = "a lognormal input's mean"}
                                  : Range{};

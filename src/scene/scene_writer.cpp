@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "scene_names.h"
+#include "scene/input_distribution.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {
@@ -244,9 +245,9 @@ void write_numerics(Writer& w, const Scene& s) {
     w.line(1, "inputs:");
     for (const UncertainInput& in : st.uncertain_inputs) {
       std::string d = fmt::format("{{distribution: {}", kInputDistributions.name(in.distribution));
-      if (in.distribution != InputDistribution::uniform)
+      if (has_mean_and_sd(in.distribution))
         d += fmt::format(", mean: {}, sd: {}", quantity(in.mean, in.unit), quantity(in.sd, in.unit));
-      if (in.distribution == InputDistribution::uniform || in.distribution == InputDistribution::truncated_normal)
+      if (has_bounds(in.distribution))
         d += fmt::format(", lower: {}, upper: {}", quantity(in.lower, in.unit), quantity(in.upper, in.unit));
       w.entry(2, in.path, d + "}");
     }

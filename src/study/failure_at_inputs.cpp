@@ -76,6 +76,8 @@ struct FailureLoadAtInputs::Settled {
       crossings.clear();
     }
   }
+  // Whether a later move can start from it: a fold or a crossing settled.
+  bool followable() const { return fold || !crossings.empty(); }
   // The state where W_fail is set.
   std::span<const double> failing_state() const {
     for (const SettledCrossing& c : crossings)
@@ -98,6 +100,14 @@ FailureLoadAtInputs::FailureLoadAtInputs(const Scene& scene, std::vector<std::st
 
 FailureLoadAtInputs::~FailureLoadAtInputs() = default;
 
+std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::bearing_at(std::span<const double> x,
+                                                                             std::string& why) const {
+  auto s = std::make_unique<Settled>();
+  s->x.assign(x.begin(), x.end());
+  s->model = model_at(x, why);
+  return s->model ? std::move(s) : nullptr;
+}
+
 std::unique_ptr<BearingModel> FailureLoadAtInputs::model_at(std::span<const double> x, std::string& why) const {
   std::vector<std::pair<std::string, double>> set;
   for (std::size_t i = 0; i < paths_.size(); ++i) set.emplace_back(paths_[i], x[i]);
@@ -111,10 +121,8 @@ std::unique_ptr<BearingModel> FailureLoadAtInputs::model_at(std::span<const doub
 
 const DistressSearch* FailureLoadAtInputs::search_at(std::span<const double> x, const SearchProgress& progress,
                                                      std::string& why) {
-  auto s = std::make_unique<Settled>();
-  s->x.assign(x.begin(), x.end());
-  s->model = model_at(x, why);
-  if (!s->model) return nullptr;
+  std::unique_ptr<Settled> s = bearing_at(x, why);
+  if (!s) return nullptr;
   s->searched = true;
   first_search_ = search_distress(*s->model, search_, progress);
   ++searches_;
@@ -126,10 +134,8 @@ const DistressSearch* FailureLoadAtInputs::search_at(std::span<const double> x, 
 std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settle_once(const Settled& from,
                                                                               std::span<const double> x,
                                                                               std::string& why) const {
-  auto s = std::make_unique<Settled>();
-  s->x.assign(x.begin(), x.end());
-  s->model = model_at(x, why);
-  if (!s->model) return nullptr;
+  std::unique_ptr<Settled> s = bearing_at(x, why);
+  if (!s) return nullptr;
   if (from.fold) {
     // Newton on the fold system from the fold predicted along the move's tangent, else
     // from the settled fold itself.
@@ -208,10 +214,8 @@ void FailureLoadAtInputs::remember(std::unique_ptr<Settled> s) const {
 
 std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::searched_at(std::span<const double> x,
                                                                               std::string& why) const {
-  auto s = std::make_unique<Settled>();
-  s->x.assign(x.begin(), x.end());
-  s->model = model_at(x, why);
-  if (!s->model) return nullptr;
+  std::unique_ptr<Settled> s = bearing_at(x, why);
+  if (!s) return nullptr;
   s->searched = true;
   const DistressSearch found = search_distress(*s->model, search_, {});
   ++searches_;
@@ -236,7 +240,7 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settled_at(st
     anchors = anchors_;
   }
   for (const std::shared_ptr<const Settled>& a : anchors) {
-    if (!a->fold && a->crossings.empty()) continue;  // nothing to follow from it
+    if (!a->followable()) continue;
     double d = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) d += std::pow((x[i] - a->x[i]) / scales_[i], 2);
     if (d < least) least = d, nearest = a.get();
@@ -247,10 +251,8 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settled_at(st
     if (least == 0.0 && nearest->crossings.empty()) {
       // A settled fold's own inputs (FORM's start at the medians the search ran at): its
       // fold, on a bearing built again.
-      s = std::make_unique<Settled>();
-      s->x.assign(x.begin(), x.end());
-      s->model = model_at(x, why);
-      if (!s->model) return nullptr;
+      s = bearing_at(x, why);
+      if (!s) return nullptr;
       s->fold = nearest->fold;
       s->set_failure();
     } else {
@@ -282,16 +284,15 @@ std::optional<FailureAtInputs> FailureLoadAtInputs::at(std::span<const double> x
   out.load = s->load;
   out.criterion = s->criterion;
   out.searched = s->searched;
-  const bool followable = s->fold || !s->crossings.empty();
   if (!gradient) {
-    if (keeping_ && followable) remember(std::move(s));
+    if (keeping_ && s->followable()) remember(std::move(s));
     return out;
   }
   if (!std::isfinite(s->load)) {
     why = fmt::format("no failure up to {:.6g} N there, so no gradient", search_.load_end);
     return std::nullopt;
   }
-  if (!s->fold && s->crossings.empty()) {
+  if (!s->followable()) {
     why = "the failure there was located by bisection only (no fold to follow), so no gradient";
     return std::nullopt;
   }
@@ -324,7 +325,7 @@ std::optional<FailureAtInputs> FailureLoadAtInputs::at(std::span<const double> x
 
 void FailureLoadAtInputs::keep(std::span<const double> x) {
   std::string why;
-  if (std::unique_ptr<Settled> s = settled_at(x, why); s && (s->fold || !s->crossings.empty())) remember(std::move(s));
+  if (std::unique_ptr<Settled> s = settled_at(x, why); s && s->followable()) remember(std::move(s));
 }
 
 }  // namespace twb

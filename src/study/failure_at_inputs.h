@@ -70,6 +70,9 @@ class FailureLoadAtInputs {
   std::unique_ptr<Settled> searched_at(std::span<const double> x, std::string& why) const;
   std::unique_ptr<Settled> settled_at(std::span<const double> x, std::string& why) const;
   std::unique_ptr<BearingModel> model_at(std::span<const double> x, std::string& why) const;
+  // A Settled at x with its bearing built and nothing settled on it yet; none, with why,
+  // where the scene refuses x.
+  std::unique_ptr<Settled> bearing_at(std::span<const double> x, std::string& why) const;
 
   Scene scene_;
   std::vector<std::string> paths_;

@@ -32,10 +32,8 @@ void add_design_point(StudyOutcome& out, const char* method, const DesignPoint& 
     r.parameter = in.path;
     r.parameter_unit = in.unit;
     r.distribution = std::string(scene_io::kInputDistributions.name(in.distribution));
-    const bool centred = in.distribution != InputDistribution::uniform;
-    const bool bounded = in.distribution == InputDistribution::uniform || in.distribution == InputDistribution::truncated_normal;
-    if (centred) r.mean = in.mean, r.sd = in.sd;
-    if (bounded) r.lower = in.lower, r.upper = in.upper;
+    if (has_mean_and_sd(in.distribution)) r.mean = in.mean, r.sd = in.sd;
+    if (has_bounds(in.distribution)) r.lower = in.lower, r.upper = in.upper;
     r.design_value = input_at(in, p.u[i]);
     r.u = p.u[i];
     r.alpha = p.alpha[i];
