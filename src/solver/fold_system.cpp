@@ -27,53 +27,70 @@ FoldSystem::FoldSystem(SteadySystem& base, ContinuationMetric scaling, std::span
     c_[k] = omega[k] * state_tangent[k] / t_size;
   }
   lu_ = std::make_unique<SparseLu>(matrix().pattern());
+  step_ = std::make_unique<BorderedStep>(matrix(), b_, c_);
 }
 
-bool FoldSystem::solve_bordered(std::span<const double> x, std::span<double> f, std::span<double> base_jac,
-                                std::vector<double>& vg) const {
+const SparseLu* FoldSystem::solve_bordered(std::span<const double> x, std::span<double> f,
+                                           std::span<double> base_jac, std::vector<double>& vg,
+                                           bool for_step) const {
   const auto n = std::size_t(base().size());
   base().set_parameter(lambda_of(x));
   base().evaluate(x.first(n), f, base_jac);
-  std::vector<double> values(std::size_t(matrix().pattern().nnz()));
-  matrix().assemble(base_jac, b_, c_, 0.0, values);
-  // The bordered matrix is regular at and near the fold, and consecutive evaluations
-  // differ little: the pivot sequence is reused while KLU's growth check allows.
-  if (!lu_->refactor(values)) return false;
+  const SparseLu* lu = lu_.get();
+  if (for_step) {
+    if (!step_->factor(base_jac)) return nullptr;
+    lu = &step_->factors();
+  } else {
+    std::vector<double> values(std::size_t(matrix().pattern().nnz()));
+    matrix().assemble(base_jac, b_, c_, 0.0, values);
+    // The bordered matrix is regular at and near the fold, and consecutive evaluations
+    // differ little: the pivot sequence is reused while KLU's growth check allows.
+    if (!lu_->refactor(values)) return nullptr;
+  }
   vg.assign(n + 1, 0.0);
   vg[n] = 1.0;
-  lu_->solve(vg);
-  return true;
+  lu->solve(vg);
+  return lu;
 }
 
 void FoldSystem::second_derivatives(std::span<const double> u, std::span<const double> v,
                                     std::span<const double> w, std::span<double> gradient,
-                                    double& parameter_part) const {
+                                    double& parameter_part, const AtState* at_u) const {
   const auto n = u.size();
   const SparsePattern& p = base().pattern();
-  // ε³ balances truncation (ε²) against rounding (1e-16/ε) in a central difference; v
-  // has unit size in the metric, so the state moves by about ε relative to its own size.
-  const double eps = std::cbrt(std::numeric_limits<double>::epsilon()) * (1.0 + metric().state_norm(u)) /
+  // Central: ε³ balances truncation (ε²) against rounding (1e-16/ε). One-sided, from
+  // the values at u: ε² balances truncation (ε) against rounding. v has unit size in the
+  // metric, so the state moves by about ε relative to its own size.
+  const double machine = std::numeric_limits<double>::epsilon();
+  const double eps = (at_u ? std::sqrt(machine) : std::cbrt(machine)) * (1.0 + metric().state_norm(u)) /
                      std::max(metric().state_norm(v), std::numeric_limits<double>::min());
   std::vector<double> shifted(n), f(n), jac(std::size_t(p.nnz())), f_lambda(n);
   std::fill(gradient.begin(), gradient.end(), 0.0);
   parameter_part = 0.0;
+  // wᵀ J and wᵀ F_λ, weighted, added to the gradient and parameter part.
+  auto add = [&](std::span<const double> jacobian, std::span<const double> column, double weight) {
+    for (std::size_t row = 0; row < n; ++row) {
+      for (Index at = p.row_start[row]; at < p.row_start[row + 1]; ++at)
+        gradient[std::size_t(p.column[std::size_t(at)])] += weight * w[row] * jacobian[std::size_t(at)];
+      parameter_part += weight * w[row] * column[row];
+    }
+  };
   for (const double side : {1.0, -1.0}) {
+    if (at_u && side < 0.0) break;
     for (std::size_t k = 0; k < n; ++k) shifted[k] = u[k] + side * eps * v[k];
     base().evaluate(shifted, f, jac);
     base().parameter_derivative_given(shifted, f, f_lambda);
-    const double weight = side / (2.0 * eps);
-    for (std::size_t row = 0; row < n; ++row) {
-      for (Index at = p.row_start[row]; at < p.row_start[row + 1]; ++at)
-        gradient[std::size_t(p.column[std::size_t(at)])] += weight * w[row] * jac[std::size_t(at)];
-      parameter_part += weight * w[row] * f_lambda[row];
-    }
+    add(jac, f_lambda, at_u ? 1.0 / eps : side / (2.0 * eps));
   }
+  if (at_u) add(at_u->jacobian, at_u->parameter_derivative, -1.0 / eps);
 }
 
 void FoldSystem::evaluate(std::span<const double> x, std::span<double> residual, std::span<double> jacobian) const {
   const auto n = std::size_t(base().size());
   std::vector<double> base_jac(std::size_t(base().pattern().nnz())), vg;
-  if (!solve_bordered(x, residual.first(n), base_jac, vg)) {
+  // With the Jacobian, M is factored for the Newton step at this J too.
+  const SparseLu* lu = solve_bordered(x, residual.first(n), base_jac, vg, !jacobian.empty());
+  if (!lu) {
     std::fill(residual.begin(), residual.end(), std::numeric_limits<double>::quiet_NaN());
     return;
   }
@@ -82,14 +99,17 @@ void FoldSystem::evaluate(std::span<const double> x, std::span<double> residual,
 
   std::vector<double> w(n + 1, 0.0);
   w[n] = 1.0;
-  lu_->solve_transposed(w);
+  lu->solve_transposed(w);
   const std::span<const double> u = x.first(n);
   std::vector<double> gradient(n), column(n);
+  base().parameter_derivative_given(u, residual.first(n), column);
+  // Newton's Jacobian needs ∇g only to a few digits more than its steps: the one-sided
+  // difference from the values at u saves an assembly.
+  const AtState at_u{base_jac, column};
   double parameter_part = 0.0;
   second_derivatives(u, std::span<const double>(vg).first(n), std::span<const double>(w).first(n), gradient,
-                     parameter_part);
+                     parameter_part, &at_u);
   for (double& g : gradient) g = -g;
-  base().parameter_derivative_given(u, residual.first(n), column);
   const double scale = metric().parameter_scale();
   for (double& c : column) c *= scale;
   matrix().assemble(base_jac, column, gradient, -parameter_part * scale, jacobian);
@@ -100,10 +120,11 @@ double FoldSystem::fold_curvature(std::span<const double> x) const { return null
 std::pair<std::vector<double>, double> FoldSystem::null_vector_and_curvature(std::span<const double> x) const {
   const auto n = std::size_t(base().size());
   std::vector<double> f(n), base_jac(std::size_t(base().pattern().nnz())), vg;
-  if (!solve_bordered(x, f, base_jac, vg)) return {{}, std::numeric_limits<double>::quiet_NaN()};
+  const SparseLu* lu = solve_bordered(x, f, base_jac, vg);
+  if (!lu) return {{}, std::numeric_limits<double>::quiet_NaN()};
   std::vector<double> w(n + 1, 0.0);
   w[n] = 1.0;
-  lu_->solve_transposed(w);
+  lu->solve_transposed(w);
   const std::span<const double> u = x.first(n), v = std::span<const double>(vg).first(n);
   std::vector<double> gradient(n), f_lambda(n);
   double parameter_part = 0.0;
@@ -120,10 +141,11 @@ std::pair<std::vector<double>, double> FoldSystem::null_vector_and_curvature(std
 std::vector<double> FoldSystem::left_null_vector(std::span<const double> x) const {
   const auto n = std::size_t(base().size());
   std::vector<double> f(n), base_jac(std::size_t(base().pattern().nnz())), vg;
-  if (!solve_bordered(x, f, base_jac, vg)) return {};
+  const SparseLu* lu = solve_bordered(x, f, base_jac, vg);
+  if (!lu) return {};
   std::vector<double> w(n + 1, 0.0);
   w[n] = 1.0;
-  lu_->solve_transposed(w);
+  lu->solve_transposed(w);
   w.resize(n);
   return w;
 }

@@ -19,8 +19,10 @@
 //
 // With w from the transposed bordered solve [Jᵀ c; bᵀ 0][w; ·] = e_{n+1},
 //     ∂g/∂z = −wᵀ (∂J/∂z) v,
-// i.e. ∇_u g = −(J(u+εv)ᵀw − J(u−εv)ᵀw)/(2ε) and ∂g/∂λ = −wᵀ(F_λ(u+εv) − F_λ(u−εv))/(2ε):
-// central differences of the exact Jacobian along v, second-order accurate.
+// i.e. ∇_u g = −(J(u+εv)ᵀw − J(u)ᵀw)/ε and ∂g/∂λ = −wᵀ(F_λ(u+εv) − F_λ(u))/ε in Newton's
+// Jacobian: one-sided differences of the exact Jacobian along v from the values the
+// evaluation has at u (error ~√ε_machine, far below what Newton's steps need; one
+// assembly an evaluation). The fold's curvature κ takes central ones (error ~ε²).
 //
 // The system's own parameter is the target value of g (0 at the fold; ∂G/∂it = −e_{n+1}).
 // Evaluating sets the base system's parameter to μ·λ_scale and factors the bordered
@@ -32,6 +34,7 @@
 #include <utility>
 #include <vector>
 
+#include "solver/bordered_step.h"
 #include "solver/bordered_system.h"
 #include "solver/sparse_lu.h"
 
@@ -43,6 +46,8 @@ class FoldSystem final : public BorderedSystem {
   // part there (any scale, weighted by the metric).
   FoldSystem(SteadySystem& base, ContinuationMetric metric, std::span<const double> parameter_direction,
              std::span<const double> state_tangent);
+  FoldSystem(const FoldSystem&) = delete;  // its step solver refers to its matrix
+  FoldSystem& operator=(const FoldSystem&) = delete;
 
   // The null vector v of J at x, unit in the metric's state norm.
   std::vector<double> null_vector(std::span<const double> x) const;
@@ -64,20 +69,30 @@ class FoldSystem final : public BorderedSystem {
   // A singular bordered matrix (far from the fold) gives a non-finite residual, which
   // KINSOL's line search treats as a step too long.
   void evaluate(std::span<const double> x, std::span<double> residual, std::span<double> jacobian) const override;
+  // Newton's steps from the bordered matrix's factors at the Jacobian's point
+  // (bordered_step.h): one factorization an iteration.
+  NewtonStepSolver* step_solver() const override { return step_.get(); }
 
  private:
   // Sets λ from x, evaluates F and J, factors the bordered matrix and solves for (v, g);
-  // false when it is singular.
-  bool solve_bordered(std::span<const double> x, std::span<double> f, std::span<double> base_jac,
-                      std::vector<double>& vg) const;
+  // the factors, null when it is singular. With `for_step` they are the step solver's,
+  // for the Newton step at this J; else the residual's own.
+  const SparseLu* solve_bordered(std::span<const double> x, std::span<double> f, std::span<double> base_jac,
+                                 std::vector<double>& vg, bool for_step = false) const;
   // The bordered solve's (v, g) as v alone, unit in the metric's state norm.
   std::vector<double> unit_null_vector(std::vector<double> vg) const;
-  // ∇_u(wᵀ J v) and ∂(wᵀ J v)/∂λ by central differences along v.
+  // J and F_λ at u, where the caller has them.
+  struct AtState {
+    std::span<const double> jacobian, parameter_derivative;
+  };
+  // ∇_u(wᵀ J v) and ∂(wᵀ J v)/∂λ by differences along v: central (error ~ε², for κ), or
+  // one-sided from `at_u` (error ~ε, one assembly less: for Newton's Jacobian).
   void second_derivatives(std::span<const double> u, std::span<const double> v, std::span<const double> w,
-                          std::span<double> gradient, double& parameter_part) const;
+                          std::span<double> gradient, double& parameter_part, const AtState* at_u = nullptr) const;
 
   std::vector<double> b_, c_;
   std::unique_ptr<SparseLu> lu_;
+  std::unique_ptr<BorderedStep> step_;
 };
 
 }  // namespace twb

@@ -185,7 +185,7 @@ KinsolNewton::KinsolNewton(const SteadySystem& model, SparseLu::Ordering orderin
   residual_scale_.reset(N_VNew_Serial(n, ctx_.get()));
   N_VConst(1.0, residual_scale_.get());
   jac_.reset(SUNSparseMatrix(n, n, model_.pattern().nnz(), CSR_MAT, ctx_.get()));
-  klu_.reset(make_pattern_klu(ctx_.get(), model_.pattern(), ordering));
+  klu_.reset(make_pattern_klu(ctx_.get(), model_.pattern(), ordering, model_.step_solver()));
   if (!y_ || !scale_ || !jac_ || !klu_) throw SolverFailure("could not allocate the Newton solver", -1);
   kin_.reset(KINCreate(ctx_.get()));
   if (!kin_) throw SolverFailure("KINCreate failed", -1);
@@ -221,7 +221,11 @@ bool KinsolNewton::within_rounding(std::span<const double> y, std::span<const do
   return true;
 }
 
-SparseLu& KinsolNewton::factorization() { return pattern_klu(klu_.get()).lu; }
+SparseLu& KinsolNewton::factorization() {
+  PatternKlu& k = pattern_klu(klu_.get());
+  if (!k.lu) throw InternalError("KinsolNewton::factorization of a system that solves its own Newton steps");
+  return *k.lu;
+}
 
 NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s, const PseudoTimeShift* shift) {
   NewtonReport rep;
@@ -239,6 +243,8 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   callbacks_->failure.message.clear();
   pattern_klu(klu_.get()).failure.message.clear();
   // The shift adds to the diagonal: a row whose pattern lacks (k, k) cannot take it.
+  if (shift && model_.step_solver())
+    throw InternalError("pseudo-time shift on a system that solves its own Newton steps");
   if (shift)
     for (std::size_t k = 0; k < n; ++k)
       if (shift->coefficient(k) != 0.0 && callbacks_->diagonal[k] < 0)
@@ -330,9 +336,11 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   std::vector<double> trial(N_VGetArrayPointer(y_.get()), N_VGetArrayPointer(y_.get()) + n);
   rep.converged = done;
   if (std::getenv("TWB_KINSOL_PRINT")) {
-    const SparseLu::Counts& k = pattern_klu(klu_.get()).lu.counts();
-    fmt::print("[KLU] so far: {} analyses, {} full factorizations, {} refactorizations\n", k.analyses,
-               k.factorizations, k.refactorizations);
+    if (const std::optional<SparseLu>& lu = pattern_klu(klu_.get()).lu) {
+      const SparseLu::Counts& k = lu->counts();
+      fmt::print("[KLU] so far: {} analyses, {} full factorizations, {} refactorizations\n", k.analyses,
+                 k.factorizations, k.refactorizations);
+    }
   }
   u = trial;  // the final iterate, converged or not: callers keep their own copies
   if (!rep.converged) {

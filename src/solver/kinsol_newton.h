@@ -3,7 +3,8 @@
 // the system's exact sparse Jacobian in CSR, one assembly per point serving KINSOL's
 // residual and Jacobian; factored by KLU through SparseLu (symbolic analysis once per
 // solver, later Jacobians refactored with the last pivot sequence, pivoted afresh on a
-// zero pivot or large pivot growth: sparse_lu.h).
+// zero pivot or large pivot growth: sparse_lu.h), or by the system itself where it
+// holds the factors (SteadySystem::step_solver: the fold system's).
 #pragma once
 
 #include <functional>
@@ -100,7 +101,8 @@ class KinsolNewton {
   const SteadySystem& system() const { return model_; }
   // KINSOL's linear solver: the system's pattern analysed once. Other solves with the
   // system's Jacobian (a continuation's tangent) may factor into it between Newton
-  // solves; KINSOL sets its own Jacobian up again at every iteration.
+  // solves; KINSOL sets its own Jacobian up again at every iteration. Not for a system
+  // that solves its own Newton steps.
   SparseLu& factorization();
   // Callback state, public for the C trampolines.
   struct Callbacks;

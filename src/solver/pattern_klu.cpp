@@ -16,11 +16,12 @@ int unrecoverable_if_thrown(int flag) { return flag < 0 ? SUNLS_PACKAGE_FAIL_UNR
 
 }  // namespace
 
-SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern, SparseLu::Ordering ordering) {
+SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern, SparseLu::Ordering ordering,
+                                 NewtonStepSolver* own) {
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
   if (!s) return nullptr;
   try {
-    s->content = new PatternKlu(pattern, ordering);
+    s->content = new PatternKlu(pattern, ordering, own);
   } catch (...) {
     SUNLinSolFreeEmpty(s);
     throw;
@@ -37,15 +38,18 @@ SUNLinearSolver make_pattern_klu(SUNContext ctx, const SparsePattern& pattern, S
     PatternKlu& k = pattern_klu(ls);
     return k.last_flag = unrecoverable_if_thrown(guarded_callback(k.failure, [&] {
              const std::span<const double> values(SUNSparseMatrix_Data(a), std::size_t(SUNSparseMatrix_NNZ(a)));
-             return k.lu.refactor(values) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
+             k.ready = k.own ? k.own->setup(values) : k.lu->refactor(values);
+             return k.ready ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
            }));
   };
   s->ops->solve = [](SUNLinearSolver ls, SUNMatrix, N_Vector x, N_Vector b, realtype) {
     PatternKlu& k = pattern_klu(ls);
-    if (!k.lu.factored()) return k.last_flag = SUNLS_PACKAGE_FAIL_REC;
+    if (k.own ? !k.ready : !k.lu->factored()) return k.last_flag = SUNLS_PACKAGE_FAIL_REC;
     return k.last_flag = unrecoverable_if_thrown(guarded_callback(k.failure, [&] {
              N_VScale(1.0, b, x);
-             k.lu.solve(std::span<double>(N_VGetArrayPointer(x), std::size_t(N_VGetLength(x))));
+             const std::span<double> rhs(N_VGetArrayPointer(x), std::size_t(N_VGetLength(x)));
+             if (k.own) return k.own->solve(rhs) ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
+             k.lu->solve(rhs);
              return SUNLS_SUCCESS;
            }));
   };

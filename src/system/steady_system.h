@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "system/newton_step_solver.h"
 #include "system/sparse_pattern.h"
 
 namespace twb {
@@ -63,6 +64,9 @@ class SteadySystem {
   // rows to meet it too (states are checked in the own form afterwards); KinsolNewton
   // applies it to every solve in Newton's form.
   virtual double newton_form_tolerance_ratio() const { return 1.0; }
+  // Newton's linear solves from factors the system holds itself (newton_step_solver.h);
+  // null: KINSOL's KLU factors the Jacobian as assembled.
+  virtual NewtonStepSolver* step_solver() const { return nullptr; }
 };
 
 // Newton's form of a system's rows while the scope lives (or, with on = false, its own
