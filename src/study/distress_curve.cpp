@@ -13,6 +13,7 @@
 #include "study_support.h"
 #include "solver/fold_curve.h"
 #include "study/distress_search.h"
+#include "study/fold_curve_feed.h"
 #include "study/richardson.h"
 #include "study/limit_curve.h"
 #include "study/limit_curve_jobs.h"
@@ -76,10 +77,8 @@ void run_pieces(std::size_t count, int threads, RunTimings& timings, const Piece
     if (e) std::rethrow_exception(e);
 }
 
-// The fold's error bar at each curve point: chains of RefinedFoldCurve (each point from
-// the last refined fold of its chain), the curve cut into two chains of consecutive
-// points where it has four or more, each chain on models of its own. The cut is the
-// same for any thread count (the results do not depend on it).
+// The fold's error bar at a curve point (run_fold_curve: chains of RefinedFoldCurve),
+// or why it has none.
 struct FoldBar {
   std::optional<MeshErrorEstimate> estimate;
   std::string why;
@@ -203,23 +202,6 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     return model.describe(u);
   };
   FoldCurve curve;
-  try {
-    curve = trace_fold_curve(model, parameter, *first->fold, fs, [&](const FoldCurvePoint& pt) {
-      say(fmt::format("[curve{}] {}: fold at {:.2f} N ({}) [{:.1f} s]", label, shown_parameter(which, pt.p), pt.lambda,
-                      pt.curvature > 0 ? "distress" : pt.curvature < 0 ? "recovery" : "of unknown kind",
-                      elapsed_ms(t0) / 1000.0));
-      return true;
-    });
-  } catch (const InternalError&) {
-    throw;  // a bug: no fallback may hide it
-  } catch (const std::exception& e) {
-    curve.message = std::string("the curve could not be continued: ") + e.what();
-  }
-  if (curve.points.empty()) {
-    out.summary.push_back(fmt::format("fold curve{}: not traced from {}: {}", label, shown_parameter(which, start), curve.message));
-    limit_curves_alone();
-    return;
-  }
   const auto n = std::size_t(model.size());
   auto add_row = [&](double p, FoldKind fold, const BearingState& state) {
     FoldCurveRow& row = out.fold_curve.emplace_back();
@@ -229,65 +211,96 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     row.member = member;
     return out.fold_curve.size() - 1;
   };
-  // The curve's rows, each fold's kind, the turns.
-  std::vector<std::size_t> row_of(curve.points.size());
-  std::vector<int> kind_of(curve.points.size());
-  std::size_t next_turn = 0;
-  int kind = +1;  // the start's: W_d, proven
-  for (std::size_t k = 0; k < curve.points.size(); ++k) {
-    const FoldCurvePoint& pt = curve.points[k];
-    // (a curvature that could not be computed, NaN, keeps the previous point's kind)
-    if (pt.curvature > 0) kind = +1;
-    if (pt.curvature < 0) kind = -1;
-    kind_of[k] = kind;
-    row_of[k] = add_row(pt.p, kind > 0 ? FoldKind::distress : FoldKind::recovery, describe_at(pt.p, pt.lambda, pt.u));
-    const bool turns = k + 1 < curve.points.size() && pt.tangent_p * curve.points[k + 1].tangent_p < 0.0;
-    if (turns && next_turn < curve.turns.size()) {
-      const CurveTurn& t = curve.turns[next_turn++];
-      add_row(t.p, t.cusp ? FoldKind::cusp : FoldKind::turn, describe_at(t.p, t.lambda, std::span<const double>(t.point.u).first(n)));
-      out.summary.push_back(
-          t.cusp ? fmt::format("fold curve{}: cusp at {}, {:.2f} N: the cool and hot branches merge; on the side "
-                               "without a fold the bearing heats gradually, with no sudden distress",
-                               label, shown_parameter(which, t.p), t.lambda)
-                 : fmt::format("fold curve{}: turns back at {}, {:.2f} N without a cusp", label, shown_parameter(which, t.p),
-                               t.lambda));
+  // Each point's fold kind (+1 distress, -1 recovery) and row.
+  std::vector<int> kind_of;
+  std::vector<std::size_t> row_of;
+  FoldCurveFeed feed;
+  // The curve, its rows, each fold's kind, the turns; then W_d along it for the limit
+  // curves (set before the feed ends: they wait for that).
+  auto trace = [&] {
+    const FeedEnds ends(feed);
+    int kind = +1;  // the start's: W_d, proven
+    try {
+      curve = trace_fold_curve(model, parameter, *first->fold, fs, [&](const FoldCurvePoint& pt) {
+        say(fmt::format("[curve{}] {}: fold at {:.2f} N ({}) [{:.1f} s]", label, shown_parameter(which, pt.p), pt.lambda,
+                        pt.curvature > 0 ? "distress" : pt.curvature < 0 ? "recovery" : "of unknown kind",
+                        elapsed_ms(t0) / 1000.0));
+        // (a curvature that could not be computed, NaN, keeps the previous point's kind)
+        if (pt.curvature > 0) kind = +1;
+        if (pt.curvature < 0) kind = -1;
+        kind_of.push_back(kind);
+        feed.add(pt, kind);
+        return true;
+      });
+    } catch (const InternalError&) {
+      throw;  // a bug: no fallback may hide it
+    } catch (const std::exception& e) {
+      curve.message = std::string("the curve could not be continued: ") + e.what();
     }
-  }
+    std::size_t next_turn = 0;
+    for (std::size_t k = 0; k < curve.points.size(); ++k) {
+      const FoldCurvePoint& pt = curve.points[k];
+      row_of.push_back(add_row(pt.p, kind_of[k] > 0 ? FoldKind::distress : FoldKind::recovery,
+                               describe_at(pt.p, pt.lambda, pt.u)));
+      const bool turns = k + 1 < curve.points.size() && pt.tangent_p * curve.points[k + 1].tangent_p < 0.0;
+      if (turns && next_turn < curve.turns.size()) {
+        const CurveTurn& t = curve.turns[next_turn++];
+        add_row(t.p, t.cusp ? FoldKind::cusp : FoldKind::turn, describe_at(t.p, t.lambda, std::span<const double>(t.point.u).first(n)));
+        out.summary.push_back(
+            t.cusp ? fmt::format("fold curve{}: cusp at {}, {:.2f} N: the cool and hot branches merge; on the side "
+                                 "without a fold the bearing heats gradually, with no sudden distress",
+                                 label, shown_parameter(which, t.p), t.lambda)
+                   : fmt::format("fold curve{}: turns back at {}, {:.2f} N without a cusp", label, shown_parameter(which, t.p),
+                                 t.lambda));
+      }
+    }
+    limit_settings.fold_load = distress_fold_of(out, member);
+  };
 
-  // Then, on `threads` threads: W_d's error bar all along the curve (each fold again on
-  // the refined mesh, study/richardson.h) and every limit curve, each piece on models of
-  // its own.
+  // On `threads` threads: the curve; W_d's error bar all along it (each fold again on
+  // the refined mesh, study/richardson.h), in chains of kChainPoints consecutive points
+  // that follow the curve as it is traced (each point from the last refined fold of its
+  // chain; the cut is the same for any thread count, so are the results); then every
+  // limit curve. Each piece on models of its own.
   const bool bars = st.error_estimate != ErrorEstimate::none;
-  const std::size_t points = curve.points.size();
-  const std::size_t chains = !bars ? 0 : points >= 4 ? 2 : 1;
-  std::vector<FoldBar> bar_of(points);
+  constexpr std::size_t kChainPoints = 6;
+  const auto most_points = std::size_t(fs.arclength.max_points) + 1;
+  const std::size_t chains = bars ? (most_points + kChainPoints - 1) / kChainPoints : 0;
+  std::vector<FoldBar> bar_of(bars ? most_points : 0);
   std::string mesh;
   std::mutex mesh_lock;
   auto bar_chain = [&](std::size_t chain) {
-    const std::size_t a = chain * points / chains, b = (chain + 1) * points / chains;
+    const std::size_t a = chain * kChainPoints, b = a + kChainPoints;
+    std::optional<FoldCurveFeed::Entry> at = feed.wait_for(a);
+    if (!at) return;
     BearingModel coarse(model.scene());
-    coarse.set_curve_parameter(which, curve.points[a].p);
-    coarse.set_load(curve.points[a].lambda);
+    coarse.set_curve_parameter(which, at->first.p);
+    coarse.set_load(at->first.lambda);
     std::optional<RefinedFoldCurve> refined;
+    std::string unbuilt;
     try {
       if (chain == 0)
         refined.emplace(coarse, which, *first->fold);
       else
-        refined.emplace(coarse, which, curve.points[a].u, first->fold->null_vector);
+        refined.emplace(coarse, which, at->first.u, first->fold->null_vector);
       const std::lock_guard<std::mutex> hold(mesh_lock);
       mesh = refined->mesh();
     } catch (const InternalError&) {
       throw;  // a bug: no fallback may hide it
     } catch (const std::exception& e) {
-      for (std::size_t k = a; k < b; ++k) bar_of[k].why = std::string("the refined mesh could not be built: ") + e.what();
-      return;
+      unbuilt = std::string("the refined mesh could not be built: ") + e.what();
     }
-    for (std::size_t k = a; k < b; ++k) {
-      const FoldCurvePoint& pt = curve.points[k];
+    for (std::size_t k = a; k < b && k < bar_of.size(); ++k) {
+      if (k > a && !(at = feed.wait_for(k))) return;
+      if (!refined) {
+        bar_of[k].why = unbuilt;
+        continue;
+      }
+      const FoldCurvePoint& pt = at->first;
       coarse.set_curve_parameter(which, pt.p);
       coarse.set_load(pt.lambda);
       try {
-        bar_of[k].estimate = refined->at(pt.p, pt.lambda, pt.u, kind_of[k], bar_of[k].why);
+        bar_of[k].estimate = refined->at(pt.p, pt.lambda, pt.u, at->second, bar_of[k].why);
       } catch (const InternalError&) {
         throw;  // a bug: no fallback may hide it
       } catch (const std::exception& failure) {
@@ -295,14 +308,23 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
       }
     }
   };
-  limit_settings.fold_load = distress_fold_of(out, member);
   const auto t_pieces = std::chrono::steady_clock::now();
-  run_pieces(chains + jobs.size(), threads, out.timings, [&](std::size_t i) {
-    if (i < chains)
-      bar_chain(i);
-    else
-      trace_job(model.scene(), which, limit_settings, jobs[i - chains]);
+  run_pieces(1 + chains + jobs.size(), threads, out.timings, [&](std::size_t i) {
+    if (i == 0) {
+      trace();
+    } else if (i <= chains) {
+      bar_chain(i - 1);
+    } else {
+      feed.wait_for_end();
+      trace_job(model.scene(), which, limit_settings, jobs[i - 1 - chains]);
+    }
   });
+  if (curve.points.empty()) {
+    out.summary.push_back(fmt::format("fold curve{}: not traced from {}: {}", label, shown_parameter(which, start), curve.message));
+    add_limit_curves();
+    return;
+  }
+  const std::size_t points = curve.points.size();
   if (bars) {
     int with_bar = 0;
     std::string last_why;
