@@ -120,7 +120,7 @@ TEST(LimitCurve, NoPointLiesAboveTheDistressFold) {
     }
 }
 
-// The curve's pieces (both ends' searches, the fold's error bars in two chains, each
+// The curve's pieces (both ends' searches, the fold's error bars in chains that follow it, each
 // limit curve) run on two threads as on one: the same files to the last bit.
 TEST(LimitCurve, TheSameCurvesOnOneThreadAndOnTwo) {
   Scene scene = bronze_curve();
