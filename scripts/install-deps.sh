@@ -8,6 +8,8 @@ packages=(
   libsundials-dev libsuitesparse-dev libeigen3-dev libfmt-dev
   libyaml-cpp-dev libudunits2-dev libcli11-dev libboost-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
+  # Calibration to measurements: Ceres Solver's bounded Levenberg-Marquardt.
+  libceres-dev
   python3-matplotlib python3-numpy python3-pandas
   # The Python module (import twb): pybind11 and the interpreter's headers.
   pybind11-dev python3-dev

@@ -183,7 +183,8 @@ class Table(dict):
 
 class Results:
     """What a study gives back. Tables (None where the study writes no such file):
-    states, distress, trajectory, sliding, fold_curve, sensitivity, reliability, design_point; fields: per state, its fields
+    states, distress, trajectory, sliding, fold_curve, sensitivity, reliability, design_point,
+    calibration, calibration_correlation, calibration_points; fields: per state, its fields
     table (output.fields) or None; summary and limit_notes: the lines twb run prints at
     the end; message, solver_failed; timings: run.json's counts."""
 
@@ -206,6 +207,9 @@ class Results:
     sensitivity = property(lambda self: self.tables.get("sensitivity"))
     reliability = property(lambda self: self.tables.get("reliability"))
     design_point = property(lambda self: self.tables.get("design_point"))
+    calibration = property(lambda self: self.tables.get("calibration"))
+    calibration_correlation = property(lambda self: self.tables.get("calibration_correlation"))
+    calibration_points = property(lambda self: self.tables.get("calibration_points"))
 
     def __repr__(self):
         parts = ", ".join(f"{name}: {table.rows} rows" for name, table in self.tables.items())

@@ -22,6 +22,7 @@ inline constexpr SiUnit length{"m", "a length", "22.7 mm"};
 inline constexpr SiUnit angle{"rad", "an angle", "2 mrad"};
 inline constexpr SiUnit angular_speed{"rad/s", "an angular speed", "545 rad/s"};
 inline constexpr SiUnit force{"N", "a force", "1000 N"};
+inline constexpr SiUnit torque{"N m", "a torque", "0.3 N m"};
 inline constexpr SiUnit time{"s", "a time", "60 s"};
 inline constexpr SiUnit temperature{"K", "a temperature", "24 degC"};
 inline constexpr SiUnit stress{"Pa", "a pressure or stress", "201 GPa"};
@@ -34,7 +35,7 @@ inline constexpr SiUnit areal_density{"1/m^2", "a number per unit area", "1e11 1
 inline constexpr SiUnit expansion{"1/K", "a thermal expansion coefficient", "1.2e-5 1/K"};
 inline constexpr SiUnit dimensionless{"1", "a dimensionless number", "0.296"};
 // Every unit above, the angle before the pure number (udunits2 takes both for "rad").
-inline constexpr const SiUnit* all[] = {&length,        &angle,         &angular_speed, &force,
+inline constexpr const SiUnit* all[] = {&length,        &angle,         &angular_speed, &force,         &torque,
                                         &time,          &temperature,   &stress,        &conductivity,
                                         &density,       &specific_heat, &viscosity,     &kinematic_viscosity,
                                         &areal_density, &expansion,     &dimensionless};

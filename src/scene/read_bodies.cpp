@@ -115,18 +115,18 @@ Roughness read_roughness(const MapReader& surfaces, std::string_view component) 
   return r;
 }
 
-// A profile file named in the scene: relative to the scene file's directory (to the
-// working directory when an override named it).
-// The path as resolved is noted, so that the scene read again from its tree (an input
-// changed, scene_inputs.h) finds the same file whichever file named it.
-std::string profile_path(const Node& node) {
-  const std::filesystem::path named(node.scalar("the path of a roughness profile file (CSV)"));
+}  // namespace
+
+std::string named_file_path(const Node& node, std::string_view expected) {
+  const std::filesystem::path named(node.scalar(expected));
   const std::string resolved = named.is_absolute() || !node.origin()->is_file
                                    ? named.string()
                                    : (std::filesystem::path(node.origin()->name).parent_path() / named).string();
   if (node.provenance()) node.provenance()->note_resolved_path(node.path(), std::filesystem::absolute(resolved).string());
   return resolved;
 }
+
+namespace {
 
 // docs/physics.md section 13: one profile of the combined surface, or one per face of the film
 // (the faces are independent, so their spectral moments add).
@@ -143,7 +143,7 @@ AsperityParameters summits_from_profiles(const Node& profile, const Scene& scene
   ProfileEstimate estimate;
   SpectralMoments moments;
   for (const Node& file : files) {
-    const std::string path = profile_path(file);
+    const std::string path = named_file_path(file, "the path of a roughness profile file (CSV)");
     const RoughnessProfile heights = read_roughness_profile(path);
     try {
       moments = combined(moments, spectral_moments(heights.heights, heights.spacing));

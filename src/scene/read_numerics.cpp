@@ -313,6 +313,12 @@ void read_study(const MapReader& scene, Scene& out) {
       s.seed = sampling.integer("seed", 0, int(s.seed), "the samples' seed");
       break;
     }
+    case StudyType::calibration:
+      // The data and the fitted inputs are read once every input is known (read_calibration).
+      study.restrict_to({"type", "data", "fit", "sd"}, "with type: calibration");
+      study.get("data", "the path of the measurements file (CSV), e.g. rig.csv");
+      study.get("fit", "a map from input paths to bounds, e.g. {surfaces.washer.Rq: {lower: 0.1 um, upper: 1.5 um}}");
+      break;
     case StudyType::distress_map: {
       study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate"},
                         "with type: distress_map");

@@ -22,10 +22,10 @@ namespace {
 
 constexpr double kReach = 4.0;  // standard deviations a normal's values are checked to
 
-// A spread in the input's unit: for a temperature an interval, not a point of the scale
-// ("3 degC" is 3 K, not 276.15 K): the value less the zero of the unit it is written in.
-double spread(const MapReader& d, const char* key, const SiUnit& unit) {
-  const Range range{.low = 0.0, .low_open = true, .reason = "the input's standard deviation"};
+}  // namespace
+
+double read_spread(const MapReader& d, const char* key, const SiUnit& unit, std::string_view reason) {
+  const Range range{.low = 0.0, .low_open = true, .reason = std::string(reason)};
   if (unit.symbol != si::temperature.symbol) return d.quantity(key, unit, range);
   const Node node = d.get(key, "a temperature interval, e.g. 3 K");
   const double value = node.quantity(unit, Range{});
@@ -36,6 +36,8 @@ double spread(const MapReader& d, const char* key, const SiUnit& unit) {
     node.fail(fmt::format("{}: '{}' must be {} ({})", node.path(), text, range.describe(), range.reason));
   return value - zero;
 }
+
+namespace {
 
 UncertainInput read_distribution(const Node& entry, const SceneInput& input, const Scene& out) {
   UncertainInput u;
@@ -68,7 +70,7 @@ UncertainInput read_distribution(const Node& entry, const SceneInput& input, con
       entry.fail(fmt::format("{}: the scene's value {:.6g} {} cannot be a lognormal input's mean (it must be > 0); "
                              "give a mean",
                              entry.path(), input.value, input.unit));
-    u.sd = spread(d, "sd", unit);
+    u.sd = read_spread(d, "sd", unit, "the input's standard deviation");
   }
   if (bounded) {
     u.lower = d.quantity("lower", unit, Range{});
@@ -104,26 +106,16 @@ void read_uncertain_inputs(const MapReader& scene, Scene& out) {
   Study& s = out.study;
   if (s.type != StudyType::reliability) return;
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
-  const Node inputs = study.get("inputs", "");
-  if (!inputs.yaml().IsMap() || inputs.yaml().size() == 0)
-    inputs.fail(fmt::format("{}: {}; give a map from input paths to distributions, e.g. {{geometry.gear.tilt: "
-                            "{{distribution: normal, mean: 0.5 mrad, sd: 0.1 mrad}}}}",
-                            inputs.path(), inputs.yaml().IsMap() ? "no uncertain inputs" : inputs.describe_content()));
-  std::vector<std::string> keys;
-  for (const auto& kv : inputs.yaml()) keys.push_back(kv.first.as<std::string>());
-  const MapReader map(inputs, std::vector<std::string_view>(keys.begin(), keys.end()));
-  for (const std::string& path : map.keys()) {
-    const Node entry = map.get(path, "");
-    if (path == "operating.load")
-      entry.fail(fmt::format("{}: the operating load is the load whose probability of failure is taken, not an uncertain "
-                             "input",
-                             entry.path()));
-    SceneInput input;
-    try {
-      input = scene_input(out, path);
-    } catch (const std::invalid_argument& e) {
-      entry.fail(fmt::format("{}: {}", entry.path(), e.what()));
-    }
+  const std::vector<InputEntry> entries = input_entries(
+      study.get("inputs", ""), out, "no uncertain inputs",
+      "distributions, e.g. {geometry.gear.tilt: {distribution: normal, mean: 0.5 mrad, sd: 0.1 mrad}}",
+      [](const std::string& path) {
+        return path == "operating.load"
+                   ? std::string("the operating load is the load whose probability of failure is taken, not an "
+                                 "uncertain input")
+                   : std::string();
+      });
+  for (const auto& [entry, input] : entries) {
     s.uncertain_inputs.push_back(read_distribution(entry, input, out));
   }
 }

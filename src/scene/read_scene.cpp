@@ -125,6 +125,7 @@ Scene read_scene(const Node& root) {
   check_study_parameters(scene, out);
   check_input_axis(scene, out);
   read_uncertain_inputs(scene, out);
+  read_calibration(scene, out);
   return out;
 }
 

@@ -36,7 +36,8 @@ inline constexpr std::string_view kLubricantKeys[] = {"conductivity", "viscosity
 inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start", "load_end", "load_steps",
                                                    "speeds",        "parameter",  "bracket_width", "duration",
                                                    "error_estimate", "from",       "to",       "family",
-                                                   "parameters", "inputs", "probabilities", "monte_carlo"};
+                                                   "parameters", "inputs", "probabilities", "monte_carlo",
+                                                   "data", "fit", "sd"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
@@ -45,11 +46,15 @@ inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
 inline constexpr EnumNames<FrictionLaw, 2> kFrictionLaws{
     {"empirical", "constant"}, {FrictionLaw::empirical, FrictionLaw::constant}};
 
-inline constexpr EnumNames<StudyType, 8> kStudyTypes{
+inline constexpr EnumNames<StudyType, 9> kStudyTypes{
     {"point", "load_sweep", "distress_map", "transient", "sliding_choice", "distress_curve", "sensitivity",
-     "reliability"},
+     "reliability", "calibration"},
     {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient,
-     StudyType::sliding_choice, StudyType::distress_curve, StudyType::sensitivity, StudyType::reliability}};
+     StudyType::sliding_choice, StudyType::distress_curve, StudyType::sensitivity, StudyType::reliability,
+     StudyType::calibration}};
+// A calibration's measured quantities: their names in the scene's `sd` and the data
+// file's header (MeasuredQuantity's order).
+inline constexpr std::string_view kMeasuredNames[] = {"torque", "f_eff", "T_mean", "T_max"};
 inline constexpr EnumNames<InputDistribution, 4> kInputDistributions{
     {"normal", "lognormal", "uniform", "truncated_normal"},
     {InputDistribution::normal, InputDistribution::lognormal, InputDistribution::uniform,

@@ -3,7 +3,11 @@
 // documents what they accept.
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "scene_node.h"
 #include "twb/scene/input_error.h"
@@ -33,6 +37,26 @@ void check_groove_parameter(const MapReader& scene, const Scene& out);
 
 // Why the scene refuses an input at `value`, if it does (the scene read again with it).
 std::optional<InputError> refused(const Scene& out, const SceneInput& input, double value);
+// A spread (a standard deviation) at `key` in `unit`, > 0: for a temperature an interval,
+// not a point of the scale ("3 degC" is 3 K, not 276.15 K).
+double read_spread(const MapReader& d, const char* key, const SiUnit& unit, std::string_view reason);
+// A file a scene names: relative to the scene file's directory (to the working directory
+// when an override named it); the path as resolved is noted, so that the scene read
+// again from its tree finds the same file whichever file named it.
+std::string named_file_path(const Node& node, std::string_view expected);
+// Each entry of a study's map from input paths (`study.inputs`, `study.fit`) with the
+// input it names; `none` says what an empty map lacks, `example` what it maps to;
+// `not_taken(path)` is why the study refuses an input (empty: it takes it).
+struct InputEntry {
+  Node entry;
+  SceneInput input;
+};
+std::vector<InputEntry> input_entries(const Node& map, const Scene& out, std::string_view none,
+                                      std::string_view example,
+                                      const std::function<std::string(const std::string&)>& not_taken);
+// A calibration study's data file, fitted inputs and measurement spreads (read once the
+// scene's inputs are known).
+void read_calibration(const MapReader& scene, Scene& out);
 // A reliability study's uncertain inputs: `study.inputs`, each an input of the scene with
 // a distribution the scene accepts (read once the scene's inputs are known).
 void read_uncertain_inputs(const MapReader& scene, Scene& out);

@@ -1,5 +1,6 @@
 // describe_scene: the resolved scene written back as a scene file, so a run's inputs can be
 // stored beside its results and replayed exactly.
+#include <filesystem>
 #include <fmt/format.h>
 
 #include "scene_names.h"
@@ -201,7 +202,8 @@ void write_numerics(Writer& w, const Scene& s) {
   w.line(0, "study:");
   w.entry(1, "type", std::string(kStudyTypes.name(s.study.type)));
   const Study& st = s.study;
-  if (st.type != StudyType::point && !(st.type == StudyType::sensitivity && st.load_end == 0.0)) {
+  if (st.type != StudyType::point && st.type != StudyType::calibration &&
+      !(st.type == StudyType::sensitivity && st.load_end == 0.0)) {
     w.entry(1, "load_start", quantity(st.load_start, "N"));
     w.entry(1, "load_end", quantity(st.load_end, "N"));
   }
@@ -258,6 +260,19 @@ void write_numerics(Writer& w, const Scene& s) {
     w.entry(2, "cov", quantity(st.sampling_cov, "1"));
     w.entry(2, "max_samples", fmt::format("{}", st.max_samples));
     w.entry(2, "seed", fmt::format("{}", st.seed));
+  }
+  if (st.type == StudyType::calibration) {
+    w.entry(1, "data", quoted(std::filesystem::absolute(st.data).string()));
+    w.line(1, "fit:");
+    for (const FittedInput& f : st.fitted)
+      w.entry(2, f.path, fmt::format("{{start: {}, lower: {}, upper: {}}}", quantity(f.start, f.unit),
+                                      quantity(f.lower, f.unit), quantity(f.upper, f.unit)));
+    const char* units[] = {"N m", "1", "K", "K"};
+    std::string sd;
+    for (std::size_t q = 0; q < kMeasuredQuantities; ++q)
+      if (st.measurement_sd[q] > 0.0)
+        sd += fmt::format("{}{}: {}", sd.empty() ? "" : ", ", kMeasuredNames[q], quantity(st.measurement_sd[q], units[q]));
+    if (!sd.empty()) w.entry(1, "sd", fmt::format("{{{}}}", sd));
   }
   if (st.type == StudyType::distress_curve) {
     const char* unit = st.curve_parameter == CurveParameter::speed                  ? "rad/s"

@@ -52,6 +52,9 @@ std::string result_columns_json() {
   tables["sensitivity"] = columns(sensitivity_table({}), sensitivity_table({}));
   tables["reliability"] = columns(reliability_table({}), reliability_table({}));
   tables["design_point"] = columns(design_point_table({}), design_point_table({}));
+  tables["calibration"] = columns(calibration_table({}), calibration_table({}));
+  tables["calibration_correlation"] = columns(correlation_table({}), correlation_table({}));
+  tables["calibration_points"] = columns(calibration_points_table({}), calibration_points_table({}));
 
   Json run_parameters = Json::array();
   for (MapParameter p : {MapParameter::friction_coefficient, MapParameter::gear_tilt, MapParameter::roughness,

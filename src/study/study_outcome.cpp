@@ -13,7 +13,7 @@ std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
   std::vector<NamedTable> tables;
   tables.push_back({"states", states_table(out.states, parameter, sliding)});
   if (type != StudyType::point && type != StudyType::transient && type != StudyType::sensitivity &&
-      type != StudyType::reliability)
+      type != StudyType::reliability && type != StudyType::calibration)
     tables.push_back({"distress", distress_table(out.distress, parameter, sliding)});
   if (type == StudyType::sliding_choice) tables.push_back({"sliding", sliding_table(out.sliding)});
   if (type == StudyType::distress_curve)
@@ -24,6 +24,11 @@ std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
   if (type == StudyType::reliability) {
     tables.push_back({"reliability", reliability_table(out.reliability)});
     tables.push_back({"design_point", design_point_table(out.design_points)});
+  }
+  if (type == StudyType::calibration) {
+    tables.push_back({"calibration", calibration_table(out.calibration)});
+    tables.push_back({"calibration_correlation", correlation_table(out.correlations)});
+    tables.push_back({"calibration_points", calibration_points_table(out.calibration_points)});
   }
   if (!out.trajectory.empty()) tables.push_back({"trajectory", trajectory_table(out.trajectory, parameter, sliding)});
   return tables;

@@ -28,6 +28,7 @@
 #include "study/search_error_bars.h"
 #include "study/study_searches.h"
 #include "study/operating_point.h"
+#include "study/calibration.h"
 #include "study/reliability.h"
 #include "study/sensitivity.h"
 
@@ -265,6 +266,9 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
     case StudyType::reliability:
       run_reliability(model, out, progress, threads);
       break;
+    case StudyType::calibration:
+      run_calibration(model, out, progress, threads);
+      break;
   }
   // Searches run on worker threads count their own (run_searches); the rest ran here.
   const StudyType type = model.scene().study.type;
@@ -285,7 +289,7 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
   // Continuation and distress searches count their work in states, transients and
   // factorizations; their Newton iterations are those that solved the reported states.
   if (type != StudyType::point && type != StudyType::transient && type != StudyType::sensitivity &&
-      type != StudyType::reliability)
+      type != StudyType::reliability && type != StudyType::calibration)
     for (const SolvedState& s : out.states) out.timings.newton_iterations += s.iterations;
   out.timings.solve_ms = elapsed_ms(t0);
   return out;

@@ -174,6 +174,21 @@ class Scenes(unittest.TestCase):
         self.assertEqual(len(r.design_point["parameter"]), 4)
         self.assertAlmostEqual(sum(r.design_point["importance"]), 1.0, delta=1e-12)
 
+    def test_calibration_tables(self):
+        """A calibration's fit reaches Python as its tables: each fitted input with its
+        standard deviation, and each reading measured against fitted (the fit itself is
+        checked by the C++ test)."""
+        data = os.path.join(ROOT, "tests", "scene", "data", "calibration_rig.csv")
+        r = twb.run(SCENE, overrides=dict(COARSE, **{
+            "study": "{type: calibration, data: '" + data + "', fit: {geometry.gear.tilt: {lower: 0.5 mrad, upper: 3 mrad}}}"}))
+        self.assertFalse(r.solver_failed, r.message)
+        self.assertEqual(list(r.calibration["parameter"]), ["geometry.gear.tilt"])
+        fitted = r.calibration["fitted"][0]
+        self.assertTrue(0.5e-3 <= fitted <= 3e-3, fitted)
+        self.assertEqual(sorted(set(r.calibration_points["quantity"])), ["T_mean_C", "torque_Nm"])
+        self.assertEqual(len(r.calibration_points["measured"]), 4)
+        self.assertEqual(r.states.rows, 2)
+
     def test_sources_of_an_extending_scene(self):
         scene = twb.Scene(os.path.join(ROOT, "configs", "studies", "distress_map.yaml"))
         files = {os.path.basename(f) for _, f, _ in scene.sources()}

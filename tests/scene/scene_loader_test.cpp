@@ -1,4 +1,5 @@
 // Defaults, describe_scene's round trip, and the file-level errors of load_scene.
+#include <filesystem>
 #include <cmath>
 #include <numbers>
 #include <ostream>
@@ -120,6 +121,23 @@ void expect_same_scene(const Scene& a, const Scene& b) {
     EXPECT_EQ(x.upper, y.upper);
   }
   EXPECT_EQ(a.study.probabilities, b.study.probabilities);
+  if (!a.study.data.empty() || !b.study.data.empty())
+    EXPECT_EQ(std::filesystem::absolute(a.study.data), std::filesystem::absolute(b.study.data));
+  ASSERT_EQ(a.study.measurements.size(), b.study.measurements.size());
+  for (std::size_t i = 0; i < a.study.measurements.size(); ++i) {
+    EXPECT_EQ(a.study.measurements[i].load, b.study.measurements[i].load);
+    EXPECT_EQ(a.study.measurements[i].speed, b.study.measurements[i].speed);
+  }
+  ASSERT_EQ(a.study.fitted.size(), b.study.fitted.size());
+  for (std::size_t i = 0; i < a.study.fitted.size(); ++i) {
+    const FittedInput &x = a.study.fitted[i], &y = b.study.fitted[i];
+    EXPECT_EQ(x.path, y.path);
+    EXPECT_DOUBLE_EQ(x.start, y.start);
+    EXPECT_DOUBLE_EQ(x.lower, y.lower);
+    EXPECT_DOUBLE_EQ(x.upper, y.upper);
+  }
+  for (std::size_t q = 0; q < kMeasuredQuantities; ++q)
+    EXPECT_DOUBLE_EQ(a.study.measurement_sd[q], b.study.measurement_sd[q]);
   EXPECT_EQ(a.study.sampling_cov, b.study.sampling_cov);
   EXPECT_EQ(a.study.max_samples, b.study.max_samples);
   EXPECT_EQ(a.study.seed, b.study.seed);
@@ -335,6 +353,12 @@ INSTANTIATE_TEST_SUITE_P(
                           "                 materials.carrier.conductivity: {distribution: uniform, lower: 45 W/(m K),\n"
                           "                                                  upper: 60 W/(m K)}},\n"
                           "        probabilities: [1e-4, 0.01], monte_carlo: {cov: 0.05, max_samples: 500, seed: 7}}\n"},
+        RoundTripCase{"calibration_with_spreads",
+                      std::string(kMinimalScene) + "study: {type: calibration, data: '" +
+                          source_path("tests/scene/data/calibration_rig.csv") +
+                          "',\n        fit: {geometry.gear.tilt: {start: 1.5 mrad, lower: 0.5 mrad, upper: 2.5 mrad},\n"
+                          "              surfaces.asperities.summit_radius: {lower: 10 um, upper: 40 um}},\n"
+                          "        sd: {torque: 2 N mm, T_mean: 0.5 degC}}\n"},
         RoundTripCase{"distress_map_over_an_input_by_its_path",
                       std::string(kMinimalScene) +
                           "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 3 kN,\n"

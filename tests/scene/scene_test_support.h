@@ -19,9 +19,10 @@ inline std::string source_path(const std::string& relative) {
 // A scene file in the test's temporary directory, removed with it.
 class TempScene {
  public:
-  explicit TempScene(const std::string& text, const std::string& suffix = "") {
+  // extension: ".yaml" for a scene, ".csv" for a file a scene names
+  explicit TempScene(const std::string& text, const std::string& suffix = "", const std::string& extension = ".yaml") {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string("twb_scene_") + info->test_suite_name() + "_" + info->name() + suffix + ".yaml";
+    std::string name = std::string("twb_scene_") + info->test_suite_name() + "_" + info->name() + suffix + extension;
     for (char& c : name)
       if (c == '/') c = '_';
     path_ = (std::filesystem::temp_directory_path() / name).string();

@@ -86,6 +86,22 @@ def sliding_rows(speed, loads):
     return rows
 
 
+# A calibration study's tables as a real run wrote them (two inputs fitted to torques and
+# a mean temperature, relative: the readings have no sd).
+CALIBRATION = ["parameter,parameter_unit,start,lower,upper,fitted,sd,at_bound",
+               "lubricant.viscosity.G0,1,3.545,2.5,5,3.9,1.149350494e-10,",
+               "surfaces.asperities.summit_radius,m,2e-05,1e-05,4e-05,2.400000164e-05,4.014595666e-12,"]
+CALIBRATION_CORRELATION = [
+    "parameter_a,parameter_b,covariance,correlation",
+    "lubricant.viscosity.G0,lubricant.viscosity.G0,1.321006557e-20,1",
+    "lubricant.viscosity.G0,surfaces.asperities.summit_radius,2.581916048e-22,0.559561491",
+    "surfaces.asperities.summit_radius,surfaces.asperities.summit_radius,1.611697836e-23,1"]
+CALIBRATION_POINTS = ["point,line,load_N,speed_rad_s,quantity,measured,at_start,fitted,sd,residual",
+                      "1,3,100,300,torque_Nm,0.03787066079,0.02765355743,0.03787066079,,1e-10",
+                      "1,3,100,300,T_mean_C,28.22709602,27.08629111,28.22709602,,-2e-10",
+                      "2,4,115,300,torque_Nm,0.03967643456,0.04158691243,0.03967643456,,0"]
+
+
 FIELDS_HEADER = "film,sliding,r_m,theta_rad,h_m,p_Pa,p_contact_Pa,T_film_C,T_surfaces_C,viscosity_Pa_s"
 
 
@@ -520,6 +536,95 @@ class TwbPlotTest(unittest.TestCase):
         broken = plot(d, "--format", "svg")
         self.assertEqual(broken.returncode, 2)
         self.assertIn("reliability.csv: line 3", broken.stderr)
+
+    def write_calibration(self, d, calibration=None, correlation=None, points=None):
+        """A calibration study's three tables, by default those of a real run (two inputs
+        fitted to torques and a mean temperature, a relative fit: no readings' sd)."""
+        for name, rows in (("calibration.csv", calibration or CALIBRATION),
+                           ("calibration_correlation.csv", correlation or CALIBRATION_CORRELATION),
+                           ("calibration_points.csv", points or CALIBRATION_POINTS)):
+            write(os.path.join(d, name), rows)
+
+    def test_calibration_figure(self):
+        """calibration.csv, calibration_correlation.csv and calibration_points.csv of a
+        calibration study: read as rows (None for an empty sd), drawn as a parity plot per
+        measured quantity with the fitted inputs beneath; a malformed number is located."""
+        d = self.results_dir("calibration")
+        self.write_calibration(d)
+        result = plot(d, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        out_dir = os.path.join(d, "figures")
+        self.assert_figures(out_dir, ("calibration",), formats=("svg",))
+        text = self.svg_text(os.path.join(out_dir, "calibration.svg"))
+        for label in ("2 inputs fitted to 3 measured values at 2 points", "friction torque (N m)",
+                      "mean washer temperature (°C)", "at the start", "predicted = measured",
+                      "T_mean_C: 1 value, rms relative residual 2e-10",
+                      "lubricant.viscosity.G0 = 3.9 ± 1.1e-10 ",
+                      "surfaces.asperities.summit_radius = 2.4e-05 ± 4e-12 m"):
+            self.assertIn(label, text)
+        self.assertNotIn("measured ± its sd", text)  # a relative fit: no error bars
+        self.assertNotIn("bound,", text)
+        fitted = tp.read_calibration(os.path.join(d, "calibration.csv"))
+        self.assertEqual([r["parameter"] for r in fitted],
+                         ["lubricant.viscosity.G0", "surfaces.asperities.summit_radius"])
+        self.assertEqual((fitted[1]["fitted"], fitted[1]["sd"], fitted[1]["at_bound"]),
+                         (2.400000164e-05, 4.014595666e-12, ""))
+        self.assertEqual(fitted[0]["parameter_unit"], "1")
+        pairs = tp.read_calibration_correlation(os.path.join(d, "calibration_correlation.csv"))
+        self.assertEqual([(r["parameter_a"], r["parameter_b"], r["correlation"]) for r in pairs][1],
+                         ("lubricant.viscosity.G0", "surfaces.asperities.summit_radius", 0.559561491))
+        points = tp.read_calibration_points(os.path.join(d, "calibration_points.csv"))
+        self.assertEqual([(r["point"], r["line"], r["quantity"]) for r in points],
+                         [(1, 3, "torque_Nm"), (1, 3, "T_mean_C"), (2, 4, "torque_Nm")])
+        self.assertIsNone(points[0]["sd"])
+        self.assertEqual(points[1]["at_start"], 27.08629111)
+        run = tp.read_run(d)
+        self.assertEqual(len(run.calibration_correlation), 3)
+        # A fit with the readings' sd, an input on its bound and one the data do not
+        # determine (no sd), and no covariance: a header-only correlation table.
+        self.write_calibration(
+            d, calibration=[CALIBRATION[0], "lubricant.viscosity.G0,1,3.545,2.5,5,5,,upper",
+                            "surfaces.asperities.summit_radius,m,2e-05,1e-05,4e-05,2.1e-05,3e-06,"],
+            correlation=CALIBRATION_CORRELATION[:1],
+            points=[CALIBRATION_POINTS[0], "1,3,100,300,f_eff,0.08,0.07,0.079,0.004,-0.25",
+                    "1,3,100,300,T_max_C,41,38,40.5,1.5,-0.33"])
+        self.assertEqual(tp.read_calibration_correlation(os.path.join(d, "calibration_correlation.csv")), [])
+        result = plot(d, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        text = self.svg_text(os.path.join(out_dir, "calibration.svg"))
+        for label in ("lubricant.viscosity.G0 = 5 ", "at its upper bound", "= 2.1e-05 ± 3e-06 m",
+                      "measured ± its sd", "maximum film temperature (°C)",
+                      "T_max_C: 1 value, rms residual 0.33 sd"):
+            self.assertIn(label, text)
+        self.assertNotIn("lubricant.viscosity.G0 = 5 ±", text)
+        self.assertNotIn("friction torque", text)
+        self.write_calibration(d, points=CALIBRATION_POINTS[:3] + ["2,4,115,300,torque_Nm,0.0397,oops,0.0397,,0"])
+        with self.assertRaises(tp.InputError) as caught:
+            tp.read_calibration_points(os.path.join(d, "calibration_points.csv"))
+        self.assertIn("calibration_points.csv: line 4: column 'at_start'", str(caught.exception))
+        broken = plot(d, "--format", "svg")
+        self.assertEqual(broken.returncode, 2)
+        self.assertIn(os.path.join(d, "calibration_points.csv") + ": line 4", broken.stderr)
+        self.write_calibration(d, calibration=CALIBRATION[:2] + ["surfaces.asperities.summit_radius,m,2e-05,,4e-05,"
+                                                                  "2.4e-05,,"])
+        broken = plot(d, "--format", "svg")
+        self.assertEqual(broken.returncode, 2)
+        self.assertIn(os.path.join(d, "calibration.csv") + ": line 3: column 'lower'", broken.stderr)
+
+    def test_calibrations_of_several_runs(self):
+        """Each directory's calibration gets its own figure, named by its directory; one
+        without a measured value is noted, not drawn."""
+        a, b, empty = (self.results_dir(name, speeds=(545,)) for name in ("fit_a", "fit_b", "fit_empty"))
+        for d in (a, b):
+            self.write_calibration(d)
+        self.write_calibration(empty, points=CALIBRATION_POINTS[:1])
+        written = tp.make_figures(tp.merge([tp.read_run(d) for d in (a, b)]), os.path.join(self.tmp, "figs"), ["svg"])
+        self.assertEqual(sorted(os.path.basename(p) for p in written if "calibration" in p),
+                         ["calibration_1_fit_a.svg", "calibration_2_fit_b.svg"])
+        result = plot(empty, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("fit_empty: calibration_points.csv has no measured value to draw", result.stderr)
+        self.assertFalse(os.path.exists(os.path.join(empty, "figures", "calibration.svg")))
 
     def test_sliding_comparison(self):
         d = os.path.join(self.tmp, "sliding")

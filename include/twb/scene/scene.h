@@ -2,6 +2,7 @@
 // Produced only by the scene loader (scene_loader.h); every layer after it reads this.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -39,7 +40,7 @@ enum class FrictionLaw { constant, empirical };
 // sliding_choice: both sliding configurations over a load grid, the one of lower
 // friction torque kept (docs/physics.md section 2, the paper's "Component Rotational Speed").
 enum class StudyType {
-  point, load_sweep, distress_map, transient, sliding_choice, distress_curve, sensitivity, reliability
+  point, load_sweep, distress_map, transient, sliding_choice, distress_curve, sensitivity, reliability, calibration
 };
 
 // The optional second axis of a distress map or load sweep (besides speed).
@@ -66,6 +67,28 @@ struct UncertainInput {
   InputDistribution distribution = InputDistribution::normal;
   double mean = 0.0, sd = 0.0;        // SI (normal, lognormal, truncated_normal)
   double lower = 0.0, upper = 0.0;    // SI (uniform, truncated_normal)
+};
+
+// What a rig measures that a calibration study fits (docs/physics.md section 18): the
+// friction torque, the effective friction coefficient, the washer's mean and the film's
+// hottest temperature.
+enum class MeasuredQuantity { torque, f_eff, T_mean, T_max };
+inline constexpr std::size_t kMeasuredQuantities = 4;
+
+// One measured operating point (a row of the calibration's data file).
+struct MeasuredPoint {
+  double load = 0.0;   // N
+  double speed = 0.0;  // rad/s
+  // SI (N m, 1, K), by MeasuredQuantity; NaN where the point does not measure it
+  std::array<double, kMeasuredQuantities> values{};
+  int line = 0;  // its line in the data file
+};
+
+// An input fitted by a calibration study: its scene path and SI unit, where the fit
+// starts and the bounds it keeps to (SI).
+struct FittedInput {
+  std::string path, unit;
+  double start = 0.0, lower = 0.0, upper = 0.0;
 };
 
 // How a distress search estimates the discretization error of W_d.
@@ -294,6 +317,14 @@ struct Study {
   double sampling_cov = 0.1;
   int max_samples = 4000;
   long seed = 1;
+  // calibration: the measurements (from the file `data`, as resolved), the inputs fitted
+  // to them, and each measured quantity's standard deviation (by MeasuredQuantity; 0
+  // where not given: then every residual is relative to its reading and the covariance
+  // is scaled by the residuals' own variance).
+  std::string data;
+  std::vector<MeasuredPoint> measurements;
+  std::vector<FittedInput> fitted;
+  std::array<double, kMeasuredQuantities> measurement_sd{};
 };
 
 struct Output {

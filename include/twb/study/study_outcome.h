@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "twb/results/calibration_table.h"
 #include "twb/results/distress_table.h"
 #include "twb/results/fold_curve_table.h"
 #include "twb/results/reliability_table.h"
@@ -34,6 +35,9 @@ struct StudyOutcome {
   std::vector<SensitivityRow> sensitivity;  // sensitivity: each quantity against each input
   std::vector<ReliabilityRow> reliability;   // reliability: each probability of failure
   std::vector<DesignPointRow> design_points;  // reliability: the inputs at each design point
+  std::vector<CalibrationRow> calibration;             // calibration: each fitted input
+  std::vector<CorrelationRow> correlations;            // calibration: each pair of fitted inputs
+  std::vector<CalibrationPointRow> calibration_points;  // calibration: each measured value
   std::vector<std::string> summary;  // lines for the end of the run's output (e.g. the cusp)
   // The solvers' own words where a search went on regardless (twb run --verbose).
   std::vector<std::string> diagnostics;

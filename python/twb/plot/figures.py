@@ -4,6 +4,7 @@ and what cannot be drawn is said on stderr, so a missing figure is never a silen
 
 import sys
 
+from .calibration import figure_calibration
 from .distress import figure_distress_map, figure_fold_curve
 from .reliability import figure_failure_probability
 from .sensitivity import figure_tornado
@@ -65,6 +66,13 @@ def make_figures(data, out_dir, formats):
         stem = "reliability" if len(data.reliabilities) == 1 else f"reliability_{k + 1}_{name}"
         if fig is None:
             print(f"twb_plot: note: {name}: reliability.csv has no probability to draw", file=sys.stderr)
+        else:
+            save(fig, out_dir, stem, formats, written)
+    for k, (name, rows, points) in enumerate(data.calibrations):
+        fig = figure_calibration(rows, points)
+        stem = "calibration" if len(data.calibrations) == 1 else f"calibration_{k + 1}_{name}"
+        if fig is None:
+            print(f"twb_plot: note: {name}: calibration_points.csv has no measured value to draw", file=sys.stderr)
         else:
             save(fig, out_dir, stem, formats, written)
     return written

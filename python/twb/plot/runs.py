@@ -11,9 +11,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .style import Style, parameter_label, speed_key, speed_label
-from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_design_point, read_distress,
-                     read_fold_curve, read_reliability, read_sensitivity, read_sliding, read_states,
-                     read_trajectory, STATE_ERROR_COLUMNS)
+from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_calibration, read_calibration_correlation,
+                     read_calibration_points, read_design_point, read_distress, read_fold_curve,
+                     read_reliability, read_sensitivity, read_sliding, read_states, read_trajectory,
+                     STATE_ERROR_COLUMNS)
 
 
 def friction_setting(path):
@@ -49,6 +50,9 @@ class Run:
     sensitivity: list = field(default_factory=list)  # rows of sensitivity.csv
     reliability: list = field(default_factory=list)  # rows of reliability.csv
     design_point: list = field(default_factory=list)  # rows of design_point.csv
+    calibration: list = field(default_factory=list)  # rows of calibration.csv
+    calibration_correlation: list = field(default_factory=list)  # rows of calibration_correlation.csv
+    calibration_points: list = field(default_factory=list)  # rows of calibration_points.csv
 
 
 def read_run(directory):
@@ -81,9 +85,22 @@ def read_run(directory):
         design_path = os.path.join(directory, "design_point.csv")
         if os.path.isfile(design_path):
             run.design_point = read_design_point(design_path)
+    _read_calibration(run, directory)
     run.friction = friction_setting(os.path.join(directory, "run.json"))
     run.has_fields = os.path.isdir(os.path.join(directory, "fields"))
     return run
+
+
+def _read_calibration(run, directory):
+    """A calibration study's three tables, each where present (the correlations are
+    header-only when the fit has no covariance)."""
+    for attribute, name, reader in (("calibration", "calibration.csv", read_calibration),
+                                    ("calibration_correlation", "calibration_correlation.csv",
+                                     read_calibration_correlation),
+                                    ("calibration_points", "calibration_points.csv", read_calibration_points)):
+        path = os.path.join(directory, name)
+        if os.path.isfile(path):
+            setattr(run, attribute, reader(path))
 
 
 @dataclass
@@ -100,6 +117,8 @@ class Data:
     sensitivities: list = field(default_factory=list)  # (run name, rows of sensitivity.csv)
     # (run name, rows of reliability.csv, rows of design_point.csv)
     reliabilities: list = field(default_factory=list)
+    # (run name, rows of calibration.csv, rows of calibration_points.csv)
+    calibrations: list = field(default_factory=list)
     rpm: bool = False       # speeds drawn in rpm
 
 
@@ -157,4 +176,6 @@ def merge(runs):
     data.fold_curves = [(r.name,) + r.fold_curve for r in runs if r.fold_curve is not None]
     data.sensitivities = [(r.name, r.sensitivity) for r in runs if r.sensitivity]
     data.reliabilities = [(r.name, r.reliability, r.design_point) for r in runs if r.reliability]
+    data.calibrations = [(r.name, r.calibration, r.calibration_points) for r in runs
+                         if r.calibration or r.calibration_points]
     return data

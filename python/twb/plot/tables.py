@@ -64,6 +64,14 @@ RELIABILITY_COLUMNS = tuple(_TABLES["reliability"]["columns"])
 RELIABILITY_TEXTS = tuple(_TABLES["reliability"]["texts"])
 DESIGN_POINT_COLUMNS = tuple(_TABLES["design_point"]["columns"])
 DESIGN_POINT_TEXTS = tuple(_TABLES["design_point"]["texts"])
+CALIBRATION_COLUMNS = tuple(_TABLES["calibration"]["columns"])
+CALIBRATION_TEXTS = tuple(_TABLES["calibration"]["texts"])
+CALIBRATION_CORRELATION_COLUMNS = tuple(_TABLES["calibration_correlation"]["columns"])
+CALIBRATION_CORRELATION_TEXTS = tuple(_TABLES["calibration_correlation"]["texts"])
+CALIBRATION_POINTS_COLUMNS = tuple(_TABLES["calibration_points"]["columns"])
+CALIBRATION_POINTS_TEXTS = tuple(_TABLES["calibration_points"]["texts"])
+# What calibration_points.csv's quantity names: the states' columns a calibration fits.
+CALIBRATION_QUANTITIES = _written("states", ("torque_Nm", "f_eff", "T_mean_C", "T_max_C"))
 # The columns twb adds after the speed when a study runs several configurations: the
 # value of its second parameter, and the film that slides.
 PARAMETER_COLUMNS = tuple(_DEFINITION["run_parameters"])
@@ -304,6 +312,28 @@ def read_design_point(path):
     does not have (a uniform's mean) None."""
     return _read_rows(path, DESIGN_POINT_COLUMNS, DESIGN_POINT_TEXTS, "design_point.csv",
                       lambda c: c in ("mean", "sd", "lower", "upper"))
+
+
+def read_calibration(path):
+    """calibration.csv: one dict per fitted input (SI values); sd None where the data do
+    not determine it, at_bound "lower", "upper" or "" (within its bounds)."""
+    return _read_rows(path, CALIBRATION_COLUMNS, CALIBRATION_TEXTS, "calibration.csv",
+                      lambda c: c == "sd")
+
+
+def read_calibration_correlation(path):
+    """calibration_correlation.csv: one dict per pair of fitted inputs (each pair once,
+    each input with itself); no rows where the fit has no covariance (not identifiable,
+    or no degree of freedom left)."""
+    return _read_rows(path, CALIBRATION_CORRELATION_COLUMNS, CALIBRATION_CORRELATION_TEXTS,
+                      "calibration_correlation.csv", lambda c: False)
+
+
+def read_calibration_points(path):
+    """calibration_points.csv: one dict per measured value, in its quantity's unit (°C for
+    a temperature); sd None where the fit is relative (the readings have none)."""
+    return _read_rows(path, CALIBRATION_POINTS_COLUMNS, CALIBRATION_POINTS_TEXTS, "calibration_points.csv",
+                      lambda c: c == "sd")
 
 
 @dataclass

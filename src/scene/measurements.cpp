@@ -1,0 +1,160 @@
+#include "scene/measurements.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "scene/csv_text.h"
+#include "scene_names.h"
+#include "twb/scene/input_error.h"
+
+namespace twb::scene_io {
+
+namespace {
+
+constexpr std::uintmax_t kMaxDataBytes = std::uintmax_t{64} << 20;
+constexpr std::string_view kHeaderExample = "load [N], speed [rpm], torque [N m], T_mean [degC]";
+
+// A column: the load, the speed or a measured quantity, and its unit's conversion to SI
+// (si = scale·v + offset: a temperature in degC has an offset).
+struct Column {
+  int what = -1;  // 0..3: MeasuredQuantity; kLoad, kSpeed
+  double scale = 1.0, offset = 0.0;
+};
+constexpr int kLoad = 10, kSpeed = 11;
+
+// The results' own column names, with their units.
+struct ResultsName {
+  std::string_view name;
+  int what;
+  std::string_view unit;
+};
+constexpr ResultsName kResultsNames[] = {
+    {"load_N", kLoad, "N"},         {"speed_rad_s", kSpeed, "rad/s"}, {"speed_rpm", kSpeed, "rpm"},
+    {"torque_Nm", 0, "N m"},        {"f_eff", 1, "1"},                {"T_mean_C", 2, "degC"},
+    {"T_mean_K", 2, "K"},           {"T_max_C", 3, "degC"},           {"T_max_K", 3, "K"}};
+
+const SiUnit& unit_of(int what) {
+  if (what == kLoad) return si::force;
+  if (what == kSpeed) return si::angular_speed;
+  if (what == 0) return si::torque;
+  if (what == 1) return si::dimensionless;
+  return si::temperature;
+}
+
+std::string allowed_names() {
+  std::string names = "load, speed";
+  for (std::string_view n : kMeasuredNames) names += fmt::format(", {}", n);
+  return names;
+}
+
+Column column_of(const CsvText& text, std::size_t line, const CsvField& field) {
+  const CsvHeader h = csv_header(field);
+  Column c;
+  std::string unit = h.unit;
+  std::size_t unit_at = h.unit_column;
+  if (h.unit.empty()) {
+    const auto known = std::find_if(std::begin(kResultsNames), std::end(kResultsNames),
+                                    [&](const ResultsName& r) { return r.name == h.name; });
+    if (known == std::end(kResultsNames))
+      text.fail(line, field.column,
+                fmt::format("the column '{}' gives no unit: name it {} with its unit in brackets, e.g. '{}'",
+                            field.text, allowed_names(), kHeaderExample));
+    c.what = known->what;
+    unit = known->unit;
+    unit_at = field.column;
+  } else if (h.name == "load") {
+    c.what = kLoad;
+  } else if (h.name == "speed") {
+    c.what = kSpeed;
+  } else {
+    const auto q = std::find(std::begin(kMeasuredNames), std::end(kMeasuredNames), h.name);
+    if (q == std::end(kMeasuredNames))
+      text.fail(line, field.column,
+                fmt::format("the column '{}' is none a calibration reads; the columns are {}", h.name, allowed_names()));
+    c.what = int(q - std::begin(kMeasuredNames));
+  }
+  try {
+    const SiUnit& si_unit = unit_of(c.what);
+    c.offset = to_si("0 " + unit, si_unit);
+    c.scale = to_si("1 " + unit, si_unit) - c.offset;
+  } catch (const QuantityError& e) {
+    text.fail(line, unit_at, fmt::format("the {} column's unit '{}': {}", h.name, unit, e.what()));
+  }
+  return c;
+}
+
+std::string_view name_of(int what) {
+  if (what == kLoad) return "load";
+  if (what == kSpeed) return "speed";
+  return kMeasuredNames[std::size_t(what)];
+}
+
+}  // namespace
+
+std::vector<MeasuredPoint> read_measurements(const std::string& path) {
+  const CsvText text(path, "the measurements", kMaxDataBytes);
+  const auto& lines = text.lines();
+  std::size_t k = text.next_row(0);
+  if (k == lines.size())
+    text.fail(fmt::format("the measurements are empty: they need a header such as '{}' and then one row a "
+                          "measured point",
+                          kHeaderExample));
+  const std::vector<CsvField> header = csv_fields(lines[k]);
+  std::vector<Column> columns;
+  std::optional<std::size_t> seen[12];
+  for (std::size_t c = 0; c < header.size(); ++c) {
+    columns.push_back(column_of(text, k, header[c]));
+    std::optional<std::size_t>& first = seen[columns.back().what];
+    if (first)
+      text.fail(k, header[c].column, fmt::format("a second {} column (the first is column {})",
+                                                 name_of(columns.back().what), *first + 1));
+    first = c;
+  }
+  for (const int needed : {kLoad, kSpeed})
+    if (!seen[needed])
+      text.fail(k, 0, fmt::format("no {} column: every measured point needs its load and speed, e.g. '{}'",
+                                  name_of(needed), kHeaderExample));
+  if (std::none_of(seen, seen + kMeasuredQuantities, [](const auto& s) { return s.has_value(); }))
+    text.fail(k, 0, fmt::format("no measured quantity: give at least one of torque, f_eff, T_mean, T_max, e.g. '{}'",
+                                kHeaderExample));
+
+  std::vector<MeasuredPoint> points;
+  for (k = text.next_row(k + 1); k < lines.size(); k = text.next_row(k + 1)) {
+    const std::vector<CsvField> row = csv_fields(lines[k]);
+    if (row.size() != header.size())
+      text.fail(k, 0, fmt::format("a row has one field a column ({}); this one has {}", header.size(), row.size()));
+    MeasuredPoint& p = points.emplace_back();
+    p.values.fill(std::numeric_limits<double>::quiet_NaN());
+    p.line = int(k) + 1;
+    bool measured = false;
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      const Column& col = columns[c];
+      const std::string_view name = name_of(col.what);
+      if (row[c].text.empty() && col.what < int(kMeasuredQuantities)) continue;  // not measured here
+      const double value = col.scale * text.number(k, row[c], name) + col.offset;
+      const bool positive = col.what == kLoad || col.what == kSpeed || col.what == 2 || col.what == 3;
+      if (positive ? !(value > 0.0) : !(value >= 0.0))
+        text.fail(k, row[c].column,
+                  fmt::format("the {} '{}' must be {} ({:.6g} {} in SI)", name, row[c].text,
+                              positive ? "positive" : "zero or more", value, unit_of(col.what).symbol));
+      if (col.what == kLoad) p.load = value;
+      else if (col.what == kSpeed) p.speed = value;
+      else {
+        p.values[std::size_t(col.what)] = value;
+        measured = true;
+      }
+    }
+    if (!measured) text.fail(k, 0, "the row measures nothing: every quantity's field is empty");
+  }
+  if (points.empty())
+    text.fail(fmt::format("the measurements have a header but no rows: one row a measured point, e.g. under '{}' "
+                          "a row '150, 3000, 0.121, 94.2'",
+                          kHeaderExample));
+  return points;
+}
+
+}  // namespace twb::scene_io

@@ -1,0 +1,180 @@
+// Calibration to measurements (docs/physics.md section 18) on the paper's bearing, tests'
+// 5 x 24 mesh: rig data made by the model itself at known inputs (the oil's viscosity-
+// temperature exponent G0 and the summits' radius), fitted from other starts.
+//
+// Tolerances, from analysis: the predictions are accurate to about 1e-9 relative (the
+// solver's residual tolerance); the fitted inputs move by that over the scaled
+// Jacobian's smallest singular value, which is about 1e-4 of its largest here (the summit
+// radius matters little in these mostly fluid-borne states): 1e-5 relative, allowed 1e-4.
+// The derivatives as in sensitivity_test.cpp: 2|fd(2Δ) − fd(Δ)| + 1e-6·|q| per unit p.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <cmath>
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "../scene/scene_test_support.h"
+#include "model/bearing_model.h"
+#include "study/measured_response.h"
+#include "study/study_runner.h"
+#include "twb/scene/scene_loader.h"
+
+namespace twb {
+namespace {
+
+using testing::TempScene;
+
+const std::vector<FittedInput> kFitted = {{"lubricant.viscosity.G0", "1", 3.545, 2.5, 5.0},
+                                          {"surfaces.asperities.summit_radius", "m", 20e-6, 10e-6, 40e-6}};
+const std::vector<double> kTruth = {3.9, 24e-6};
+
+Scene point_scene() {
+  return load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
+                    {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24", "study={type: point}"});
+}
+
+std::vector<MeasuredPoint> rig_points(const std::vector<std::pair<double, double>>& load_speed) {
+  std::vector<MeasuredPoint> points;
+  for (const auto& [load, speed] : load_speed) {
+    MeasuredPoint& p = points.emplace_back();
+    p.load = load;
+    p.speed = speed;
+    p.values.fill(NAN);
+  }
+  return points;
+}
+
+// The rig's file: each point's torque (and mean temperature, unless torque_only) as the
+// bearing predicts them at the truth.
+std::string rig_data(const std::vector<MeasuredPoint>& points, bool torque_only = false) {
+  MeasuredResponse truth(point_scene(), kFitted, points, 1);
+  std::vector<PointPrediction> at;
+  std::string why;
+  EXPECT_TRUE(truth.predict(kTruth, false, at, why)) << why;
+  std::string text = torque_only ? "load [N], speed [rad/s], torque [N m]\n"
+                                 : "load [N], speed [rad/s], torque [N m], T_mean [K]\n";
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    text += fmt::format("{:.17g}, {:.17g}, {:.17g}", points[i].load, points[i].speed, at[i].values[0]);
+    text += torque_only ? "\n" : fmt::format(", {:.17g}\n", at[i].values[2]);
+  }
+  return text;
+}
+
+std::string calibration_scene(const std::string& data, const std::string& sd = "") {
+  return fmt::format(
+      "extends: {}/configs/jackson_green_2006.yaml\nmesh: {{radial_nodes: 5, circumferential_nodes: 24}}\n"
+      "study: !replace\n  type: calibration\n  data: {}\n  fit:\n"
+      "    lubricant.viscosity.G0: {{start: 3.545, lower: 2.5, upper: 5}}\n"
+      "    surfaces.asperities.summit_radius: {{start: 20 um, lower: 10 um, upper: 40 um}}\n{}",
+      TWB_SOURCE_DIR, data, sd.empty() ? "" : "  sd: " + sd + "\n");
+}
+
+StudyOutcome calibrate(const std::string& scene_text, int threads) {
+  const TempScene scene(scene_text, fmt::format("_{}", threads));
+  BearingModel model(load_scene(scene.path()));
+  return run_study(model, {}, RunOptions{.threads = threads});
+}
+
+const std::vector<std::pair<double, double>> kPoints = {{100, 300}, {120, 300}, {140, 300},
+                                                        {100, 545}, {120, 545}, {140, 545}};
+
+TEST(Calibration, RecoversTheInputsThatMadeTheDataOnAnyThreadCount) {
+  const TempScene data(rig_data(rig_points(kPoints)), "", ".csv");
+  const StudyOutcome one = calibrate(calibration_scene(data.path()), 1);
+  ASSERT_FALSE(one.solver_failed) << one.message;
+  ASSERT_EQ(one.calibration.size(), 2u);
+  for (std::size_t j = 0; j < 2; ++j) {
+    EXPECT_NEAR(one.calibration[j].fitted, kTruth[j], 1e-4 * kTruth[j]) << one.calibration[j].parameter;
+    EXPECT_TRUE(one.calibration[j].sd.has_value());
+  }
+  for (const CalibrationPointRow& r : one.calibration_points) EXPECT_NEAR(r.residual, 0.0, 1e-6);
+  EXPECT_EQ(one.states.size(), kPoints.size());  // the fitted state at each point
+  // The speeds spread over two threads: the same fit, bit for bit.
+  const StudyOutcome two = calibrate(calibration_scene(data.path()), 2);
+  ASSERT_EQ(two.calibration.size(), 2u);
+  for (std::size_t j = 0; j < 2; ++j) EXPECT_EQ(two.calibration[j].fitted, one.calibration[j].fitted);
+  EXPECT_EQ(two.summary, one.summary);
+}
+
+// The predictions' derivatives (the fit's Jacobian) against centred differences of whole
+// predictions at p ± Δ and p ± 2Δ.
+TEST(Calibration, DerivativesOfThePredictionsMatchDifferences) {
+  const std::vector<MeasuredPoint> points = rig_points({{120, 300}, {140, 545}});
+  MeasuredResponse response(point_scene(), kFitted, points, 1);
+  std::vector<PointPrediction> at;
+  std::string why;
+  const std::vector<double> p = {3.545, 20e-6};
+  ASSERT_TRUE(response.predict(p, true, at, why)) << why;
+  for (std::size_t j = 0; j < p.size(); ++j) {
+    auto difference = [&](double step) {
+      std::vector<std::vector<double>> d(points.size(), std::vector<double>(kMeasuredQuantities));
+      std::vector<PointPrediction> plus, minus;
+      std::vector<double> up = p, down = p;
+      up[j] += step;
+      down[j] -= step;
+      EXPECT_TRUE(response.predict(up, false, plus, why)) << why;
+      EXPECT_TRUE(response.predict(down, false, minus, why)) << why;
+      for (std::size_t i = 0; i < points.size(); ++i)
+        for (std::size_t q = 0; q < kMeasuredQuantities; ++q)
+          d[i][q] = (plus[i].values[q] - minus[i].values[q]) / (2.0 * step);
+      return d;
+    };
+    const double delta = 1e-3 * std::abs(p[j]);
+    const auto fd = difference(delta), fd2 = difference(2.0 * delta);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      for (std::size_t q = 0; q < kMeasuredQuantities; ++q) {
+        const double allowed = 2.0 * std::abs(fd2[i][q] - fd[i][q]) + 1e-6 * std::abs(at[i].values[q] / p[j]);
+        EXPECT_NEAR(at[i].derivatives[q][j], fd[i][q], allowed) << kFitted[j].path << ", point " << i << ", quantity " << q;
+      }
+  }
+}
+
+// With each reading's standard deviation given, the inputs' covariance is (JᵀJ)⁻¹ for J
+// the weighted Jacobian of the fit's predictions, computed here again from them.
+TEST(Calibration, CovarianceIsTheInverseOfTheWeightedNormalMatrix) {
+  const TempScene data(rig_data(rig_points(kPoints)), "", ".csv");
+  const double sd_torque = 1e-3, sd_temperature = 0.5;
+  const StudyOutcome out =
+      calibrate(calibration_scene(data.path(), fmt::format("{{torque: {} N m, T_mean: {} K}}", sd_torque, sd_temperature)), 1);
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  MeasuredResponse response(point_scene(), kFitted, rig_points(kPoints), 1);
+  std::vector<PointPrediction> at;
+  std::string why;
+  const std::vector<double> fitted = {out.calibration[0].fitted, out.calibration[1].fitted};
+  ASSERT_TRUE(response.predict(fitted, true, at, why)) << why;
+  Eigen::MatrixXd J(2 * long(kPoints.size()), 2);
+  for (std::size_t i = 0; i < kPoints.size(); ++i)
+    for (long j = 0; j < 2; ++j) {
+      J(2 * long(i), j) = at[i].derivatives[0][std::size_t(j)] / sd_torque;
+      J(2 * long(i) + 1, j) = at[i].derivatives[2][std::size_t(j)] / sd_temperature;
+    }
+  const Eigen::MatrixXd covariance = (J.transpose() * J).inverse();
+  for (long j = 0; j < 2; ++j) {
+    ASSERT_TRUE(out.calibration[std::size_t(j)].sd.has_value());
+    // The same derivatives at the same inputs (the fit's own, from its last evaluation):
+    // only the linear algebra's rounding differs.
+    EXPECT_NEAR(*out.calibration[std::size_t(j)].sd, std::sqrt(covariance(j, j)), 1e-6 * std::sqrt(covariance(j, j)));
+  }
+  ASSERT_EQ(out.correlations.size(), 3u);
+  EXPECT_NEAR(out.correlations[1].correlation, covariance(0, 1) / std::sqrt(covariance(0, 0) * covariance(1, 1)), 1e-6);
+}
+
+// One torque reading cannot determine two inputs: the fit says which combination it
+// cannot, and gives neither a standard deviation.
+TEST(Calibration, OneReadingForTwoInputsIsNotIdentifiable) {
+  const TempScene data(rig_data(rig_points({{120, 300}}), true), "", ".csv");
+  const StudyOutcome out = calibrate(calibration_scene(data.path()), 1);
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  for (const CalibrationRow& r : out.calibration) EXPECT_FALSE(r.sd.has_value()) << r.parameter;
+  EXPECT_TRUE(out.correlations.empty());
+  EXPECT_TRUE(std::any_of(out.summary.begin(), out.summary.end(), [](const std::string& s) {
+    return s.find("the data cannot determine the combination lubricant.viscosity.G0") != std::string::npos;
+  })) << fmt::format("{}", fmt::join(out.summary, "\n"));
+}
+
+}  // namespace
+}  // namespace twb
