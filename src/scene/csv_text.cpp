@@ -25,7 +25,10 @@ CsvText::CsvText(const std::string& path, std::string_view what, std::uintmax_t 
   if (!in) throw InputError(path, 0, 0, fmt::format("cannot read {} (is it readable?)", what), "");
   std::ostringstream content;
   content << in.rdbuf();
-  lines_ = split_lines(content.str());
+  std::string text = content.str();
+  // A spreadsheet's "CSV UTF-8" starts with a byte-order mark, which is no part of the header.
+  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
+  lines_ = split_lines(text);
 }
 
 void CsvText::fail(std::size_t line, std::size_t column, const std::string& message) const {

@@ -8,6 +8,7 @@
 // `sd` for every quantity the data measure or for none.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -57,8 +58,15 @@ void read_calibration(const MapReader& scene, Scene& out) {
   Study& s = out.study;
   if (s.type != StudyType::calibration) return;
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
-  s.data = named_file_path(study.get("data", "the path of the measurements file (CSV), e.g. rig.csv"),
-                           "the path of the measurements file (CSV), e.g. rig.csv");
+  const Node data = study.get("data", "the path of the measurements file (CSV), e.g. rig.csv");
+  s.data = named_file_path(data, "the path of the measurements file (CSV), e.g. rig.csv");
+  // A file that is not there is a fault of the scene, at its key; what is wrong inside
+  // one is located in it (scene/measurements.h).
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(s.data, error))
+    data.fail(fmt::format("{}: cannot read the measurements '{}': no such regular file (a path relative to the scene "
+                          "file's directory)",
+                          data.path(), s.data));
   s.measurements = read_measurements(s.data);
 
   const std::vector<InputEntry> entries = input_entries(

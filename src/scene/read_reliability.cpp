@@ -25,7 +25,7 @@ constexpr double kReach = 4.0;  // standard deviations a normal's values are che
 }  // namespace
 
 double read_spread(const MapReader& d, const char* key, const SiUnit& unit, std::string_view reason) {
-  const Range range{.low = 0.0, .low_open = true, .reason = std::string(reason)};
+  const Range range{.low = 0.0, .low_open = true, .reason = reason};
   if (unit.symbol != si::temperature.symbol) return d.quantity(key, unit, range);
   const Node node = d.get(key, "a temperature interval, e.g. 3 K");
   const double value = node.quantity(unit, Range{});

@@ -25,8 +25,9 @@ namespace {
 // singular to the predictions' own accuracy (about 1e-8 relative: the solver's tolerance
 // and the second-order differences of F_p): the data cannot tell the combination apart.
 constexpr double kSingular = 1e-6;
-// A combination of the scaled inputs (each by its start) whose standard deviation
-// exceeds a tenth of them is determined, but poorly.
+// A combination of the scaled inputs (each by its start, or a thousandth of its range
+// where that is larger) whose standard deviation exceeds a tenth of them is determined,
+// but poorly.
 constexpr double kPoorly = 0.1;
 
 const char* const kColumns[] = {"torque_Nm", "f_eff", "T_mean_C", "T_max_C"};
@@ -44,8 +45,13 @@ double shown(std::size_t quantity, double si) { return quantity >= 2 ? si - cell
 // The weighted residuals of every reading, and their Jacobian in the scaled inputs x = p/scale.
 class MeasurementsCost final : public ceres::CostFunction {
  public:
-  MeasurementsCost(MeasuredResponse& response, const std::vector<Reading>& readings, std::vector<double> scale)
+  MeasurementsCost(MeasuredResponse& response, const std::vector<Reading>& readings, std::vector<double> scale,
+                   const std::vector<FittedInput>& fitted)
       : response_(response), readings_(readings), scale_(std::move(scale)) {
+    for (const FittedInput& f : fitted) {
+      lower_.push_back(f.lower);
+      upper_.push_back(f.upper);
+    }
     set_num_residuals(int(readings.size()));
     mutable_parameter_block_sizes()->push_back(int(scale_.size()));
   }
@@ -53,7 +59,8 @@ class MeasurementsCost final : public ceres::CostFunction {
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     const std::size_t n = scale_.size();
     std::vector<double> p(n);
-    for (std::size_t j = 0; j < n; ++j) p[j] = parameters[0][j] * scale_[j];
+    // (clamped: the scaled bound times the scale may round a last bit past the bound)
+    for (std::size_t j = 0; j < n; ++j) p[j] = std::clamp(parameters[0][j] * scale_[j], lower_[j], upper_[j]);
     const bool derivatives = jacobians && jacobians[0];
     std::vector<PointPrediction> predicted;
     std::string why;
@@ -86,7 +93,7 @@ class MeasurementsCost final : public ceres::CostFunction {
  private:
   MeasuredResponse& response_;
   const std::vector<Reading>& readings_;
-  std::vector<double> scale_;
+  std::vector<double> scale_, lower_, upper_;
 };
 
 class ProgressLines final : public ceres::IterationCallback {
@@ -152,12 +159,14 @@ void run_calibration(BearingModel& model, StudyOutcome& out, const ProgressRepor
   std::vector<double> scale(n), x(n);
   for (std::size_t j = 0; j < n; ++j) {
     const FittedInput& f = st.fitted[j];
-    scale[j] = f.start != 0.0 ? std::abs(f.start) : f.upper - f.lower;
+    // (at least a thousandth of the range: a start of nearly zero would make its bounds
+    // remote in the scaled input)
+    scale[j] = std::max(std::abs(f.start), 1e-3 * (f.upper - f.lower));
     x[j] = f.start / scale[j];
   }
   MeasuredResponse response(load_scene_text(scene.written, scene.source, {"study={type: point}"}), st.fitted,
                             st.measurements, threads);
-  auto* cost = new MeasurementsCost(response, readings, scale);
+  auto* cost = new MeasurementsCost(response, readings, scale, st.fitted);
   ceres::Problem problem;  // owns `cost`
   problem.AddResidualBlock(cost, nullptr, x.data());
   for (std::size_t j = 0; j < n; ++j) {
@@ -220,48 +229,67 @@ void run_calibration(BearingModel& model, StudyOutcome& out, const ProgressRepor
     }
   }
   const std::vector<PointPrediction>& fitted = cost->last;
-  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J(jacobian.data(), long(m),
-                                                                                             long(n));
+  // The inputs a bound holds are not free: they take no part in the covariance, nor in
+  // the degrees of freedom.
+  std::vector<double> value(n);
+  std::vector<std::string> at_bound(n);
+  std::vector<std::size_t> free;
+  for (std::size_t j = 0; j < n; ++j) {
+    const FittedInput& f = st.fitted[j];
+    value[j] = std::clamp(x[j] * scale[j], f.lower, f.upper);
+    const double tolerance = 1e-9 * (f.upper - f.lower);
+    if (value[j] <= f.lower + tolerance) at_bound[j] = "lower";
+    if (value[j] >= f.upper - tolerance) at_bound[j] = "upper";
+    if (at_bound[j].empty()) free.push_back(j);
+  }
+  const std::size_t nf = free.size();
+  Eigen::MatrixXd J(static_cast<long>(m), static_cast<long>(nf));
+  for (std::size_t k = 0; k < m; ++k)
+    for (std::size_t c = 0; c < nf; ++c) J(long(k), long(c)) = jacobian[k * n + free[c]];
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
   const Eigen::VectorXd s = svd.singularValues();
   const Eigen::MatrixXd& V = svd.matrixV();
   double squares = 0.0;
   for (double r : residuals) squares += r * r;
   // The residuals' variance where the readings' own is not given (a relative fit).
-  const bool has_variance = !relative || m > n;
-  const double variance = !relative ? 1.0 : m > n ? squares / double(m - n) : 0.0;
+  const bool has_variance = !relative || m > nf;
+  const double variance = !relative ? 1.0 : m > nf ? squares / double(m - nf) : 0.0;
   const double largest = s.size() > 0 ? s(0) : 0.0;
-  std::vector<bool> determined(n, true);
-  std::optional<Eigen::MatrixXd> covariance;  // in p
-  // Each weak direction of the scaled inputs: its singular value relative to the largest,
-  // and its standard deviation (none where singular). With fewer readings than inputs
-  // the directions past the readings' count have no singular value at all.
+  std::optional<Eigen::MatrixXd> covariance;  // in p, over every input (zero where held)
+  // Each weak direction of the free scaled inputs (over all inputs, zero where held): its
+  // singular value relative to the largest, and its standard deviation (none where
+  // singular). With fewer readings than inputs the directions past the readings' count
+  // have no singular value at all.
   struct Weak {
     Eigen::VectorXd direction;
     double ratio = 0.0;
     std::optional<double> sd;
   };
   std::vector<Weak> weak;
-  for (long k = 0; k < long(n); ++k) {
+  auto over_all = [&](const Eigen::VectorXd& v) {
+    Eigen::VectorXd full = Eigen::VectorXd::Zero(long(n));
+    for (std::size_t c = 0; c < nf; ++c) full(long(free[c])) = v(long(c));
+    return full;
+  };
+  for (long k = 0; k < long(nf); ++k) {
     const double ratio = k < s.size() && largest > 0.0 ? s(k) / largest : 0.0;
     if (ratio < kSingular) {
-      weak.push_back({V.col(k), ratio, std::nullopt});
+      weak.push_back({over_all(V.col(k)), ratio, std::nullopt});
     } else if (has_variance && std::sqrt(variance) / s(k) > kPoorly) {
-      weak.push_back({V.col(k), ratio, std::sqrt(variance) / s(k)});
+      weak.push_back({over_all(V.col(k)), ratio, std::sqrt(variance) / s(k)});
     }
   }
+  // A combination the data cannot determine leaves every free input's variance
+  // unbounded along it: no covariance at all then.
   const bool singular = std::any_of(weak.begin(), weak.end(), [](const Weak& w) { return !w.sd; });
-  if (singular) {
-    for (const Weak& w : weak)
-      if (!w.sd)
-        for (std::size_t j = 0; j < n; ++j) determined[j] = determined[j] && !(std::abs(w.direction(long(j))) > 0.1);
-  } else if (has_variance && variance > 0.0) {
-    Eigen::MatrixXd cx = Eigen::MatrixXd::Zero(long(n), long(n));
-    for (long k = 0; k < long(n); ++k) cx += V.col(k) * V.col(k).transpose() / (s(k) * s(k));
+  if (!singular && has_variance && variance > 0.0 && nf > 0) {
+    Eigen::MatrixXd cx = Eigen::MatrixXd::Zero(long(nf), long(nf));
+    for (long k = 0; k < long(nf); ++k) cx += V.col(k) * V.col(k).transpose() / (s(k) * s(k));
     cx *= variance;
-    covariance = Eigen::MatrixXd(long(n), long(n));
-    for (std::size_t a = 0; a < n; ++a)
-      for (std::size_t b = 0; b < n; ++b) (*covariance)(long(a), long(b)) = cx(long(a), long(b)) * scale[a] * scale[b];
+    covariance = Eigen::MatrixXd::Zero(long(n), long(n));
+    for (std::size_t a = 0; a < nf; ++a)
+      for (std::size_t b = 0; b < nf; ++b)
+        (*covariance)(long(free[a]), long(free[b])) = cx(long(a), long(b)) * scale[free[a]] * scale[free[b]];
   }
 
   // The tables.
@@ -273,15 +301,14 @@ void run_calibration(BearingModel& model, StudyOutcome& out, const ProgressRepor
     row.start = f.start;
     row.lower = f.lower;
     row.upper = f.upper;
-    row.fitted = x[j] * scale[j];
-    if (covariance && determined[j]) row.sd = std::sqrt((*covariance)(long(j), long(j)));
-    const double tolerance = 1e-9 * (f.upper - f.lower);
-    if (row.fitted <= f.lower + tolerance) row.at_bound = "lower";
-    if (row.fitted >= f.upper - tolerance) row.at_bound = "upper";
+    row.fitted = value[j];
+    row.at_bound = at_bound[j];
+    if (covariance && at_bound[j].empty()) row.sd = std::sqrt((*covariance)(long(j), long(j)));
   }
   if (covariance)
-    for (std::size_t a = 0; a < n; ++a)
-      for (std::size_t b = a; b < n; ++b) {
+    for (std::size_t a : free)
+      for (std::size_t b : free) {
+        if (b < a) continue;
         CorrelationRow& c = out.correlations.emplace_back();
         c.parameter_a = st.fitted[a].path;
         c.parameter_b = st.fitted[b].path;
@@ -325,15 +352,19 @@ void run_calibration(BearingModel& model, StudyOutcome& out, const ProgressRepor
                              "standard deviations are scaled by the residuals' own)",
                              rms)
                : fmt::format("calibration: root mean square residual {:.3g} standard deviations{}", rms,
-                             m > n ? fmt::format(" (chi-square per degree of freedom {:.3g})", squares / double(m - n))
+                             m > nf ? fmt::format(" (chi-square per degree of freedom {:.3g})", squares / double(m - nf))
                                    : ""));
   if (relative && has_variance && !(variance > 0.0) && !singular)
     out.summary.push_back("calibration: the fit meets every reading exactly: a relative fit has no spread left to "
                           "estimate the inputs' standard deviations from");
   if (!has_variance && !singular)
-    out.summary.push_back(fmt::format("calibration: {} measured values for {} inputs leave no degree of freedom to "
+    out.summary.push_back(fmt::format("calibration: {} measured values for {} free inputs leave no degree of freedom to "
                                       "estimate the residuals' variance: no standard deviations",
-                                      m, n));
+                                      m, nf));
+  if (nf < n)
+    out.summary.push_back(fmt::format("calibration: {} input{} held at a bound: no standard deviation, and not counted "
+                                      "in the degrees of freedom (widen the bounds if the data should decide)",
+                                      n - nf, n - nf == 1 ? "" : "s"));
   auto combination = [&](const Eigen::VectorXd& v) {
     std::string text;
     for (std::size_t j = 0; j < n; ++j)
@@ -349,7 +380,7 @@ void run_calibration(BearingModel& model, StudyOutcome& out, const ProgressRepor
                             "measure what tells them apart",
                             combination(w.direction), w.ratio)
               : fmt::format("calibration: the combination {} is poorly determined: its standard deviation is {:.2g} "
-                            "of the inputs' starts",
+                            "of the inputs' scales",
                             combination(w.direction), *w.sd));
 }
 

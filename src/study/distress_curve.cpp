@@ -269,11 +269,15 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   std::vector<FoldBar> bar_of(bars ? most_points : 0);
   std::string mesh;
   std::mutex mesh_lock;
+  // The chains' bearings from the scene as it stands before the curve: the trace sets
+  // its model's curve parameter while they are built (and a roughness rescales from
+  // where it stands, so a copy taken mid-trace would depend on timing).
+  const Scene chain_scene = model.scene();
   auto bar_chain = [&](std::size_t chain) {
     const std::size_t a = chain * kChainPoints, b = a + kChainPoints;
     std::optional<FoldCurveFeed::Entry> at = feed.wait_for(a);
     if (!at) return;
-    BearingModel coarse(model.scene());
+    BearingModel coarse(chain_scene);
     coarse.set_curve_parameter(which, at->first.p);
     coarse.set_load(at->first.lambda);
     std::optional<RefinedFoldCurve> refined;

@@ -7,18 +7,24 @@
 // bearing built at p ± δ).
 //
 // A rig loads its washer up at each speed: the points of one speed are solved in the
-// order of their loads, each from the state at the load before (the lightest from its
-// own last state, the cold start the first time), so that every point lies on the
-// branch continued from the light load, and each prediction is a function of the inputs
-// alone (never of where an earlier trial left a point: between the fold and the hot
-// branch's recovery the bearing has two states). The speeds are spread over threads.
+// order of their loads, the lightest from its state at the first inputs asked for (the
+// cold start then), each heavier one by continuation in load from the one before, so
+// that every point lies on the branch continued from the light load and each prediction
+// is a function of the inputs alone (never of where an earlier trial left a point:
+// between the fold and the hot branch's recovery the bearing has two states). A point
+// past the fold of that branch has no prediction. The speeds are spread over threads.
+// The derivatives asked for at the inputs of the last prediction reuse its states.
 #pragma once
 
 #include <array>
+#include <mutex>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "model/bearing_model.h"
+#include "solver/natural_continuation.h"
+#include "study/input_neighbours.h"
 #include "twb/scene/scene.h"
 #include "twb/study/study_outcome.h"
 
@@ -45,12 +51,26 @@ class MeasuredResponse {
   long solves() const { return solves_; }
 
  private:
+  // Point k of speed g (its state u, from state_before, the point's before it, where k > 0)
+  // and its record; false, with the reason in `failed`, where it has no state on the branch.
+  bool solve_point(BearingModel& model, std::size_t g, std::size_t k, std::span<const double> state_before,
+                   std::vector<double>& u, const NaturalSettings& settings, PointPrediction& pred, std::string& failed,
+                   long& solves);
+  // The point's quantities' derivatives in each fitted input at its state u.
+  bool differentiate(BearingModel& model, std::vector<InputNeighbours>& neighbours, std::mutex& solve_lock,
+                     const MeasuredPoint& m, std::span<const double> u, PointPrediction& pred,
+                     std::string& failed) const;
+
   Scene scene_;
   std::vector<FittedInput> fitted_;
   std::vector<MeasuredPoint> points_;
   int threads_;
   std::vector<std::vector<std::size_t>> speeds_;  // the points of each speed, by load
-  std::vector<std::vector<double>> lightest_;     // each speed's lightest point's last state
+  std::vector<std::vector<double>> lightest_;     // each speed's lightest point's first state
+  // The last prediction that succeeded: its inputs, each point's state and record.
+  std::vector<double> last_p_;
+  std::vector<std::vector<double>> states_;
+  std::vector<PointPrediction> last_;
   long solves_ = 0;
 };
 

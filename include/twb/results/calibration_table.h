@@ -15,7 +15,8 @@
 // point: the measured point's number (1 = the data's first row), line: its line in the
 // data file; quantity: torque_Nm, f_eff, T_mean_C or T_max_C, the values in its unit;
 // sd: the reading's standard deviation (empty where the fit is relative), residual
-// (fitted − measured)/sd, or (fitted − measured)/measured where the fit is relative.
+// (fitted − measured)/sd, or where the fit is relative (fitted − measured)/|measured|
+// (a temperature's over its rise above the ambient).
 #pragma once
 
 #include <optional>
