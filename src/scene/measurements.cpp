@@ -24,7 +24,7 @@ struct Column {
   int what = -1;  // 0..3: MeasuredQuantity; kLoad, kSpeed
   double scale = 1.0, offset = 0.0;
 };
-constexpr int kLoad = 10, kSpeed = 11;
+constexpr int kLoad = 10, kSpeed = 11, kAmbient = 12;
 
 // The results' own column names, with their units.
 struct ResultsName {
@@ -35,18 +35,20 @@ struct ResultsName {
 constexpr ResultsName kResultsNames[] = {
     {"load_N", kLoad, "N"},         {"speed_rad_s", kSpeed, "rad/s"}, {"speed_rpm", kSpeed, "rpm"},
     {"torque_Nm", 0, "N m"},        {"f_eff", 1, "1"},                {"T_mean_C", 2, "degC"},
-    {"T_mean_K", 2, "K"},           {"T_max_C", 3, "degC"},           {"T_max_K", 3, "K"}};
+    {"T_mean_K", 2, "K"},           {"T_max_C", 3, "degC"},           {"T_max_K", 3, "K"},
+    {"ambient_C", kAmbient, "degC"}, {"ambient_K", kAmbient, "K"}};
 
 const SiUnit& unit_of(int what) {
   if (what == kLoad) return si::force;
   if (what == kSpeed) return si::angular_speed;
+  if (what == kAmbient) return si::temperature;
   if (what == 0) return si::torque;
   if (what == 1) return si::dimensionless;
   return si::temperature;
 }
 
 std::string allowed_names() {
-  std::string names = "load, speed";
+  std::string names = "load, speed, ambient";
   for (std::string_view n : kMeasuredNames) names += fmt::format(", {}", n);
   return names;
 }
@@ -70,6 +72,8 @@ Column column_of(const CsvText& text, std::size_t line, const CsvField& field) {
     c.what = kLoad;
   } else if (h.name == "speed") {
     c.what = kSpeed;
+  } else if (h.name == "ambient") {
+    c.what = kAmbient;
   } else {
     const auto q = std::find(std::begin(kMeasuredNames), std::end(kMeasuredNames), h.name);
     if (q == std::end(kMeasuredNames))
@@ -90,6 +94,7 @@ Column column_of(const CsvText& text, std::size_t line, const CsvField& field) {
 std::string_view name_of(int what) {
   if (what == kLoad) return "load";
   if (what == kSpeed) return "speed";
+  if (what == kAmbient) return "ambient";
   return kMeasuredNames[std::size_t(what)];
 }
 
@@ -105,7 +110,7 @@ std::vector<MeasuredPoint> read_measurements(const std::string& path) {
                           kHeaderExample));
   const std::vector<CsvField> header = csv_fields(lines[k]);
   std::vector<Column> columns;
-  std::optional<std::size_t> seen[12];
+  std::optional<std::size_t> seen[13];
   for (std::size_t c = 0; c < header.size(); ++c) {
     columns.push_back(column_of(text, k, header[c]));
     std::optional<std::size_t>& first = seen[columns.back().what];
@@ -134,15 +139,18 @@ std::vector<MeasuredPoint> read_measurements(const std::string& path) {
     for (std::size_t c = 0; c < row.size(); ++c) {
       const Column& col = columns[c];
       const std::string_view name = name_of(col.what);
-      if (row[c].text.empty() && col.what < int(kMeasuredQuantities)) continue;  // not measured here
+      // A quantity not measured here; the scene's ambient where the point gives none.
+      if (row[c].text.empty() && (col.what < int(kMeasuredQuantities) || col.what == kAmbient)) continue;
       const double value = col.scale * text.number(k, row[c], name) + col.offset;
-      const bool positive = col.what == kLoad || col.what == kSpeed || col.what == 2 || col.what == 3;
+      const bool positive =
+          col.what == kLoad || col.what == kSpeed || col.what == kAmbient || col.what == 2 || col.what == 3;
       if (positive ? !(value > 0.0) : !(value >= 0.0))
         text.fail(k, row[c].column,
                   fmt::format("the {} '{}' must be {} ({:.6g} {} in SI)", name, row[c].text,
                               positive ? "positive" : "zero or more", value, unit_of(col.what).symbol));
       if (col.what == kLoad) p.load = value;
       else if (col.what == kSpeed) p.speed = value;
+      else if (col.what == kAmbient) p.ambient = value;
       else {
         p.values[std::size_t(col.what)] = value;
         measured = true;

@@ -4,7 +4,8 @@
 //   load [N], speed [rpm], torque [N m], T_mean [degC]
 //   150, 3000, 0.121, 94.2
 // load and speed in every row; torque, f_eff, T_mean, T_max where measured (an empty
-// field where a point does not measure one). The results' own column names (load_N,
+// field where a point does not measure one); optionally the oil's ambient temperature at
+// each point (`ambient [degC]`; an empty field: the scene's). The results' own column names (load_N,
 // speed_rad_s, torque_Nm, T_mean_C, ...) are read too, so a results file is a data file.
 #pragma once
 

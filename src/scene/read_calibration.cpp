@@ -71,7 +71,11 @@ void read_calibration(const MapReader& scene, Scene& out) {
 
   const std::vector<InputEntry> entries = input_entries(
       study.get("fit", ""), out, "no fitted inputs",
-      "bounds, e.g. {surfaces.washer.Rq: {start: 0.4 um, lower: 0.1 um, upper: 1.5 um}}", [](const std::string& path) {
+      "bounds, e.g. {surfaces.washer.Rq: {start: 0.4 um, lower: 0.1 um, upper: 1.5 um}}", [&](const std::string& path) {
+        const bool own_ambient = std::any_of(s.measurements.begin(), s.measurements.end(),
+                                             [](const MeasuredPoint& p) { return p.ambient > 0.0; });
+        if (path == "operating.ambient" && own_ambient)
+          return std::string("the data give measured points their own ambient temperature; it is not fitted");
         return path == "operating.load" || path == "operating.speed"
                    ? fmt::format("each measured point has its own {}; it is not fitted",
                                  path == "operating.load" ? "load" : "speed")

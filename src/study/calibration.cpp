@@ -138,7 +138,8 @@ void run_calibration(BearingModel& model, StudyOutcome& out, const ProgressRepor
       r.measured = m;
       if (relative) {
         // A temperature's reading is relative to its rise above the ambient (K are not a ratio scale).
-        const double size = q >= 2 ? std::abs(m - scene.operating.ambient) : std::abs(m);
+        const double ambient = st.measurements[i].ambient > 0.0 ? st.measurements[i].ambient : scene.operating.ambient;
+        const double size = q >= 2 ? std::abs(m - ambient) : std::abs(m);
         if (!(size > 0.0)) {
           out.solver_failed = true;
           out.message = fmt::format("the reading of {} on line {} is {}: a relative fit cannot weigh it; give each "

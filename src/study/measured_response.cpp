@@ -29,14 +29,17 @@ MeasuredResponse::MeasuredResponse(Scene scene, std::vector<FittedInput> fitted,
       points_(std::move(points)),
       threads_(std::max(threads, 1)) {
   for (std::size_t i = 0; i < points_.size(); ++i) {
-    auto same = std::find_if(speeds_.begin(), speeds_.end(),
-                             [&](const std::vector<std::size_t>& g) { return points_[g.front()].speed == points_[i].speed; });
+    // (a rig runs up the load at one speed and one oil temperature at a time)
+    auto same = std::find_if(speeds_.begin(), speeds_.end(), [&](const std::vector<std::size_t>& g) {
+      return points_[g.front()].speed == points_[i].speed && points_[g.front()].ambient == points_[i].ambient;
+    });
     if (same == speeds_.end()) speeds_.emplace_back(1, i);
     else same->push_back(i);
   }
   for (std::vector<std::size_t>& g : speeds_)
     std::stable_sort(g.begin(), g.end(), [&](std::size_t a, std::size_t b) { return points_[a].load < points_[b].load; });
   lightest_.resize(speeds_.size());
+  own_ambient_ = std::any_of(points_.begin(), points_.end(), [](const MeasuredPoint& m) { return m.ambient > 0.0; });
 }
 
 bool MeasuredResponse::predict(std::span<const double> p, bool with_derivatives, std::vector<PointPrediction>& out,
@@ -71,6 +74,11 @@ bool MeasuredResponse::predict(std::span<const double> p, bool with_derivatives,
         const MeasuredPoint& m = points_[i];
         std::vector<double>& u = states[i];
         model.set_speed(m.speed);
+        // The point's own oil temperature where the data give one, else the scene's (on the
+        // neighbours too, in differentiate: they stand at the scene's, which the fit does
+        // not move then: read_calibration refuses fitting operating.ambient).
+        const double ambient = m.ambient > 0.0 ? m.ambient : at.operating.ambient;
+        if (own_ambient_) model.set_curve_parameter(CurveParameter::ambient_temperature, ambient);
         if (again) {
           model.set_load(m.load);
           out[i] = last_[i];
@@ -80,7 +88,7 @@ bool MeasuredResponse::predict(std::span<const double> p, bool with_derivatives,
           if (!solve_point(model, g, k, before, u, natural, out[i], failed[i], solves[i])) break;
         }
         if (!with_derivatives) continue;
-        if (!differentiate(model, neighbours, solve_lock, m, u, out[i], failed[i])) break;
+        if (!differentiate(model, neighbours, solve_lock, m, ambient, u, out[i], failed[i])) break;
       }
     }
   });
@@ -149,8 +157,8 @@ bool MeasuredResponse::solve_point(BearingModel& model, std::size_t g, std::size
 }
 
 bool MeasuredResponse::differentiate(BearingModel& model, std::vector<InputNeighbours>& neighbours,
-                                     std::mutex& solve_lock, const MeasuredPoint& m, std::span<const double> u,
-                                     PointPrediction& pred, std::string& failed) const {
+                                     std::mutex& solve_lock, const MeasuredPoint& m, double ambient,
+                                     std::span<const double> u, PointPrediction& pred, std::string& failed) const {
   std::vector<double> f(u.size()), jac(std::size_t(model.pattern().nnz()));
   model.evaluate(u, f, jac);
   SparseLu lu(model.pattern(), SparseLu::Ordering::minimum_degree);
@@ -162,7 +170,10 @@ bool MeasuredResponse::differentiate(BearingModel& model, std::vector<InputNeigh
   }
   for (std::size_t k = 0; k < kMeasuredQuantities; ++k) pred.derivatives[k].assign(fitted_.size(), 0.0);
   for (std::size_t j = 0; j < fitted_.size(); ++j) {
-    for (auto& neighbour : neighbours[j].at) neighbour->set_speed(m.speed);
+    for (auto& neighbour : neighbours[j].at) {
+      neighbour->set_speed(m.speed);
+      if (own_ambient_) neighbour->set_curve_parameter(CurveParameter::ambient_temperature, ambient);
+    }
     const std::vector<double> d = state_derivatives(neighbours[j], u, m.load, lu, solve_lock);
     for (std::size_t k = 0; k < kMeasuredQuantities; ++k) pred.derivatives[k][j] = d[k];
   }

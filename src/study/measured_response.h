@@ -6,7 +6,8 @@
 // back-substitution with J's factors per input, F_p by second-order differences of the
 // bearing built at p ± δ).
 //
-// A rig loads its washer up at each speed: the points of one speed are solved in the
+// A rig loads its washer up at each speed (and oil temperature, where the data give one
+// a point): the points of one speed are solved in the
 // order of their loads, the lightest from its state at the first inputs asked for (the
 // cold start then), each heavier one by continuation in load from the one before, so
 // that every point lies on the branch continued from the light load and each prediction
@@ -56,9 +57,10 @@ class MeasuredResponse {
   bool solve_point(BearingModel& model, std::size_t g, std::size_t k, std::span<const double> state_before,
                    std::vector<double>& u, const NaturalSettings& settings, PointPrediction& pred, std::string& failed,
                    long& solves);
-  // The point's quantities' derivatives in each fitted input at its state u.
+  // The point's quantities' derivatives in each fitted input at its state u (at its
+  // oil temperature `ambient`).
   bool differentiate(BearingModel& model, std::vector<InputNeighbours>& neighbours, std::mutex& solve_lock,
-                     const MeasuredPoint& m, std::span<const double> u, PointPrediction& pred,
+                     const MeasuredPoint& m, double ambient, std::span<const double> u, PointPrediction& pred,
                      std::string& failed) const;
 
   Scene scene_;
@@ -67,6 +69,7 @@ class MeasuredResponse {
   int threads_;
   std::vector<std::vector<std::size_t>> speeds_;  // the points of each speed, by load
   std::vector<std::vector<double>> lightest_;     // each speed's lightest point's first state
+  bool own_ambient_ = false;                      // some point has its own oil temperature
   // The last prediction that succeeded: its inputs, each point's state and record.
   std::vector<double> last_p_;
   std::vector<std::vector<double>> states_;

@@ -156,6 +156,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"calibration_sd_missing", 16, 7, {"study.sd: no standard deviation for T_mean, which the data measure", "or leave sd out to fit relative residuals"}},
     {"calibration_fits_the_load", 14, 21, {"study.fit.operating.load: each measured point has its own load; it is not fitted"}},
     {"calibration_data_missing", 12, 9, {"study.data: cannot read the measurements", "no_such_rig.csv': no such regular file"}},
+    {"calibration_fits_the_points_ambient", 14, 24, {"study.fit.operating.ambient: the data give measured points their own ambient temperature; it is not fitted"}},
     {"calibration_bound_refused", 14, 25, {"study.fit.geometry.gear.tilt: the fit may reach -0.001 rad, which the scene refuses", "narrow the bounds"}},
     {"input_axis_is_the_speed", 15, 21, {"study.parameter.name: operating.speed is an axis of every search already", "study.speeds"}},
     {"input_axis_value_out_of_range", 17, 26, {"study.parameter.values[1]: materials.carrier.conductivity: '-5 W/(m K)'", "out of range"}},

@@ -36,6 +36,15 @@ TEST(Measurements, UnitsFromTheHeader) {
   EXPECT_EQ(p[1].line, 4);
 }
 
+// A point's own oil temperature, where the data give one; the scene's (0) where not.
+TEST(Measurements, AnAmbientColumn) {
+  const std::vector<MeasuredPoint> p = read("load [N], speed [rpm], ambient [degC], torque [N m]\n150, 3000, 80, 0.1\n"
+                                            "150, 3000, , 0.1\n");
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_NEAR(p[0].ambient, 353.15, 1e-12);
+  EXPECT_EQ(p[1].ambient, 0.0);
+}
+
 // A results file is a data file: its columns' names carry their units.
 TEST(Measurements, TheResultsOwnColumns) {
   const std::vector<MeasuredPoint> p = read("load_N,speed_rad_s,torque_Nm,T_max_C\n120,545,0.05,40\n");

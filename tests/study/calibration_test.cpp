@@ -104,7 +104,9 @@ TEST(Calibration, RecoversTheInputsThatMadeTheDataOnAnyThreadCount) {
 // The predictions' derivatives (the fit's Jacobian) against centred differences of whole
 // predictions at p ± Δ and p ± 2Δ.
 TEST(Calibration, DerivativesOfThePredictionsMatchDifferences) {
-  const std::vector<MeasuredPoint> points = rig_points({{120, 300}, {140, 545}});
+  // (the second point at its own oil temperature, 40 degC: its neighbours must stand there too)
+  std::vector<MeasuredPoint> points = rig_points({{120, 300}, {140, 545}});
+  points[1].ambient = 313.15;
   MeasuredResponse response(point_scene(), kFitted, points, 1);
   std::vector<PointPrediction> at;
   std::string why;

@@ -79,6 +79,7 @@ inline constexpr std::size_t kMeasuredQuantities = 4;
 struct MeasuredPoint {
   double load = 0.0;   // N
   double speed = 0.0;  // rad/s
+  double ambient = 0.0;  // K, the oil's (the sump's) at the point; 0: the scene's operating.ambient
   // SI (N m, 1, K), by MeasuredQuantity; NaN where the point does not measure it
   std::array<double, kMeasuredQuantities> values{};
   int line = 0;  // its line in the data file
