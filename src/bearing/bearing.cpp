@@ -74,18 +74,15 @@ std::vector<std::pair<std::string, double>> Bearing::sensitivity(const std::stri
   if (state_.empty()) throw std::logic_error("Bearing::sensitivity: no state solved yet (call solve first)");
   const SceneInput input = scene_input(model_->scene(), path);
   const OperatingPoint at(*model_, state_load_, state_speed_, scene_load_, scene_speed_);
-  const auto n = std::size_t(model_->size());
-  std::vector<double> f(n), jac(std::size_t(model_->pattern().nnz()));
-  model_->evaluate(state_, f, jac);
-  SparseLu lu(model_->pattern(), SparseLu::Ordering::minimum_degree);
-  if (!lu.factor(jac))
+  const std::unique_ptr<SparseLu> factors = jacobian_factors(*model_, state_);
+  if (!factors)
     throw SolverFailure(fmt::format("the state at {:.6g} N has a singular Jacobian (a fold): it does not move "
                                     "smoothly with {}",
                                     state_load_, path),
                         -1);
   InputNeighbours neighbours = input_neighbours(*model_, input);
   std::mutex solve_lock;
-  const std::vector<double> d = state_derivatives(neighbours, state_, state_load_, lu, solve_lock);
+  const std::vector<double> d = state_derivatives(neighbours, state_, state_load_, *factors, solve_lock);
   std::vector<std::pair<std::string, double>> out;
   const std::vector<StateQuantity> names = state_quantities(BearingState{});
   for (std::size_t k = 0; k < names.size(); ++k) out.emplace_back(names[k].name, d[k]);

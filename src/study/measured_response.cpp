@@ -159,10 +159,8 @@ bool MeasuredResponse::solve_point(BearingModel& model, std::size_t g, std::size
 bool MeasuredResponse::differentiate(BearingModel& model, std::vector<InputNeighbours>& neighbours,
                                      std::mutex& solve_lock, const MeasuredPoint& m, double ambient,
                                      std::span<const double> u, PointPrediction& pred, std::string& failed) const {
-  std::vector<double> f(u.size()), jac(std::size_t(model.pattern().nnz()));
-  model.evaluate(u, f, jac);
-  SparseLu lu(model.pattern(), SparseLu::Ordering::minimum_degree);
-  if (!lu.factor(jac)) {
+  const std::unique_ptr<SparseLu> factors = jacobian_factors(model, u);
+  if (!factors) {
     failed = fmt::format("the state at the measured point of line {} has a singular Jacobian (a fold): it does not "
                          "move smoothly with the inputs",
                          m.line);
@@ -174,7 +172,7 @@ bool MeasuredResponse::differentiate(BearingModel& model, std::vector<InputNeigh
       neighbour->set_speed(m.speed);
       if (own_ambient_) neighbour->set_curve_parameter(CurveParameter::ambient_temperature, ambient);
     }
-    const std::vector<double> d = state_derivatives(neighbours[j], u, m.load, lu, solve_lock);
+    const std::vector<double> d = state_derivatives(neighbours[j], u, m.load, *factors, solve_lock);
     for (std::size_t k = 0; k < kMeasuredQuantities; ++k) pred.derivatives[k][j] = d[k];
   }
   return true;

@@ -52,6 +52,14 @@ std::vector<StateQuantity> state_quantities(const BearingState& s) {
           {"fluid_share", s.fluid_share, false}};
 }
 
+std::unique_ptr<SparseLu> jacobian_factors(const BearingModel& model, std::span<const double> u) {
+  std::vector<double> f(u.size()), jac(std::size_t(model.pattern().nnz()));
+  model.evaluate(u, f, jac);
+  auto lu = std::make_unique<SparseLu>(model.pattern(), SparseLu::Ordering::minimum_degree);
+  if (!lu->factor(jac)) return nullptr;
+  return lu;
+}
+
 std::vector<double> state_derivatives(InputNeighbours& n, std::span<const double> u, double load, const SparseLu& lu,
                                       std::mutex& solve_lock) {
   std::vector<double> u_p = residual_derivative(n, u, load);
@@ -82,11 +90,8 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
   if (!solve_operating_point(model, out, u)) return;
   const BearingState at_point = out.states.back().state;
   const double load = model.load();
-  const auto n = std::size_t(model.size());
-  std::vector<double> f(n), jac(std::size_t(model.pattern().nnz()));
-  model.evaluate(u, f, jac);
-  SparseLu lu(model.pattern(), SparseLu::Ordering::minimum_degree);
-  if (!lu.factor(jac)) {
+  const std::unique_ptr<SparseLu> factors = jacobian_factors(model, u);
+  if (!factors) {
     out.solver_failed = true;
     out.message = fmt::format("the state at {:.6g} N has a singular Jacobian (a fold at the operating point): "
                               "it does not move smoothly with the inputs",
@@ -138,7 +143,7 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
     try {
       InputNeighbours nb = input_neighbours(model, inputs[i]);
       r.step = nb.step;
-      std::vector<double> state = state_derivatives(nb, u, load, lu, solve_lock);
+      std::vector<double> state = state_derivatives(nb, u, load, *factors, solve_lock);
       for (double d : state)
         if (!finite(d, "a state quantity", r.why)) return;
       r.state = std::move(state);

@@ -35,6 +35,10 @@ struct StateQuantity {
 };
 std::vector<StateQuantity> state_quantities(const BearingState& s);
 
+// The factors of J at state u of `model` (at its load), for u_p = −J⁻¹F_p; null where J
+// is singular (a fold: the state does not move smoothly with the inputs).
+std::unique_ptr<SparseLu> jacobian_factors(const BearingModel& model, std::span<const double> u);
+
 // dq/dp of each of state_quantities at state u of the neighbours' base (at `load`), J's
 // factors there in `lu`, its back-substitution under `solve_lock`.
 std::vector<double> state_derivatives(InputNeighbours& n, std::span<const double> u, double load, const SparseLu& lu,

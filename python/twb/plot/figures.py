@@ -54,25 +54,21 @@ def make_figures(data, out_dir, formats):
         save(figure_trajectory(data), out_dir, "transient_trajectory", formats, written)
     if data.sliding:
         save(figure_sliding(data), out_dir, "sliding_comparison", formats, written)
-    for k, (name, rows) in enumerate(data.sensitivities):
-        fig = figure_tornado(rows)
-        stem = "sensitivity" if len(data.sensitivities) == 1 else f"sensitivity_{k + 1}_{name}"
-        if fig is None:
-            print(f"twb_plot: note: {name}: sensitivity.csv has no elasticities to draw", file=sys.stderr)
-        else:
-            save(fig, out_dir, stem, formats, written)
-    for k, (name, rows, design) in enumerate(data.reliabilities):
-        fig = figure_failure_probability(rows, design)
-        stem = "reliability" if len(data.reliabilities) == 1 else f"reliability_{k + 1}_{name}"
-        if fig is None:
-            print(f"twb_plot: note: {name}: reliability.csv has no probability to draw", file=sys.stderr)
-        else:
-            save(fig, out_dir, stem, formats, written)
-    for k, (name, rows, points) in enumerate(data.calibrations):
-        fig = figure_calibration(rows, points)
-        stem = "calibration" if len(data.calibrations) == 1 else f"calibration_{k + 1}_{name}"
-        if fig is None:
-            print(f"twb_plot: note: {name}: calibration_points.csv has no measured value to draw", file=sys.stderr)
-        else:
-            save(fig, out_dir, stem, formats, written)
+    # The studies' own figures, one per run: (runs, stem, drawing, what a run without
+    # anything to draw lacks).
+    studies = (
+        (data.sensitivities, "sensitivity", figure_tornado, "sensitivity.csv has no elasticities to draw"),
+        (data.reliabilities, "reliability", figure_failure_probability,
+         "reliability.csv has no probability to draw"),
+        (data.calibrations, "calibration", figure_calibration,
+         "calibration_points.csv has no measured value to draw"),
+    )
+    for runs, base, draw, nothing in studies:
+        for k, (name, *tables) in enumerate(runs):
+            fig = draw(*tables)
+            stem = base if len(runs) == 1 else f"{base}_{k + 1}_{name}"
+            if fig is None:
+                print(f"twb_plot: note: {name}: {nothing}", file=sys.stderr)
+            else:
+                save(fig, out_dir, stem, formats, written)
     return written
