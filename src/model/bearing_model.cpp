@@ -95,7 +95,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
 
   Assembler structure(layout_.size());
   assemble(cold_start(), structure, nullptr);
-  pattern_ = structure.finish_structure();
+  pattern_ = structure.finish_structure(&slot_tape_);
 }
 
 const Film& BearingModel::sliding_film() const { return films_[0].sliding ? films_[0] : films_[1]; }
@@ -309,18 +309,12 @@ std::vector<double> BearingModel::cold_start() const {
 
 void BearingModel::evaluate(std::span<const double> u, std::span<double> residual,
                             std::span<double> jacobian) const {
-  if (!slot_tape_ && !jacobian.empty()) {
-    // The first Jacobian pass searches for each entry and records where it lands; the
-    // later ones replay that (sparse_assembly.h). Kept only once the pass is whole.
-    std::vector<Index> tape;
-    Assembler recorder(&pattern_, residual, jacobian);
-    recorder.record_slots(&tape);
-    assemble(u, recorder, nullptr);
-    slot_tape_ = std::move(tape);
-    return;
-  }
-  Assembler a(&pattern_, residual, jacobian, slot_tape_ ? &*slot_tape_ : nullptr);
+  // A pass that leaves the slot tape (sparse_assembly.h: a state that drops or brings
+  // terms) leaves the tape of its own sequence for the next, kept once the pass is whole.
+  SlotTape retaped;
+  Assembler a(&pattern_, residual, jacobian, &slot_tape_, &retaped);
   assemble(u, a, nullptr);
+  if (!jacobian.empty() && !a.on_tape()) slot_tape_ = std::move(retaped);
 }
 
 double BearingModel::groove_supply_force() const {

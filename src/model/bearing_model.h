@@ -232,9 +232,10 @@ class BearingModel final : public SegregatedSystem {
   std::tuple<Component, Component, Component, AsperityParameters> roughness_origin_;  // the scene's surfaces
   double sigma_ref_ = 0, gamma_ref_ = 0, p_ref_ = 0;
   SparsePattern pattern_;
-  // Where each Jacobian entry of a pass lands (sparse_assembly.h), recorded by the first
-  // Jacobian pass of evaluate(): a model is used by one thread at a time (study/parallel.h).
-  mutable std::optional<std::vector<Index>> slot_tape_;
+  // Where each Jacobian entry of a pass lands (sparse_assembly.h): the structure pass's,
+  // then the last Jacobian pass's that left it (evaluate()): a model is used by one thread
+  // at a time (study/parallel.h).
+  mutable SlotTape slot_tape_;
   std::vector<std::vector<LinearForm>> viscosity_forms_;  // per film, per node
 
   // Thermal deformation's shapes (film_shape.cpp): δ = form · u per film, per node.

@@ -144,10 +144,13 @@ void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assem
 
   // Wrap each node's flow balance in the complementarity function (for a segregated
   // scheme, which projects p ≥ 0 itself, scale it alone).
-  if (a.mode() != Assembler::Mode::values) return;
   for (int k = 0; k < op.interior_count(); ++k) {
     if (!free(k)) continue;
     const Index row = p_col(k);
+    if (a.mode() != Assembler::Mode::values) {
+      a.add_derivative(row, row, 0.0);  // where the values' passes add it: the structure's slot tape holds
+      continue;
+    }
     const double scale = flow_scale_[k];
     const double w_hat = a.residual_value(row) / scale;
     if (model.flow_balance_rows()) {

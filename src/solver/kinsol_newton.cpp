@@ -63,7 +63,8 @@ struct KinsolNewton::Callbacks {
   double watched_step = 0.0, watched_residual = 0.0;
   NewtonSettings::WatchedQuantities quantities;
   std::optional<double> last_watched;
-  std::optional<std::vector<double>> last_quantities;
+  NewtonSettings::QuantityReads reads;
+  std::vector<double> settled_point;  // where the quantities settled, unassembled
   bool watched_settled = false;
   bool full_steps = false;  // KINSOL runs without a line search
   double tolerance = 0.0;
@@ -90,7 +91,8 @@ struct KinsolNewton::Callbacks {
     step_norms.clear();
     next_with_jacobian = true;
     last_watched.reset();
-    last_quantities.reset();
+    reads = {};
+    settled_point.clear();
     watched_settled = false;
   }
   // At a new Newton point u: true when the step to it settled the watched unknown.
@@ -104,12 +106,16 @@ struct KinsolNewton::Callbacks {
     watched_settled = max_norm(point_residual) <= watched_residual;
     return watched_settled;
   }
-  // At a Newton point u just assembled: true when the caller's quantities settled there.
+  // At a Newton point u, before it is assembled: true when the caller's quantities
+  // settled there (kept in `settled_point`). The start is skipped: where a
+  // caller carries a state over (another mesh's), its quantities are the ones it carried.
   bool settles_quantities(std::span<const double> u) {
-    if (!quantities.at || shift || !(max_norm(point_residual) <= watched_residual)) return false;
-    std::vector<double> now = quantities.at(u);
-    watched_settled = last_quantities && quantities.settled(*last_quantities, now);
-    last_quantities = std::move(now);
+    if (!quantities.at || shift || step_norms.empty()) return false;
+    reads.values.push_back(quantities.at(u));
+    const std::size_t k = step_norms.size();
+    reads.residual_contraction = k >= 2 ? step_norms[k - 1] / step_norms[k - 2] : NAN;
+    watched_settled = quantities.settled(reads);
+    if (watched_settled) settled_point.assign(u.begin(), u.end());
     return watched_settled;
   }
 };
@@ -128,9 +134,8 @@ int residual_fn(N_Vector y, N_Vector f, void* data) {
     const bool newton_point = cb->next_with_jacobian;
     // Every call of a full-step run is at a new iterate (a line search's are trials); a
     // failed call stops KINSOL, and solve() takes the point from the cache.
-    if ((newton_point || cb->full_steps) && cb->settles_watched(u)) return -1;
+    if ((newton_point || cb->full_steps) && (cb->settles_watched(u) || cb->settles_quantities(u))) return -1;
     cb->assemble_at(u, newton_point && !cb->expects_convergence());
-    if ((newton_point || cb->full_steps) && cb->settles_quantities(u)) return -1;
     cb->next_with_jacobian = false;
     std::copy(cb->point_residual.begin(), cb->point_residual.end(), r.begin());
     if (cb->shift)
@@ -262,7 +267,8 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
     callbacks_->next_with_jacobian = true;  // KINSOL's first request is a Jacobian's point
     callbacks_->step_norms.clear();
     callbacks_->last_watched.reset();
-    callbacks_->last_quantities.reset();
+    callbacks_->reads = {};
+    callbacks_->settled_point.clear();
     callbacks_->full_steps = strategy == KIN_NONE;
     const int result = KINSol(kin_.get(), y_.get(), strategy, scale_.get(), residual_scale_.get());
     callbacks_->failure.rethrow_internal();
@@ -283,9 +289,11 @@ NewtonReport KinsolNewton::solve(std::vector<double>& u, const NewtonSettings& s
   std::vector<double> r(n);
   auto settled = [&](int result) {
     if (callbacks_->watched_settled) {
-      std::copy(callbacks_->point.begin(), callbacks_->point.end(), N_VGetArrayPointer(y_.get()));
+      const bool unassembled = !callbacks_->settled_point.empty();
+      const std::vector<double>& at = unassembled ? callbacks_->settled_point : callbacks_->point;
+      std::copy(at.begin(), at.end(), N_VGetArrayPointer(y_.get()));
       rep.watched_settled = true;
-      rep.residual_norm = max_norm(callbacks_->point_residual);
+      rep.residual_norm = unassembled ? NAN : max_norm(callbacks_->point_residual);
       return true;
     }
     const std::span<const double> y(N_VGetArrayPointer(y_.get()), n);

@@ -7,6 +7,7 @@
 // holds the factors (SteadySystem::step_solver: the fold system's).
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <span>
 #include <string>
@@ -47,12 +48,20 @@ struct NewtonSettings {
   double watched_residual = 1e-3;
   // The same for a caller that needs quantities of the state to a known accuracy (a
   // state's reported quantities on the refined mesh, for their error bars): at each
-  // Newton point whose residual is within `watched_residual`, `quantities.at(u)`; Newton
-  // stops at the first point where `quantities.settled(before, now)` says the step from
-  // the last such point moved them little enough. Not on a pseudo-time step's solve.
+  // Newton point past the start, before it is assembled, `quantities.at(u)`; Newton
+  // stops at the first point where `quantities.settled(reads)` says it is close enough
+  // to the root, from every read of this solve so far and the residual's last
+  // contraction. That point is returned unassembled (the report's residual_norm is
+  // NaN). Not on a pseudo-time step's solve.
+  struct QuantityReads {
+    std::vector<std::vector<double>> values;  // at the Newton points read, the last one now
+    // ‖F‖∞ at the last Newton point assembled over that at the one before (NaN before
+    // two): the contraction of the step before the last one read.
+    double residual_contraction = NAN;
+  };
   struct WatchedQuantities {
     std::function<std::vector<double>(std::span<const double>)> at;
-    std::function<bool(const std::vector<double>& before, const std::vector<double>& now)> settled;
+    std::function<bool(const QuantityReads&)> settled;
   };
   WatchedQuantities quantities{};
 };
@@ -64,7 +73,7 @@ struct NewtonReport {
   long residual_evaluations = 0;
   long jacobian_evaluations = 0;
   long backtracks = 0;
-  double residual_norm = 0.0;  // max-norm of the scaled residual at the returned state
+  double residual_norm = 0.0;  // max-norm of the scaled residual at the returned state (NaN: see quantities)
   bool watched_settled = false;  // converged by the watched unknown's step (NewtonSettings::watched)
   std::string worst_block;     // where the residual is largest, when not converged
   Index worst_row = -1;

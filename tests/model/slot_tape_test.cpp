@@ -26,10 +26,10 @@ void add_sequence(Assembler& a) {
 }
 
 // The sequence's tape, and the values it assembles by search into jacobian.
-std::vector<Index> recorded_tape(const SparsePattern& p, std::vector<double>& jacobian) {
+SlotTape recorded_tape(const SparsePattern& p, std::vector<double>& jacobian) {
   std::vector<double> r(std::size_t(p.rows));
   jacobian.assign(std::size_t(p.nnz()), 0.0);
-  std::vector<Index> tape;
+  SlotTape tape;
   Assembler recorder(&p, r, jacobian);
   recorder.record_slots(&tape);
   add_sequence(recorder);
@@ -39,7 +39,7 @@ std::vector<Index> recorded_tape(const SparsePattern& p, std::vector<double>& ja
 TEST(SlotTape, ReplayPlacesEntriesLikeTheSearch) {
   const SparsePattern p = small_pattern();
   std::vector<double> r(3), searched, replayed(std::size_t(p.nnz()));
-  const std::vector<Index> tape = recorded_tape(p, searched);
+  const SlotTape tape = recorded_tape(p, searched);
   EXPECT_EQ(tape.size(), 4u);
   Assembler replay(&p, r, replayed, &tape);
   add_sequence(replay);
@@ -50,7 +50,7 @@ TEST(SlotTape, ReplayPlacesEntriesLikeTheSearch) {
 TEST(SlotTape, LeavingTheTapeStillPlacesEveryEntry) {
   const SparsePattern p = small_pattern();
   std::vector<double> r(3), expected, got(std::size_t(p.nnz()));
-  const std::vector<Index> tape = recorded_tape(p, expected);
+  const SlotTape tape = recorded_tape(p, expected);
   // Another order than recorded: the first mismatch drops the tape.
   Assembler a(&p, r, got, &tape);
   a.add_derivative(0, 2, 1.0);
@@ -70,6 +70,48 @@ TEST(SlotTape, StructureHoldsEachEntryOnceInOrder) {
   const SparsePattern p = structure.finish_structure();
   EXPECT_EQ(p.row_start, (std::vector<Index>{0, 3, 4, 7}));
   EXPECT_EQ(p.column, (std::vector<Index>{0, 1, 2, 1, 0, 1, 2}));
+}
+
+// The structure pass's own tape (finish_structure) is the one a searching value pass of
+// the same sequence records: repeats, the diagonals the pattern adds, rows out of order.
+TEST(SlotTape, TheStructureTapeIsTheSearchedOne) {
+  Assembler structure(3);
+  add_sequence(structure);
+  SlotTape from_structure;
+  const SparsePattern p = structure.finish_structure(&from_structure);
+  std::vector<double> searched;
+  EXPECT_EQ(from_structure, recorded_tape(p, searched));
+}
+
+// A pass that leaves its tape hands back the tape of its own sequence: the part it
+// replayed, then the slots it searched for. The next pass of that sequence replays it
+// whole and assembles what the search did; a pass that stays on its tape hands back
+// nothing.
+TEST(SlotTape, APassOffItsTapeHandsBackItsOwn) {
+  const SparsePattern p = small_pattern();
+  std::vector<double> r(3), expected;
+  const SlotTape tape = recorded_tape(p, expected);
+  auto other_sequence = [](Assembler& a) {
+    a.add_derivative(0, 2, 1.0);
+    a.add_derivative(0, 0, 3.0);  // the tape expected (2, 0) here
+    a.add_derivative(2, 0, 2.0);
+    a.add_derivative(2, 0, 4.0);
+  };
+  std::vector<double> first(std::size_t(p.nnz()));
+  SlotTape retaped;
+  Assembler off(&p, r, first, &tape, &retaped);
+  other_sequence(off);
+  EXPECT_FALSE(off.on_tape());
+  ASSERT_EQ(retaped.size(), 4u);
+  EXPECT_EQ(retaped[0], tape[0]);
+  std::vector<double> second(std::size_t(p.nnz()));
+  SlotTape unused{42};
+  Assembler on(&p, r, second, &retaped, &unused);
+  other_sequence(on);
+  EXPECT_TRUE(on.on_tape());
+  EXPECT_TRUE(unused.empty());
+  EXPECT_EQ(second, expected);
+  EXPECT_EQ(first, expected);
 }
 
 }  // namespace
