@@ -16,11 +16,11 @@ std::string criterion_column(LimitKind kind, const char* suffix) {
   return "W_" + name + suffix + "_N";
 }
 
-ResultTable distress_table(const std::vector<DistressRow>& rows, const std::string& parameter_column,
+ResultTable distress_table(const std::vector<DistressRow>& rows, const std::vector<std::string>& parameter_columns,
                            bool sliding_column) {
   ResultTable t;
   const auto speed = t.number("speed_rad_s");
-  const cells::RunColumns run(t, parameter_column, sliding_column);
+  const cells::RunColumns run(t, parameter_columns, sliding_column);
   const auto w_fail = t.number("W_fail_N");
   const auto criterion = t.text("criterion");
   const auto fail_extrapolated = t.number("W_fail_extrapolated_N"), fail_error = t.number("W_fail_error_N");
@@ -33,7 +33,7 @@ ResultTable distress_table(const std::vector<DistressRow>& rows, const std::stri
   const auto failure = t.text("failure"), method = t.text("method");
   for (const DistressRow& r : rows) {
     t.put_number(speed, r.speed);
-    run.put(t, r.parameter, r.sliding);
+    run.put(t, r.parameters, r.sliding);
     t.put_number(w_fail, r.failure_load);
     t.put_text(criterion, r.criterion ? criterion_name(*r.criterion) : std::string());
     t.put_number(fail_extrapolated, r.failure_extrapolated);
@@ -59,9 +59,9 @@ std::optional<double> criterion_load(const DistressRow& row, LimitKind kind) {
   return std::nullopt;
 }
 
-std::string distress_csv(const std::vector<DistressRow>& rows, const std::string& parameter_column,
+std::string distress_csv(const std::vector<DistressRow>& rows, const std::vector<std::string>& parameter_columns,
                          bool sliding_column) {
-  return distress_table(rows, parameter_column, sliding_column).csv();
+  return distress_table(rows, parameter_columns, sliding_column).csv();
 }
 
 }  // namespace twb

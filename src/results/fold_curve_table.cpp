@@ -20,7 +20,8 @@ std::string fold_name(const FoldCurveRow& row) {
 ResultTable fold_curve_table(const std::vector<FoldCurveRow>& rows, const std::string& parameter_column,
                              const std::string& family_column) {
   ResultTable t;
-  const cells::RunColumns family(t, family_column, false);
+  const cells::RunColumns family(t, family_column.empty() ? std::vector<std::string>{} : std::vector{family_column},
+                                 false);
   const auto parameter = t.number(parameter_column), w_fold = t.number("W_fold_N"), fold = t.text("fold"),
              t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"), hmin = t.number("hmin_over_sigma"),
              contact = t.number("contact_share"), f_eff = t.number("f_eff"), fine = t.number("W_fold_fine_N"),
@@ -28,7 +29,7 @@ ResultTable fold_curve_table(const std::vector<FoldCurveRow>& rows, const std::s
   const double offset = parameter_column == "ambient_C" ? kelvin_offset : 0.0;
   for (const FoldCurveRow& r : rows) {
     const BearingState& s = r.state;
-    family.put(t, r.member, {});
+    family.put(t, r.member ? std::vector<double>{*r.member} : std::vector<double>{}, {});
     t.put_number(parameter, r.parameter - offset);
     t.put_number(w_fold, s.load);
     t.put_text(fold, fold_name(r));

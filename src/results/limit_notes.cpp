@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "twb/results/run_axes.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {
@@ -13,7 +14,7 @@ namespace twb {
 namespace {
 
 // A run of a study: what tells its states apart besides the load.
-using Run = std::tuple<double, std::optional<double>, std::optional<SlidingFilm>>;
+using Run = std::tuple<double, std::vector<double>, std::optional<SlidingFilm>>;
 
 struct FirstExcess {
   double load;
@@ -24,11 +25,11 @@ struct FirstExcess {
 }  // namespace
 
 std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, const std::vector<DistressRow>& distress,
-                                     const std::string& parameter_column) {
+                                     const std::vector<std::string>& parameter_columns) {
   std::map<Run, std::map<LimitKind, FirstExcess>> first;
   for (const SolvedState& r : states) {
     if (!r.converged) continue;
-    auto& kinds = first[Run{r.state.speed, r.parameter, r.sliding}];
+    auto& kinds = first[Run{r.state.speed, r.parameters, r.sliding}];
     for (const LimitExcess& e : r.state.limits) {
       auto [it, fresh] = kinds.try_emplace(e.kind, FirstExcess{r.state.load, e, r.branch == Branch::cool});
       if (!fresh && r.state.load < it->second.load) it->second = FirstExcess{r.state.load, e, r.branch == Branch::cool};
@@ -36,14 +37,11 @@ std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, con
   }
   std::vector<std::string> lines;
   for (const auto& [run, kinds] : first) {
-    const auto& [speed, parameter, sliding] = run;
+    const auto& [speed, parameters, sliding] = run;
     std::optional<double> w_d;
     for (const DistressRow& d : distress)
-      if (d.speed == speed && d.parameter == parameter && d.sliding == sliding) w_d = d.distress_load;
-    const std::string where = fmt::format("{:.6g} rad/s{}{}", speed,
-                                          parameter ? fmt::format(", {} = {:.6g}", parameter_column.empty() ? "parameter" : parameter_column,
-                                                                  *parameter)
-                                                    : "",
+      if (d.speed == speed && d.parameters == parameters && d.sliding == sliding) w_d = d.distress_load;
+    const std::string where = fmt::format("{:.6g} rad/s{}{}", speed, run_axes_text(parameter_columns, parameters),
                                           sliding ? ", sliding " + std::string(scene_name(*sliding)) : "");
     for (const auto& [kind, f] : kinds) {
       const bool before_distress = w_d && f.cool_branch && f.load < *w_d;

@@ -15,12 +15,12 @@ namespace {
 constexpr double kLitresPerMinute = 1e3 * 60.0;  // l/min in one m³/s
 }  // namespace
 
-ResultTable states_table(const std::vector<SolvedState>& rows, const std::string& parameter_column,
+ResultTable states_table(const std::vector<SolvedState>& rows, const std::vector<std::string>& parameter_columns,
                          bool sliding_column) {
   ResultTable t;
   using Style = ResultColumn::Style;
   const auto load = t.number("load_N"), speed = t.number("speed_rad_s");
-  const cells::RunColumns run(t, parameter_column, sliding_column);
+  const cells::RunColumns run(t, parameter_columns, sliding_column);
   const auto t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"), t_carrier = t.number("T_carrier_max_C"),
              t_washer = t.number("T_washer_max_C"), t_gear = t.number("T_gear_max_C"), hmin = t.number("hmin_over_sigma"),
              gx = t.number("gamma_x_ratio"), gy = t.number("gamma_y_ratio"), fluid = t.number("fluid_share"),
@@ -51,7 +51,7 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::string
     const BearingState& s = r.state;
     t.put_number(load, s.load);
     t.put_number(speed, s.speed);
-    run.put(t, r.parameter, r.sliding);
+    run.put(t, r.parameters, r.sliding);
     t.put_number(t_mean, s.washer_mean_temperature - kelvin_offset);
     t.put_number(t_max, s.max_film_temperature - kelvin_offset);
     t.put_number(t_carrier, s.carrier_max_temperature - kelvin_offset);
@@ -96,9 +96,9 @@ std::vector<double> mesh_error_quantities(const BearingState& s) {
           s.torque, s.f_eff};
 }
 
-std::string states_csv(const std::vector<SolvedState>& rows, const std::string& parameter_column,
+std::string states_csv(const std::vector<SolvedState>& rows, const std::vector<std::string>& parameter_columns,
                        bool sliding_column) {
-  return states_table(rows, parameter_column, sliding_column).csv();
+  return states_table(rows, parameter_columns, sliding_column).csv();
 }
 
 std::string states_summary(const std::vector<SolvedState>& rows) {

@@ -6,13 +6,13 @@ namespace twb {
 
 using cells::kelvin_offset;
 
-ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const std::string& parameter_column,
+ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const std::vector<std::string>& parameter_columns,
                              bool sliding_column) {
   ResultTable t;
   const auto time = t.number("t_s"), t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"),
              hmin = t.number("hmin_over_sigma"), contact = t.number("contact_share"), f_eff = t.number("f_eff"),
              load = t.number("load_N"), speed = t.number("speed_rad_s");
-  const cells::RunColumns run(t, parameter_column, sliding_column);
+  const cells::RunColumns run(t, parameter_columns, sliding_column);
   for (const TrajectorySample& p : samples) {
     const BearingState& s = p.state;
     t.put_number(time, p.time);
@@ -23,14 +23,14 @@ ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const
     t.put_number(f_eff, s.f_eff);
     t.put_number(load, s.load);
     t.put_number(speed, s.speed);
-    run.put(t, p.parameter, p.sliding);
+    run.put(t, p.parameters, p.sliding);
   }
   return t;
 }
 
-std::string trajectory_csv(const std::vector<TrajectorySample>& samples, const std::string& parameter_column,
+std::string trajectory_csv(const std::vector<TrajectorySample>& samples, const std::vector<std::string>& parameter_columns,
                            bool sliding_column) {
-  return trajectory_table(samples, parameter_column, sliding_column).csv();
+  return trajectory_table(samples, parameter_columns, sliding_column).csv();
 }
 
 }  // namespace twb

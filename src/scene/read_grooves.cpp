@@ -64,24 +64,48 @@ double groove_angle(const Node& node, double mean_radius) {
   }
 }
 
+namespace {
+
+bool varies_grooves(MapParameter p) {
+  return p == MapParameter::groove_count || p == MapParameter::groove_width || p == MapParameter::groove_depth;
+}
+
+}  // namespace
+
 void check_groove_parameter(const MapReader& scene, const Scene& out) {
-  const Study& s = out.study;
-  if (s.parameter != MapParameter::groove_count && s.parameter != MapParameter::groove_width &&
-      s.parameter != MapParameter::groove_depth)
-    return;
-  const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
-  const MapReader axis = study.map(study.has("family") ? "family" : "parameter", {"name", "values"});
+  const std::vector<MapAxis>& axes = out.study.axes;
+  std::vector<std::size_t> groove_axes;
+  for (std::size_t k = 0; k < axes.size(); ++k)
+    if (varies_grooves(axes[k].parameter)) groove_axes.push_back(k);
+  if (groove_axes.empty()) return;
+  const std::vector<MapReader> nodes = axis_nodes(scene);
+  if (nodes.size() != axes.size()) throw InternalError("check_groove_parameter: the axes and their nodes differ");
   if (!out.washer.grooves) {
-    const Node name = axis.get("name", "");
+    const Node name = nodes[groove_axes.front()].get("name", "");
     name.fail(fmt::format("{}: {} varies the washer's grooves, and the scene has none; give them in "
                           "geometry.washer.grooves",
                           name.path(), name.yaml().Scalar()));
   }
-  const std::vector<Node> items = axis.get("values", "").list("");
-  for (std::size_t k = 0; k < items.size(); ++k) {
+  // Every combination of the groove axes' values (a count and a width may fit alone and
+  // not together), each placed in the axes' order, as the searches place them; a
+  // combination that fails is refused at the value of the last axis it placed.
+  std::vector<std::size_t> at(groove_axes.size(), 0);
+  while (true) {
     Scene trial = out;
-    if (const std::optional<GroovesNotPlaced> not_placed = place_groove_parameter(trial, s.parameter, s.parameter_values[k]))
-      items[k].fail(fmt::format("{}: {}", items[k].path(), not_placed->why));
+    for (std::size_t g = 0; g < groove_axes.size(); ++g) {
+      const MapAxis& axis = axes[groove_axes[g]];
+      if (const std::optional<GroovesNotPlaced> not_placed = place_groove_parameter(trial, axis.parameter, axis.values[at[g]])) {
+        const Node item = nodes[groove_axes[g]].get("values", "").list("")[at[g]];
+        std::string with;
+        for (std::size_t h = 0; h < g; ++h)
+          with += fmt::format("{} {} = {:.6g}", h == 0 ? " (with" : ",",
+                              kMapParameters.name(axes[groove_axes[h]].parameter), axes[groove_axes[h]].values[at[h]]);
+        item.fail(fmt::format("{}: {}{}", item.path(), not_placed->why, with.empty() ? "" : with + ")"));
+      }
+    }
+    std::size_t g = groove_axes.size();
+    while (g > 0 && ++at[g - 1] == axes[groove_axes[g - 1]].values.size()) at[--g] = 0;
+    if (g == 0) break;
   }
 }
 

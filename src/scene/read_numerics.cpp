@@ -87,24 +87,22 @@ double read_bracket_width(const MapReader& study, double fallback) {
                         fallback);
 }
 
-// The second axis of a distress map or load sweep: `parameter: {name: friction_coefficient, values: [...]}`;
-// of a distress curve, its family of curves: `family: {...}` alike.
-void read_map_parameter(const MapReader& study, Study& s, const Scene& scene, const char* key = "parameter") {
-  if (!study.has(key)) return;
-  const MapReader p = study.map(key, {"name", "values"});
+// One axis: `{name: friction_coefficient, values: [0.05, 0.1]}`, or an input's scene path
+// for a name, whose values are read once every input is known (check_input_axis).
+MapAxis read_map_axis(const MapReader& p, const Scene& scene) {
+  MapAxis axis;
   const Node name = p.get("name", "friction_coefficient, gear_tilt, roughness, groove_count, groove_width, "
                                   "groove_depth, or an input's scene path such as geometry.gear.tilt");
-  // A scene path (it has a dot; no named parameter does): its values are read once every
-  // input is known (check_input_axis).
+  // A scene path has a dot; no named parameter does.
   if (name.yaml().IsScalar() && name.yaml().Scalar().find('.') != std::string::npos) {
-    s.parameter = MapParameter::scene_input;
-    s.parameter_path = name.yaml().Scalar();
+    axis.parameter = MapParameter::scene_input;
+    axis.path = name.yaml().Scalar();
     const Node values = p.get("values", "a list of values, e.g. [1 mrad, 2 mrad]");
     if (values.list("a list of values, e.g. [1 mrad, 2 mrad]").empty())
       values.fail(fmt::format("{}: the list is empty; give at least one value", values.path()));
-    return;
+    return axis;
   }
-  s.parameter = kMapParameters.values[name.choice(kMapParameters.names)];
+  axis.parameter = kMapParameters.values[name.choice(kMapParameters.names)];
   const Node values = p.get("values", "a list of values, e.g. [0.05, 0.1, 0.2]");
   const std::vector<Node> items = values.list("a list of values, e.g. [0.05, 0.1, 0.2]");
   if (items.empty())
@@ -112,35 +110,62 @@ void read_map_parameter(const MapReader& study, Study& s, const Scene& scene, co
   // A groove's values are checked against the grooves once those are read
   // (check_groove_parameter).
   for (const Node& item : items) {
-    switch (s.parameter) {
+    switch (axis.parameter) {
       case MapParameter::friction_coefficient:
-        s.parameter_values.push_back(item.quantity(si::dimensionless, bounds::friction_coefficient));
+        axis.values.push_back(item.quantity(si::dimensionless, bounds::friction_coefficient));
         break;
       case MapParameter::gear_tilt:
-        s.parameter_values.push_back(item.quantity(si::angle, bounds::tilt));
+        axis.values.push_back(item.quantity(si::angle, bounds::tilt));
         break;
       case MapParameter::roughness:
-        s.parameter_values.push_back(item.quantity(si::length, bounds::roughness));
+        axis.values.push_back(item.quantity(si::length, bounds::roughness));
         break;
       case MapParameter::groove_count:
-        s.parameter_values.push_back(item.integer(1, 360, "grooves round the face"));
+        axis.values.push_back(item.integer(1, 360, "grooves round the face"));
         break;
       case MapParameter::groove_width:
-        s.parameter_values.push_back(groove_angle(item, 0.5 * (scene.washer.inner_radius + scene.washer.outer_radius)));
+        axis.values.push_back(groove_angle(item, 0.5 * (scene.washer.inner_radius + scene.washer.outer_radius)));
         break;
       case MapParameter::groove_depth:
-        s.parameter_values.push_back(item.quantity(si::length, bounds::groove_depth));
+        axis.values.push_back(item.quantity(si::length, bounds::groove_depth));
         break;
       case MapParameter::none:
       case MapParameter::scene_input:
         break;
     }
   }
-  if (s.parameter == MapParameter::friction_coefficient && scene.friction.law != FrictionLaw::constant) {
-    const Node name = p.get("name", "");
+  if (axis.parameter == MapParameter::friction_coefficient && scene.friction.law != FrictionLaw::constant)
     name.fail(fmt::format("{}: friction_coefficient varies the constant friction law's coefficient; "
                           "set friction.law: constant",
                           name.path()));
+  return axis;
+}
+
+// The axes of a distress map or load sweep besides the speed: `parameter: {name: ...,
+// values: [...]}`, or a list of such maps, a grid of every combination; a distress
+// curve's family: `family: {...}`, one axis.
+void read_map_axes(const MapReader& study, Study& s, const Scene& scene, const char* key = "parameter") {
+  if (!study.has(key)) return;
+  const Node node = study.get(key, "");
+  if (!(std::string_view(key) == "parameter" && node.yaml().IsSequence())) {
+    s.axes.push_back(read_map_axis(study.map(key, {"name", "values"}), scene));
+    return;
+  }
+  const std::vector<Node> items = node.list("a list of axes, each {name: ..., values: [...]}");
+  if (items.empty())
+    node.fail(fmt::format("{}: the list is empty; give at least one axis, e.g. [{{name: friction_coefficient, "
+                          "values: [0.05, 0.1]}}]",
+                          node.path()));
+  for (const Node& item : items) {
+    const MapReader p(item, {"name", "values"});
+    MapAxis axis = read_map_axis(p, scene);
+    for (const MapAxis& before : s.axes)
+      if (before.parameter == axis.parameter && before.path == axis.path) {
+        const Node name = p.get("name", "");
+        name.fail(fmt::format("{}: {} is an axis of this grid already; each axis varies another input",
+                              name.path(), name.yaml().Scalar()));
+      }
+    s.axes.push_back(std::move(axis));
   }
 }
 
@@ -253,7 +278,7 @@ void read_study(const MapReader& scene, Scene& out) {
                         "with type: load_sweep");
       read_load_grid(study, out);
       s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
-      read_map_parameter(study, s, out);
+      read_map_axes(study, s, out);
       break;
     case StudyType::sliding_choice:
       study.restrict_to({"type", "load_start", "load_end", "load_steps", "speeds", "bracket_width"},
@@ -267,7 +292,7 @@ void read_study(const MapReader& scene, Scene& out) {
       read_fold_curve(study, out);
       s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
       refuse_every_state(study, s, "distress_curve");
-      read_map_parameter(study, s, out, "family");
+      read_map_axes(study, s, out, "family");
       break;
     case StudyType::sensitivity:
       // The state at the operating point, and with a load range the failure load there.
@@ -325,7 +350,7 @@ void read_study(const MapReader& scene, Scene& out) {
       s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
       read_speeds(study, s);
       read_load_range(study, s, " (distress is searched between them)");
-      read_map_parameter(study, s, out);
+      read_map_axes(study, s, out);
       s.bracket_width = read_bracket_width(study, s.bracket_width);
       break;
     }
@@ -345,6 +370,24 @@ void read_numerics(const MapReader& scene, Scene& out) {
   read_study(scene, out);
   read_solver(scene, out);  // after the study, which the solver's method must suit
   read_output(scene, out);
+}
+
+}  // namespace twb::scene_io
+
+namespace twb::scene_io {
+
+std::vector<MapReader> axis_nodes(const MapReader& scene) {
+  std::vector<MapReader> out;
+  if (!scene.has("study")) return out;
+  const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
+  const char* key = study.has("family") ? "family" : "parameter";
+  if (!study.has(key)) return out;
+  const Node node = study.get(key, "");
+  if (node.yaml().IsSequence())
+    for (const Node& item : node.list("")) out.emplace_back(item, std::vector<std::string_view>{"name", "values"});
+  else if (node.yaml().IsMap())
+    out.push_back(study.map(key, {"name", "values"}));
+  return out;  // none for a distress curve's own parameter (a name)
 }
 
 }  // namespace twb::scene_io

@@ -12,6 +12,7 @@
 
 #include "scene_names.h"
 #include "tree_path.h"
+#include "twb/error_family.h"
 #include "twb/scene/input_error.h"
 #include "twb/scene/scene_inputs.h"
 #include "twb/scene/scene_loader.h"
@@ -80,31 +81,38 @@ void check_study_parameters(const MapReader& scene, const Scene& out) {
   }
 }
 
-// A map's or family's axis over an input's scene path: the path names an input other than
+// A map's or family's axes over inputs' scene paths: each path names an input other than
 // the load and the speed (the search's and the map's own axes), and every value, in the
 // input's unit, makes a scene the reader accepts (tried once each, as a point study).
 void check_input_axis(const MapReader& scene, Scene& out) {
-  Study& s = out.study;
-  if (s.parameter != MapParameter::scene_input) return;
-  const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
-  const MapReader axis = study.map(study.has("family") ? "family" : "parameter", {"name", "values"});
-  const Node name = axis.get("name", "");
-  if (s.parameter_path == "operating.load" || s.parameter_path == "operating.speed")
-    name.fail(fmt::format("{}: {} is an axis of every search already ({}); a map's parameter is another input",
-                          name.path(), s.parameter_path,
-                          s.parameter_path == "operating.load" ? "the load it continues in" : "study.speeds"));
-  SceneInput input;
-  try {
-    input = scene_input(out, s.parameter_path);
-  } catch (const std::invalid_argument& e) {
-    name.fail(fmt::format("{}: {}", name.path(), e.what()));
-  }
-  s.parameter_unit = input.unit;
-  for (const Node& item : axis.get("values", "").list("")) {
-    const double value = item.quantity(si::of_symbol(input.unit), Range{});
-    if (const std::optional<InputError> e = refused(out, input, value))
-      item.fail(fmt::format("{}: {}", item.path(), e->message()));
-    s.parameter_values.push_back(value);
+  std::vector<MapAxis>& axes = out.study.axes;
+  bool any = false;
+  for (const MapAxis& a : axes) any = any || a.parameter == MapParameter::scene_input;
+  if (!any) return;
+  const std::vector<MapReader> nodes = axis_nodes(scene);
+  if (nodes.size() != axes.size()) throw InternalError("check_input_axis: the axes and their nodes differ");
+  for (std::size_t k = 0; k < axes.size(); ++k) {
+    MapAxis& s = axes[k];
+    if (s.parameter != MapParameter::scene_input) continue;
+    const MapReader& axis = nodes[k];
+    const Node name = axis.get("name", "");
+    if (s.path == "operating.load" || s.path == "operating.speed")
+      name.fail(fmt::format("{}: {} is an axis of every search already ({}); a map's parameter is another input",
+                            name.path(), s.path,
+                            s.path == "operating.load" ? "the load it continues in" : "study.speeds"));
+    SceneInput input;
+    try {
+      input = scene_input(out, s.path);
+    } catch (const std::invalid_argument& e) {
+      name.fail(fmt::format("{}: {}", name.path(), e.what()));
+    }
+    s.unit = input.unit;
+    for (const Node& item : axis.get("values", "").list("")) {
+      const double value = item.quantity(si::of_symbol(input.unit), Range{});
+      if (const std::optional<InputError> e = refused(out, input, value))
+        item.fail(fmt::format("{}: {}", item.path(), e->message()));
+      s.values.push_back(value);
+    }
   }
 }
 

@@ -31,9 +31,13 @@ void read_numerics(const MapReader& scene, Scene& out);
 void read_grooves(const MapReader& scene, Scene& out);
 // A groove's width at `node`: a length at the washer's mean radius, or an angle (rad).
 double groove_angle(const Node& node, double mean_radius);
-// A map's or family's groove parameter (groove_count, groove_width, groove_depth): the
-// scene has grooves, and every value places them (read after the grooves).
+// A map's or family's groove parameters (groove_count, groove_width, groove_depth): the
+// scene has grooves, and every value, and every combination of the groove axes' values,
+// places them (read after the grooves).
 void check_groove_parameter(const MapReader& scene, const Scene& out);
+// The nodes of a study's axes (study.parameter: a map, or a list of maps for a grid;
+// study.family: a map), one per Study::axes entry.
+std::vector<MapReader> axis_nodes(const MapReader& scene);
 
 // Why the scene refuses an input at `value`, if it does (the scene read again with it).
 std::optional<InputError> refused(const Scene& out, const SceneInput& input, double value);

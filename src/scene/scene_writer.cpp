@@ -214,23 +214,35 @@ void write_numerics(Writer& w, const Scene& s) {
     for (double speed : st.speeds) speeds += (speeds.empty() ? "" : ", ") + quantity(speed, "rad/s");
     w.entry(1, "speeds", fmt::format("[{}]", speeds));
   }
-  // A map's second axis, or a distress curve's family of curves.
-  auto map_parameter = [&](const char* key) {
-    const char* unit = st.parameter == MapParameter::gear_tilt || st.parameter == MapParameter::groove_width ? "rad"
-                       : st.parameter == MapParameter::roughness || st.parameter == MapParameter::groove_depth ? "m"
-                                                                                                               : "1";
+  // A map's axes (one as a map, a grid as a list of them), or a distress curve's family.
+  auto axis_text = [](const MapAxis& a) {
+    const char* unit = a.parameter == MapParameter::gear_tilt || a.parameter == MapParameter::groove_width ? "rad"
+                       : a.parameter == MapParameter::roughness || a.parameter == MapParameter::groove_depth ? "m"
+                                                                                                             : "1";
     std::string values;
-    for (double v : st.parameter_values)
+    for (double v : a.values)
       values += (values.empty() ? "" : ", ") +
-                (st.parameter == MapParameter::groove_count ? fmt::format("{}", int(v))
-                 : st.parameter == MapParameter::scene_input ? quantity(v, st.parameter_unit)
-                                                              : quantity(v, unit));
-    w.line(1, std::string(key) + ":");
-    w.entry(2, "name", st.parameter == MapParameter::scene_input ? st.parameter_path
-                                                                  : std::string(kMapParameters.name(st.parameter)));
-    w.entry(2, "values", fmt::format("[{}]", values));
+                (a.parameter == MapParameter::groove_count ? fmt::format("{}", int(v))
+                 : a.parameter == MapParameter::scene_input ? quantity(v, a.unit)
+                                                            : quantity(v, unit));
+    return std::pair{a.parameter == MapParameter::scene_input ? a.path : std::string(kMapParameters.name(a.parameter)),
+                     fmt::format("[{}]", values)};
   };
-  if (st.parameter != MapParameter::none && st.type != StudyType::distress_curve) map_parameter("parameter");
+  auto map_axes = [&](const char* key) {
+    w.line(1, std::string(key) + ":");
+    if (st.axes.size() == 1) {
+      const auto [name, values] = axis_text(st.axes.front());
+      w.entry(2, "name", name);
+      w.entry(2, "values", values);
+      return;
+    }
+    for (const MapAxis& a : st.axes) {
+      const auto [name, values] = axis_text(a);
+      w.line(2, fmt::format("- name: {}", name));
+      w.entry(3, "values", values);
+    }
+  };
+  if (!st.axes.empty() && st.type != StudyType::distress_curve) map_axes("parameter");
   if (grid || st.type == StudyType::distress_map)
     w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
   if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map || st.type == StudyType::distress_curve)
@@ -284,7 +296,7 @@ void write_numerics(Writer& w, const Scene& s) {
     w.entry(1, "from", quantity(st.from, unit));
     w.entry(1, "to", quantity(st.to, unit));
     w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
-    if (st.parameter != MapParameter::none) map_parameter("family");
+    if (!st.axes.empty()) map_axes("family");
   }
 
   w.line(0, "output:");

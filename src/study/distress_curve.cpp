@@ -134,12 +134,12 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   std::vector<std::pair<double, Crossings>> ends;
   auto take = [&](DistressSearch& found, double end) {
     add_search_work(out.timings, found.counts);
-    found.row.parameter = member;
+    found.row.parameters = member ? std::vector<double>{*member} : std::vector<double>{};
     if (which != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown_parameter(which, end), found.row.method);
     out.distress.push_back(found.row);
     for (std::size_t k = 0; k < found.cool_states; ++k) {
       out.states.push_back(found.states[k]);
-      out.states.back().parameter = member;
+      out.states.back().parameters = found.row.parameters;
       out.states.back().branch = Branch::cool;
     }
     ends.emplace_back(end, found.crossing_states);

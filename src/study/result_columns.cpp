@@ -43,11 +43,11 @@ std::string result_columns_json() {
   with_errors.state.flows = FilmFlows{};
   with_errors.state.heat_carried = 0.0;
   Json tables;
-  tables["states"] = columns(states_table({with_errors}, parameter, true), states_table({}, {}, false));
-  tables["distress"] = columns(distress_table({}, parameter, true), distress_table({}, {}, false));
+  tables["states"] = columns(states_table({with_errors}, {parameter}, true), states_table({}, {}, false));
+  tables["distress"] = columns(distress_table({}, {parameter}, true), distress_table({}, {}, false));
   tables["sliding"] = columns(sliding_table({}), sliding_table({}));
   tables["fold_curve"] = columns(fold_curve_table({}, parameter, family), fold_curve_table({}, parameter));
-  tables["trajectory"] = columns(trajectory_table({}, parameter, true), trajectory_table({}, {}, false));
+  tables["trajectory"] = columns(trajectory_table({}, {parameter}, true), trajectory_table({}, {}, false));
   tables["fields"] = columns(fields_table({}), fields_table({}));
   tables["sensitivity"] = columns(sensitivity_table({}), sensitivity_table({}));
   tables["reliability"] = columns(reliability_table({}), reliability_table({}));

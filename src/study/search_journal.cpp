@@ -26,7 +26,7 @@ static_assert(sizeof(BearingState) == 8 * 30 + sizeof(std::optional<double>) + s
 
 // The format, the program's version and the journaled structs' layout: an entry written
 // by another build is not read (its search runs again) rather than misread.
-const std::string kMagic = fmt::format("twb-search-journal 7 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
+const std::string kMagic = fmt::format("twb-search-journal 8 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
                                        sizeof(SolvedState), sizeof(DistressRow), sizeof(TrajectorySample),
                                        sizeof(SearchCounts));
 
@@ -67,16 +67,16 @@ void fields_of_film(A& a, S& f) {
 }
 template <class A, class S>
 void fields_of_solved(A& a, S& s) {
-  a(s.state), a(s.converged), a(s.iterations), a(s.residual), a(s.wall_ms), a(s.parameter), a(s.sliding);
+  a(s.state), a(s.converged), a(s.iterations), a(s.residual), a(s.wall_ms), a(s.parameters), a(s.sliding);
   a(s.branch), a(s.mesh_errors), a(s.fields);
 }
 template <class A, class S>
 void fields_of_sample(A& a, S& t) {
-  a(t.time), a(t.state), a(t.parameter), a(t.sliding);
+  a(t.time), a(t.state), a(t.parameters), a(t.sliding);
 }
 template <class A, class S>
 void fields_of_row(A& a, S& r) {
-  a(r.speed), a(r.parameter), a(r.distress_load), a(r.bracket_low), a(r.bracket_high), a(r.fold_load);
+  a(r.speed), a(r.parameters), a(r.distress_load), a(r.bracket_low), a(r.bracket_high), a(r.fold_load);
   a(r.fine_fold_load), a(r.extrapolated_load), a(r.discretization_error), a(r.method), a(r.sliding);
   a(r.failure_load), a(r.criterion), a(r.failure);
   for (auto& load : r.criterion_loads) a(load);

@@ -2,13 +2,14 @@
 
 #include <fmt/format.h>
 
+#include "twb/results/run_axes.h"
 #include "twb/scene/scene_loader.h"
 
 
 namespace twb {
 
 std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
-  const std::string& parameter = out.parameter_column;
+  const std::vector<std::string>& parameter = out.parameter_columns;
   const bool sliding = out.sliding_column;
   std::vector<NamedTable> tables;
   tables.push_back({"states", states_table(out.states, parameter, sliding)});
@@ -17,7 +18,7 @@ std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
     tables.push_back({"distress", distress_table(out.distress, parameter, sliding)});
   if (type == StudyType::sliding_choice) tables.push_back({"sliding", sliding_table(out.sliding)});
   if (type == StudyType::distress_curve)
-    tables.push_back({"fold_curve", fold_curve_table(out.fold_curve, out.fold_curve_column, parameter)});
+    tables.push_back({"fold_curve", fold_curve_table(out.fold_curve, out.fold_curve_column, parameter.empty() ? std::string() : parameter.front())});
   if ((type == StudyType::sensitivity || type == StudyType::reliability) && !out.distress.empty())
     tables.push_back({"distress", distress_table(out.distress, parameter, sliding)});
   if (type == StudyType::sensitivity) tables.push_back({"sensitivity", sensitivity_table(out.sensitivity)});
@@ -38,8 +39,7 @@ std::vector<std::string> summary_lines(const StudyOutcome& outcome) {
   std::vector<std::string> lines;
   for (const DistressRow& d : outcome.distress) {
     const std::string where =
-        fmt::format("{:.6g} rad/s{}{}", d.speed,
-                    d.parameter ? fmt::format(", {} = {:.6g}", outcome.parameter_column, *d.parameter) : "",
+        fmt::format("{:.6g} rad/s{}{}", d.speed, run_axes_text(outcome.parameter_columns, d.parameters),
                     d.sliding ? ", sliding " + std::string(scene_name(*d.sliding)) : "");
     lines.push_back(fmt::format(
         "distress at {}: {}{} ({})", where, d.distress_load ? fmt::format("W_d = {:.2f} N", *d.distress_load) : "none",

@@ -65,7 +65,7 @@ void run_point(BearingModel& model, StudyOutcome& out) {
 // The members of a family are independent: on `threads` threads, each with its own
 // model, their outcomes joined in the family's order (the same files for any count).
 void run_distress_curve(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, int threads) {
-  const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
+  const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_columns);
   out.fold_curve_column = fold_curve_column(base.scene().study.curve_parameter);
   std::vector<StudyOutcome> parts(variants.size());
   std::mutex lock;
@@ -76,7 +76,10 @@ void run_distress_curve(BearingModel& base, StudyOutcome& out, const ProgressRep
     try {
       BearingModel model(variants[i].scene ? *variants[i].scene : base.scene());
       // Threads the family's members leave over serve each curve's own pieces.
-      run_fold_curve(model, variants[i].parameter, variants[i].label, part, say,
+      // A family has one axis (the scene reader's): its member is that value.
+      const std::optional<double> member =
+          variants[i].parameters.empty() ? std::nullopt : std::optional<double>(variants[i].parameters.front());
+      run_fold_curve(model, member, variants[i].label, part, say,
                      std::max(1, threads / int(variants.size())));
     } catch (const InternalError&) {
       throw;  // a bug: no fallback may hide it
@@ -131,7 +134,7 @@ void keep_failure(StudyOutcome& out, const DistressSearch& found) {
 }
 
 void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, const Running& how) {
-  const std::vector<Variant> variants = parameter_variants(model.scene(), out.parameter_column);
+  const std::vector<Variant> variants = parameter_variants(model.scene(), out.parameter_columns);
   run_searches(model, variants, grid_settings(model.scene().study), progress, how, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
                  out.states.insert(out.states.end(), found.states.begin(), found.states.end());
@@ -142,7 +145,7 @@ void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport
 }
 
 void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, const Running& how) {
-  const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_column);
+  const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_columns);
   DistressSearchSettings settings = range_settings(base.scene().study);
   settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
   run_searches(base, variants, settings, progress, how, out.timings, out.diagnostics,
@@ -168,7 +171,7 @@ void run_sliding_choice(BearingModel& base, StudyOutcome& out, const ProgressRep
     Scene scene = base.scene();
     scene.operating.sliding = film;
     const std::string name(scene_name(film));
-    variants.push_back({std::move(scene), std::nullopt, film, ", sliding " + name});
+    variants.push_back({std::move(scene), {}, film, ", sliding " + name});
   }
   const std::vector<double> grid = load_grid(st);
   // Per speed and grid load, the state of each configuration that reached it.

@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "twb/results/run_axes.h"
 #include "twb/scene/scene_inputs.h"
 
 #include "distress_curve.h"
@@ -44,9 +45,9 @@ std::string input_column(const std::string& path, const std::string& unit) {
   return path + "_" + suffix;
 }
 
-std::string parameter_column(const Study& study) {
-  if (study.parameter == MapParameter::scene_input) return input_column(study.parameter_path, study.parameter_unit);
-  return parameter_column(study.parameter);
+std::string parameter_column(const MapAxis& axis) {
+  if (axis.parameter == MapParameter::scene_input) return input_column(axis.path, axis.unit);
+  return parameter_column(axis.parameter);
 }
 
 std::string parameter_column(MapParameter p) {
@@ -70,12 +71,12 @@ std::string parameter_column(MapParameter p) {
   return {};
 }
 
-Scene with_parameter(Scene scene, const Study& study, double value) {
-  const MapParameter p = study.parameter;
+Scene with_parameter(Scene scene, const MapAxis& axis, double value) {
+  const MapParameter p = axis.parameter;
   switch (p) {
     case MapParameter::scene_input: {
       // The scene reader tried every value.
-      const std::pair<std::string, double> set[] = {{study.parameter_path, value}};
+      const std::pair<std::string, double> set[] = {{axis.path, value}};
       return with_inputs(scene, set);
     }
     case MapParameter::friction_coefficient:
@@ -101,16 +102,37 @@ Scene with_parameter(Scene scene, const Study& study, double value) {
   return scene;
 }
 
-std::vector<Variant> parameter_variants(const Scene& scene, std::string& column) {
-  const Study& st = scene.study;
-  column = parameter_column(st);
-  if (st.parameter == MapParameter::none) return {Variant{}};
+std::vector<Variant> parameter_variants(const Scene& scene, std::vector<std::string>& columns) {
+  const std::vector<MapAxis>& axes = scene.study.axes;
+  columns.clear();
+  for (const MapAxis& axis : axes) columns.push_back(parameter_column(axis));
+  if (axes.empty()) return {Variant{}};
+  // The combinations as an odometer, the last axis turning fastest. The inputs by path
+  // first, all at once: the scene is read again with them (with_inputs), which would undo
+  // a named parameter set before; then the named ones in the axes' order (the scene
+  // reader placed groove combinations so).
   std::vector<Variant> out;
-  for (double value : st.parameter_values) {
-    Scene variant = with_parameter(scene, st, value);
-    // A groove's width as the grid holds it (whole cells), which is what was solved.
-    if (st.parameter == MapParameter::groove_width) value = variant.washer.grooves->width;
-    out.push_back({std::move(variant), value, {}, fmt::format(", {} = {:.6g}", column, value)});
+  std::vector<std::size_t> at(axes.size(), 0);
+  while (true) {
+    std::vector<std::pair<std::string, double>> inputs;
+    for (std::size_t k = 0; k < axes.size(); ++k)
+      if (axes[k].parameter == MapParameter::scene_input) inputs.emplace_back(axes[k].path, axes[k].values[at[k]]);
+    Scene variant = inputs.empty() ? scene : with_inputs(scene, inputs);
+    std::vector<double> values;
+    for (std::size_t k = 0; k < axes.size(); ++k) {
+      if (axes[k].parameter != MapParameter::scene_input)
+        variant = with_parameter(std::move(variant), axes[k], axes[k].values[at[k]]);
+      values.push_back(axes[k].values[at[k]]);
+    }
+    // A groove's width as the grid holds it (whole cells, once every groove axis placed
+    // them), which is what is solved.
+    for (std::size_t k = 0; k < axes.size(); ++k)
+      if (axes[k].parameter == MapParameter::groove_width) values[k] = variant.washer.grooves->width;
+    std::string label = run_axes_text(columns, values);
+    out.push_back({std::move(variant), std::move(values), {}, std::move(label)});
+    std::size_t k = axes.size();
+    while (k > 0 && ++at[k - 1] == axes[k - 1].values.size()) at[--k] = 0;
+    if (k == 0) break;
   }
   return out;
 }
@@ -167,16 +189,16 @@ SearchDone search_one(const BearingModel& base, const SearchTask& task, const Di
     estimate_state_errors(*done.model, found, progress);
   }
   done.klu_factorizations = SparseLu::thread_counts().factored_since(before) + found.counts.ida_factorizations;
-  found.row.parameter = variant.parameter;
+  found.row.parameters = variant.parameters;
   found.row.sliding = variant.sliding;
   for (std::size_t i = 0; i < found.states.size(); ++i) {
     SolvedState& state = found.states[i];
-    state.parameter = variant.parameter;
+    state.parameters = variant.parameters;
     state.sliding = variant.sliding;
     state.branch = i < found.cool_states ? Branch::cool : Branch::hot;
   }
   for (TrajectorySample& sample : found.runaway) {
-    sample.parameter = variant.parameter;
+    sample.parameters = variant.parameters;
     sample.sliding = variant.sliding;
   }
   return done;

@@ -21,24 +21,25 @@ class SearchScheduler;
 
 // The name of a parameter's column in the results, with its unit.
 std::string parameter_column(MapParameter p);
-// The study's second axis' column: a named parameter's, or an input's path with its SI
-// unit, e.g. "geometry.gear.tilt_rad", "materials.washer.conductivity_W_m_K".
-std::string parameter_column(const Study& study);
+// An axis' column: a named parameter's, or an input's path with its SI unit, e.g.
+// "geometry.gear.tilt_rad", "materials.washer.conductivity_W_m_K".
+std::string parameter_column(const MapAxis& axis);
 std::string input_column(const std::string& path, const std::string& unit);
-// Applies a study's second parameter to a scene.
-Scene with_parameter(Scene scene, const Study& study, double value);
+// Applies a value of one of a study's axes to a scene.
+Scene with_parameter(Scene scene, const MapAxis& axis, double value);
 
 // One configuration of the bearing a study searches at every speed: the scene's own
-// (no scene here), a parameter value, or a sliding film.
+// (no scene here), a combination of its axes' values, or a sliding film.
 struct Variant {
   std::optional<Scene> scene;
-  std::optional<double> parameter;
+  std::vector<double> parameters;  // one per axis (run_axes.h)
   std::optional<SlidingFilm> sliding;
   std::string label;  // for progress lines, e.g. ", friction_coefficient = 0.1"
 };
 
-// The scene's own configuration, or one per value of its second parameter.
-std::vector<Variant> parameter_variants(const Scene& scene, std::string& column);
+// The scene's own configuration, or one per combination of its axes' values (the first
+// axis outermost); `columns` gets the axes' columns.
+std::vector<Variant> parameter_variants(const Scene& scene, std::vector<std::string>& columns);
 
 // The speeds a study searches at: study.speeds, or the model's speed for a scene built
 // without them (the loader fills them in).

@@ -102,8 +102,8 @@ TEST(LimitNotes, SayWhenTheCoolBranchLeavesTheModelBeforeDistress) {
   EXPECT_EQ(limit_notes({a, b}, {d})[0].find("below W_d"), std::string::npos);
   EXPECT_TRUE(limit_notes({}, {d}).empty());
   // A run of a map's second axis is named by its column.
-  a.parameter = b.parameter = d.parameter = 4.0;
-  const std::vector<std::string> named = limit_notes({a, b}, {d}, "groove_count");
+  a.parameters = b.parameters = d.parameters = {4.0};
+  const std::vector<std::string> named = limit_notes({a, b}, {d}, {"groove_count"});
   ASSERT_EQ(named.size(), 1u);
   EXPECT_NE(named[0].find("at 545 rad/s, groove_count = 4:"), std::string::npos) << named[0];
 }

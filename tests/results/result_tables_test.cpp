@@ -20,15 +20,15 @@ namespace {
   "W_material_temperature_gear_error_N,W_film_ratio_error_N,"
 
 TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
-  DistressRow found{545.0, 0.1, 185.25, 185.0, 185.5, 185.3, "runaway; fold", {}, {}, {}, {}};
-  DistressRow none{136.0, 0.2, std::nullopt, std::nullopt, std::nullopt, std::nullopt, "not reached below 2000 N", {}, {}, {}, {}};
-  EXPECT_EQ(distress_csv({found, none}, "friction_coefficient"),
+  DistressRow found{545.0, {0.1}, 185.25, 185.0, 185.5, 185.3, "runaway; fold", {}, {}, {}, {}};
+  DistressRow none{136.0, {0.2}, std::nullopt, std::nullopt, std::nullopt, std::nullopt, "not reached below 2000 N", {}, {}, {}, {}};
+  EXPECT_EQ(distress_csv({found, none}, {"friction_coefficient"}),
             "speed_rad_s,friction_coefficient,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,bracket_high_N,fold_N,"
             "W_d_fine_N,W_d_extrapolated_N,W_d_error_N," kCriteria "failure,method\n"
             "545,0.1,,,,,185.25,185,185.5,185.3,,,,,,,,,,,,,,,,,runaway; fold\n"
             "136,0.2,,,,,,,,,,,,,,,,,,,,,,,,,not reached below 2000 N\n");
-  found.parameter.reset();
-  EXPECT_EQ(distress_csv({found}, ""),
+  found.parameters.clear();
+  EXPECT_EQ(distress_csv({found}, {}),
             "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
             "W_d_error_N," kCriteria "failure,method\n"
             "545,,,,,185.25,185,185.5,185.3,,,,,,,,,,,,,,,,,runaway; fold\n");
@@ -39,7 +39,7 @@ TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
   found.criterion = FailureCriterion::thermo_viscous_distress();
   found.criterion_loads[1] = 300.5;  // flash_temperature
   found.failure = "fails at 185.25 N by thermo-viscous distress";
-  EXPECT_EQ(distress_csv({found}, ""),
+  EXPECT_EQ(distress_csv({found}, {}),
             "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
             "W_d_error_N," kCriteria "failure,method\n"
             "545,185.25,distress,,,185.25,185,185.5,185.3,195,198.25,4.0625,,300.5,,,,,,,,,,,"
@@ -47,16 +47,16 @@ TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
 }
 
 TEST(DistressTable, QuotesAMethodWithCommas) {
-  DistressRow row{545.0, std::nullopt, 1.0, 1.0, 1.0, std::nullopt, "a, \"b\"", {}, {}, {}, {}};
-  EXPECT_EQ(distress_csv({row}, ""),
+  DistressRow row{545.0, {}, 1.0, 1.0, 1.0, std::nullopt, "a, \"b\"", {}, {}, {}, {}};
+  EXPECT_EQ(distress_csv({row}, {}),
             "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
             "W_d_error_N," kCriteria "failure,method\n"
             "545,,,,,1,1,1,,,,,,,,,,,,,,,,,,\"a, \"\"b\"\"\"\n");
 }
 
 TEST(DistressTable, RefusesNaN) {
-  DistressRow bad{545.0, std::nullopt, std::nan(""), 1.0, 2.0, std::nullopt, "x", {}, {}, {}, {}};
-  EXPECT_THROW(distress_csv({bad}, ""), std::runtime_error);
+  DistressRow bad{545.0, {}, std::nan(""), 1.0, 2.0, std::nullopt, "x", {}, {}, {}, {}};
+  EXPECT_THROW(distress_csv({bad}, {}), std::runtime_error);
 }
 
 TEST(TrajectoryTable, ColumnsInCelsius) {
@@ -84,9 +84,9 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   a.state.speed = 545.0;
   a.state.washer_mean_temperature = a.state.max_film_temperature = 273.15 + 24.0;
   a.converged = true;
-  a.parameter = 0.2;
+  a.parameters = {0.2};
   a.sliding = SlidingFilm::washer_gear;
-  const std::string states = states_csv({a}, "friction_coefficient", true);
+  const std::string states = states_csv({a}, {"friction_coefficient"}, true);
   EXPECT_EQ(states.rfind("load_N,speed_rad_s,friction_coefficient,sliding,T_mean_C,", 0), 0u) << states;
   EXPECT_NE(states.find("\n150,545,0.2,washer_gear,24,24,"), std::string::npos) << states;
   EXPECT_EQ(states_csv({a}).rfind("load_N,speed_rad_s,T_mean_C,", 0), 0u);
@@ -104,20 +104,20 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   EXPECT_TRUE(states_csv({a}).ends_with(",hot,oil_temperature;flash_temperature,"
                                         "oil_temperature;flash_temperature;contact_pressure\n"));
   // A run without its parameter's value is a bug upstream: an empty cell, never NaN.
-  a.parameter.reset();
-  EXPECT_NE(states_csv({a}, "friction_coefficient").find("\n150,545,,24,"), std::string::npos);
+  a.parameters.clear();
+  EXPECT_NE(states_csv({a}, {"friction_coefficient"}).find("\n150,545,,24,"), std::string::npos);
 
   TrajectorySample t;
   t.state = a.state;
-  t.parameter = 0.05;
+  t.parameters = {0.05};
   t.sliding = SlidingFilm::carrier_washer;
-  const std::string trajectory = trajectory_csv({t}, "friction_coefficient", true);
+  const std::string trajectory = trajectory_csv({t}, {"friction_coefficient"}, true);
   EXPECT_EQ(trajectory.substr(0, trajectory.find('\n')),
             "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,friction_coefficient,sliding");
   EXPECT_NE(trajectory.find(",150,545,0.05,carrier_washer\n"), std::string::npos) << trajectory;
 
-  DistressRow row{953.0, std::nullopt, 400.0, 399.0, 401.0, 400.5, "runaway", SlidingFilm::washer_gear, {}, {}, {}};
-  EXPECT_EQ(distress_csv({row}, "", true),
+  DistressRow row{953.0, {}, 400.0, 399.0, 401.0, 400.5, "runaway", SlidingFilm::washer_gear, {}, {}, {}};
+  EXPECT_EQ(distress_csv({row}, {}, true),
             "speed_rad_s,sliding,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,"
             "W_d_extrapolated_N,W_d_error_N," kCriteria "failure,method\n"
             "953,washer_gear,,,,,400,399,401,400.5,,,,,,,,,,,,,,,,,runaway\n");

@@ -102,13 +102,10 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.study.load_end, b.study.load_end);
   EXPECT_EQ(a.study.load_steps, b.study.load_steps);
   EXPECT_EQ(a.study.speeds, b.study.speeds);
-  EXPECT_EQ(a.study.parameter, b.study.parameter);
-  EXPECT_EQ(a.study.parameter_values, b.study.parameter_values);
+  EXPECT_EQ(a.study.axes, b.study.axes);
   EXPECT_EQ(a.study.bracket_width, b.study.bracket_width);
   EXPECT_EQ(a.study.duration, b.study.duration);
   EXPECT_EQ(a.study.parameters, b.study.parameters);
-  EXPECT_EQ(a.study.parameter_path, b.study.parameter_path);
-  EXPECT_EQ(a.study.parameter_unit, b.study.parameter_unit);
   ASSERT_EQ(a.study.uncertain_inputs.size(), b.study.uncertain_inputs.size());
   for (std::size_t i = 0; i < a.study.uncertain_inputs.size(); ++i) {
     const UncertainInput &x = a.study.uncertain_inputs[i], &y = b.study.uncertain_inputs[i];
@@ -220,7 +217,7 @@ TEST(SceneDefaults, LoadSweepSpeedsDefaultToTheOperatingSpeed) {
   const TempScene plain(std::string(kMinimalScene) + sweep + "}\n");
   const Scene scene = load_scene(plain.path());
   EXPECT_EQ(scene.study.speeds, std::vector<double>{scene.operating.speed});
-  EXPECT_EQ(scene.study.parameter, MapParameter::none);
+  EXPECT_TRUE(scene.study.axes.empty());
   EXPECT_EQ(load_scene(plain.path(), {"operating.speed=953 rad/s"}).study.speeds, std::vector<double>{953.0});
   const TempScene listed(std::string(kMinimalScene) + sweep + ", speeds: [136 rad/s, 1367 rad/s]}\n");
   EXPECT_EQ(load_scene(listed.path()).study.speeds, (std::vector<double>{136.0, 1367.0}));
@@ -277,6 +274,12 @@ INSTANTIATE_TEST_SUITE_P(
                           "friction: {law: constant, coefficient: 0.1}\n"
                           "study: {type: load_sweep, speeds: [136 rad/s, 953 rad/s], load_start: 100 N, load_end: 1750 N,\n"
                           "        load_steps: 34, parameter: {name: friction_coefficient, values: [0.05, 0.2]}}\n"},
+        RoundTripCase{"distress_map_over_a_grid",
+                      std::string(kMinimalScene) +
+                          "friction: {law: constant, coefficient: 0.1}\n"
+                          "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
+                          "        parameter: [{name: friction_coefficient, values: [0.05, 0.2]},\n"
+                          "                    {name: geometry.gear.tilt, values: [1 mrad, 2 mrad, 3 mrad]}]}\n"},
         RoundTripCase{"sliding_choice",
                       std::string(kMinimalScene) +
                           "study: {type: sliding_choice, speeds: [545 rad/s, 953 rad/s], load_start: 100 N,\n"

@@ -60,6 +60,21 @@ def trajectory_rows(tail=""):
     return rows
 
 
+# distress.csv as twb writes it since every failure criterion is located, after the run's columns.
+DISTRESS_FAIL_TAIL = (
+    "W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,bracket_high_N,fold_N,"
+    "W_d_fine_N,W_d_extrapolated_N,W_d_error_N,W_oil_temperature_N,W_flash_temperature_N,"
+    "W_material_temperature_carrier_N,W_material_temperature_washer_N,W_material_temperature_gear_N,"
+    "W_film_ratio_N,W_oil_temperature_error_N,W_flash_temperature_error_N,"
+    "W_material_temperature_carrier_error_N,W_material_temperature_washer_error_N,"
+    "W_material_temperature_gear_error_N,W_film_ratio_error_N,failure,method")
+
+
+def distress_fail_row(header, cells):
+    """A row of a distress.csv header: the named cells, the others empty."""
+    return ",".join(str(cells.get(c, "")) for c in header.split(","))
+
+
 def with_run_columns(rows, cells):
     """States rows with run cells (e.g. "0.1," or "washer_gear,") after the speed."""
     out = []
@@ -468,6 +483,98 @@ class TwbPlotTest(unittest.TestCase):
         self.assertIn("545 rad/s, dry friction coefficient 0.05, 1200 N", trajectory)
         self.assertIn("545 rad/s, dry friction coefficient 0.2, 1200 N", trajectory)
 
+    def test_grid_of_two_axes(self):
+        """A load sweep and distress map over a grid (a named parameter and an input by its
+        scene path): one column per axis after the speed, one run per combination, tagged
+        with both values in the axes' order, each drawn and labelled with both; a column
+        between the speed and W_fail_N that is no parameter is still refused."""
+        d = os.path.join(self.tmp, "grid")
+        os.makedirs(d)
+        axes = "friction_coefficient,geometry.gear.tilt_rad"
+        grid = [(f, t) for f in (0.1, 0.3) for t in (0.001, 0.002)]
+        # W_d falls with the coefficient and the tilt, rises with the speed: each combination its own.
+        w_d = {(speed, f, t): round(1200 - 1000 * f - 1e5 * t + 0.2 * speed, 6)
+               for speed in (136, 545) for f, t in grid}
+        header = f"speed_rad_s,{axes},{DISTRESS_FAIL_TAIL}"
+        rows = [distress_fail_row(header, {
+            "speed_rad_s": speed, "friction_coefficient": f, "geometry.gear.tilt_rad": t,
+            "W_fail_N": w, "criterion": "distress", "W_d_N": w, "bracket_low_N": w - 2, "bracket_high_N": w + 2,
+            "fold_N": w, "failure": f"fails at {w} N by thermo-viscous distress", "method": f"runaway; fold at {w} N"})
+            for (speed, f, t), w in w_d.items()]
+        write(os.path.join(d, "distress.csv"), [header] + rows)
+        states = []
+        for f, t in grid:
+            for speed in (136, 545):
+                states += with_run_columns(state_rows(speed, [100, 400, 700, 1000]), f"{f},{t},")
+        write(os.path.join(d, "states.csv"), [STATES_HEADER.replace("speed_rad_s,", f"speed_rad_s,{axes},")] + states)
+        write(os.path.join(d, "trajectory.csv"),
+              [f"t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,{axes}"]
+              + trajectory_rows(",545,0.1,0.001") + trajectory_rows(",545,0.3,0.002"))
+
+        def tag(f, t):
+            return (("friction_coefficient", f), ("geometry.gear.tilt_rad", t))
+
+        read = tp.read_distress(os.path.join(d, "distress.csv"))
+        self.assertEqual({(r.speed, r.parameter): r.w_d for r in read},
+                         {(speed, tag(f, t)): w for (speed, f, t), w in w_d.items()})
+        _, tags = tp.read_states(os.path.join(d, "states.csv"))
+        self.assertEqual(len(tags), 4 * 2 * 4)
+        self.assertEqual({p for p, _ in tags}, {tag(f, t) for f, t in grid})
+        self.assertEqual(tags[0], (tag(0.1, 0.001), None))
+        self.assertEqual(tags[-1], (tag(0.3, 0.002), None))
+        data = tp.merge([tp.read_run(d)])
+        self.assertEqual(tp.states.parameter_order(data.parameters), [tag(f, t) for f, t in grid])
+        self.assertEqual([label for label, _ in data.trajectories],
+                         ["545 rad/s, dry friction coefficient 0.1, geometry.gear.tilt_rad = 0.001, 1200 N",
+                          "545 rad/s, dry friction coefficient 0.3, geometry.gear.tilt_rad = 0.002, 1200 N"])
+        # The coefficient axis gives each state its friction setting, as a single axis does.
+        self.assertEqual(sorted(set(data.friction)), ["dry friction coefficient 0.1", "dry friction coefficient 0.3"])
+        # The same grid in a distress.csv of before W_fail_N (axes read by place): the same tags.
+        write(os.path.join(d, "distress.csv"),
+              [f"speed_rad_s,{axes},W_d_N,bracket_low_N,bracket_high_N,fold_N,method"]
+              + [f"{speed},{f},{t},{w},{w - 2},{w + 2},{w},runaway" for (speed, f, t), w in w_d.items()])
+        self.assertEqual([r.parameter for r in tp.read_distress(os.path.join(d, "distress.csv"))],
+                         [tag(f, t) for speed, f, t in w_d])
+        write(os.path.join(d, "distress.csv"), [header] + rows)
+
+        result = plot(d, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        out_dir = os.path.join(d, "figures")
+        self.assert_figures(out_dir, STATE_FIGURES + ("fig15_stribeck_by_friction", "distress_map",
+                                                      "transient_trajectory"), formats=("svg",))
+        labels = [f"dry friction coefficient {f}, geometry.gear.tilt_rad = {t}" for f, t in grid]
+        distress_map = self.svg_text(os.path.join(out_dir, "distress_map.svg"))
+        fig6 = self.svg_text(os.path.join(out_dir, "fig06_f_eff_vs_load.svg"))
+        for label in labels:
+            self.assertIn(label, distress_map)
+            for speed in (136, 545):
+                self.assertIn(f"{speed} rad/s, {label}", fig6)
+        self.assertIn("545 rad/s, dry friction coefficient 0.3, geometry.gear.tilt_rad = 0.002, 1200 N",
+                      self.svg_text(os.path.join(out_dir, "transient_trajectory.svg")))
+
+        # A column between the speed and W_fail_N that is no parameter (no dot, not named).
+        bad = header.replace(f"{axes},", "friction_coefficient,tilt,")
+        write(os.path.join(d, "distress.csv"), [bad] + rows)
+        with self.assertRaises(tp.InputError) as caught:
+            tp.read_distress(os.path.join(d, "distress.csv"))
+        self.assertIn("line 1: expected the header speed_rad_s[,<parameter>...][,sliding]", str(caught.exception))
+
+    def test_a_run_of_one_axis_or_none_keeps_its_tag(self):
+        """Files of one axis or none read as before the grid: (column, value) or None."""
+        d = os.path.join(self.tmp, "one_axis")
+        os.makedirs(d)
+        for columns, cells, expected in (("", "", None),
+                                         ("friction_coefficient,", "0.2,", ("friction_coefficient", 0.2)),
+                                         ("geometry.gear.tilt_rad,", ",", ("geometry.gear.tilt_rad", None))):
+            header = f"speed_rad_s,{columns}{DISTRESS_FAIL_TAIL}"
+            write(os.path.join(d, "distress.csv"), [header, distress_fail_row(header, {
+                "speed_rad_s": 545, **dict(zip(columns.split(",")[:-1], cells.split(",")[:-1])),
+                "W_fail_N": 188.4, "criterion": "distress", "W_d_N": 188.4, "method": "runaway"})])
+            self.assertEqual(tp.read_distress(os.path.join(d, "distress.csv"))[0].parameter, expected)
+            write(os.path.join(d, "states.csv"), [STATES_HEADER.replace("speed_rad_s,", "speed_rad_s," + columns)]
+                  + with_run_columns(state_rows(545, [100]), cells))
+            self.assertEqual(tp.read_states(os.path.join(d, "states.csv"))[1], [(expected, None)])
+
     def test_sensitivity_tornado(self):
         """sensitivity.csv of a sensitivity study: a tornado of W_fail's elasticities (here
         W_d's: no W_fail rows), the largest on top, rows without an elasticity left out;
@@ -731,9 +838,11 @@ class TwbPlotTest(unittest.TestCase):
             "sliding_chosen_not_boolean": ("sliding.csv", "line 2", lambda d: write(
                 os.path.join(d, "sliding.csv"),
                 [SLIDING_HEADER, sliding_rows(545, [100])[0][:-1] + "2"])),
-            "distress_two_parameters": ("distress.csv", "line 1", lambda d: write(
+            # Two parameters are a grid (test_grid_of_two_axes); a second column that is no
+            # parameter is not an axis.
+            "distress_parameter_and_unknown": ("distress.csv", "line 1", lambda d: write(
                 os.path.join(d, "distress.csv"),
-                ["speed_rad_s,gear_tilt_rad,friction_coefficient,W_d_N,bracket_low_N,bracket_high_N,"
+                ["speed_rad_s,gear_tilt_rad,wear_rate,W_d_N,bracket_low_N,bracket_high_N,"
                  "fold_N,method", "545,0.002,0.1,1117,1110,1125,,ok"])),
         }
         for name, (file_name, line, damage) in cases.items():

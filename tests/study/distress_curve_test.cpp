@@ -207,11 +207,10 @@ TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
 TEST(DistressCurve, FamilyOfCurvesByFrictionCoefficient) {
   Scene scene = speed_curve_scene();
   scene.friction.law = FrictionLaw::constant;
-  scene.study.parameter = MapParameter::friction_coefficient;
-  scene.study.parameter_values = {0.1, 0.3};
+  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .values = {0.1, 0.3}}};
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
-  EXPECT_EQ(out.parameter_column, "friction_coefficient");
+  EXPECT_EQ(out.parameter_columns, std::vector<std::string>{"friction_coefficient"});
   std::vector<double> cusps;
   for (const double f : {0.1, 0.3}) {
     const auto cusp = std::find_if(out.fold_curve.begin(), out.fold_curve.end(),
@@ -225,9 +224,9 @@ TEST(DistressCurve, FamilyOfCurvesByFrictionCoefficient) {
   // The members on two threads: the same curves, row for row, to the last bit.
   BearingModel again(scene);
   const StudyOutcome parallel = run_study(again, {}, RunOptions{.threads = 2});
-  EXPECT_EQ(fold_curve_csv(parallel.fold_curve, parallel.fold_curve_column, parallel.parameter_column),
-            fold_curve_csv(out.fold_curve, out.fold_curve_column, out.parameter_column));
-  EXPECT_EQ(distress_csv(parallel.distress, parallel.parameter_column), distress_csv(out.distress, out.parameter_column));
+  EXPECT_EQ(fold_curve_csv(parallel.fold_curve, parallel.fold_curve_column, parallel.parameter_columns.front()),
+            fold_curve_csv(out.fold_curve, out.fold_curve_column, out.parameter_columns.front()));
+  EXPECT_EQ(distress_csv(parallel.distress, parallel.parameter_columns), distress_csv(out.distress, out.parameter_columns));
 }
 
 }  // namespace

@@ -50,8 +50,10 @@ TEST(GrooveParameter, EachValueIsTheSceneWrittenWithThoseGrooves) {
         base, std::string("study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 3 kN,\n"
                           "        parameter: {name: ") +
                   c.name + ", values: " + c.values + "}}\n"));
-    std::string column;
-    const std::vector<Variant> variants = parameter_variants(map, column);
+    std::vector<std::string> columns;
+    const std::vector<Variant> variants = parameter_variants(map, columns);
+    ASSERT_EQ(columns.size(), 1u);
+    const std::string& column = columns.front();
     ASSERT_EQ(variants.size(), c.as_written.size());
     for (std::size_t k = 0; k < variants.size(); ++k) {
       SCOPED_TRACE(c.as_written[k]);
@@ -67,7 +69,8 @@ TEST(GrooveParameter, EachValueIsTheSceneWrittenWithThoseGrooves) {
       const double value = c.name == std::string("groove_count")   ? expected.washer.grooves->count
                            : c.name == std::string("groove_width") ? expected.washer.grooves->width
                                                                    : expected.washer.grooves->depth;
-      EXPECT_DOUBLE_EQ(*variants[k].parameter, value);
+      ASSERT_EQ(variants[k].parameters.size(), 1u);
+      EXPECT_DOUBLE_EQ(variants[k].parameters.front(), value);
     }
     EXPECT_EQ(column, c.name == std::string("groove_count")   ? "groove_count"
                       : c.name == std::string("groove_width") ? "groove_width_rad"

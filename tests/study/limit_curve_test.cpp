@@ -132,10 +132,10 @@ TEST(LimitCurve, TheSameCurvesOnOneThreadAndOnTwo) {
                           [](const FoldCurveRow& r) { return r.fine_load.has_value(); }))
       << "the fold's error bars are computed";
   EXPECT_EQ(limit_rows(serial).size(), 4u);
-  EXPECT_EQ(fold_curve_csv(parallel.fold_curve, parallel.fold_curve_column, parallel.parameter_column),
-            fold_curve_csv(serial.fold_curve, serial.fold_curve_column, serial.parameter_column));
-  EXPECT_EQ(distress_csv(parallel.distress, parallel.parameter_column),
-            distress_csv(serial.distress, serial.parameter_column));
+  EXPECT_EQ(fold_curve_csv(parallel.fold_curve, parallel.fold_curve_column, ""),
+            fold_curve_csv(serial.fold_curve, serial.fold_curve_column, ""));
+  EXPECT_EQ(distress_csv(parallel.distress, parallel.parameter_columns),
+            distress_csv(serial.distress, serial.parameter_columns));
   EXPECT_EQ(parallel.summary, serial.summary);
 }
 

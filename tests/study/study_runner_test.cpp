@@ -44,7 +44,7 @@ bool on_grid(double load) {
 TEST(StudyRunner, LoadSweepOverSpeeds) {
   const StudyOutcome out = run(coarse_grid(StudyType::load_sweep, {136.0, 545.0}));
   ASSERT_FALSE(out.solver_failed) << out.message;
-  EXPECT_TRUE(out.parameter_column.empty());
+  EXPECT_TRUE(out.parameter_columns.empty());
   for (double speed : {136.0, 545.0}) {
     int grid_states = 0;
     for (const SolvedState& s : out.states)
@@ -91,19 +91,19 @@ TEST(StudyRunner, LoadSweepOverSpeeds) {
 TEST(StudyRunner, LoadSweepOverAParameter) {
   Scene scene = coarse_grid(StudyType::load_sweep, {136.0});
   scene.friction.law = FrictionLaw::constant;
-  scene.study.parameter = MapParameter::friction_coefficient;
-  scene.study.parameter_values = {0.05, 0.2};
+  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .values = {0.05, 0.2}}};
   const StudyOutcome out = run(scene);
   ASSERT_FALSE(out.solver_failed) << out.message;
-  EXPECT_EQ(out.parameter_column, "friction_coefficient");
+  EXPECT_EQ(out.parameter_columns, std::vector<std::string>{"friction_coefficient"});
   ASSERT_EQ(out.distress.size(), 2u);
-  EXPECT_EQ(out.distress[0].parameter, 0.05);
-  EXPECT_EQ(out.distress[1].parameter, 0.2);
+  EXPECT_EQ(out.distress[0].parameters, std::vector<double>{0.05});
+  EXPECT_EQ(out.distress[1].parameters, std::vector<double>{0.2});
   for (double load : {100.0, 200.0, 300.0}) {
     double torque[2] = {-1, -1};
     for (const SolvedState& s : out.states) {
-      ASSERT_TRUE(s.parameter == 0.05 || s.parameter == 0.2);
-      if (std::abs(s.state.load - load) < 1e-9) torque[s.parameter == 0.2] = s.state.torque;
+      ASSERT_EQ(s.parameters.size(), 1u);
+      ASSERT_TRUE(s.parameters[0] == 0.05 || s.parameters[0] == 0.2);
+      if (std::abs(s.state.load - load) < 1e-9) torque[s.parameters[0] == 0.2] = s.state.torque;
     }
     ASSERT_GT(torque[0], 0.0) << load << " N";
     EXPECT_GT(torque[1], torque[0]) << load << " N";
@@ -152,14 +152,13 @@ TEST(StudyRunner, SlidingChoiceKeepsTheLowerTorque) {
 TEST(StudyRunner, ThreadsGiveTheSameResults) {
   Scene scene = coarse_grid(StudyType::distress_map, {136.0, 545.0, 953.0});
   scene.friction.law = FrictionLaw::constant;
-  scene.study.parameter = MapParameter::friction_coefficient;
-  scene.study.parameter_values = {0.2, 0.3};
+  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .values = {0.2, 0.3}}};
   scene.study.error_estimate = ErrorEstimate::none;
   auto outcome = [&](int threads) {
     BearingModel model(scene);
     StudyOutcome out = run_study(model, {}, RunOptions{.threads = threads});
     for (SolvedState& s : out.states) s.wall_ms = 0.0;
-    return std::pair{distress_csv(out.distress, out.parameter_column), states_csv(out.states, out.parameter_column)};
+    return std::pair{distress_csv(out.distress, out.parameter_columns), states_csv(out.states, out.parameter_columns)};
   };
   const auto one = outcome(1);
   ASSERT_NE(one.first.find("545,0.2,"), std::string::npos) << one.first;

@@ -54,7 +54,7 @@ std::string criterion_name(const FailureCriterion& criterion);
 
 struct DistressRow {
   double speed = 0.0;                     // rad/s
-  std::optional<double> parameter;        // the second axis' value (SI), if any
+  std::vector<double> parameters;         // the study's axes' values (SI, run_axes.h), if any
   std::optional<double> distress_load;    // W_d, N
   std::optional<double> bracket_low;      // highest load whose step settled, N
   std::optional<double> bracket_high;     // lowest load whose step ran away, N
@@ -88,11 +88,12 @@ struct DistressRow {
 std::optional<double> criterion_load(const DistressRow& row, LimitKind kind);
 
 // The table distress.csv is written from (result_table.h).
-ResultTable distress_table(const std::vector<DistressRow>& rows, const std::string& parameter_column,
+ResultTable distress_table(const std::vector<DistressRow>& rows, const std::vector<std::string>& parameter_columns,
                            bool sliding_column = false);
 
-// parameter_column: e.g. "friction_coefficient", "gear_tilt_rad"; empty for none.
-std::string distress_csv(const std::vector<DistressRow>& rows, const std::string& parameter_column,
+// parameter_columns: the study's axes, e.g. "friction_coefficient", "gear_tilt_rad"; none
+// for a single run.
+std::string distress_csv(const std::vector<DistressRow>& rows, const std::vector<std::string>& parameter_columns,
                          bool sliding_column = false);
 
 }  // namespace twb

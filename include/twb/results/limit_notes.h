@@ -17,6 +17,6 @@ namespace twb {
 // at the lightest load past it; empty when no state exceeds a limit. A run's parameter
 // value is named by its column (e.g. groove_count), "parameter" where none is given.
 std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, const std::vector<DistressRow>& distress,
-                                     const std::string& parameter_column = "parameter");
+                                     const std::vector<std::string>& parameter_columns = {});
 
 }  // namespace twb

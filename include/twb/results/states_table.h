@@ -25,9 +25,9 @@ struct SolvedState {
   long iterations = 0;
   double residual = 0.0;
   double wall_ms = 0.0;
-  // Which run of a study the state belongs to, when the study runs several: the value
-  // of its parameter (SI) and the film that slides ("carrier_washer", "washer_gear").
-  std::optional<double> parameter;
+  // Which run of a study the state belongs to, when the study runs several: the values
+  // of its axes (SI, run_axes.h) and the film that slides ("carrier_washer", "washer_gear").
+  std::vector<double> parameters;
   std::optional<SlidingFilm> sliding;  // sliding_choice: the configuration
   // Which steady branch a load sweep found the state on (states.csv's `branch`).
   Branch branch = Branch::none;
@@ -49,12 +49,12 @@ inline constexpr const char* kMeshErrorQuantities[] = {"T_mean_C", "T_max_C", "h
 std::vector<double> mesh_error_quantities(const BearingState& state);
 
 // The table states.csv is written from (result_table.h).
-ResultTable states_table(const std::vector<SolvedState>& rows, const std::string& parameter_column = {},
+ResultTable states_table(const std::vector<SolvedState>& rows, const std::vector<std::string>& parameter_columns = {},
                          bool sliding_column = false);
 
-// parameter_column (e.g. "friction_coefficient"; empty for none) and sliding_column
-// add the columns that tell a study's runs apart, after speed_rad_s.
-std::string states_csv(const std::vector<SolvedState>& rows, const std::string& parameter_column = {},
+// parameter_columns (the study's axes, e.g. "friction_coefficient"; none for a single
+// run) and sliding_column add the columns that tell a study's runs apart, after speed_rad_s.
+std::string states_csv(const std::vector<SolvedState>& rows, const std::vector<std::string>& parameter_columns = {},
                        bool sliding_column = false);
 
 // The short table printed after a run.

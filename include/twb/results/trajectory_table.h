@@ -17,15 +17,15 @@ namespace twb {
 struct TrajectorySample {
   double time = 0.0;  // s of pseudo-time since the step
   BearingState state;
-  std::optional<double> parameter;  // as in SolvedState
+  std::vector<double> parameters;  // as in SolvedState
   std::optional<SlidingFilm> sliding;  // sliding_choice: the configuration
 };
 
 // The table trajectory.csv is written from (result_table.h).
-ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const std::string& parameter_column = {},
-                             bool sliding_column = false);
+ResultTable trajectory_table(const std::vector<TrajectorySample>& samples,
+                             const std::vector<std::string>& parameter_columns = {}, bool sliding_column = false);
 
-std::string trajectory_csv(const std::vector<TrajectorySample>& samples, const std::string& parameter_column = {},
-                           bool sliding_column = false);
+std::string trajectory_csv(const std::vector<TrajectorySample>& samples,
+                           const std::vector<std::string>& parameter_columns = {}, bool sliding_column = false);
 
 }  // namespace twb

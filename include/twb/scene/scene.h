@@ -282,6 +282,16 @@ struct SolverSettings {
   double over_relaxation = 1.7;  // method paper: ω of the pressure's projected SOR
 };
 
+// One axis of a map, sweep or curve family: a named parameter or an input by its scene
+// path, and its values.
+struct MapAxis {
+  MapParameter parameter = MapParameter::none;
+  std::string path;            // scene_input: the input's path, e.g. "geometry.gear.tilt"
+  std::string unit;            // scene_input: its SI unit ("rad"; "1" for a pure number)
+  std::vector<double> values;  // SI (dimensionless, rad, m; scene_input: the input's SI unit)
+  bool operator==(const MapAxis&) const = default;
+};
+
 struct Study {
   StudyType type = StudyType::point;
   // load_sweep, distress_map, sliding_choice: the load range continued over; transient:
@@ -292,11 +302,9 @@ struct Study {
   // load_sweep, distress_map, sliding_choice: the speeds, one search per speed (a load
   // sweep without `speeds` in the file gets operating.speed)
   std::vector<double> speeds;  // rad/s
-  // load_sweep, distress_map: the second axis
-  MapParameter parameter = MapParameter::none;
-  std::string parameter_path;             // scene_input: the input's path, e.g. "geometry.gear.tilt"
-  std::string parameter_unit;             // scene_input: its SI unit ("rad"; "1" for a pure number)
-  std::vector<double> parameter_values;  // SI (dimensionless, rad, m; scene_input: the input's SI unit)
+  // load_sweep, distress_map: the axes besides the speed, each search one combination of
+  // their values (a grid: the first axis outermost); distress_curve: its family's axis.
+  std::vector<MapAxis> axes;
   // Distress bracket refined by bisection to (high − low)/high <= bracket_width.
   double bracket_width = 0.002;
   // distress_curve: the fold continued in this parameter from `from` to `to` (SI).

@@ -24,7 +24,7 @@ namespace twb {
 struct StudyOutcome {
   std::vector<SolvedState> states;
   std::vector<DistressRow> distress;  // load_sweep, distress_map, sliding_choice: one row per search
-  std::string parameter_column;       // the study's second axis, e.g. "friction_coefficient"
+  std::vector<std::string> parameter_columns;  // the study's axes (run_axes.h), e.g. "friction_coefficient"
   bool sliding_column = false;        // sliding_choice: rows name their sliding film
   // transient; load_sweep, sliding_choice: the first step past distress of each search
   std::vector<TrajectorySample> trajectory;

@@ -10,10 +10,11 @@ import numpy as np
 from matplotlib.lines import Line2D
 
 from .style import Style, new_figure, parameter_label
-from .tables import FOLD_CURVE_PARAMETERS, SLIDING_LABELS
+from .tables import FOLD_CURVE_PARAMETERS, SLIDING_LABELS, run_order
 
 
 def series_label(key):
+    """A run of the map: its axes (one, or a grid's several) and its sliding film."""
     parameter, sliding = key
     parts = ([] if parameter is None else [parameter_label(parameter)]) + \
         ([] if sliding is None else [SLIDING_LABELS[sliding]])
@@ -178,9 +179,7 @@ def figure_distress_map(data):
     if not plottable:
         return None
     limited = any(r.failure is not None and r.criterion not in (None, "distress") for r in data.distress)
-    plottable.sort(key=lambda k: (k[0] is not None, "" if k[0] is None else k[0][0],
-                                  -math.inf if k[0] is None or k[0][1] is None else k[0][1],
-                                  k[1] or ""))
+    plottable.sort(key=lambda k: (k[0] is not None, run_order(k[0]), k[1] or ""))
     style = Style(range(len(plottable)))
     fig, ax = new_figure(r"Distress load $W_d$ vs speed: below it, no sudden distress" if not limited
                          else r"Where the washer fails: $W_{fail}$ (first criterion) and $W_d$ vs speed")

@@ -27,8 +27,8 @@ def default_state(run):
     loads, speeds = run.states["load_N"], run.states["speed_rad_s"]
     with_fields = [k for k in range(1, loads.size + 1)
                    if os.path.isfile(fields_path(run.directory, k))]
-    # Rows of a second parameter or a sliding choice are left out: they are not one
-    # distress load per speed.
+    # Rows of a study's axes (one, or a grid's several) or of a sliding choice are left
+    # out: they are not one distress load per speed.
     limits = {speed_key(d.speed): d.w_d for d in run.distress
               if d.parameter is None and d.sliding is None and d.w_d is not None}
     below = [k for k in with_fields

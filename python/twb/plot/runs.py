@@ -10,11 +10,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .style import Style, parameter_label, speed_key, speed_label
+from .style import Style, axis_label, parameter_label, speed_key, speed_label
 from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_calibration, read_calibration_correlation,
                      read_calibration_points, read_design_point, read_distress, read_fold_curve,
                      read_reliability, read_sensitivity, read_sliding, read_states, read_trajectory,
-                     STATE_ERROR_COLUMNS)
+                     run_axes, STATE_ERROR_COLUMNS)
 
 
 def friction_setting(path):
@@ -34,12 +34,20 @@ def friction_setting(path):
     return str(law)
 
 
+def state_friction(parameter, law):
+    """A state's friction setting as a label: a state of a run with a friction coefficient
+    axis (alone or in a grid) has its own coefficient; otherwise the run's friction law
+    (run.json) labels it."""
+    axis = next((a for a in run_axes(parameter) if a[0] == "friction_coefficient"), None)
+    return law if axis is None else axis_label(*axis)
+
+
 @dataclass
 class Run:
     directory: str
     name: str
     states: dict
-    tags: list = field(default_factory=list)  # per state: (parameter, sliding)
+    tags: list = field(default_factory=list)  # per state: (run tag, sliding) (tables.run_tag)
     distress: list = field(default_factory=list)
     trajectory: object = None
     trajectory_tags: list = field(default_factory=list)
@@ -108,7 +116,7 @@ class Data:
     """All directories merged: one array per states.csv column, plus the rest."""
     states: dict
     friction: list          # per state: its friction setting as a label (or None)
-    parameters: list        # per state: (parameter column, value) of its run, or None
+    parameters: list        # per state: its run's tag: (column, value), a grid's tuple of them, or None
     distress: list
     trajectories: list      # (label, columns)
     sliding: list           # rows of sliding.csv
@@ -123,7 +131,7 @@ class Data:
 
 
 def _split_trajectory(columns, tags):
-    """A trajectory.csv of several runs (speeds, parameter values, sliding films) as one
+    """A trajectory.csv of several runs (speeds, axes' values, sliding films) as one
     (key, columns) per run, in file order."""
     keys = []
     for k, tag in enumerate(tags):
@@ -146,10 +154,7 @@ def merge(runs):
         if any(c in r.states for r in runs):
             states[c] = np.concatenate([r.states.get(c, np.full(len(r.states["load_N"]), np.nan)) for r in runs])
     parameters = [tag[0] for r in runs for tag in r.tags]
-    # A state of a friction coefficient sweep has its own coefficient; otherwise the
-    # run's friction law (run.json) labels it.
-    friction = [(parameter_label(tag[0]) if tag[0] and tag[0][0] == "friction_coefficient"
-                 else r.friction) for r in runs for tag in r.tags]
+    friction = [state_friction(tag[0], r.friction) for r in runs for tag in r.tags]
     distress = [row for r in runs for row in r.distress]
     trajectories = []
     for r in runs:

@@ -3,12 +3,11 @@ contact against film thickness, the Stribeck curve), in its layout, so that they
 laid beside Jackson & Green (2006).
 """
 
-import math
-
 import numpy as np
 
 from .style import (CONTACT_LABEL, FEFF_LABEL, HMIN_LABEL, LINESTYLES, LOAD_LABEL, STRIBECK_LABEL,
                     Style, finish_legend, new_figure, parameter_label, speed_key, speed_label)
+from .tables import run_order
 
 # Figs. 6-12: (file stem, states.csv column, axis label, title, the paper's figure, log axis).
 LOAD_FIGURES = (
@@ -29,9 +28,10 @@ LOAD_FIGURES = (
 
 
 def parameter_order(parameters):
-    """The distinct (column, value) runs of the merged states, sorted; None first."""
+    """The distinct runs (tags: one axis's (column, value) or a grid's tuple of them) of
+    the merged states, sorted axis by axis; None left out."""
     found = {p for p in parameters if p is not None}
-    return sorted(found, key=lambda p: (p[0], -math.inf if p[1] is None else p[1]))
+    return sorted(found, key=run_order)
 
 
 def _positive(values):
@@ -57,9 +57,10 @@ def draw_error_bars(ax, data, xcol, ycol, idx, color):
 
 
 def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
-    """One curve per speed (and per value of a study's second parameter, in its own
-    line style), points joined in order of load, and the states' error bars where they
-    have them; returns (whether any point had not converged, whether any bar was drawn)."""
+    """One curve per speed (and per run of a study's axes, one value or a grid's
+    combination, in its own line style), points joined in order of load, and the states'
+    error bars where they have them; returns (whether any point had not converged,
+    whether any bar was drawn)."""
     s = data.states
     speeds = np.array([speed_key(v) for v in s["speed_rad_s"]])
     runs = parameter_order(data.parameters)
@@ -172,17 +173,20 @@ def figure_stribeck(data):
 
 def figure_stribeck_by_friction(data):
     """Fig. 15: one colour per friction law across the merged runs, one curve per
-    (law, speed)."""
+    (law, speed, run): a grid's other axes (a tilt beside the coefficient) are curves
+    of their own, not points of one."""
     settings = sorted({f for f in data.friction if f is not None})
     style = Style(settings)
     s = data.states
     fig, ax = new_figure("Stribeck curve for several dry friction coefficients", 15)
     friction = np.array([f if f is not None else "" for f in data.friction], dtype=object)
     speeds = np.array([speed_key(v) for v in s["speed_rad_s"]])
+    runs = {run: np.array([p == run for p in data.parameters], dtype=bool)
+            for run in [None] + parameter_order(data.parameters)}
     for setting in settings:
         labelled = False
-        for key in data.speed_style.keys:
-            idx = np.flatnonzero((friction == setting) & (speeds == key) & (s["converged"] == 1))
+        for key, mine in ((key, mine) for key in data.speed_style.keys for mine in runs.values()):
+            idx = np.flatnonzero((friction == setting) & (speeds == key) & mine & (s["converged"] == 1))
             if idx.size == 0:
                 continue
             idx = idx[np.argsort(s["load_N"][idx], kind="stable")]

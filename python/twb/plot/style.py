@@ -10,6 +10,8 @@ import os
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 
+from .tables import run_axes
+
 LINESTYLES = ("-", "--", "-.", ":")
 DPI = 150
 
@@ -65,11 +67,17 @@ class Style:
         self.markers = {k: MARKERS[i % len(MARKERS)] for i, k in enumerate(self.keys)}
 
 
-def parameter_label(parameter):
-    name, value = parameter
+def axis_label(name, value):
+    """One axis of a run: its column and value, as the legends name it."""
     if value is None:
         return f"{name} not set"
     return PARAMETER_FORMATS.get(name, name + " = {:g}").format(value)
+
+
+def parameter_label(parameter):
+    """A run's tag (tables.run_tag: one axis, or a grid's several) as a legend label,
+    its axes in the scene's order."""
+    return ", ".join(axis_label(name, value) for name, value in run_axes(parameter))
 
 
 def finish_legend(ax, unconverged=False, distress=False, failure=False, error_bars=False):

@@ -23,7 +23,7 @@ def _definition():
 
 _DEFINITION = _definition()
 _TABLES = _DEFINITION["tables"]
-# Where a study's own columns go: its second parameter's value and its sliding film.
+# Where a study's own columns go: its axes' values (zero or more) and its sliding film.
 _RUN_PLACES = ("<parameter>", "sliding")
 
 
@@ -73,14 +73,43 @@ CALIBRATION_POINTS_TEXTS = tuple(_TABLES["calibration_points"]["texts"])
 # What calibration_points.csv's quantity names: the states' columns a calibration fits.
 CALIBRATION_QUANTITIES = _written("states", ("torque_Nm", "f_eff", "T_mean_C", "T_max_C"))
 # The columns twb adds after the speed when a study runs several configurations: the
-# value of its second parameter, and the film that slides.
+# value of each of its axes (one column per axis of a grid), and the film that slides.
 PARAMETER_COLUMNS = tuple(_DEFINITION["run_parameters"])
 
 
 def is_parameter_column(name):
-    """A study's second axis: a named parameter's column, or an input's scene path with its
-    unit (geometry.gear.tilt_rad): the only column names with a dot."""
+    """An axis of a study (its second, or one of a grid's): a named parameter's column, or
+    an input's scene path with its unit (geometry.gear.tilt_rad): the only column names
+    with a dot."""
     return name in PARAMETER_COLUMNS or "." in name
+
+
+# A run's tag: which combination of the study's axes it is. A study over one axis keeps
+# the form the figures and their users have always had, (column, value); only a grid
+# (several axes) has the tuple of its axes' (column, value) pairs, in the scene's order.
+def run_tag(axes):
+    """The tag of a run whose axes have these (column, value) pairs: None, (column,
+    value), or a grid's tuple of pairs."""
+    axes = tuple(axes)
+    if not axes:
+        return None
+    return axes[0] if len(axes) == 1 else axes
+
+
+def run_axes(tag):
+    """A run's tag as its axes' (column, value) pairs, whatever the number of axes."""
+    if tag is None:
+        return ()
+    # A single axis's tag starts with its column's name, a grid's with a pair.
+    return (tag,) if isinstance(tag[0], str) else tuple(tag)
+
+
+def run_order(tag):
+    """Runs sorted by each axis in turn (its column, then its value; a value not set
+    first); a run without axes before all."""
+    return tuple((c, -math.inf if value is None else value) for c, value in run_axes(tag))
+
+
 SLIDING_LABELS = {
     "carrier_washer": "film 1 slides (washer stuck to the gear)",
     "washer_gear": "film 2 slides (washer stuck to the carrier)",
@@ -160,13 +189,17 @@ def _check_width(path, line, fields, header):
                          f"as in the header, got {len(fields)}")
 
 
+def _axes_tag(path, line, columns, cells):
+    """The run tag of a row whose axes' columns hold these cells (an axis not set is
+    an empty cell, read as None)."""
+    return run_tag((c, _number(path, line, c, text, optional=True)) for c, text in zip(columns, cells))
+
+
 def _run_tags(path, line, fields, header):
-    """The run a row belongs to: ((parameter column, value) or None, sliding film or None)."""
-    parameter = next((c for c in header if is_parameter_column(c)), None)
-    tag = None
-    if parameter is not None:
-        tag = (parameter, _number(path, line, parameter, fields[header.index(parameter)],
-                                  optional=True))
+    """The run a row belongs to: (run tag, sliding film or None); the run tag is None,
+    (parameter column, value), or a grid's ((column, value), ...) (run_tag)."""
+    parameters = [c for c in header if is_parameter_column(c)]
+    tag = _axes_tag(path, line, parameters, [fields[header.index(c)] for c in parameters])
     sliding = None
     if "sliding" in header:
         sliding = fields[header.index("sliding")].strip()
@@ -199,7 +232,8 @@ def _read_table(path, required, what, optional=(), blank_ok=()):
 
 
 def read_states(path):
-    """Columns of states.csv as float arrays, in file order, and each state's run tags."""
+    """Columns of states.csv as float arrays, in file order, and each state's run tags
+    ((run tag, sliding film), _run_tags)."""
     return _read_table(path, STATE_COLUMNS, "states.csv", optional=STATE_ERROR_COLUMNS,
                        blank_ok=STATE_ERROR_COLUMNS)
 
@@ -339,7 +373,7 @@ def read_calibration_points(path):
 @dataclass
 class DistressRow:
     speed: float
-    parameter: object  # (column name, value) or None
+    parameter: object  # the run tag: (column name, value), a grid's tuple of them, or None
     w_d: object
     low: object
     high: object
@@ -357,6 +391,18 @@ class DistressRow:
 FAILURE_COLUMNS = _written("distress", ("W_fail_N", "criterion"))
 
 
+# distress.csv's columns before its tail: the speed, then the run's axes (none, one, or a
+# grid's several) and its sliding film.
+DISTRESS_RUN_COLUMNS = "speed_rad_s[,<parameter>...][,sliding]"
+
+
+def _axes_columns_ok(axes):
+    """Whether the columns at <parameter> can be a run's axes. One column is read as the
+    run's parameter whatever its name, as it always was; several are a grid's axes, each
+    a parameter's column, so that a stray column is not taken for an axis."""
+    return len(axes) <= 1 or all(is_parameter_column(c) for c in axes)
+
+
 def _read_distress_by_name(path, records, line, header):
     start = header.index("W_fail_N")
     middle = header[1:start]
@@ -364,10 +410,11 @@ def _read_distress_by_name(path, records, line, header):
     if sliding:
         middle = middle[:-1]
     written = set(_TABLES["distress"]["columns"]) | set(PARAMETER_COLUMNS)
-    if (len(middle) > 1 or header[0] != "speed_rad_s" or tuple(header[-2:]) != ("failure", "method")
+    if (not _axes_columns_ok(middle) or header[0] != "speed_rad_s"
+            or tuple(header[-2:]) != ("failure", "method")
             or any(c not in header for c in DISTRESS_TAIL + FAILURE_COLUMNS)
             or any(c not in written and not is_parameter_column(c) for c in header)):
-        raise InputError(f"{path}: line {line}: expected the header speed_rad_s[,<parameter>][,sliding],"
+        raise InputError(f"{path}: line {line}: expected the header {DISTRESS_RUN_COLUMNS},"
                          f"W_fail_N,criterion,W_d_N,...,failure,method, got {','.join(header)}")
     column = {c: k for k, c in enumerate(header)}
     rows = []
@@ -385,8 +432,7 @@ def _read_distress_by_name(path, records, line, header):
 
 def read_distress(path):
     records = _records(path)
-    line, header = _header_line(path, records,
-                                f"speed_rad_s[,<parameter>][,sliding],{','.join(DISTRESS_TAIL)}")
+    line, header = _header_line(path, records, f"{DISTRESS_RUN_COLUMNS},{','.join(DISTRESS_TAIL)}")
     if "W_fail_N" in header:
         return _read_distress_by_name(path, records, line, header)
     tail = DISTRESS_TAIL
@@ -396,11 +442,10 @@ def read_distress(path):
     sliding = bool(middle) and middle[-1] == "sliding"
     if sliding:
         middle = middle[:-1]
-    if (len(middle) > 1 or header[0] != "speed_rad_s" or "sliding" in middle
+    if (not _axes_columns_ok(middle) or header[0] != "speed_rad_s" or "sliding" in middle
             or tuple(header[-len(tail):]) != tail):
-        raise InputError(f"{path}: line {line}: expected the header speed_rad_s[,<parameter>][,sliding],"
+        raise InputError(f"{path}: line {line}: expected the header {DISTRESS_RUN_COLUMNS},"
                          f"{','.join(DISTRESS_TAIL)}, got {','.join(header)}")
-    parameter = middle[0] if middle else None
     rows = []
     for line, fields in records:
         if len(fields) < len(header):
@@ -410,9 +455,8 @@ def read_distress(path):
         n = len(header) - 1
         fields = fields[:n] + [",".join(fields[n:])]
         speed = _number(path, line, "speed_rad_s", fields[0])
-        value = None
-        if parameter is not None:
-            value = _number(path, line, parameter, fields[1], optional=True)
+        # The run's axes by their place (right after the speed), not by their names.
+        parameter = _axes_tag(path, line, middle, fields[1:1 + len(middle)])
         k = len(header) - len(tail)
         w_d, low, high, fold = (_number(path, line, tail[i], fields[k + i], optional=True)
                                 for i in range(4))
@@ -420,8 +464,8 @@ def read_distress(path):
         if len(tail) > len(DISTRESS_TAIL):
             extrapolated, error = (_number(path, line, tail[i], fields[k + i], optional=True) for i in (5, 6))
         film = _run_tags(path, line, fields, header)[1] if sliding else None
-        rows.append(DistressRow(speed, None if parameter is None else (parameter, value),
-                                w_d, low, high, fold, fields[-1].strip(), film, extrapolated, error))
+        rows.append(DistressRow(speed, parameter, w_d, low, high, fold, fields[-1].strip(), film,
+                                extrapolated, error))
     return rows
 
 
