@@ -141,6 +141,32 @@ MapAxis read_map_axis(const MapReader& p, const Scene& scene) {
   return axis;
 }
 
+// The scene path (or, for the roughness, every path under it) a named parameter sets:
+// a grid may not vary one input twice, by its name and by its path.
+std::string_view set_by(MapParameter p) {
+  switch (p) {
+    case MapParameter::friction_coefficient: return "friction.coefficient";
+    case MapParameter::gear_tilt: return "geometry.gear.tilt";
+    case MapParameter::roughness: return "surfaces.";
+    case MapParameter::groove_count: return "geometry.washer.grooves.count";
+    case MapParameter::groove_width: return "geometry.washer.grooves.width";
+    case MapParameter::groove_depth: return "geometry.washer.grooves.depth";
+    case MapParameter::none:
+    case MapParameter::scene_input: break;
+  }
+  return {};
+}
+
+bool same_input(const MapAxis& a, const MapAxis& b) {
+  const bool a_path = a.parameter == MapParameter::scene_input, b_path = b.parameter == MapParameter::scene_input;
+  if (a_path && b_path) return a.path == b.path;
+  if (!a_path && !b_path) return a.parameter == b.parameter;
+  const MapAxis& named = a_path ? b : a;
+  const std::string& path = a_path ? a.path : b.path;
+  const std::string_view sets = set_by(named.parameter);
+  return sets.ends_with('.') ? path.starts_with(sets) : path == sets;
+}
+
 // The axes of a distress map or load sweep besides the speed: `parameter: {name: ...,
 // values: [...]}`, or a list of such maps, a grid of every combination; a distress
 // curve's family: `family: {...}`, one axis.
@@ -160,10 +186,16 @@ void read_map_axes(const MapReader& study, Study& s, const Scene& scene, const c
     const MapReader p(item, {"name", "values"});
     MapAxis axis = read_map_axis(p, scene);
     for (const MapAxis& before : s.axes)
-      if (before.parameter == axis.parameter && before.path == axis.path) {
+      if (same_input(before, axis)) {
         const Node name = p.get("name", "");
-        name.fail(fmt::format("{}: {} is an axis of this grid already; each axis varies another input",
-                              name.path(), name.yaml().Scalar()));
+        const bool twice = before.parameter == axis.parameter && before.path == axis.path;
+        name.fail(twice ? fmt::format("{}: {} is an axis of this grid already; each axis varies another input",
+                                      name.path(), name.yaml().Scalar())
+                        : fmt::format("{}: {} varies what the axis {} varies already; each axis varies another input",
+                                      name.path(), name.yaml().Scalar(),
+                                      before.parameter == MapParameter::scene_input
+                                          ? before.path
+                                          : std::string(kMapParameters.name(before.parameter))));
       }
     s.axes.push_back(std::move(axis));
   }

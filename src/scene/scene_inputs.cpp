@@ -67,10 +67,14 @@ std::string input_override(const std::string& path, double value, std::string_vi
   return unit == "1" ? fmt::format("{}={:.17g}", path, value) : fmt::format("{}={:.17g} {}", path, value, unit);
 }
 
-Scene with_inputs(const Scene& scene, std::span<const std::pair<std::string, double>> values) {
+Scene with_inputs(const Scene& scene, std::span<const std::pair<std::string, double>> values, bool keep_study) {
   std::vector<std::string> overrides;
   for (const auto& [path, value] : values) overrides.push_back(input_override(path, value, scene_input(scene, path).unit));
-  return load_scene_text(scene.written, scene.source, overrides);
+  if (!keep_study) return load_scene_text(scene.written, scene.source, overrides);
+  overrides.push_back("study={type: point}");
+  Scene out = load_scene_text(scene.written, scene.source, overrides);
+  out.study = scene.study;
+  return out;
 }
 
 }  // namespace twb

@@ -107,10 +107,12 @@ struct KinsolNewton::Callbacks {
     return watched_settled;
   }
   // At a Newton point u, before it is assembled: true when the caller's quantities
-  // settled there (kept in `settled_point`). The start is skipped: where a
+  // settled there (kept in `settled_point`). Only on the full steps, where each point is
+  // the next iterate (a line search's first trial may be rejected, and a bound on
+  // consecutive iterates says nothing about trials). The start is skipped: where a
   // caller carries a state over (another mesh's), its quantities are the ones it carried.
   bool settles_quantities(std::span<const double> u) {
-    if (!quantities.at || shift || step_norms.empty()) return false;
+    if (!quantities.at || shift || !full_steps || step_norms.empty()) return false;
     reads.values.push_back(quantities.at(u));
     const std::size_t k = step_norms.size();
     reads.residual_contraction = k >= 2 ? step_norms[k - 1] / step_norms[k - 2] : NAN;

@@ -48,7 +48,8 @@ struct NewtonSettings {
   double watched_residual = 1e-3;
   // The same for a caller that needs quantities of the state to a known accuracy (a
   // state's reported quantities on the refined mesh, for their error bars): at each
-  // Newton point past the start, before it is assembled, `quantities.at(u)`; Newton
+  // Newton point past the start of the undamped steps (KINSOL's first full steps, whose
+  // points are consecutive iterates), before it is assembled, `quantities.at(u)`; Newton
   // stops at the first point where `quantities.settled(reads)` says it is close enough
   // to the root, from every read of this solve so far and the residual's last
   // contraction. That point is returned unassembled (the report's residual_norm is

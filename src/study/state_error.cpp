@@ -51,8 +51,11 @@ bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const
   // the largest contraction seen over the last steps (each quantity's last step over
   // the one before, and the residual's): Newton's converges faster after
   // (quadratically, or by about the same factor on its linear stretches across the
-  // kinks of contact and cavitation). The point is then accepted unassembled, without
-  // the assembly, factorization and step past it that a test on that step would need.
+  // kinks of contact and cavitation). The point is then accepted with its quantities
+  // read (a residual pass) but without the Jacobian, factorization and step past it
+  // that a test on that step would need. Read on Newton's undamped steps only (their
+  // points are consecutive iterates); a solve that needs the line search or the
+  // fallbacks converges to the tolerance.
   // The bar differs from the fully converged one's by at most about 1e-3 of itself.
   NewtonSettings newton = newton_settings(model.scene());
   std::vector<double> described_at, described;  // the last point the quantities were read at
@@ -67,9 +70,13 @@ bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const
     const std::vector<double>&now = reads.values[n - 1], &before = reads.values[n - 2],
                           &earlier = reads.values[n - 3];
     double rho = reads.residual_contraction;
-    for (std::size_t k = 0; k < now.size(); ++k)
-      rho = std::max(rho, std::abs(now[k] - before[k]) / std::abs(before[k] - earlier[k]));
-    if (!(rho < 1.0)) return false;  // not contracting (or 0/0): no bound to lean on
+    for (std::size_t k = 0; k < now.size(); ++k) {
+      const double step = std::abs(now[k] - before[k]);
+      if (step == 0.0) continue;  // a quantity the last step left alone bounds nothing
+      const double ratio = step / std::abs(before[k] - earlier[k]);
+      if (!(ratio <= rho)) rho = ratio;  // a NaN (a wild read) makes rho NaN: no stop
+    }
+    if (!(rho < 1.0)) return false;  // not contracting: no bound to lean on
     for (std::size_t k = 0; k < now.size(); ++k)
       if (!(rho / (1.0 - rho) * std::abs(now[k] - before[k]) <= kRefinedSettling * std::abs(now[k] - coarse[k])))
         return false;

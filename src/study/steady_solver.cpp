@@ -15,8 +15,19 @@
 
 namespace twb {
 
+namespace {
+
+NewtonSettings without_early_stop(NewtonSettings s) {
+  s.watched = -1;
+  s.quantities = {};
+  return s;
+}
+
+}  // namespace
+
 SteadySolver::SteadySolver(BearingModel& model, NewtonSettings settings, SparseLu::Ordering ordering)
-    : model_(model), settings_(settings), newton_(model, ordering), pseudo_transient_(model, settings, newton_) {}
+    : model_(model), settings_(settings), newton_(model, ordering), pseudo_transient_(model, settings, newton_),
+      on_the_way_(without_early_stop(settings)), ramp_transient_(model, on_the_way_, newton_) {}
 
 SteadyReport SteadySolver::solve(std::vector<double>& u) { return settle(u, true); }
 
@@ -103,7 +114,7 @@ SteadyReport SteadySolver::solve_by_mesh_sequence(std::vector<double>& u) {
   const FilmMesh& mesh = model_.films().front().mesh;
   const std::unique_ptr<BearingModel> coarse =
       model_.on_mesh((mesh.radial_nodes() + 1) / 2, (mesh.circumferential_nodes() + 1) / 2);
-  SteadySolver coarse_solver(*coarse, settings_);
+  SteadySolver coarse_solver(*coarse, on_the_way_);
   coarse_solver.set_deformation_homotopy(deformation_homotopy_);
   std::vector<double> uc;
   SteadyReport rep = coarse_solver.solve_cold(uc);
@@ -179,7 +190,7 @@ SteadyReport SteadySolver::solve_by_deformation_homotopy(std::vector<double>& u)
     // landed on one 1 σ thinner and 3.6 K hotter than the branch's), and a corrected
     // state far from the tangent's prediction is such a jump: the step is halved.
     NaturalSettings walk;
-    walk.newton = settings_;
+    walk.newton = on_the_way_;
     walk.newton.max_iterations = std::min(settings_.max_iterations, 10);
     walk.initial_step = 0.25 * own;
     walk.max_step = 0.25 * own;
@@ -265,11 +276,11 @@ bool SteadySolver::speed_ramp(std::vector<double>& u, SteadyReport& rep) {
   if (!(target > 0)) return false;
   model_.set_speed(0.0);
   std::vector<double> state = model_.cold_start();
-  if (!reach(state, rep)) {
+  if (!ramp_transient_.reach(state, rep)) {
     model_.set_speed(target);
     return false;
   }
-  NewtonSettings quick = settings_;
+  NewtonSettings quick = on_the_way_;
   quick.max_iterations = 25;
   const double reached = walk([&](double w) { model_.set_speed(w); }, 0.0, target, 0.05 * target, state,
                               [&](std::vector<double>& x) { return newton(x, quick, rep); });
@@ -300,7 +311,7 @@ SteadyReport SteadySolver::ramp(std::vector<double>& u, SteadyReport rep) {
     if (target * fraction <= lift) break;
     model_.set_load(target * fraction);
     state = model_.cold_start();
-    if (reach(state, rep)) {
+    if (ramp_transient_.reach(state, rep)) {
       start = target * fraction;
       break;
     }
@@ -317,7 +328,7 @@ SteadyReport SteadySolver::ramp(std::vector<double>& u, SteadyReport rep) {
     return rep;
   }
   const double reached = walk([&](double w) { model_.set_load(w); }, start, target, start, state,
-                              [&](std::vector<double>& x) { return reach(x, rep); });
+                              [&](std::vector<double>& x) { return ramp_transient_.reach(x, rep); });
   if (reached < target) {
     rep.message = "load ramp stalled at " + std::to_string(reached) + " N: " + rep.message;
     return rep;

@@ -68,6 +68,11 @@ class SteadySolver {
   NewtonSettings settings_;
   KinsolNewton newton_;
   PseudoTransient pseudo_transient_;
+  // For the states on the way (a ramp's, a homotopy's, a coarser mesh's): the settings
+  // without a caller's early stop (NewtonSettings::watched, quantities), which judge the
+  // state asked for, not one at another speed, load or mesh.
+  NewtonSettings on_the_way_;
+  PseudoTransient ramp_transient_;
   bool mesh_sequence_ = true;
   bool deformation_homotopy_ = true;
 };

@@ -117,7 +117,7 @@ std::vector<Variant> parameter_variants(const Scene& scene, std::vector<std::str
     std::vector<std::pair<std::string, double>> inputs;
     for (std::size_t k = 0; k < axes.size(); ++k)
       if (axes[k].parameter == MapParameter::scene_input) inputs.emplace_back(axes[k].path, axes[k].values[at[k]]);
-    Scene variant = inputs.empty() ? scene : with_inputs(scene, inputs);
+    Scene variant = inputs.empty() ? scene : with_inputs(scene, inputs, /*keep_study=*/true);
     std::vector<double> values;
     for (std::size_t k = 0; k < axes.size(); ++k) {
       if (axes[k].parameter != MapParameter::scene_input)

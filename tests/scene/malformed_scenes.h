@@ -166,6 +166,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"groove_count_value_leaves_no_land", 21, 47, {"study.parameter.values[1]", "40 grooves 10 deg wide", "the pitch is 9 deg"}},
     {"groove_depth_value_through_the_washer", 20, 51, {"study.parameter.values[1]", "1 mm deep would cut through the washer"}},
     {"grid_axis_twice", 17, 14, {"study.parameter[1].name: gear_tilt is an axis of this grid already"}},
+    {"grid_axis_by_name_and_path", 17, 14, {"study.parameter[1].name: geometry.gear.tilt varies what the axis gear_tilt varies already"}},
     {"grid_without_axes", 15, 14, {"study.parameter: the list is empty; give at least one axis"}},
     {"grid_axis_is_the_load", 17, 14, {"study.parameter[1].name: operating.load is an axis of every search already"}},
     {"grid_groove_combination_leaves_no_land", 24, 44, {"study.parameter[1].values[1]", "40 grooves 10 deg wide leave no land", "(with groove_count = 40)"}},

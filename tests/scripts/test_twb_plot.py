@@ -19,6 +19,8 @@ SCRIPT = os.path.join(ROOT, "scripts", "twb_plot.py")
 PYTHON_DIR = os.path.join(ROOT, "python")
 sys.path.insert(0, PYTHON_DIR)
 import twb.plot as tp  # noqa: E402  (the readers, beside the script's command line)
+import matplotlib.legend  # noqa: E402  (after twb.plot, which chooses the backend)
+import matplotlib.pyplot as plt  # noqa: E402
 
 STATES_HEADER = ("load_N,speed_rad_s,T_mean_C,T_max_C,hmin_over_sigma,gamma_x_ratio,gamma_y_ratio,"
                  "fluid_share,contact_share,torque_Nm,f_eff,stribeck,converged,iterations,residual,"
@@ -73,6 +75,40 @@ DISTRESS_FAIL_TAIL = (
 def distress_fail_row(header, cells):
     """A row of a distress.csv header: the named cells, the others empty."""
     return ",".join(str(cells.get(c, "")) for c in header.split(","))
+
+
+# A grid of two axes (a named parameter and an input by its scene path) at two speeds.
+GRID_AXES = "friction_coefficient,geometry.gear.tilt_rad"
+GRID = [(f, t) for f in (0.1, 0.3) for t in (0.001, 0.002)]
+GRID_SPEEDS = (136, 545)
+
+
+def grid_distress(limited=(), unreached=()):
+    """distress.csv of the grid: (header, rows, W_d by (speed, f, t)). W_d falls with the
+    coefficient and the tilt and rises with the speed, each combination its own; a
+    combination in `limited` fails first by the flash temperature, 100 N below, with no
+    W_d, one in `unreached` finds no failure up to 2000 N (both left out of W_d)."""
+    header = f"speed_rad_s,{GRID_AXES},{DISTRESS_FAIL_TAIL}"
+    w_d, rows = {}, []
+    for speed in GRID_SPEEDS:
+        for f, t in GRID:
+            w = round(1200 - 1000 * f - 1e5 * t + 0.2 * speed, 6)
+            cells = {"speed_rad_s": speed, "friction_coefficient": f, "geometry.gear.tilt_rad": t}
+            if (f, t) in unreached:
+                cells["method"] = "no fold up to 2000 N (gradual heating)"
+            elif (f, t) in limited:
+                cells.update({"W_fail_N": w - 100, "criterion": "flash_temperature",
+                              "W_flash_temperature_N": w - 100,
+                              "failure": f"fails at {w - 100} N by the flash temperature",
+                              "method": "no fold up to 2000 N (gradual heating)"})
+            else:
+                w_d[(speed, f, t)] = w
+                cells.update({"W_fail_N": w, "criterion": "distress", "W_d_N": w, "bracket_low_N": w - 2,
+                              "bracket_high_N": w + 2, "fold_N": w,
+                              "failure": f"fails at {w} N by thermo-viscous distress",
+                              "method": f"runaway; fold at {w} N"})
+            rows.append(distress_fail_row(header, cells))
+    return header, rows, w_d
 
 
 def with_run_columns(rows, cells):
@@ -200,6 +236,38 @@ class TwbPlotTest(unittest.TestCase):
                     root = ET.parse(path).getroot()
                     self.assertTrue(root.tag.endswith("svg"), path)
 
+    def grid_results(self, name, limited=(), unreached=()):
+        """A results directory of a load sweep and distress map over GRID (grid_distress):
+        distress.csv, states.csv and two runs' trajectories; (directory, distress.csv's
+        header, its rows, W_d by (speed, f, t))."""
+        d = os.path.join(self.tmp, name)
+        os.makedirs(d)
+        header, rows, w_d = grid_distress(limited, unreached)
+        write(os.path.join(d, "distress.csv"), [header] + rows)
+        states = []
+        for f, t in GRID:
+            for speed in GRID_SPEEDS:
+                states += with_run_columns(state_rows(speed, [100, 400, 700, 1000]), f"{f},{t},")
+        write(os.path.join(d, "states.csv"),
+              [STATES_HEADER.replace("speed_rad_s,", f"speed_rad_s,{GRID_AXES},")] + states)
+        write(os.path.join(d, "trajectory.csv"),
+              [f"t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,{GRID_AXES}"]
+              + trajectory_rows(",545,0.1,0.001") + trajectory_rows(",545,0.3,0.002"))
+        return d, header, rows, w_d
+
+    @staticmethod
+    def legends(ax):
+        """Every legend of the axes (a second one added as an artist included)."""
+        return [c for c in ax.get_children() if isinstance(c, matplotlib.legend.Legend)]
+
+    @staticmethod
+    def extents(fig, artists):
+        """The artists' boxes on the laid-out figure, as save() lays it out."""
+        fig.tight_layout()
+        fig.canvas.draw()
+        renderer = fig.canvas.get_renderer()
+        return [a.get_window_extent(renderer) for a in artists]
+
     def svg_text(self, path):
         with open(path, encoding="utf-8") as f:
             return f.read()
@@ -263,6 +331,8 @@ class TwbPlotTest(unittest.TestCase):
         for label in ("dry friction coefficient 0.1", "dry friction coefficient 0.3",
                       "fold of the steady branch"):
             self.assertIn(label, text)
+        # One axis is no grid: no small multiples.
+        self.assertFalse(any(name.startswith("distress_grid") for name in os.listdir(out_dir)))
 
     def test_distress_map_over_an_input_by_its_scene_path(self):
         """A map's axis named by a scene path: its column is the path with its unit, the
@@ -488,28 +558,8 @@ class TwbPlotTest(unittest.TestCase):
         scene path): one column per axis after the speed, one run per combination, tagged
         with both values in the axes' order, each drawn and labelled with both; a column
         between the speed and W_fail_N that is no parameter is still refused."""
-        d = os.path.join(self.tmp, "grid")
-        os.makedirs(d)
-        axes = "friction_coefficient,geometry.gear.tilt_rad"
-        grid = [(f, t) for f in (0.1, 0.3) for t in (0.001, 0.002)]
-        # W_d falls with the coefficient and the tilt, rises with the speed: each combination its own.
-        w_d = {(speed, f, t): round(1200 - 1000 * f - 1e5 * t + 0.2 * speed, 6)
-               for speed in (136, 545) for f, t in grid}
-        header = f"speed_rad_s,{axes},{DISTRESS_FAIL_TAIL}"
-        rows = [distress_fail_row(header, {
-            "speed_rad_s": speed, "friction_coefficient": f, "geometry.gear.tilt_rad": t,
-            "W_fail_N": w, "criterion": "distress", "W_d_N": w, "bracket_low_N": w - 2, "bracket_high_N": w + 2,
-            "fold_N": w, "failure": f"fails at {w} N by thermo-viscous distress", "method": f"runaway; fold at {w} N"})
-            for (speed, f, t), w in w_d.items()]
-        write(os.path.join(d, "distress.csv"), [header] + rows)
-        states = []
-        for f, t in grid:
-            for speed in (136, 545):
-                states += with_run_columns(state_rows(speed, [100, 400, 700, 1000]), f"{f},{t},")
-        write(os.path.join(d, "states.csv"), [STATES_HEADER.replace("speed_rad_s,", f"speed_rad_s,{axes},")] + states)
-        write(os.path.join(d, "trajectory.csv"),
-              [f"t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,{axes}"]
-              + trajectory_rows(",545,0.1,0.001") + trajectory_rows(",545,0.3,0.002"))
+        d, header, rows, w_d = self.grid_results("grid")
+        axes, grid = GRID_AXES, GRID
 
         def tag(f, t):
             return (("friction_coefficient", f), ("geometry.gear.tilt_rad", t))
@@ -541,7 +591,7 @@ class TwbPlotTest(unittest.TestCase):
         self.assertEqual(result.returncode, 0, result.stderr)
         out_dir = os.path.join(d, "figures")
         self.assert_figures(out_dir, STATE_FIGURES + ("fig15_stribeck_by_friction", "distress_map",
-                                                      "transient_trajectory"), formats=("svg",))
+                                                      "distress_grid", "transient_trajectory"), formats=("svg",))
         labels = [f"dry friction coefficient {f}, geometry.gear.tilt_rad = {t}" for f, t in grid]
         distress_map = self.svg_text(os.path.join(out_dir, "distress_map.svg"))
         fig6 = self.svg_text(os.path.join(out_dir, "fig06_f_eff_vs_load.svg"))
@@ -558,6 +608,72 @@ class TwbPlotTest(unittest.TestCase):
         with self.assertRaises(tp.InputError) as caught:
             tp.read_distress(os.path.join(d, "distress.csv"))
         self.assertIn("line 1: expected the header speed_rad_s[,<parameter>...][,sliding]", str(caught.exception))
+
+    def test_distress_map_names_every_run(self):
+        """Every run drawn on the distress map has one legend entry, a run failing only by a
+        limit (W_fail crosses, no W_d) too, with one axis and in a grid; a grid's many runs
+        put the legend beside the axes, where it covers no data."""
+        header = f"speed_rad_s,friction_coefficient,{DISTRESS_FAIL_TAIL}"
+        d = self.results_dir("one_axis_limit", distress=[header] + [
+            distress_fail_row(header, {"speed_rad_s": 545, "friction_coefficient": 0.1, "W_fail_N": 900,
+                                       "criterion": "distress", "W_d_N": 900, "method": "runaway"}),
+            distress_fail_row(header, {"speed_rad_s": 545, "friction_coefficient": 0.3, "W_fail_N": 700,
+                                       "criterion": "flash_temperature", "W_flash_temperature_N": 700,
+                                       "method": "no fold up to 2000 N (gradual heating)"})])
+        fig = tp.distress.figure_distress_map(tp.merge([tp.read_run(d)]))
+        texts = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+        for f in (0.1, 0.3):
+            self.assertEqual(texts.count(f"dry friction coefficient {f}"), 1, texts)
+        plt.close(fig)
+
+        d, *_ = self.grid_results("grid_limit", limited=[(0.3, 0.002)])
+        fig = tp.distress.figure_distress_map(tp.merge([tp.read_run(d)]))
+        ax = fig.axes[0]
+        texts = [t.get_text() for t in ax.get_legend().get_texts()]
+        runs = [f"dry friction coefficient {f}, geometry.gear.tilt_rad = {t}" for f, t in GRID]
+        self.assertEqual([t for t in texts if t.startswith("dry friction")], runs)
+        legend, axes, whole = self.extents(fig, [ax.get_legend(), ax, fig])
+        self.assertFalse(legend.overlaps(axes), (legend, axes))
+        self.assertLessEqual(legend.x1, whole.x1 + 0.5, "the legend leaves the figure")
+        plt.close(fig)
+
+    def test_distress_grid_small_multiples(self):
+        """A grid's failure loads: a panel per speed with a shared load axis, W_fail against
+        the first axis (its label the package's), a line per value of the other, a marker
+        per criterion and an open triangle at load_end where no failure was found; the
+        legends beside the panels, each covering none."""
+        d, *_ = self.grid_results("grid_small", limited=[(0.3, 0.002)], unreached=[(0.1, 0.001)])
+        result = plot(d, "--format", "png,svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        out_dir = os.path.join(d, "figures")
+        self.assert_figures(out_dir, ("distress_map", "distress_grid"))
+        fig = tp.distress.figure_distress_grid(tp.merge([tp.read_run(d)]))
+        panels = [ax for ax in fig.axes if ax.get_visible()]
+        self.assertEqual([ax.get_title() for ax in panels], ["136 rad/s", "545 rad/s"])
+        self.assertEqual({ax.get_xlabel() for ax in panels}, {"dry friction coefficient"})
+        self.assertTrue(panels[0].get_shared_y_axes().joined(panels[0], panels[1]))
+        # Each panel: W_fail at the first axis's values, per tilt; a point not found breaks
+        # the line (NaN) and is drawn at 2000 N instead.
+        lines = [line for line in panels[1].get_lines() if line.get_linestyle() == "-"]
+        self.assertEqual(len(lines), 2)
+        self.assertEqual(list(lines[0].get_xdata()), [0.1, 0.3])
+        self.assertTrue(math.isnan(lines[0].get_ydata()[0]))
+        self.assertAlmostEqual(lines[1].get_ydata()[1], 1200 - 300 - 200 + 0.2 * 545 - 100)  # the flash limit
+        triangles = [line for line in panels[1].get_lines() if line.get_marker() == "^"]
+        self.assertEqual([list(line.get_ydata()) for line in triangles], [[2000.0]])
+        legends = self.legends(panels[-1])
+        texts = [[t.get_text() for t in legend.get_texts()] for legend in legends]
+        self.assertIn(["geometry.gear.tilt_rad = 0.001", "geometry.gear.tilt_rad = 0.002"], texts)
+        self.assertIn(["thermo-viscous distress (fold)", "flash temperature",
+                       "not reached: no failure up to load_end"], texts)
+        boxes = self.extents(fig, legends + panels)
+        for i, box in enumerate(boxes):
+            for other in boxes[i + 1:]:
+                self.assertFalse(box.overlaps(other), (box, other))
+        plt.close(fig)
+        text = self.svg_text(os.path.join(out_dir, "distress_grid.svg"))
+        for label in ("dry friction coefficient", "geometry.gear.tilt_rad = 0.002", "545 rad/s"):
+            self.assertIn(label, text)
 
     def test_a_run_of_one_axis_or_none_keeps_its_tag(self):
         """Files of one axis or none read as before the grid: (column, value) or None."""

@@ -106,9 +106,10 @@ TEST(PointError, EveryStateOfASweepHasAPointsBar) {
 // last two steps, is 1e-3 of their distance from the coarse ones. Against the refined
 // state solved to the residual tolerance from the same start, each quantity must be
 // within that 1e-3, and the stop must have saved Newton iterations. From the coarse
-// state itself, and from starts 5 and 10 % off it (every unknown scaled), where Newton
-// takes more and damped steps: there a bound from the residual's contraction alone
-// stops 3x too early (checked: it fails the 10 % start).
+// state itself, and from starts 1 and 2 % off it (every unknown scaled), where Newton
+// takes more undamped steps (farther off it needs the line search, where the
+// quantities are not read: the solve then goes to the tolerance). A stop without the
+// bound (rho taken as 0: the third read accepted) misses the 1e-3 on every quantity.
 TEST(PointError, TheRefinedStateIsSolvedAsFarAsItsBarNeeds) {
   const Scene scene = load_scene(std::string(TWB_SOURCE_DIR) + "/configs/washers/bronze_cusn8.yaml",
                                  {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24", "study={type: point}",
@@ -120,7 +121,7 @@ TEST(PointError, TheRefinedStateIsSolvedAsFarAsItsBarNeeds) {
   std::string why;
   const std::unique_ptr<BearingModel> fine = refined_model(model, why);
   ASSERT_TRUE(fine) << why;
-  for (const double off : {1.0, 1.05, 1.1}) {
+  for (const double off : {1.0, 1.01, 1.02}) {
     std::vector<double> start = u;
     for (double& x : start) x *= off;
     SolvedState state;

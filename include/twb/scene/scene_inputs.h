@@ -26,8 +26,11 @@ bool is_bearing_input_path(std::string_view path);
 SceneInput scene_input(const Scene& scene, const std::string& path);
 
 // The scene read again from Scene::written with each (path, SI value) set. InputError
-// (input_error.h) where a value is out of its range, naming the override.
-Scene with_inputs(const Scene& scene, std::span<const std::pair<std::string, double>> values);
+// (input_error.h) where a value is out of its range, naming the override. keep_study:
+// the scene's own study kept as it is, not read and checked again (a grid's combination:
+// reading a map's study tries every value of its axes).
+Scene with_inputs(const Scene& scene, std::span<const std::pair<std::string, double>> values,
+                  bool keep_study = false);
 
 // The override text that sets an input: "geometry.gear.tilt=0.001 rad".
 std::string input_override(const std::string& path, double value, std::string_view unit);

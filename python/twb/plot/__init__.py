@@ -1,7 +1,7 @@
 """Figures of twb results in the layout of Jackson & Green (2006), Figs. 6-15, and of the
-solver's own: the distress map, the fold curve, the transient, the sliding choice, the
-studies' sensitivity, reliability and calibration, and polar maps of a state's fields
-(docs/figures.md).
+solver's own: the distress map (and a grid's small multiples), the fold curve, the
+transient, the sliding choice, the studies' sensitivity, reliability and calibration, and
+polar maps of a state's fields (docs/figures.md).
 
 The plotting part of the twb Python module. It reads results directories only, with
 numpy and matplotlib, and never the compiled extension, so that results can be drawn

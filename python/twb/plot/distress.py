@@ -1,16 +1,18 @@
-"""Where the bearing fails: the distress map (W_d against speed) and the fold curve of a
-distress_curve study (the safe operating region). They answer the solver's own question,
-which the paper's figures leave to the reader.
+"""Where the bearing fails: the distress map (W_d against speed), a grid's failure loads
+in small multiples, and the fold curve of a distress_curve study (the safe operating
+region). They answer the solver's own question, which the paper's figures leave to the
+reader.
 """
 
 import math
 import re
 
+import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.lines import Line2D
 
-from .style import Style, new_figure, parameter_label
-from .tables import FOLD_CURVE_PARAMETERS, SLIDING_LABELS, run_order
+from .style import Style, column_label, new_figure, parameter_label, speed_key, speed_label
+from .tables import FOLD_CURVE_PARAMETERS, SLIDING_LABELS, run_axes, run_order, run_tag
 
 
 def series_label(key):
@@ -170,6 +172,35 @@ def figure_fold_curve(data, name, column, rows):
     return fig
 
 
+# Up to this many runs the legend finds a free corner inside the axes; more (a grid's
+# combinations) would cover their own data, so the legend goes beside the axes.
+RUNS_INSIDE_LEGEND = 3
+
+
+def limit_rows(rows):
+    """The rows where a limit, not distress, sets the failure load."""
+    return [r for r in rows if r.failure is not None and r.criterion not in (None, "distress")]
+
+
+def run_handle(rows, color, marker, drawn):
+    """A run's legend entry, drawn as what the run shows: its W_d with the bracket
+    (drawn, the errorbar itself) where it has one, else its limit's crosses or its folds,
+    so that a run without any W_d (failing by a limit first) is named too."""
+    if drawn is not None:
+        return drawn
+    if limit_rows(rows):
+        return Line2D([], [], color=color, marker="X", markersize=8, linestyle="-.", linewidth=1.0)
+    return Line2D([], [], color=color, marker="D", markersize=8, markerfacecolor="none", linestyle="none")
+
+
+def legend_place(runs):
+    """Where the map's legend goes: the emptiest corner for a few runs, beside the axes
+    for many; and the figure's size to leave room there."""
+    if runs <= RUNS_INSIDE_LEGEND:
+        return {"loc": "best"}, (6.4, 4.8)
+    return {"loc": "upper left", "bbox_to_anchor": (1.02, 1.0), "borderaxespad": 0.0}, (11.0, 4.8)
+
+
 def figure_distress_map(data):
     series = {}
     for d in data.distress:
@@ -178,17 +209,20 @@ def figure_distress_map(data):
                  if any(r.w_d is not None or r.fold is not None or r.failure is not None for r in rows)]
     if not plottable:
         return None
-    limited = any(r.failure is not None and r.criterion not in (None, "distress") for r in data.distress)
+    limited = bool(limit_rows(data.distress))
     plottable.sort(key=lambda k: (k[0] is not None, run_order(k[0]), k[1] or ""))
     style = Style(range(len(plottable)))
+    place, size = legend_place(len(plottable))
     fig, ax = new_figure(r"Distress load $W_d$ vs speed: below it, no sudden distress" if not limited
-                         else r"Where the washer fails: $W_{fail}$ (first criterion) and $W_d$ vs speed")
+                         else r"Where the washer fails: $W_{fail}$ (first criterion) and $W_d$ vs speed", size=size)
     scale, xlabel = speed_axis(data)
     any_fold = any_estimate = any_beyond = False
+    # One entry per run, in the runs' order, whatever the run draws.
+    handles, labels = [], []
     for i, key in enumerate(plottable):
         rows = sorted(series[key], key=lambda r: r.speed)
         color, marker = style.colors[i], style.markers[i]
-        label = series_label(key)
+        drawn = None
         found = [r for r in rows if r.w_d is not None]
         # A speed without W_d up to the highest load searched is drawn there, as "> load_end".
         beyond = [(r.speed, load) for r in rows
@@ -211,8 +245,8 @@ def figure_distress_map(data):
             # twb bug, drawn as a zero-length bar rather than hidden.
             below = [max(r.w_d - r.low, 0.0) if r.low is not None else 0.0 for r in found]
             above = [max(r.high - r.w_d, 0.0) if r.high is not None else 0.0 for r in found]
-            ax.errorbar(x, y, yerr=[below, above], color=color, marker=marker, markersize=5,
-                        linewidth=1.2, capsize=4, label=label)
+            drawn = ax.errorbar(x, y, yerr=[below, above], color=color, marker=marker, markersize=5,
+                                linewidth=1.2, capsize=4)
         converged = [r for r in rows if r.extrapolated is not None and r.error is not None]
         if converged:
             any_estimate = True
@@ -220,7 +254,7 @@ def figure_distress_map(data):
                         yerr=[r.error for r in converged], color=color, marker="s", markersize=5,
                         markerfacecolor="none", linestyle="--", linewidth=1.0, capsize=4)
         # Where a limit, not distress, sets the failure load: drawn with its criterion.
-        failing = [r for r in rows if r.failure is not None and r.criterion not in (None, "distress")]
+        failing = limit_rows(rows)
         if failing:
             ax.plot([scale * r.speed for r in failing], [r.failure for r in failing], color=color, marker="X",
                     markersize=8, linestyle="-." if len(failing) > 1 else "none", linewidth=1.0)
@@ -233,10 +267,15 @@ def figure_distress_map(data):
             ax.plot([scale * r.speed for r in folds], [r.fold for r in folds], linestyle="none",
                     marker="D", markersize=8, markerfacecolor="none", markeredgecolor=color,
                     markeredgewidth=1.2)
+        handles.append(run_handle(rows, color, marker, drawn))
+        labels.append(series_label(key))
+    if "bbox_to_anchor" in place:
+        # The labels right of the highest speed's markers would run under the legend.
+        lo, hi = ax.get_xlim()
+        ax.set_xlim(lo, hi + 0.12 * (hi - lo))
     ax.set_xlabel(xlabel)
     ax.set_ylabel("load (N)")
     ax.set_ylim(bottom=0)
-    handles, labels = ax.get_legend_handles_labels()
     handles.append(Line2D([], [], color="black", marker="|", linestyle="none", markersize=10))
     labels.append("bracket: settled / ran away")
     if any_beyond:
@@ -252,7 +291,149 @@ def figure_distress_map(data):
     if limited:
         handles.append(Line2D([], [], color="black", linestyle="none", marker="X"))
         labels.append("$W_{fail}$: a limit crossed first (criterion named)")
-    # "best": the markers of searches without W_d sit at the top, where a fixed corner
-    # would cover them.
-    ax.legend(handles, labels, fontsize="small", framealpha=0.85, loc="best")
+    # "best" for a few runs: the markers of searches without W_d sit at the top, where a
+    # fixed corner would cover them.
+    ax.legend(handles, labels, fontsize="small", framealpha=0.85, **place)
+    return fig
+
+
+# The grid's failure criteria as markers: thermo-viscous distress (a fold) a filled circle,
+# each limit a cross of its own, in LIMIT_LABELS's order, so that two limits on one
+# figure stay apart.
+DISTRESS_MARKER = "o"
+LIMIT_MARKERS = ("X", "P", "x", "+")
+# Panels per row of the grid figure before a new row starts.
+GRID_PANELS_PER_ROW = 4
+
+
+def grid_rows(data):
+    """distress.csv's rows of a grid (two or more axes), those with the first grid row's
+    axes: merged directories of different grids are not one grid."""
+    rows = [d for d in data.distress if len(run_axes(d.parameter)) >= 2]
+    columns = [c for c, _ in run_axes(rows[0].parameter)] if rows else []
+    return [d for d in rows if [c for c, _ in run_axes(d.parameter)] == columns]
+
+
+def failure_of(row):
+    """W_fail and its criterion, or (None, None) where no failure was found; in a
+    distress.csv of before W_fail_N, W_d is the only criterion there is."""
+    if row.failure is not None:
+        return row.failure, row.criterion
+    if row.criterion is None and row.w_d is not None:
+        return row.w_d, "distress"
+    return None, None
+
+
+def criterion_markers(rows):
+    """The marker of each criterion the rows fail by: distress's circle, a cross per limit."""
+    found = {failure_of(r)[1] for r in rows} - {None}
+    limits = [c for c in LIMIT_LABELS if c in found] + sorted(found - set(LIMIT_LABELS) - {"distress"})
+    markers = {"distress": DISTRESS_MARKER} if "distress" in found else {}
+    markers.update((c, LIMIT_MARKERS[i % len(LIMIT_MARKERS)]) for i, c in enumerate(limits))
+    return markers
+
+
+def criterion_label(criterion):
+    if criterion == "distress":
+        return "thermo-viscous distress (fold)"
+    return LIMIT_LABELS.get(criterion, criterion)
+
+
+def line_key(row):
+    """The grid line a row lies on: the remaining axes' values (the first is the x axis)
+    and its sliding film."""
+    return run_tag(run_axes(row.parameter)[1:]), row.sliding
+
+
+def line_label(key):
+    rest, sliding = key
+    return ", ".join([parameter_label(rest)] + ([] if sliding is None else [SLIDING_LABELS[sliding]]))
+
+
+def draw_grid_panel(ax, rows, lines, style, markers):
+    """One speed's panel: W_fail against the first axis, a line per combination of the
+    others, each point marked by its criterion; a search that found no failure drawn as an
+    open triangle at the highest load it searched ("not reached")."""
+    any_beyond = False
+    for i, key in enumerate(lines):
+        mine = sorted((r for r in rows if line_key(r) == key), key=lambda r: run_axes(r.parameter)[0][1])
+        if not mine:
+            continue
+        color = style.colors[i]
+        x = np.array([run_axes(r.parameter)[0][1] for r in mine], dtype=float)
+        failures = [failure_of(r) for r in mine]
+        load = np.array([math.nan if w is None else w for w, _ in failures], dtype=float)
+        # The line joins the failure loads found; a point not reached breaks it, its
+        # triangle a lower bound, not a value.
+        ax.plot(x, load, color=color, linewidth=1.2)
+        for criterion, marker in markers.items():
+            on = np.array([c == criterion for _, c in failures])
+            filled = marker in ("o", "X", "P")
+            ax.plot(x[on], load[on], linestyle="none", marker=marker, markersize=7 if filled else 8,
+                    color=color, markeredgewidth=1.0 if filled else 1.6)
+        beyond = [(xk, searched_up_to(r.method)) for xk, r, (w, _) in zip(x, mine, failures) if w is None]
+        beyond = [(xk, top) for xk, top in beyond if top is not None]
+        if beyond:
+            any_beyond = True
+            ax.plot([b[0] for b in beyond], [b[1] for b in beyond], linestyle="none", marker="^",
+                    markersize=8, markerfacecolor="none", markeredgecolor=color)
+    return any_beyond
+
+
+def grid_legends(ax, lines, style, markers, any_beyond):
+    """Beside the top right panel: the lines (the remaining axes' values), and beneath it
+    the criteria, compact, in black (the colour is the line's)."""
+    runs = ax.legend([Line2D([], [], color=style.colors[i], linewidth=1.5) for i in range(len(lines))],
+                     [line_label(key) for key in lines], fontsize="x-small", framealpha=0.85,
+                     loc="upper left", bbox_to_anchor=(1.04, 1.0), borderaxespad=0.0)
+    ax.add_artist(runs)
+    handles = [Line2D([], [], color="black", marker=m, linestyle="none",
+                      markeredgewidth=1.0 if m in ("o", "X", "P") else 1.6) for m in markers.values()]
+    labels = [criterion_label(c) for c in markers]
+    if any_beyond:
+        handles.append(Line2D([], [], color="black", marker="^", markerfacecolor="none", linestyle="none"))
+        labels.append("not reached: no failure up to load_end")
+    ax.legend(handles, labels, fontsize="x-small", framealpha=0.85, title="fails first by",
+              title_fontsize="x-small", loc="lower left", bbox_to_anchor=(1.04, 0.0), borderaxespad=0.0)
+
+
+def figure_distress_grid(data):
+    """A grid's failure loads in small multiples: a panel per speed (shared load axis),
+    W_fail against the grid's first axis, a line per combination of the others, marked
+    by the criterion that fails first. None without a grid or without anything to draw."""
+    rows = grid_rows(data)
+    rows = [r for r in rows if run_axes(r.parameter)[0][1] is not None]  # no x for an axis not set
+    if not any(failure_of(r)[0] is not None or searched_up_to(r.method) is not None for r in rows):
+        return None
+    column = run_axes(rows[0].parameter)[0][0]
+    speeds = sorted({speed_key(r.speed) for r in rows})
+    lines = sorted({line_key(r) for r in rows}, key=lambda k: (run_order(k[0]), k[1] or ""))
+    style = Style(range(len(lines)))
+    markers = criterion_markers(rows)
+    ncols = min(len(speeds), GRID_PANELS_PER_ROW)
+    nrows = math.ceil(len(speeds) / ncols)
+    # Tall enough for both legends beside the top row, one above the other.
+    entries = len(lines) + len(markers) + 3
+    height = max(3.6 * nrows, 1.2 + 0.2 * entries)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(3.0 * ncols + 3.2, height), sharex=True, sharey=True,
+                             squeeze=False)
+    values = sorted({run_axes(r.parameter)[0][1] for r in rows})
+    any_beyond = False
+    for k, ax in enumerate(axes.flat):
+        if k >= len(speeds):
+            ax.set_visible(False)
+            continue
+        mine = [r for r in rows if speed_key(r.speed) == speeds[k]]
+        any_beyond = draw_grid_panel(ax, mine, lines, style, markers) or any_beyond
+        ax.set_title(speed_label(speeds[k]), fontsize="medium")
+        ax.grid(True, which="major", alpha=0.3)
+        ax.set_xlabel(column_label(column))
+        if len(values) <= 8:
+            ax.set_xticks(values)
+        if k % ncols == 0:
+            ax.set_ylabel(r"failure load $W_{fail}$ (N)")
+    axes[0, 0].set_ylim(bottom=0)
+    grid_legends(axes[0, ncols - 1], lines, style, markers, any_beyond)
+    fig.suptitle(f"Where the washer fails over the grid: $W_{{fail}}$ against {column_label(column)}, "
+                 "one panel per speed", fontsize="medium")
     return fig

@@ -5,7 +5,7 @@ and what cannot be drawn is said on stderr, so a missing figure is never a silen
 import sys
 
 from .calibration import figure_calibration
-from .distress import figure_distress_map, figure_fold_curve
+from .distress import figure_distress_grid, figure_distress_map, figure_fold_curve, grid_rows
 from .reliability import figure_failure_probability
 from .sensitivity import figure_tornado
 from .sliding import figure_sliding
@@ -14,6 +14,14 @@ from .states import (LOAD_FIGURES, figure_contact_vs_hmin, figure_stribeck, figu
 from .style import parameter_label, save, show_speeds_in_rpm, speed_key, speed_label
 from .tables import SLIDING_LABELS
 from .transient import figure_trajectory
+
+
+def save_or_say(fig, out_dir, stem, formats, written, why_none):
+    """A figure that may have nothing to draw: saved, or a note saying why not."""
+    if fig is None:
+        print(f"twb_plot: note: {why_none}", file=sys.stderr)
+    else:
+        save(fig, out_dir, stem, formats, written)
 
 
 def make_figures(data, out_dir, formats):
@@ -33,12 +41,12 @@ def make_figures(data, out_dir, formats):
     else:
         print("twb_plot: note: no solved states, so no figures of states", file=sys.stderr)
     if data.distress:
-        fig = figure_distress_map(data)
-        if fig is None:
-            print("twb_plot: note: distress.csv has neither a distress load nor a fold; "
-                  "no distress map", file=sys.stderr)
-        else:
-            save(fig, out_dir, "distress_map", formats, written)
+        save_or_say(figure_distress_map(data), out_dir, "distress_map", formats, written,
+                    "distress.csv has neither a distress load nor a fold; no distress map")
+        # A grid (two or more axes) also gets its small multiples, one panel per speed.
+        if grid_rows(data):
+            save_or_say(figure_distress_grid(data), out_dir, "distress_grid", formats, written,
+                        "the grid's distress.csv has no failure load and no search to draw; no distress grid")
         for d in data.distress:
             if d.w_d is None:
                 where = speed_label(speed_key(d.speed))

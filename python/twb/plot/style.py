@@ -10,7 +10,7 @@ import os
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 
-from .tables import run_axes
+from .tables import FOLD_CURVE_PARAMETERS, run_axes
 
 LINESTYLES = ("-", "--", "-.", ":")
 DPI = 150
@@ -72,6 +72,13 @@ def axis_label(name, value):
     if value is None:
         return f"{name} not set"
     return PARAMETER_FORMATS.get(name, name + " = {:g}").format(value)
+
+
+def column_label(name):
+    """An axis's column as an axis label: the fold curve's wording where the package has
+    one ("dry friction coefficient"), else the column itself, an input's scene path with
+    its unit (geometry.gear.tilt_rad), which names it unambiguously."""
+    return FOLD_CURVE_PARAMETERS.get(name, name)
 
 
 def parameter_label(parameter):
