@@ -372,8 +372,10 @@ void read_study(const MapReader& scene, Scene& out) {
     }
     case StudyType::calibration:
       // The data and the fitted inputs are read once every input is known (read_calibration).
-      study.restrict_to({"type", "data", "fit", "sd"}, "with type: calibration");
+      study.restrict_to({"type", "data", "fit", "sd", "max_iterations"}, "with type: calibration");
       study.get("data", "the path of the measurements file (CSV), e.g. rig.csv");
+      s.fit_iterations = study.integer("max_iterations", 1, 1000, s.fit_iterations,
+                                       "Levenberg-Marquardt iterations before the fit stops unconverged");
       study.get("fit", "a map from input paths to bounds, e.g. {surfaces.washer.Rq: {lower: 0.1 um, upper: 1.5 um}}");
       break;
     case StudyType::distress_map: {

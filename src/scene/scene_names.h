@@ -37,7 +37,7 @@ inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start",
                                                    "speeds",        "parameter",  "bracket_width", "duration",
                                                    "error_estimate", "from",       "to",       "family",
                                                    "parameters", "inputs", "probabilities", "monte_carlo",
-                                                   "data", "fit", "sd"};
+                                                   "data", "fit", "sd", "max_iterations"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{

@@ -285,6 +285,7 @@ void write_numerics(Writer& w, const Scene& s) {
       if (st.measurement_sd[q] > 0.0)
         sd += fmt::format("{}{}: {}", sd.empty() ? "" : ", ", kMeasuredNames[q], quantity(st.measurement_sd[q], units[q]));
     if (!sd.empty()) w.entry(1, "sd", fmt::format("{{{}}}", sd));
+    w.entry(1, "max_iterations", fmt::format("{}", st.fit_iterations));
   }
   if (st.type == StudyType::distress_curve) {
     const char* unit = st.curve_parameter == CurveParameter::speed                  ? "rad/s"

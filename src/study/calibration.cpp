@@ -191,7 +191,7 @@ void run_calibration(BearingModel& model, StudyOutcome& out, const ProgressRepor
   options.minimizer_type = ceres::TRUST_REGION;
   options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = 50;
+  options.max_num_iterations = st.fit_iterations;
   // The first step within about the inputs' own size (scaled by their start), not
   // Ceres' default of 1e4 of it: a bearing far from its start may have no cool state.
   options.initial_trust_region_radius = 1.0;
@@ -341,8 +341,13 @@ void run_calibration(BearingModel& model, StudyOutcome& out, const ProgressRepor
       st.measurements.size() == 1 ? "" : "s", summary.termination_type == ceres::CONVERGENCE ? "converged" : "stopped",
       summary.iterations.size() > 0 ? summary.iterations.size() - 1 : 0, summary.initial_cost, summary.final_cost,
       response.solves()));
-  if (summary.termination_type != ceres::CONVERGENCE)
+  if (summary.termination_type != ceres::CONVERGENCE) {
+    // Said where a script looks too: run.json's outcome and Results.message (not a
+    // solver failure: the inputs reached are a usable fit, only not a converged one).
     out.summary.push_back("calibration: Ceres stopped before convergence: " + summary.message);
+    out.message += (out.message.empty() ? "" : "; ") +
+                   std::string("the calibration stopped before converging: ") + summary.message;
+  }
   for (const CalibrationRow& row : out.calibration)
     out.summary.push_back(fmt::format("calibration: {} = {:.6g}{} {} (start {:.6g}){}", row.parameter, row.fitted,
                                       row.sd ? fmt::format(" ± {:.2g}", *row.sd) : "", row.parameter_unit, row.start,

@@ -135,6 +135,7 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   }
   for (std::size_t q = 0; q < kMeasuredQuantities; ++q)
     EXPECT_DOUBLE_EQ(a.study.measurement_sd[q], b.study.measurement_sd[q]);
+  EXPECT_EQ(a.study.fit_iterations, b.study.fit_iterations);
   EXPECT_EQ(a.study.sampling_cov, b.study.sampling_cov);
   EXPECT_EQ(a.study.max_samples, b.study.max_samples);
   EXPECT_EQ(a.study.seed, b.study.seed);
@@ -361,7 +362,7 @@ INSTANTIATE_TEST_SUITE_P(
                           source_path("tests/scene/data/calibration_rig.csv") +
                           "',\n        fit: {geometry.gear.tilt: {start: 1.5 mrad, lower: 0.5 mrad, upper: 2.5 mrad},\n"
                           "              surfaces.asperities.summit_radius: {lower: 10 um, upper: 40 um}},\n"
-                          "        sd: {torque: 2 N mm, T_mean: 0.5 degC}}\n"},
+                          "        sd: {torque: 2 N mm, T_mean: 0.5 degC}, max_iterations: 12}\n"},
         RoundTripCase{"distress_map_over_an_input_by_its_path",
                       std::string(kMinimalScene) +
                           "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 3 kN,\n"

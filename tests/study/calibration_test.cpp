@@ -87,6 +87,7 @@ TEST(Calibration, RecoversTheInputsThatMadeTheDataOnAnyThreadCount) {
   const TempScene data(rig_data(rig_points(kPoints)), "", ".csv");
   const StudyOutcome one = calibrate(calibration_scene(data.path()), 1);
   ASSERT_FALSE(one.solver_failed) << one.message;
+  EXPECT_TRUE(one.message.empty()) << one.message;  // converged: run.json's outcome "ok"
   ASSERT_EQ(one.calibration.size(), 2u);
   for (std::size_t j = 0; j < 2; ++j) {
     EXPECT_NEAR(one.calibration[j].fitted, kTruth[j], 1e-4 * kTruth[j]) << one.calibration[j].parameter;
@@ -164,6 +165,20 @@ TEST(Calibration, CovarianceIsTheInverseOfTheWeightedNormalMatrix) {
   }
   ASSERT_EQ(out.correlations.size(), 3u);
   EXPECT_NEAR(out.correlations[1].correlation, covariance(0, 1) / std::sqrt(covariance(0, 0) * covariance(1, 1)), 1e-6);
+}
+
+// A fit stopped by study.max_iterations before it converged says so where a script
+// looks (the outcome's message: run.json's outcome, Results.message), and keeps the
+// inputs it reached (a usable fit, not a solver failure).
+TEST(Calibration, AFitStoppedShortSaysSo) {
+  const TempScene data(rig_data(rig_points(kPoints)), "", ".csv");
+  const StudyOutcome out = calibrate(calibration_scene(data.path()) + "  max_iterations: 1\n", 1);
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  EXPECT_NE(out.message.find("the calibration stopped before converging"), std::string::npos) << out.message;
+  ASSERT_EQ(out.calibration.size(), 2u);
+  // One step from the start: moved, and not yet at the truth.
+  EXPECT_NE(out.calibration[0].fitted, out.calibration[0].start);
+  EXPECT_GT(std::abs(out.calibration[0].fitted - kTruth[0]), 1e-4 * kTruth[0]);
 }
 
 // One torque reading cannot determine two inputs: the fit says which combination it

@@ -334,6 +334,7 @@ struct Study {
   std::vector<MeasuredPoint> measurements;
   std::vector<FittedInput> fitted;
   std::array<double, kMeasuredQuantities> measurement_sd{};
+  int fit_iterations = 50;  // calibration: Levenberg-Marquardt iterations at most (study.max_iterations)
 };
 
 struct Output {
