@@ -35,12 +35,6 @@ void Assembler::leave_tape() {
   tape_ = nullptr;
 }
 
-void Assembler::record_slots(SlotTape* tape) {
-  tape_ = nullptr;
-  recording_ = tape;
-  if (recording_) recording_->clear();
-}
-
 void Assembler::add_derivative_searched(Index row, Index col, double value) {
   if (mode_ == Mode::structure) {
     entries_.emplace_back(std::int32_t(row), std::int32_t(col));

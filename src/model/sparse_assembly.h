@@ -89,8 +89,6 @@ class Assembler {
   // The pattern of the entries recorded, and, given `tape`, the slot tape of the
   // structure pass's sequence in it.
   SparsePattern finish_structure(SlotTape* tape = nullptr) const;
-  // Records the slot tape of this (value, searching) pass into *tape, cleared first.
-  void record_slots(SlotTape* tape);
   // True while every entry so far has been placed by the slot tape.
   bool on_tape() const { return tape_ != nullptr; }
 

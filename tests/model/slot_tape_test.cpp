@@ -30,8 +30,7 @@ SlotTape recorded_tape(const SparsePattern& p, std::vector<double>& jacobian) {
   std::vector<double> r(std::size_t(p.rows));
   jacobian.assign(std::size_t(p.nnz()), 0.0);
   SlotTape tape;
-  Assembler recorder(&p, r, jacobian);
-  recorder.record_slots(&tape);
+  Assembler recorder(&p, r, jacobian, nullptr, &tape);  // no tape: the pass records its own
   add_sequence(recorder);
   return tape;
 }
