@@ -50,7 +50,10 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   };
   f1.shear_weight = weight(scene_.washer.roughness.rq, scene_.carrier.roughness.rq);
   f2.shear_weight = weight(scene_.gear.roughness.rq, scene_.washer.roughness.rq);
-  if (const std::optional<Grooves>& g = scene_.washer.grooves) (g->film == 1 ? f1 : f2).relief = FaceRelief(*g, nt);
+  if (const std::optional<Grooves>& g = scene_.washer.grooves) {
+    Film& grooved = g->film == 1 ? f1 : f2;
+    grooved.relief = FaceRelief(*g, grooved.mesh);
+  }
   if (const std::optional<OilSupply>& supply = scene_.lubricant.supply) {
     Film& fed = film1_slides ? f1 : f2;
     if (supply->feeds_bore()) fed.inner_edge_pressure = supply->pressure;

@@ -94,9 +94,9 @@ class BearingModel final : public SegregatedSystem {
   std::vector<double> interpolated_from(const BearingModel& source, std::span<const double> u) const;
   // The same bearing as now (load, speed and every curve parameter) on another mesh.
   std::unique_ptr<BearingModel> on_mesh(int radial_nodes, int circumferential_nodes) const;
-  // Whether a grid of that many circumferential nodes holds the washer's grooves (every
-  // edge on a node line); on_mesh needs one that does.
-  bool resolves_grooves_on(int circumferential_nodes) const;
+  // Whether a grid of that many radial and circumferential nodes holds the washer's
+  // grooves (every edge, a dam's too, on a node line); on_mesh needs one that does.
+  bool resolves_grooves_on(int radial_nodes, int circumferential_nodes) const;
 
   BearingState describe(std::span<const double> u) const;
   // The fields of state u on every film's grid, film 1 first (film_fields.cpp).

@@ -88,7 +88,7 @@ struct Film {
   // An interior node on a fed groove: its pressure unknown holds the supply's (and its
   // content is full), a boundary of the lands' Reynolds equation like the edges.
   bool fed_node(int i, int j) const {
-    return groove_pressure && i > 0 && i < mesh.radial_nodes() - 1 && relief.on_groove(j);
+    return groove_pressure && i > 0 && i < mesh.radial_nodes() - 1 && relief.on_groove(i, j);
   }
 
  private:

@@ -79,14 +79,15 @@ FaceFlow FilmFaceFlows::evaluate(const ReynoldsFace& f) const {
   const double x = f.r * std::cos(f.theta), y = f.r * std::sin(f.theta);
   out.na = m.node(f.ia, f.ja);
   out.nb = m.node(f.ib, f.jb);
-  // A face lies midway between its two nodes: the shape is their mean there. A
-  // circumferential face lies within one column of the relief; a radial face on a
-  // relief's edge has half its length on either side, each with its own gap
-  // (docs/physics.md section 14), so its conductance is the mean of the two.
+  // A face lies midway between its two nodes: the shape is their mean there. A face on
+  // a relief's edge has half its length on either side, each with its own gap
+  // (docs/physics.md section 14): a radial face beside a groove's or step's edge line, a
+  // circumferential face on a dam's line. Its conductance is the mean of the two halves',
+  // and so is the gap the moving face carries across it.
   FaceRelief::Halves relief{0.0, 0.0};
   if (!film_.relief.flat())
-    relief = out.circumferential ? FaceRelief::Halves{film_.relief.in_column(f.ja, 0.5), film_.relief.in_column(f.ja, 0.5)}
-                                 : film_.relief.node_halves(f.ja);
+    relief = out.circumferential ? film_.relief.across_row(f.ia, f.ja)
+                                 : film_.relief.across_line(std::min(f.ia, f.ib), f.ja);
   const double smooth =
       plane_.at(x, y) + (deformed ? 0.5 * (delta_[std::size_t(out.na)] + delta_[std::size_t(out.nb)]) : 0.0);
   const double h = smooth + relief.before;
@@ -97,7 +98,11 @@ FaceFlow FilmFaceFlows::evaluate(const ReynoldsFace& f) const {
     const Conductance other = conductance(smooth + relief.after, t_face);
     g = {0.5 * (g.g + other.g), 0.5 * (g.dg_dh + other.dg_dh), 0.5 * (g.dg_dt + other.dg_dt)};
   }
-  const ValueSlope carried = out.circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
+  ValueSlope carried = out.circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
+  if (out.circumferential && relief.after != relief.before) {
+    const ValueSlope other = carried_gap(smooth + relief.after);
+    carried = {0.5 * (carried.value + other.value), 0.5 * (carried.slope + other.slope)};
+  }
   // Mass-conserving cavitation (docs/physics.md section 12): the Couette flux carries the
   // film content θ of its upwind node (θ = 1 on the flooded edges and grooves).
   out.upwind = ReynoldsOperator::upwind_node(f, omega);

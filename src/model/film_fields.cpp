@@ -26,8 +26,10 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
         // On a relief's edge the node's gap is its control volume's mean (face_relief.h).
         double h = film.node_gap_polar(q, r, m.angle(j)) + (deforms() ? shape_at(u, film, int(k)) : 0.0);
         if (!film.relief.flat()) {
-          const FaceRelief::Halves halves = film.relief.node_halves(j);
-          h += 0.5 * (halves.before + halves.after);
+          const FaceRelief::NodeParts parts = film.relief.node_parts(i, j);
+          double mean = 0.0;
+          for (int p = 0; p < parts.count; ++p) mean += parts.share[std::size_t(p)] * parts.relief[std::size_t(p)];
+          h += mean;
         }
         f.gap[k] = h;
         f.pressure[k] = pressure_at(u, film, i, j);

@@ -142,8 +142,8 @@ FilmCell FilmLoadPass::cell(int i, int j) const {
   }
   if (!film.relief.flat()) {
     c.relief = true;
-    c.relief_start = film.relief.column_start(j);
-    c.relief_end = film.relief.column_end(j);
+    c.relief_start = film.relief.cell_start(i, j);
+    c.relief_end = film.relief.cell_end(i, j);
     c.gap_range.least += std::min(c.relief_start, c.relief_end);
     c.gap_range.greatest += std::max(c.relief_start, c.relief_end);
   }

@@ -111,15 +111,13 @@ double BearingModel::least_gap(std::span<const double> u, const Film& film) cons
   const bool relief = !film.relief.flat();
   if (!deforms() && !relief) return plane.least_within(m.outer_radius());
   // A relief (≥ 0, docs/physics.md section 14) moves the least gap off a groove onto the
-  // land beside it, whose edge is a node line: the nodes with their lower side's relief.
+  // land beside it, whose edge is a node line: the nodes with their least side's relief.
   const std::vector<double> delta = deforms() ? node_shapes(u, film) : std::vector<double>(std::size_t(m.node_count()), 0.0);
-  auto lower_side = [&](int j) {
-    return relief ? std::min(film.relief.column_end(m.wrap(j - 1)), film.relief.column_start(j)) : 0.0;
-  };
+  auto lower_side = [&](int i, int j) { return relief ? film.relief.least_at_node(i, j) : 0.0; };
   double least = INFINITY;
   for (int i = 0; i < m.radial_nodes(); ++i)
     for (int j = 0; j < m.circumferential_nodes(); ++j)
-      least = std::min(least, film.node_gap_polar(q, m.radius(i), m.angle(j)) + delta[std::size_t(m.node(i, j))] + lower_side(j));
+      least = std::min(least, film.node_gap_polar(q, m.radius(i), m.angle(j)) + delta[std::size_t(m.node(i, j))] + lower_side(i, j));
   if (plane.a == 0.0 && plane.b == 0.0) return least;
   const double two_pi = 2 * std::numbers::pi;
   double theta = std::atan2(-plane.b, -plane.a);
@@ -130,7 +128,7 @@ double BearingModel::least_gap(std::span<const double> u, const Film& film) cons
   const int rim = m.radial_nodes() - 1;
   const double rim_delta =
       (1 - t) * delta[std::size_t(m.node(rim, j))] + t * delta[std::size_t(m.node(rim, m.wrap(j + 1)))];
-  return std::min(least, film.node_gap_polar(q, m.outer_radius(), theta) + rim_delta + (relief ? film.relief.in_column(j, t) : 0.0));
+  return std::min(least, film.node_gap_polar(q, m.outer_radius(), theta) + rim_delta + (relief ? film.relief.in_cell(rim - 1, j, t) : 0.0));
 }
 
 double BearingModel::dishing_curvature(std::span<const double> u) const {

@@ -139,15 +139,17 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
         const Index row = film.temperature_row(n);
         const double scale = layout.row_scale(row);
         const double x = node.x, y = node.y;
-        // A node on a relief's edge (docs/physics.md section 14): the two halves of its
-        // control volume conduct side by side, each through its own gap.
-        const FaceRelief::Halves relief = film.relief.flat() ? FaceRelief::Halves{0.0, 0.0} : film.relief.node_halves(j);
+        // A node on a relief's edge (docs/physics.md section 14): the parts of its control
+        // volume conduct side by side, each through its own gap.
+        const FaceRelief::NodeParts relief = film.relief.flat() ? FaceRelief::NodeParts{} : film.relief.node_parts(i, j);
         const double smooth = film.node_gap(q, x, y) + (deforms ? model.shape_at(u, film, n) : 0.0);
         const std::array<double, 3> dh = film.gap_gradient(x, y);
         const LinearForm& shape = model.shape_form(film, n);
-        const ValueSlope gap = average_gap(smooth + relief.before, film.sigma);
-        const bool straddles = relief.after != relief.before;
-        const ValueSlope other_gap = straddles ? average_gap(smooth + relief.after, film.sigma) : gap;
+        std::array<ValueSlope, 4> part_gap{};
+        for (int p = 0; p < relief.count; ++p)
+          part_gap[std::size_t(p)] = average_gap(smooth + relief.relief[std::size_t(p)], film.sigma);
+        const ValueSlope gap = part_gap[0];
+        const bool straddles = relief.count > 1;
         const double tf = model.temperature_of(u, row);
 
         for (std::size_t side = 0; side < 2; ++side) {
@@ -160,11 +162,16 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
           double dflow_dh = -flow / res * gap.slope / (2.0 * k_oil);
           double conductance = area / res;
           if (straddles) {
-            const double other = other_gap.value / (2.0 * k_oil) + body;
-            conductance = 0.5 * area * (1.0 / res + 1.0 / other);
+            double per_area = 0.0, slope = 0.0;  // Σ share/R and Σ share·(dh̄T/dh)/R²
+            for (int p = 0; p < relief.count; ++p) {
+              const ValueSlope& part = part_gap[std::size_t(p)];
+              const double r = part.value / (2.0 * k_oil) + body, share = relief.share[std::size_t(p)];
+              per_area += share / r;
+              slope += share * (part.slope / (r * r));
+            }
+            conductance = area * per_area;
             flow = conductance * (tf - ts);
-            dflow_dh = -0.5 * area * (tf - ts) * (gap.slope / (res * res) + other_gap.slope / (other * other)) /
-                       (2.0 * k_oil);
+            dflow_dh = -area * (tf - ts) * slope / (2.0 * k_oil);
           }
           a.add_residual(row, -scale * flow);
           if (jac) {
@@ -267,9 +274,12 @@ double BearingModel::hottest_face_temperature(std::span<const double> u, Compone
         const double h = film.node_gap(q, r * std::cos(th), r * std::sin(th)) + (deforms() ? shape_at(u, film, n) : 0.0);
         const double body = face_temperature(u, id, m.radius(i), j, nullptr);
         const double tf = temperature_of(u, film.temperature_row(n));
-        // Beside a relief's edge the land's half conducts more: the hotter face is under it.
-        const FaceRelief::Halves halves = film.relief.flat() ? FaceRelief::Halves{0.0, 0.0} : film.relief.node_halves(j);
-        const double relief = std::min(halves.before, halves.after);
+        // Beside a relief's edge the land's part conducts more: the hotter face is under it.
+        double relief = 0.0;
+        if (!film.relief.flat()) {
+          const FaceRelief::NodeParts parts = film.relief.node_parts(i, j);
+          relief = *std::min_element(parts.relief.begin(), parts.relief.begin() + parts.count);
+        }
         const double path = average_gap(h + relief, film.sigma).value / (2.0 * k_oil) + own;
         hottest = std::max(hottest, body + (tf - body) * own / path);
       }

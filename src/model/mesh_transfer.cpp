@@ -106,9 +106,10 @@ std::vector<double> BearingModel::interpolated_from(const BearingModel& source, 
   return out;
 }
 
-bool BearingModel::resolves_grooves_on(int circumferential_nodes) const {
+bool BearingModel::resolves_grooves_on(int radial_nodes, int circumferential_nodes) const {
   return !scene_.washer.grooves ||
-         grooves_on_grid(*scene_.washer.grooves, scene_.mesh.circumferential_nodes, circumferential_nodes);
+         grooves_on_grid(*scene_.washer.grooves, {scene_.mesh.radial_nodes, scene_.mesh.circumferential_nodes},
+                         {radial_nodes, circumferential_nodes});
 }
 
 std::unique_ptr<BearingModel> BearingModel::on_mesh(int radial_nodes, int circumferential_nodes) const {
@@ -119,11 +120,12 @@ std::unique_ptr<BearingModel> BearingModel::on_mesh(int radial_nodes, int circum
   scene.mesh.circumferential_nodes = circumferential_nodes;
   if (scene.washer.grooves) {
     const std::optional<Grooves> g =
-        grooves_on_grid(*scene.washer.grooves, scene_.mesh.circumferential_nodes, circumferential_nodes);
+        grooves_on_grid(*scene.washer.grooves, {scene_.mesh.radial_nodes, scene_.mesh.circumferential_nodes},
+                        {radial_nodes, circumferential_nodes});
     if (!g)
-      throw InternalError(fmt::format("on_mesh: the grooves cannot lie on a grid of {} circumferential nodes "
+      throw InternalError(fmt::format("on_mesh: the grooves cannot lie on a grid of {} × {} nodes "
                                       "(resolves_grooves_on says which can hold them)",
-                                      circumferential_nodes));
+                                      radial_nodes, circumferential_nodes));
     scene.washer.grooves = g;
   }
   auto model = std::make_unique<BearingModel>(scene);

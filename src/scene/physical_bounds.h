@@ -80,6 +80,8 @@ inline constexpr Range viscosity_scale{.low = 0.0, .low_open = true, .high = 1e4
                                        .reason = "a factor on the oil's viscosity, e.g. 0.5 for half as viscous"};
 
 // The washer's grooves (read_grooves.cpp).
+inline constexpr Range dam_radius{.low = 0.0, .low_open = true, .high = 1.0,
+                                  .reason = "a radius on the washer's face (its film's radii are checked once the grooves are placed)"};
 inline constexpr Range groove_depth{.low = 1e-7, .high = 5e-3,
                                     .reason = "a groove from 0.1 um to 5 mm deep (thrust washers: 10 to 100 um)"};
 

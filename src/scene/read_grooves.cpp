@@ -40,6 +40,24 @@ Land read_land(const MapReader& grooves) {
   return land;
 }
 
+// A groove closed short of one rim: `closed_at` the dam's radius, `open_at` the rim the
+// groove runs from (the bore by default, where a transmission's oil comes from).
+std::optional<GrooveDam> read_dam(const MapReader& grooves) {
+  if (!grooves.has("closed_at")) {
+    if (grooves.has("open_at")) {
+      const Node node = grooves.get("open_at", "");
+      node.fail(fmt::format("{}: a groove open at one rim needs the radius it is closed at (closed_at: e.g. 22 mm); "
+                            "without closed_at every groove runs from rim to rim",
+                            node.path()));
+    }
+    return std::nullopt;
+  }
+  GrooveDam dam;
+  dam.written_radius = grooves.quantity("closed_at", si::length, bounds::dam_radius);
+  dam.open_at = read_choice(grooves, "open_at", kGrooveOpenings, GrooveOpening::inner_radius);
+  return dam;
+}
+
 // The scene's `lubricant.supply.at`, where a supply into the grooves is refused.
 [[noreturn]] void refuse_groove_supply(const MapReader& scene, const std::string& why) {
   const MapReader oil = scene.map("lubricant", {std::begin(kLubricantKeys), std::end(kLubricantKeys)});
@@ -117,7 +135,7 @@ void read_grooves(const MapReader& scene, Scene& out) {
     if (feeds_grooves) refuse_groove_supply(scene, "grooves to feed (geometry.washer.grooves)");
     return;
   }
-  const MapReader grooves = washer.map("grooves", {"count", "width", "depth", "face", "land"});
+  const MapReader grooves = washer.map("grooves", {"count", "width", "depth", "face", "land", "closed_at", "open_at"});
   // The relief is at rest in the load frame only where the washer is: with film 2
   // sliding the washer stays with the carrier (docs/physics.md section 14).
   if (out.operating.sliding != SlidingFilm::washer_gear) {
@@ -135,6 +153,7 @@ void read_grooves(const MapReader& scene, Scene& out) {
     refuse_groove_supply(scene, "the grooves in the sliding film's face (face: film_2 with sliding: washer_gear)");
   g.depth = grooves.quantity("depth", si::length, bounds::groove_depth);
   g.land = read_land(grooves);
+  g.closed_at = read_dam(grooves);
   g.width = groove_angle(grooves.get("width", "a length (e.g. 2 mm) or an angle (e.g. 10 deg)"),
                          0.5 * (out.washer.inner_radius + out.washer.outer_radius));
   if (const std::optional<GroovesNotPlaced> not_placed = place_grooves(out, g)) {
@@ -179,8 +198,39 @@ std::optional<GroovesNotPlaced> place_grooves(Scene& scene, Grooves g) {
     const int most = g.land.shape == LandShape::step ? land_cells - 1 : land_cells;
     g.land.fraction = double(std::clamp(int(std::lround(g.land.fraction * land_cells)), 1, most)) / land_cells;
   }
+  if (g.closed_at) {
+    // The dam on the grooved film's nearest radial node line, with at least one cell of
+    // groove before it and one of dam after it.
+    GrooveDam& dam = *g.closed_at;
+    const std::array<double, 2> rims = grooved_film_radii(scene, g.film);
+    const int last = mesh.radial_nodes - 1;
+    const double dr = (rims[1] - rims[0]) / last;
+    const bool inner = dam.open_at == GrooveOpening::inner_radius;
+    if (!(dam.written_radius > rims[0] && dam.written_radius < rims[1]))
+      return GroovesNotPlaced{"closed_at", fmt::format("a groove closed at {:.4g} mm would end off the grooved film, "
+                                                       "which spans the radii {:.4g} to {:.4g} mm; the dam must lie "
+                                                       "between them",
+                                                       dam.written_radius * 1e3, rims[0] * 1e3, rims[1] * 1e3)};
+    const int line = int(std::lround((dam.written_radius - rims[0]) / dr));
+    if (line < 1 || line > last - 1)
+      return GroovesNotPlaced{
+          "closed_at",
+          fmt::format("a groove open at the {} radius and closed at {:.4g} mm leaves {} on the grid of {} radial "
+                      "nodes (cells of {:.4g} mm): move the dam at least a cell from the rims, or refine "
+                      "mesh.radial_nodes",
+                      inner ? "inner" : "outer", dam.written_radius * 1e3,
+                      (line < 1) == inner ? "no cell of groove" : "no cell of dam", mesh.radial_nodes, dr * 1e3)};
+    dam.line = line;
+    dam.radius = rims[0] + line * dr;
+  }
   scene.washer.grooves = g;
   return std::nullopt;
+}
+
+std::array<double, 2> grooved_film_radii(const Scene& scene, int film) {
+  if (film == 1) return {scene.washer.inner_radius, scene.washer.outer_radius};
+  return {std::max(scene.washer.inner_radius, scene.gear.inner_radius),
+          std::min(scene.washer.outer_radius, scene.gear.outer_radius)};
 }
 
 std::optional<GroovesNotPlaced> place_groove_parameter(Scene& scene, MapParameter p, double value) {

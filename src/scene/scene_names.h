@@ -28,6 +28,9 @@ inline constexpr EnumNames<FaceExpansion, 2> kFaceExpansions{
 inline constexpr EnumNames<SupplyInlet, 3> kSupplyInlets{
     {"inner_radius", "grooves", "both"}, {SupplyInlet::inner_radius, SupplyInlet::grooves, SupplyInlet::both}};
 
+inline constexpr EnumNames<GrooveOpening, 2> kGrooveOpenings{
+    {"inner_radius", "outer_radius"}, {GrooveOpening::inner_radius, GrooveOpening::outer_radius}};
+
 // The lubricant's keys: read with the operating point, and again by the grooves, which
 // check that a supply into the grooves has grooves to feed.
 inline constexpr std::string_view kLubricantKeys[] = {"conductivity", "viscosity", "max_temperature",

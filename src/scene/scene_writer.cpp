@@ -81,6 +81,12 @@ void write_grooves(Writer& w, const Grooves& g, const Scene& s) {
           fmt::format("on the grid: {} cells of the {} round it, {:.6g} rad, {:.4g} mm at the mean radius", g.cells,
                       s.mesh.circumferential_nodes, g.width, 1e3 * g.width * mean_radius));
   w.entry(3, "depth", quantity(g.depth, "m"));
+  if (const std::optional<GrooveDam>& dam = g.closed_at) {
+    w.entry(3, "closed_at", quantity(dam->written_radius, "m"),
+            fmt::format("on the grid: radial line {} of the grooved film's {}, {:.4g} mm", dam->line,
+                        s.mesh.radial_nodes, 1e3 * dam->radius));
+    w.entry(3, "open_at", std::string(kGrooveOpenings.name(dam->open_at)));
+  }
   if (g.land.shape == LandShape::flat) return;
   w.line(3, "land:");
   w.line(4, fmt::format("{}:", g.land.shape == LandShape::taper ? "taper" : "step"));

@@ -61,7 +61,7 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
   // washer's grooves.
   if (mesh_sequence_ && mesh.node_count() > kSequenceAbove && (mesh.radial_nodes() + 1) / 2 >= 5 &&
       (mesh.circumferential_nodes() + 1) / 2 >= 24 &&
-      model_.resolves_grooves_on((mesh.circumferential_nodes() + 1) / 2)) {
+      model_.resolves_grooves_on((mesh.radial_nodes() + 1) / 2, (mesh.circumferential_nodes() + 1) / 2)) {
     try {
       SteadyReport rep = solve_by_mesh_sequence(u);
       if (rep.converged) return rep;

@@ -81,7 +81,7 @@ TEST(Convection, TheAdiabaticLandBetweenFedGroovesWarmsTheOilAsTheClosedForm) {
 // Energy (docs/physics.md section 15): generated = conducted to ambient + carried out by
 // the oil, in every state of a load ramp, on the paper's washer (Reynolds cavitation, the
 // oil entering at the rims at ambient) and on a grooved washer fed at the bore and in its
-// grooves (JFO). Every heat row is solved to 1e-10 in kelvin of its node's reference
+// grooves (JFO), its grooves open to the rim and closed by a dam. Every heat row is solved to 1e-10 in kelvin of its node's reference
 // conductance, so the imbalance they leave is below 1e-8 of the heat generated; the oil
 // carries a share of it that the test requires to be positive.
 TEST(Convection, TheHeatBalanceClosesWithTheHeatTheOilCarries) {
@@ -91,7 +91,10 @@ TEST(Convection, TheHeatBalanceClosesWithTheHeatTheOilCarries) {
   testing::use_four_grooves(grooved);
   grooved.washer.grooves->land = {LandShape::taper, 4e-6, 0.5};
   grooved.lubricant.supply = OilSupply{0.5e5, SupplyInlet::both, paper.operating.ambient + 10.0, 0.7};
-  for (Scene s : {paper, grooved}) {
+  // The same grooves closed by a dam at radial line 2 of 5, open at the bore.
+  Scene dammed = grooved;
+  dammed.washer.grooves->closed_at = GrooveDam{GrooveOpening::inner_radius, 0.0, 0.0, 2};
+  for (Scene s : {paper, grooved, dammed}) {
     s.effects.convection = true;
     BearingModel model(s);
     std::vector<double> u;

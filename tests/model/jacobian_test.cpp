@@ -37,6 +37,7 @@ struct EffectSet {
   int grooved_film = 0;  // 1 or 2: three tapered-land grooves on that washer face (film 2 slides)
   bool fed = false;      // oil supplied at the bore and into the grooves
   bool convection = false;
+  bool dammed = false;   // the grooves closed at radial line 2 of 5, open at the bore
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -81,6 +82,8 @@ TEST_P(JacobianTest, MatchesCentralDifferences) {
     g.width = 2 * 2 * std::numbers::pi / 12;
     g.depth = 3e-6;
     g.land = {LandShape::taper, 1e-6, 0.5};
+    // A dam's line splits the control volumes and circumferential faces across it.
+    if (e.dammed) g.closed_at = GrooveDam{GrooveOpening::inner_radius, 0.0, 0.0, 2};
     s.washer.grooves = g;
   }
   if (e.fed) s.lubricant.supply = OilSupply{2e5, SupplyInlet::both, s.operating.ambient + 15.0};
@@ -202,7 +205,13 @@ INSTANTIATE_TEST_SUITE_P(
                                 CavitationModel::reynolds, 0, false, true},
                       EffectSet{"convection_fed_grooves_jfo_deformation", true, true, true, true, 545.0,
                                 CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
-                                FrictionLaw::empirical, CavitationModel::jfo, 2, true, true}),
+                                FrictionLaw::empirical, CavitationModel::jfo, 2, true, true},
+                      EffectSet{"dammed_grooves_all_effects", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
+                                FrictionLaw::empirical, CavitationModel::reynolds, 2, false, false, true},
+                      EffectSet{"dammed_fed_grooves_convection_jfo", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, false,
+                                FrictionLaw::empirical, CavitationModel::jfo, 2, true, true, true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

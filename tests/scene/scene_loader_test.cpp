@@ -316,6 +316,12 @@ INSTANTIATE_TEST_SUITE_P(
                                                         "depth: 50 um}}") +
                           "lubricant: {supply: {pressure: 2 bar, at: both}}\n"
                           "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n"},
+        RoundTripCase{"grooves_closed_by_a_dam_open_at_the_outer_rim",
+                      std::string(testing::kSceneBodies).replace(std::string(testing::kSceneBodies).find("thickness: 0.635 mm}"), 20,
+                                                        "thickness: 0.635 mm, grooves: {count: 8, width: 2 mm, "
+                                                        "depth: 50 um, closed_at: 9.6 mm, open_at: outer_radius}}") +
+                          "lubricant: {supply: {pressure: 2 bar, at: grooves}}\n"
+                          "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n"},
         RoundTripCase{"convection_with_a_cool_supply",
                       with_thermal(kMinimalScene, "thermal, convection") +
                           "lubricant: {density: 870 kg/m^3, specific_heat: 1950 J/(kg K), supply: {pressure: 1 bar, "

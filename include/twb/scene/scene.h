@@ -147,10 +147,21 @@ struct Land {
   double fraction = 0.0;  // of the land's angle, resolved to whole cells of the grid
 };
 
+// Where a groove ends short of a rim (docs/physics.md section 14): open at one rim, it
+// runs to the dam's radius, and the land continues across the rest of its column.
+enum class GrooveOpening { inner_radius, outer_radius };
+struct GrooveDam {
+  GrooveOpening open_at = GrooveOpening::inner_radius;
+  double written_radius = 0.0;  // m, as the scene gave it
+  double radius = 0.0;          // m, on the grooved film's node line `line` (resolved)
+  int line = 0;                 // the radial node line of the grooved film's grid the groove ends on
+};
+
 // Radial grooves in the washer's face on one film (docs/physics.md section 14), equally
-// spaced, from the inner to the outer radius, the first starting at θ = 0. Resolved so
-// that every edge lies on a node line: the circumferential node count is a multiple of
-// the count, and the width and the land's inlet are whole cells.
+// spaced, from the inner to the outer radius or from one rim to a dam, the first
+// starting at θ = 0. Resolved so that every edge lies on a node line: the circumferential
+// node count is a multiple of the count, the width and the land's inlet are whole cells,
+// and a dam lies on a radial node line.
 struct Grooves {
   int count = 0;
   int film = 2;        // the film whose washer face is grooved
@@ -159,6 +170,7 @@ struct Grooves {
   double depth = 0.0;  // m
   Land land;
   int cells = 0;       // of the grid, per groove (resolved)
+  std::optional<GrooveDam> closed_at{};  // rim to rim without
 };
 
 struct Component {
@@ -383,14 +395,19 @@ void set_roughness(Scene& scene, double rq);
 // The washer's grooves g (count, width as an angle, depth, land, face) placed on the
 // scene's grid (docs/physics.md section 14): the circumferential node count rounded to a
 // whole number of cells per groove pitch, the groove's and the shaped inlet's widths to
-// whole cells. Where they cannot be: which of the grooves' keys is at fault (`width`: a
-// groove at least as wide as its pitch; `depth`: at least as deep as the washer;
-// `count`: more nodes than allowed) and why; the scene is then unchanged.
+// whole cells, a dam's radius to a radial node line. Where they cannot be: which of the
+// grooves' keys is at fault (`width`: a groove at least as wide as its pitch; `depth`: at
+// least as deep as the washer; `count`: more nodes than allowed; `closed_at`: a dam
+// outside the grooved film or leaving no cell of groove or of dam) and why; the scene is
+// then unchanged.
 struct GroovesNotPlaced {
   const char* key;
   std::string why;
 };
 std::optional<GroovesNotPlaced> place_grooves(Scene& scene, Grooves g);
+// The inner and outer radius of the film whose washer face is grooved: the washer's
+// annulus for film 1, its overlap with the gear's for film 2 (docs/physics.md section 1).
+std::array<double, 2> grooved_film_radii(const Scene& scene, int film);
 // The scene's grooves with one property (a map's groove_count, groove_width or
 // groove_depth) set to `value`, placed anew from the width the scene gave.
 std::optional<GroovesNotPlaced> place_groove_parameter(Scene& scene, MapParameter p, double value);
