@@ -9,9 +9,10 @@ oil supplied.
 
 DIR holds one results directory per variant (flat, flat_convection, grooved, fed,
 fed_convection; those missing are skipped). Writes DIR/summary.csv and
-DIR/grooved_washers.png. Where DIR holds the maps over the grooves' count, width
-and depth (groove_count, groove_width, groove_depth), DIR/groove_parameters.csv and
-DIR/groove_parameters.png: the failure load and every criterion's load against each.
+DIR/grooved_washers.png. Where DIR holds the maps over the grooves' count, width,
+depth and a dam's radius (groove_count, groove_width, groove_depth, groove_dam),
+DIR/groove_parameters.csv and DIR/groove_parameters.png: the failure load and every
+criterion's load against each.
 Exit status: 0 done, 2 bad usage or no variant found.
 """
 import math
@@ -102,6 +103,7 @@ GROOVE_PARAMETERS = [
     ("groove_count", "groove_count", "number of grooves", 1.0),
     ("groove_width", "groove_width_rad", "groove width (deg, whole cells)", 180.0 / math.pi),
     ("groove_depth", "groove_depth_m", "groove depth (µm)", 1e6),
+    ("groove_dam", "geometry.washer.grooves.closed_at_m", "dam radius (mm; grooves open at the bore)", 1e3),
 ]
 # Every criterion's own load in distress.csv, and how the figure draws it.
 CRITERIA = [
