@@ -21,10 +21,11 @@ constexpr std::string_view kHeaderExample = "load [N], speed [rpm], torque [N m]
 // A column: the load, the speed or a measured quantity, and its unit's conversion to SI
 // (si = scale·v + offset: a temperature in degC has an offset).
 struct Column {
-  int what = -1;  // 0..3: MeasuredQuantity; kLoad, kSpeed
+  int what = -1;  // 0..3: MeasuredQuantity; kLoad, kSpeed, kAmbient; kSd + q: a reading's standard deviation
   double scale = 1.0, offset = 0.0;
 };
-constexpr int kLoad = 10, kSpeed = 11, kAmbient = 12;
+constexpr int kLoad = 10, kSpeed = 11, kAmbient = 12, kSd = 13, kWhats = kSd + int(kMeasuredQuantities);
+bool is_sd(int what) { return what >= kSd; }
 
 // The results' own column names, with their units.
 struct ResultsName {
@@ -39,6 +40,7 @@ constexpr ResultsName kResultsNames[] = {
     {"ambient_C", kAmbient, "degC"}, {"ambient_K", kAmbient, "K"}};
 
 const SiUnit& unit_of(int what) {
+  if (is_sd(what)) what -= kSd;
   if (what == kLoad) return si::force;
   if (what == kSpeed) return si::angular_speed;
   if (what == kAmbient) return si::temperature;
@@ -50,6 +52,7 @@ const SiUnit& unit_of(int what) {
 std::string allowed_names() {
   std::string names = "load, speed, ambient";
   for (std::string_view n : kMeasuredNames) names += fmt::format(", {}", n);
+  for (std::string_view n : kMeasuredNames) names += fmt::format(", {}_sd", n);
   return names;
 }
 
@@ -61,6 +64,11 @@ Column column_of(const CsvText& text, std::size_t line, const CsvField& field) {
   if (h.unit.empty()) {
     const auto known = std::find_if(std::begin(kResultsNames), std::end(kResultsNames),
                                     [&](const ResultsName& r) { return r.name == h.name; });
+    if (h.name == "f_eff_sd") {
+      // A ratio's spread is a ratio: no unit needed, as for f_eff itself.
+      c.what = kSd + int(MeasuredQuantity::f_eff);
+      return c;
+    }
     if (known == std::end(kResultsNames))
       text.fail(line, field.column,
                 fmt::format("the column '{}' gives no unit: name it {} with its unit in brackets, e.g. '{}'",
@@ -75,27 +83,32 @@ Column column_of(const CsvText& text, std::size_t line, const CsvField& field) {
   } else if (h.name == "ambient") {
     c.what = kAmbient;
   } else {
-    const auto q = std::find(std::begin(kMeasuredNames), std::end(kMeasuredNames), h.name);
+    const bool sd = h.name.size() > 3 && h.name.ends_with("_sd");
+    const std::string quantity = sd ? h.name.substr(0, h.name.size() - 3) : h.name;
+    const auto q = std::find(std::begin(kMeasuredNames), std::end(kMeasuredNames), quantity);
     if (q == std::end(kMeasuredNames))
       text.fail(line, field.column,
                 fmt::format("the column '{}' is none a calibration reads; the columns are {}", h.name, allowed_names()));
-    c.what = int(q - std::begin(kMeasuredNames));
+    c.what = int(q - std::begin(kMeasuredNames)) + (sd ? kSd : 0);
   }
   try {
     const SiUnit& si_unit = unit_of(c.what);
     c.offset = to_si("0 " + unit, si_unit);
     c.scale = to_si("1 " + unit, si_unit) - c.offset;
+    // A spread is a difference: a temperature's in degC is one in K (no offset).
+    if (is_sd(c.what)) c.offset = 0.0;
   } catch (const QuantityError& e) {
     text.fail(line, unit_at, fmt::format("the {} column's unit '{}': {}", h.name, unit, e.what()));
   }
   return c;
 }
 
-std::string_view name_of(int what) {
+std::string name_of(int what) {
   if (what == kLoad) return "load";
   if (what == kSpeed) return "speed";
   if (what == kAmbient) return "ambient";
-  return kMeasuredNames[std::size_t(what)];
+  if (is_sd(what)) return std::string(kMeasuredNames[std::size_t(what - kSd)]) + "_sd";
+  return std::string(kMeasuredNames[std::size_t(what)]);
 }
 
 }  // namespace
@@ -110,7 +123,7 @@ std::vector<MeasuredPoint> read_measurements(const std::string& path) {
                           kHeaderExample));
   const std::vector<CsvField> header = csv_fields(lines[k]);
   std::vector<Column> columns;
-  std::optional<std::size_t> seen[13];
+  std::optional<std::size_t> seen[kWhats];
   for (std::size_t c = 0; c < header.size(); ++c) {
     columns.push_back(column_of(text, k, header[c]));
     std::optional<std::size_t>& first = seen[columns.back().what];
@@ -123,6 +136,11 @@ std::vector<MeasuredPoint> read_measurements(const std::string& path) {
     if (!seen[needed])
       text.fail(k, 0, fmt::format("no {} column: every measured point needs its load and speed, e.g. '{}'",
                                   name_of(needed), kHeaderExample));
+  for (std::size_t q = 0; q < kMeasuredQuantities; ++q)
+    if (const std::optional<std::size_t>& sd = seen[kSd + int(q)]; sd && !seen[q])
+      text.fail(k, header[*sd].column,
+                fmt::format("a {}_sd column without a {} column: a standard deviation belongs to its readings",
+                            kMeasuredNames[q], kMeasuredNames[q]));
   if (std::none_of(seen, seen + kMeasuredQuantities, [](const auto& s) { return s.has_value(); }))
     text.fail(k, 0, fmt::format("no measured quantity: give at least one of torque, f_eff, T_mean, T_max, e.g. '{}'",
                                 kHeaderExample));
@@ -134,11 +152,31 @@ std::vector<MeasuredPoint> read_measurements(const std::string& path) {
       text.fail(k, 0, fmt::format("a row has one field a column ({}); this one has {}", header.size(), row.size()));
     MeasuredPoint& p = points.emplace_back();
     p.values.fill(std::numeric_limits<double>::quiet_NaN());
+    p.sd.fill(std::numeric_limits<double>::quiet_NaN());
     p.line = int(k) + 1;
     bool measured = false;
     for (std::size_t c = 0; c < row.size(); ++c) {
       const Column& col = columns[c];
-      const std::string_view name = name_of(col.what);
+      const std::string name = name_of(col.what);
+      if (is_sd(col.what)) {
+        // With a quantity's sd column, each of its readings carries its own.
+        const std::size_t q = std::size_t(col.what - kSd);
+        const bool read = !row[*seen[q]].text.empty();
+        if (row[c].text.empty() != !read)
+          text.fail(k, row[c].column,
+                    read ? fmt::format("the {} reading has no standard deviation: with a {} column every reading of "
+                                       "{} gives its own",
+                                       kMeasuredNames[q], name, kMeasuredNames[q])
+                         : fmt::format("a standard deviation for no {} reading: leave the field empty where the "
+                                       "point does not measure {}",
+                                       kMeasuredNames[q], kMeasuredNames[q]));
+        if (!read) continue;
+        const double sd = col.scale * text.number(k, row[c], name);
+        if (!(sd > 0.0))
+          text.fail(k, row[c].column, fmt::format("the {} '{}' must be positive", name, row[c].text));
+        p.sd[q] = sd;
+        continue;
+      }
       // A quantity not measured here; the scene's ambient where the point gives none.
       if (row[c].text.empty() && (col.what < int(kMeasuredQuantities) || col.what == kAmbient)) continue;
       const double value = col.scale * text.number(k, row[c], name) + col.offset;

@@ -4,8 +4,10 @@
 //     surfaces.washer.Rq: {start: 0.4 um, lower: 0.1 um, upper: 1.5 um}
 //     friction.boundary_coefficient: {lower: 0.02, upper: 0.3}    # start: the scene's value
 //   sd: {torque: 0.01 N m, T_mean: 2 K}   # each measured quantity's standard deviation
-// Each fitted value in the input's own kind of unit, its bounds ones the scene accepts;
-// `sd` for every quantity the data measure or for none.
+// Each fitted value in the input's own kind of unit, its bounds ones the scene accepts.
+// A standard deviation for every quantity the data measure (each reading's own, from a
+// `<quantity>_sd` column of the data, or one for all its readings in `sd`), or for none
+// (a relative fit).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -85,25 +87,42 @@ void read_calibration(const MapReader& scene, Scene& out) {
     s.fitted.push_back(read_fitted(entry, input, out));
   }
 
-  // Which quantities the data measure; `sd` for all of them or for none.
-  std::array<bool, kMeasuredQuantities> measured{};
+  // Which quantities the data measure, and which with each reading's own deviation; a
+  // deviation for every measured quantity (from the data or `sd`, not both) or for none.
+  std::array<bool, kMeasuredQuantities> measured{}, own_sd{};
   for (const MeasuredPoint& p : s.measurements)
-    for (std::size_t q = 0; q < kMeasuredQuantities; ++q) measured[q] = measured[q] || !std::isnan(p.values[q]);
-  if (!study.has("sd")) return;
+    for (std::size_t q = 0; q < kMeasuredQuantities; ++q) {
+      measured[q] = measured[q] || !std::isnan(p.values[q]);
+      own_sd[q] = own_sd[q] || !std::isnan(p.sd[q]);
+    }
+  if (!study.has("sd")) {
+    const bool any = std::any_of(own_sd.begin(), own_sd.end(), [](bool b) { return b; });
+    for (std::size_t q = 0; q < kMeasuredQuantities; ++q)
+      if (any && measured[q] && !own_sd[q])
+        data.fail(fmt::format("{}: the data give their readings' standard deviations for some quantities but not "
+                              "for {}: give a {}_sd column, or study.sd: {{{}: ...}}, so that every reading is "
+                              "weighed by its deviation (or give none, for a relative fit)",
+                              data.path(), kMeasuredNames[q], kMeasuredNames[q], kMeasuredNames[q]));
+    return;
+  }
   const MapReader sd = study.map("sd", {std::begin(kMeasuredNames), std::end(kMeasuredNames)});
   const SiUnit* units[] = {&si::torque, &si::dimensionless, &si::temperature, &si::temperature};
   for (std::size_t q = 0; q < kMeasuredQuantities; ++q) {
     const std::string key(kMeasuredNames[q]);
     if (sd.has(key)) {
-      if (!measured[q]) {
+      if (!measured[q] || own_sd[q]) {
         const Node node = sd.get(key, "");
-        node.fail(fmt::format("{}: the data measure no {}; leave it out", node.path(), key));
+        node.fail(own_sd[q] ? fmt::format("{}: the data give each {} reading its own standard deviation ({}_sd); "
+                                          "leave it out",
+                                          node.path(), key, key)
+                            : fmt::format("{}: the data measure no {}; leave it out", node.path(), key));
       }
       s.measurement_sd[q] = read_spread(sd, key.c_str(), *units[q], "the measurement's standard deviation");
-    } else if (measured[q]) {
+    } else if (measured[q] && !own_sd[q]) {
       sd.node().fail(fmt::format("{}: no standard deviation for {}, which the data measure; give one for every "
-                                 "measured quantity, or leave sd out to fit relative residuals",
-                                 sd.node().path(), key));
+                                 "measured quantity (here or as a {}_sd column of the data), or leave sd out to fit "
+                                 "relative residuals",
+                                 sd.node().path(), key, key));
     }
   }
 }

@@ -127,7 +127,13 @@ void run_calibration(BearingModel& model, StudyOutcome& out, const ProgressRepor
   const std::size_t n = st.fitted.size();
 
   std::vector<Reading> readings;
-  const bool relative = std::all_of(st.measurement_sd.begin(), st.measurement_sd.end(), [](double s) { return s == 0.0; });
+  // Relative where neither the scene nor the data give a deviation (the scene checked
+  // that every measured quantity has one, or none does).
+  const bool relative =
+      std::all_of(st.measurement_sd.begin(), st.measurement_sd.end(), [](double s) { return s == 0.0; }) &&
+      std::all_of(st.measurements.begin(), st.measurements.end(), [](const MeasuredPoint& p) {
+        return std::all_of(p.sd.begin(), p.sd.end(), [](double s) { return std::isnan(s); });
+      });
   for (std::size_t i = 0; i < st.measurements.size(); ++i)
     for (std::size_t q = 0; q < kMeasuredQuantities; ++q) {
       const double m = st.measurements[i].values[q];
@@ -143,14 +149,16 @@ void run_calibration(BearingModel& model, StudyOutcome& out, const ProgressRepor
         if (!(size > 0.0)) {
           out.solver_failed = true;
           out.message = fmt::format("the reading of {} on line {} is {}: a relative fit cannot weigh it; give each "
-                                    "quantity's standard deviation (study.sd)",
+                                    "quantity's standard deviation (study.sd, or a <quantity>_sd column of the data)",
                                     kColumns[q], st.measurements[i].line, q >= 2 ? "the ambient temperature" : "zero");
           return;
         }
         r.weight = 1.0 / size;
       } else {
-        r.sd = st.measurement_sd[q];
-        r.weight = 1.0 / st.measurement_sd[q];
+        // The reading's own deviation where the data give it, else its quantity's.
+        const double own = st.measurements[i].sd[q];
+        r.sd = std::isnan(own) ? st.measurement_sd[q] : own;
+        r.weight = 1.0 / *r.sd;
       }
     }
   const std::size_t m = readings.size();

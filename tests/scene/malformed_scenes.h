@@ -159,6 +159,8 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"reliability_no_inputs", 14, 11, {"study.inputs: no uncertain inputs; give a map from input paths to distributions"}},
     {"calibration_start_outside_bounds", 14, 33, {"study.fit.geometry.gear.tilt.start: the fit's start 0.003 rad lies outside its bounds [0.0005, 0.0025] rad"}},
     {"calibration_sd_missing", 16, 7, {"study.sd: no standard deviation for T_mean, which the data measure", "or leave sd out to fit relative residuals"}},
+    {"calibration_own_sd_partial", 13, 9, {"study.data: the data give their readings' standard deviations for some quantities but not for T_mean", "give a T_mean_sd column, or study.sd: {T_mean: ...}"}},
+    {"calibration_sd_twice", 16, 16, {"study.sd.torque: the data give each torque reading its own standard deviation (torque_sd); leave it out"}},
     {"calibration_fits_the_load", 14, 21, {"study.fit.operating.load: each measured point has its own load; it is not fitted"}},
     {"calibration_data_missing", 12, 9, {"study.data: cannot read the measurements", "no_such_rig.csv': no such regular file"}},
     {"calibration_fits_the_points_ambient", 14, 24, {"study.fit.operating.ambient: the data give measured points their own ambient temperature; it is not fitted"}},

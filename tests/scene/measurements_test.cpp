@@ -53,6 +53,23 @@ TEST(Measurements, TheResultsOwnColumns) {
   EXPECT_NEAR(p[0].values[std::size_t(MeasuredQuantity::T_max)], 313.15, 1e-12);
 }
 
+// Each reading's own standard deviation: a `<quantity>_sd` column in a unit of its
+// quantity's kind, a temperature's a difference (1 degC = 1 K, no offset), f_eff's
+// without one; NaN for the quantities without such a column and where a row measures none.
+TEST(Measurements, EachReadingsOwnDeviation) {
+  const std::vector<MeasuredPoint> p =
+      read("load [N], speed [rpm], torque [N m], torque_sd [N mm], T_mean [degC], T_mean_sd [degC], f_eff, f_eff_sd\n"
+           "150, 3000, 0.121, 2, 94.2, 1.5, 0.04, 0.002\n"
+           "300, 3000, , , 101.5, 0.5, 0.05, 0.001\n");
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_DOUBLE_EQ(p[0].sd[std::size_t(MeasuredQuantity::torque)], 2e-3);
+  EXPECT_DOUBLE_EQ(p[0].sd[std::size_t(MeasuredQuantity::T_mean)], 1.5);
+  EXPECT_DOUBLE_EQ(p[1].sd[std::size_t(MeasuredQuantity::T_mean)], 0.5);
+  EXPECT_DOUBLE_EQ(p[0].sd[std::size_t(MeasuredQuantity::f_eff)], 0.002);
+  EXPECT_TRUE(std::isnan(p[1].sd[std::size_t(MeasuredQuantity::torque)]));  // no torque read there
+  EXPECT_TRUE(std::isnan(p[0].sd[std::size_t(MeasuredQuantity::T_max)]));   // no column
+}
+
 struct Fault {
   const char* text;
   int line, column;
@@ -72,6 +89,11 @@ TEST(Measurements, FaultsAreLocated) {
       {"load [N], speed [rpm], torque [N m]\n-1, 2, 0.1\n", 2, 1, "the load '-1' must be positive"},
       {"load [N], speed [rpm], torque [N m]\n1, 2, \n", 2, 1, "the row measures nothing"},
       {"load [N], speed [rpm], T_mean [degC]\n1, 2, -300\n", 2, 7, "the T_mean '-300' must be positive"},
+      {"load [N], speed [rpm], torque [N m], T_mean_sd [K]\n1, 2, 3, 1\n", 1, 38, "a T_mean_sd column without a T_mean column"},
+      {"load [N], speed [rpm], torque [N m], torque_sd [K]\n1, 2, 3, 1\n", 1, 49, "the torque_sd column's unit 'K'"},
+      {"load [N], speed [rpm], torque [N m], torque_sd [N m]\n1, 2, 3, \n", 2, 10, "the torque reading has no standard deviation"},
+      {"load [N], speed [rpm], torque [N m], T_mean [K], torque_sd [N m]\n1, 2, , 300, 0.1\n", 2, 14, "a standard deviation for no torque reading"},
+      {"load [N], speed [rpm], torque [N m], torque_sd [N m]\n1, 2, 3, 0\n", 2, 10, "the torque_sd '0' must be positive"},
   };
   for (const Fault& f : faults) {
     SCOPED_TRACE(f.text);

@@ -196,6 +196,53 @@ TEST(Calibration, OneReadingForTwoInputsIsNotIdentifiable) {
   })) << fmt::format("{}", fmt::join(out.summary, "\n"));
 }
 
+// Each reading weighed by its own standard deviation (the data's torque_sd and
+// T_mean_sd columns): a seventh point whose torque is 50 % off, given a deviation 10⁵
+// times the others', leaves the fit at the truth (its pull on the inputs is of order
+// (10⁻⁵)² of the others' and the truth fits them exactly), and every reading's sd is its
+// own in calibration_points; the same point with the others' deviation pulls the fit
+// off the truth by more than ten times the tolerance (by about 1 %).
+TEST(Calibration, EachReadingIsWeighedByItsOwnDeviation) {
+  std::vector<std::pair<double, double>> points = kPoints;
+  points.emplace_back(130, 545);
+  const std::string made = rig_data(rig_points(points));
+  auto data_with = [&](double outlier_sd) {
+    std::string text;
+    std::size_t line = 0, start = 0;
+    for (std::size_t end = made.find('\n'); end != std::string::npos; start = end + 1, end = made.find('\n', start), ++line) {
+      std::string row = made.substr(start, end - start);
+      if (line == 0) {
+        text += row + ", torque_sd [N m], T_mean_sd [K]\n";
+        continue;
+      }
+      const bool outlier = line == points.size();
+      if (outlier) {
+        // The torque (the third field) 50 % off.
+        const std::size_t a = row.find(", ", row.find(", ") + 2) + 2, b = row.find(',', a);
+        row = row.substr(0, a) + fmt::format("{:.17g}", 1.5 * std::stod(row.substr(a, b - a))) + row.substr(b);
+      }
+      text += row + fmt::format(", {:.17g}, 0.01\n", outlier ? outlier_sd : 1e-4);
+    }
+    return text;
+  };
+  const TempScene loose(data_with(10.0), "_loose", ".csv"), tight(data_with(1e-4), "_tight", ".csv");
+  const StudyOutcome out = calibrate(calibration_scene(loose.path()), 1);
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  ASSERT_EQ(out.calibration.size(), 2u);
+  for (std::size_t j = 0; j < 2; ++j)
+    EXPECT_NEAR(out.calibration[j].fitted, kTruth[j], 1e-4 * kTruth[j]) << out.calibration[j].parameter;
+  ASSERT_EQ(out.calibration_points.size(), 2 * points.size());
+  for (const CalibrationPointRow& r : out.calibration_points) {
+    const bool torque = r.quantity == "torque_Nm";
+    const double expected = !torque ? 0.01 : r.point == long(points.size()) ? 10.0 : 1e-4;  // points count from 1
+    ASSERT_TRUE(r.sd.has_value());
+    EXPECT_EQ(*r.sd, expected) << r.point << " " << r.quantity;
+  }
+  const StudyOutcome pulled = calibrate(calibration_scene(tight.path()), 1);
+  ASSERT_FALSE(pulled.solver_failed) << pulled.message;
+  EXPECT_GT(std::abs(pulled.calibration[0].fitted - kTruth[0]), 10 * 1e-4 * kTruth[0]);
+}
+
 // A measured point past the fold of the branch continued from the light load (on this
 // mesh the paper's bearing folds below 200 N at 545 rad/s) has no prediction: the study
 // says which line, rather than fitting the hot branch's state there.

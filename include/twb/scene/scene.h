@@ -82,6 +82,9 @@ struct MeasuredPoint {
   double ambient = 0.0;  // K, the oil's (the sump's) at the point; 0: the scene's operating.ambient
   // SI (N m, 1, K), by MeasuredQuantity; NaN where the point does not measure it
   std::array<double, kMeasuredQuantities> values{};
+  // Each reading's own standard deviation (SI; a temperature's in K), where the data give
+  // one (a `<quantity>_sd` column); NaN elsewhere
+  std::array<double, kMeasuredQuantities> sd{};
   int line = 0;  // its line in the data file
 };
 
