@@ -162,7 +162,7 @@ twb::ProgressReport progress_lines(bool quiet, const std::string& prefix = {}) {
 // Another rank of an MPI job: the same scene and model, its share of the searches, no files.
 int run_as_worker(const RunRequest& r, const twb::cli::MpiJob& job) {
   const twb::Scene scene = twb::load_scene(r.path, r.overrides);
-  if (!twb::has_independent_searches(scene.study.type)) return 0;  // rank 0 runs such a study alone
+  if (!twb::has_independent_searches(scene.study)) return 0;  // rank 0 runs such a study alone
   twb::BearingModel model(scene);
   twb::cli::MpiScheduler scheduler(job);
   twb::run_study(model, progress_lines(r.quiet || !r.verbose, fmt::format("twb[rank {}]: ", job.rank())),
@@ -177,9 +177,10 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   print_warnings(scene, std::cerr);
   std::optional<twb::SliceScheduler> slice;
   if (!r.slice.empty()) {
-    if (!twb::has_independent_searches(scene.study.type))
+    if (!twb::has_independent_searches(scene.study))
       throw std::invalid_argument("--slice needs a study of independent searches (load_sweep, distress_map, "
-                                  "sliding_choice): this scene's study is one piece of work");
+                                  "sliding_choice; a distress_map with method: follow chains its combinations): "
+                                  "this scene's study is one piece of work");
     const auto [k, n] = parse_slice(r.slice);
     slice.emplace(k, n);
   }
@@ -200,7 +201,7 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   if (slice) {
     scheduler = &*slice;
   } else if (job.active()) {
-    if (twb::has_independent_searches(scene.study.type)) {
+    if (twb::has_independent_searches(scene.study)) {
       ranks.emplace(job);
       scheduler = &*ranks;
       if (threads == 0) threads = 1;  // one search per rank, as on every other rank

@@ -282,6 +282,50 @@ void refuse_every_state(const MapReader& study, const Study& s, const char* type
                         node.path(), type));
 }
 
+// The nodes of a study's axes (its parameter's or family's maps, in order).
+std::vector<MapReader> axis_nodes_of(const MapReader& study) {
+  std::vector<MapReader> out;
+  const char* key = study.has("family") ? "family" : "parameter";
+  if (!study.has(key)) return out;
+  const Node node = study.get(key, "");
+  if (node.yaml().IsSequence())
+    for (const Node& item : node.list("")) out.emplace_back(item, std::vector<std::string_view>{"name", "values"});
+  else if (node.yaml().IsMap())
+    out.push_back(study.map(key, {"name", "values"}));
+  return out;  // none for a distress curve's own parameter (a name)
+}
+
+// A followed map moves its inputs by Newton (physics §16): each axis one continuous
+// input, the grid fixed, and no refined meshes' searches for error bars.
+void check_followed_axes(const MapReader& study, const Study& s) {
+  if (s.error_estimate != ErrorEstimate::none) {
+    const Node node = study.get("error_estimate", "");
+    node.fail(fmt::format("{}: a followed map (method: follow) gives no error bars; leave error_estimate out or set "
+                          "it to none, or search every combination (method: search) for their bars",
+                          node.path()));
+  }
+  const std::vector<MapReader> nodes = axis_nodes_of(study);
+  for (std::size_t k = 0; k < s.axes.size() && k < nodes.size(); ++k) {
+    const MapAxis& axis = s.axes[k];
+    std::string why;
+    if (axis.parameter == MapParameter::roughness)
+      why = "roughness sets every face's Rq and the summits' statistics at once; give one input by its path (e.g. "
+            "surfaces.washer.Rq)";
+    else if (axis.parameter == MapParameter::groove_count || axis.parameter == MapParameter::groove_width ||
+             (axis.parameter == MapParameter::scene_input && axis.path.starts_with("geometry.washer.grooves.") &&
+              axis.path != "geometry.washer.grooves.depth"))
+      why = "the grooves' count, width and dam are placed on the grid's cells and lines, so their failure loads "
+            "change by steps that Newton cannot follow";
+    else if (axis.parameter == MapParameter::scene_input && axis.path.starts_with("mesh."))
+      why = "the mesh is no input of the bearing";
+    if (why.empty()) continue;
+    const Node name = nodes[k].get("name", "");
+    name.fail(fmt::format("{}: a followed map (method: follow) moves each axis's input continuously; {}; or "
+                          "search every combination (method: search)",
+                          name.path(), why));
+  }
+}
+
 void read_study(const MapReader& scene, Scene& out) {
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   Study& s = out.study;
@@ -379,13 +423,18 @@ void read_study(const MapReader& scene, Scene& out) {
       study.get("fit", "a map from input paths to bounds, e.g. {surfaces.washer.Rq: {lower: 0.1 um, upper: 1.5 um}}");
       break;
     case StudyType::distress_map: {
-      study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate"},
+      study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate",
+                         "method"},
                         "with type: distress_map");
+      s.map_method = read_choice(study, "method", kMapMethods, s.map_method);
+      // Followed failure loads have no refined meshes' searches: no error bars by default.
+      if (s.map_method == MapMethod::follow) s.error_estimate = ErrorEstimate::none;
       s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
       read_speeds(study, s);
       read_load_range(study, s, " (distress is searched between them)");
       read_map_axes(study, s, out);
       s.bracket_width = read_bracket_width(study, s.bracket_width);
+      if (s.map_method == MapMethod::follow) check_followed_axes(study, s);
       break;
     }
   }
@@ -411,17 +460,18 @@ void read_numerics(const MapReader& scene, Scene& out) {
 namespace twb::scene_io {
 
 std::vector<MapReader> axis_nodes(const MapReader& scene) {
-  std::vector<MapReader> out;
-  if (!scene.has("study")) return out;
-  const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
-  const char* key = study.has("family") ? "family" : "parameter";
-  if (!study.has(key)) return out;
-  const Node node = study.get(key, "");
-  if (node.yaml().IsSequence())
-    for (const Node& item : node.list("")) out.emplace_back(item, std::vector<std::string_view>{"name", "values"});
-  else if (node.yaml().IsMap())
-    out.push_back(study.map(key, {"name", "values"}));
-  return out;  // none for a distress curve's own parameter (a name)
+  if (!scene.has("study")) return {};
+  return axis_nodes_of(scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)}));
 }
 
 }  // namespace twb::scene_io
+
+namespace twb {
+
+std::string parameter_path(const MapAxis& axis) {
+  if (axis.parameter == MapParameter::scene_input) return axis.path;
+  const std::string_view path = scene_io::set_by(axis.parameter);
+  return path.ends_with('.') ? std::string() : std::string(path);
+}
+
+}  // namespace twb

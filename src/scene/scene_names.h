@@ -40,7 +40,7 @@ inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start",
                                                    "speeds",        "parameter",  "bracket_width", "duration",
                                                    "error_estimate", "from",       "to",       "family",
                                                    "parameters", "inputs", "probabilities", "monte_carlo",
-                                                   "data", "fit", "sd", "max_iterations"};
+                                                   "data", "fit", "sd", "max_iterations", "method"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
@@ -71,6 +71,7 @@ inline constexpr EnumNames<CurveParameter, 6> kCurveParameters{
 inline constexpr EnumNames<SolverMethod, 2> kSolverMethods{{"newton", "paper"},
                                                            {SolverMethod::newton, SolverMethod::paper}};
 
+inline constexpr EnumNames<MapMethod, 2> kMapMethods{{"search", "follow"}, {MapMethod::search, MapMethod::follow}};
 inline constexpr EnumNames<ErrorEstimate, 3> kErrorEstimates{
     {"none", "richardson", "every_state"},
     {ErrorEstimate::none, ErrorEstimate::richardson, ErrorEstimate::every_state}};

@@ -251,6 +251,7 @@ void write_numerics(Writer& w, const Scene& s) {
   if (!st.axes.empty() && st.type != StudyType::distress_curve) map_axes("parameter");
   if (grid || st.type == StudyType::distress_map)
     w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
+  if (st.type == StudyType::distress_map && st.map_method == MapMethod::follow) w.entry(1, "method", "follow");
   if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map || st.type == StudyType::distress_curve)
     w.entry(1, "error_estimate", std::string(kErrorEstimates.name(st.error_estimate)));
   if (st.type == StudyType::transient) w.entry(1, "duration", quantity(st.duration, "s"));

@@ -43,6 +43,7 @@ struct FailureLoadAtInputs::Settled {
   double load = std::numeric_limits<double>::infinity();
   std::string criterion;
   bool searched = false;
+  std::optional<DistressRow> row;  // a search's at x
 
   // W_fail from what is settled.
   void set_failure() {
@@ -219,6 +220,7 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::searched_at(s
   s->searched = true;
   const DistressSearch found = search_distress(*s->model, search_, {});
   ++searches_;
+  s->row = found.row;
   if (found.failed) {
     // No steady state even at the light load: the bearing fails below load_start, at
     // any load the study asks about.
@@ -259,22 +261,47 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settled_at(st
       s = walk(*nearest, x, moved);
     }
     if (s) {
-      // A criterion not followed that the failing state has crossed fails the bearing
-      // at a lower load: found by a search.
-      const OperatingLimits limits = OperatingLimits::of(s->model->scene());
-      bool crossed = false;
-      for (LimitKind kind : kFailureCriteria) {
-        bool followed = false;
-        for (const SettledCrossing& c : s->crossings) followed |= c.kind == kind;
-        const std::optional<double> m = followed ? std::nullopt : state_margin(*s->model, s->failing_state(), kind, limits);
-        crossed |= m && *m < 0.0;
-      }
-      if (!crossed) return s;
+      if (!crosses_unfollowed(*s)) return s;
     } else if (!model_at(x, why)) {
       return nullptr;  // outside an input's range: no search either
     }
   }
   return searched_at(x, why);
+}
+
+bool FailureLoadAtInputs::crosses_unfollowed(const Settled& s) const {
+  const OperatingLimits limits = OperatingLimits::of(s.model->scene());
+  for (LimitKind kind : kFailureCriteria) {
+    bool followed = false;
+    for (const SettledCrossing& c : s.crossings) followed |= c.kind == kind;
+    const std::optional<double> m = followed ? std::nullopt : state_margin(*s.model, s.failing_state(), kind, limits);
+    if (m && *m < 0.0) return true;
+  }
+  return false;
+}
+
+std::optional<FailureLoadAtInputs::Followed> FailureLoadAtInputs::follow(const Followed* from,
+                                                                         std::span<const double> x,
+                                                                         std::string& why) const {
+  std::unique_ptr<Settled> s;
+  if (from && from->point && from->point->followable()) {
+    std::string moved;
+    s = walk(*from->point, x, moved);
+    if (s && crosses_unfollowed(*s)) s.reset();
+    if (!s && !model_at(x, why)) return std::nullopt;  // outside an input's range: no search either
+  }
+  if (!s) s = searched_at(x, why);
+  if (!s) return std::nullopt;
+  Followed out;
+  out.failure.load = s->load;
+  out.failure.criterion = s->criterion;
+  out.failure.searched = s->searched;
+  if (s->fold) out.fold = s->fold->load;
+  for (const SettledCrossing& c : s->crossings) out.crossings.emplace_back(c.kind, c.load);
+  out.search_row = s->row;
+  s->model.reset();  // a move starts from the settled states and builds its own bearings
+  out.point = std::move(s);
+  return out;
 }
 
 std::optional<FailureAtInputs> FailureLoadAtInputs::at(std::span<const double> x, bool gradient, std::string& why) const {

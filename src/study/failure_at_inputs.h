@@ -62,8 +62,27 @@ class FailureLoadAtInputs {
 
   long searches() const { return searches_; }  // failure searches run (search_at's included)
 
+  struct Settled;  // a bearing at some x with its criteria settled
+  // A point of a followed map (study/followed_map.cpp): W_fail there, the fold and the
+  // crossings settled, and what the next move starts from.
+  struct Followed {
+    std::shared_ptr<const Settled> point;
+    FailureAtInputs failure;                               // load +∞ where nothing fails
+    std::optional<double> fold;                            // W_d, where a fold is settled
+    std::vector<std::pair<LimitKind, double>> crossings;   // each settled criterion's load
+    std::optional<DistressRow> search_row;                 // where a failure search ran at x
+  };
+  // W_fail at x followed from a point settled before (Newton along the move, walked in
+  // shorter steps where one fails), else, or without `from`, by a failure search at x.
+  // Depends only on `from` and x, not on what else was settled: safe from several
+  // threads, whose results do not depend on their order. None, with why, where the scene
+  // refuses x.
+  std::optional<Followed> follow(const Followed* from, std::span<const double> x, std::string& why) const;
+
  private:
-  struct Settled;  // a model at some x with its criteria settled
+  // Whether a criterion not followed is crossed in the state where W_fail is set (a lower
+  // failure load, which a search must find).
+  bool crosses_unfollowed(const Settled& s) const;
   std::unique_ptr<Settled> settle_once(const Settled& from, std::span<const double> x, std::string& why) const;
   std::unique_ptr<Settled> walk(const Settled& from, std::span<const double> x, std::string& why) const;
   void remember(std::unique_ptr<Settled> s) const;

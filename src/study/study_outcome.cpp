@@ -55,8 +55,9 @@ std::vector<std::string> summary_lines(const StudyOutcome& outcome) {
   return lines;
 }
 
-bool has_independent_searches(StudyType type) {
-  return type == StudyType::load_sweep || type == StudyType::distress_map || type == StudyType::sliding_choice;
+bool has_independent_searches(const Study& study) {
+  if (study.type == StudyType::distress_map) return study.map_method == MapMethod::search;
+  return study.type == StudyType::load_sweep || study.type == StudyType::sliding_choice;
 }
 
 }  // namespace twb

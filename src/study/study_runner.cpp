@@ -26,6 +26,7 @@
 #include "study/distress_search.h"
 #include "twb/error_family.h"
 #include "study/search_error_bars.h"
+#include "study/followed_map.h"
 #include "study/study_searches.h"
 #include "study/operating_point.h"
 #include "study/calibration.h"
@@ -145,6 +146,10 @@ void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport
 }
 
 void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, const Running& how) {
+  if (base.scene().study.map_method == MapMethod::follow) {
+    run_followed_map(base, out, progress, how);
+    return;
+  }
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_columns);
   DistressSearchSettings settings = range_settings(base.scene().study);
   settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
@@ -276,11 +281,11 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
   // Searches run on worker threads count their own (run_searches); the rest ran here.
   const StudyType type = model.scene().study.type;
   if (type != StudyType::load_sweep && type != StudyType::distress_map && type != StudyType::sliding_choice &&
-      type != StudyType::distress_curve) {
+      type != StudyType::distress_curve) {  // (a followed map counts its threads' in run_followed_map)
     out.timings.klu_factorizations =
         SparseLu::thread_counts().factored_since(klu_before) + out.timings.ida_factorizations;
   }
-  if (options.stop && options.stop->load() && has_independent_searches(type)) {
+  if (options.stop && options.stop->load() && has_independent_searches(model.scene().study)) {
     out.stopped = true;
     out.message += (out.message.empty() ? "" : "; ") + std::string("stopped before the study's end: searches are missing");
   }

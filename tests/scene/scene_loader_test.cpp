@@ -322,6 +322,11 @@ INSTANTIATE_TEST_SUITE_P(
                                                         "depth: 50 um, closed_at: 9.6 mm, open_at: outer_radius}}") +
                           "lubricant: {supply: {pressure: 2 bar, at: grooves}}\n"
                           "operating: {load: 1000 N, speed: 545 rad/s, sliding: washer_gear}\n"},
+        RoundTripCase{"followed_distress_map",
+                      std::string(kMinimalScene) + "study: {type: distress_map, method: follow, speeds: [545 rad/s], "
+                                                   "load_start: 100 N, load_end: 2000 N, parameter: {name: "
+                                                   "friction_coefficient, values: [0.1, 0.2]}}\n"
+                                                   "friction: {law: constant, coefficient: 0.2}\n"},
         RoundTripCase{"convection_with_a_cool_supply",
                       with_thermal(kMinimalScene, "thermal, convection") +
                           "lubricant: {density: 870 kg/m^3, specific_heat: 1950 J/(kg K), supply: {pressure: 1 bar, "

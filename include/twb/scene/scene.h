@@ -307,6 +307,10 @@ struct MapAxis {
   bool operator==(const MapAxis&) const = default;
 };
 
+// How a distress map finds each combination's failure load: a failure search at each,
+// or followed by Newton from a neighbour's settled criteria (docs/physics.md section 16).
+enum class MapMethod { search, follow };
+
 struct Study {
   StudyType type = StudyType::point;
   // load_sweep, distress_map, sliding_choice: the load range continued over; transient:
@@ -327,6 +331,8 @@ struct Study {
   double from = 0.0, to = 0.0;
   // load_sweep, distress_map: W_d's discretization error (docs/model.md, "Distress on the bearing").
   ErrorEstimate error_estimate = ErrorEstimate::richardson;
+  // distress_map: a search at every combination, or each followed from its neighbour's.
+  MapMethod map_method = MapMethod::search;
   // transient: pseudo-time span in s; 0 marches until the state settles or runs away.
   double duration = 0.0;
   // sensitivity: the inputs differentiated against, by their scene paths (empty: every
@@ -408,6 +414,9 @@ struct GroovesNotPlaced {
   std::string why;
 };
 std::optional<GroovesNotPlaced> place_grooves(Scene& scene, Grooves g);
+// The scene path of the input a map axis sets (its own, or a named parameter's, e.g.
+// friction.coefficient); empty for the roughness, which sets several.
+std::string parameter_path(const MapAxis& axis);
 // The inner and outer radius of the film whose washer face is grooved: the washer's
 // annulus for film 1, its overlap with the gear's for film 2 (docs/physics.md section 1).
 std::array<double, 2> grooved_film_radii(const Scene& scene, int film);

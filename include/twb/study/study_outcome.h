@@ -77,7 +77,8 @@ std::vector<std::string> summary_lines(const StudyOutcome& outcome);
 
 // Whether a study is made of independent distress searches (load_sweep, distress_map,
 // sliding_choice): what threads, MPI ranks and the slices of a job array share out, and
-// what RunOptions::stop can stop between.
-bool has_independent_searches(StudyType type);
+// what RunOptions::stop can stop between. A followed distress map is one piece of work
+// (each combination starts from its neighbour's).
+bool has_independent_searches(const Study& study);
 
 }  // namespace twb
