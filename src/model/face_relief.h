@@ -43,6 +43,9 @@ class FaceRelief {
   };
   Halves across_line(int i, int j) const;
   Halves across_row(int i, int j) const;
+  // Of node row i's control volume, the share beyond its line: (r + Δr/4)/(2r), ½ with
+  // Δr/r → 0 (1 on the inner rim, 0 on the outer).
+  double outer_share(int i) const { return outer_share_[std::size_t(i)]; }
 
   // The parts of the control volume of node (i, j), each with its mean relief and its
   // share of the node's area: one off every edge, two halves beside a groove's or a

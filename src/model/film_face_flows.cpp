@@ -81,9 +81,10 @@ FaceFlow FilmFaceFlows::evaluate(const ReynoldsFace& f) const {
   out.nb = m.node(f.ib, f.jb);
   // A face lies midway between its two nodes: the shape is their mean there. A face on
   // a relief's edge has half its length on either side, each with its own gap
-  // (docs/physics.md section 14): a radial face beside a groove's or step's edge line, a
-  // circumferential face on a dam's line. Its conductance is the mean of the two halves',
-  // and so is the gap the moving face carries across it.
+  // (docs/physics.md section 14): a radial face beside a groove's or step's edge line
+  // (its conductance the halves' mean), a circumferential face on a dam's line (its
+  // halves weighed by their integrals over r: ∫dr/r for the conductance, ∫r dr for the
+  // gap the moving face carries, i.e. the node's area shares).
   FaceRelief::Halves relief{0.0, 0.0};
   if (!film_.relief.flat())
     relief = out.circumferential ? film_.relief.across_row(f.ia, f.ja)
@@ -94,14 +95,17 @@ FaceFlow FilmFaceFlows::evaluate(const ReynoldsFace& f) const {
   out.dh = film_.gap_gradient(x, y);
   const double t_face = 0.5 * (node_t_[std::size_t(out.na)] + node_t_[std::size_t(out.nb)]);
   Conductance g = conductance(h, t_face);
+  // The outer half's share of ∫r dr (the inner half's of ∫dr/r); ½ across a radial face.
+  const double outer = out.circumferential && relief.after != relief.before ? film_.relief.outer_share(f.ia) : 0.5;
   if (relief.after != relief.before) {
     const Conductance other = conductance(smooth + relief.after, t_face);
-    g = {0.5 * (g.g + other.g), 0.5 * (g.dg_dh + other.dg_dh), 0.5 * (g.dg_dt + other.dg_dt)};
+    const double a = out.circumferential ? outer : 0.5, b = 1.0 - a;  // the before (inner) half's, the after's
+    g = {a * g.g + b * other.g, a * g.dg_dh + b * other.dg_dh, a * g.dg_dt + b * other.dg_dt};
   }
   ValueSlope carried = out.circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
   if (out.circumferential && relief.after != relief.before) {
     const ValueSlope other = carried_gap(smooth + relief.after);
-    carried = {0.5 * (carried.value + other.value), 0.5 * (carried.slope + other.slope)};
+    carried = {(1.0 - outer) * carried.value + outer * other.value, (1.0 - outer) * carried.slope + outer * other.slope};
   }
   // Mass-conserving cavitation (docs/physics.md section 12): the Couette flux carries the
   // film content θ of its upwind node (θ = 1 on the flooded edges and grooves).

@@ -107,8 +107,9 @@ void check_groove_parameter(const MapReader& scene, const Scene& out) {
   // Every combination of the groove axes' values (a count and a width may fit alone and
   // not together), each placed in the axes' order, as the searches place them; a
   // combination that fails is refused at the value of the last axis it placed.
-  std::vector<std::size_t> at(groove_axes.size(), 0);
-  while (true) {
+  std::vector<std::size_t> at(groove_axes.size(), 0), sizes;
+  for (std::size_t k : groove_axes) sizes.push_back(axes[k].values.size());
+  do {
     Scene trial = out;
     for (std::size_t g = 0; g < groove_axes.size(); ++g) {
       const MapAxis& axis = axes[groove_axes[g]];
@@ -121,10 +122,7 @@ void check_groove_parameter(const MapReader& scene, const Scene& out) {
         item.fail(fmt::format("{}: {}{}", item.path(), not_placed->why, with.empty() ? "" : with + ")"));
       }
     }
-    std::size_t g = groove_axes.size();
-    while (g > 0 && ++at[g - 1] == axes[groove_axes[g - 1]].values.size()) at[--g] = 0;
-    if (g == 0) break;
-  }
+  } while (next_combination(at, sizes));
 }
 
 void read_grooves(const MapReader& scene, Scene& out) {

@@ -313,9 +313,9 @@ void check_followed_axes(const MapReader& study, const Study& s) {
             "surfaces.washer.Rq)";
     else if (axis.parameter == MapParameter::groove_count || axis.parameter == MapParameter::groove_width ||
              (axis.parameter == MapParameter::scene_input && axis.path.starts_with("geometry.washer.grooves.") &&
-              axis.path != "geometry.washer.grooves.depth"))
-      why = "the grooves' count, width and dam are placed on the grid's cells and lines, so their failure loads "
-            "change by steps that Newton cannot follow";
+              !axis.path.ends_with(".depth")))
+      why = "the grooves' count, width and dam and the lands' inlet fraction are placed on the grid's cells and "
+            "lines, so their failure loads change by steps that Newton cannot follow (the depths are continuous)";
     else if (axis.parameter == MapParameter::scene_input && axis.path.starts_with("mesh."))
       why = "the mesh is no input of the bearing";
     if (why.empty()) continue;
@@ -467,6 +467,12 @@ std::vector<MapReader> axis_nodes(const MapReader& scene) {
 }  // namespace twb::scene_io
 
 namespace twb {
+
+bool next_combination(std::vector<std::size_t>& at, const std::vector<std::size_t>& sizes) {
+  std::size_t k = at.size();
+  while (k > 0 && ++at[k - 1] == sizes[k - 1]) at[--k] = 0;
+  return k > 0;
+}
 
 std::string parameter_path(const MapAxis& axis) {
   if (axis.parameter == MapParameter::scene_input) return axis.path;

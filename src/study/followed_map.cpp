@@ -112,9 +112,17 @@ void run_followed_map(BearingModel& base, StudyOutcome& out, const ProgressRepor
   std::size_t done = 0;
   // Point `flat` from point `parent` (none: a search).
   auto settle = [&](std::size_t flat, std::optional<std::size_t> parent) {
+    if (how.stop && how.stop->load()) return;  // left unsettled: no row
     const SparseLu::Counts before = SparseLu::thread_counts();  // this thread's, so this point's
     const FailureLoadAtInputs::Followed* start = parent && at[*parent] ? &*at[*parent] : nullptr;
-    at[flat] = failure.follow(start, x_of(flat), why[flat]);
+    try {
+      at[flat] = failure.follow(start, x_of(flat), why[flat]);
+    } catch (const InternalError&) {
+      throw;  // a bug: no row may hide it
+    } catch (const std::exception& e) {
+      // One combination that cannot be settled must not lose the map's other rows.
+      why[flat] = e.what();
+    }
     if (parent) from[flat] = point_label(out.parameter_columns, x_of(*parent));
     const std::lock_guard<std::mutex> hold(lock);
     out.timings.klu_factorizations += SparseLu::thread_counts().factored_since(before);
@@ -151,9 +159,11 @@ void run_followed_map(BearingModel& base, StudyOutcome& out, const ProgressRepor
     roots = std::move(next);
   }
 
+  const bool stopped = how.stop && how.stop->load();
   for (std::size_t flat = 0; flat < total; ++flat) {
     const std::vector<double> x = x_of(flat);
     const std::vector<double>& parameters = variants[flat / speeds.size()].parameters;
+    if (!at[flat] && stopped && why[flat].empty()) continue;  // not reached before the stop
     if (!at[flat]) {
       DistressRow row;
       row.speed = x.back();
@@ -169,6 +179,11 @@ void run_followed_map(BearingModel& base, StudyOutcome& out, const ProgressRepor
   }
   out.summary.push_back(fmt::format("followed map: {} combinations, {} failure searches, {:.1f} s", total,
                                     failure.searches(), elapsed_ms(t0) / 1000.0));
+  if (stopped) {
+    out.stopped = true;
+    out.message += (out.message.empty() ? "" : "; ") +
+                   std::string("stopped before the study's end: combinations are missing");
+  }
 }
 
 }  // namespace twb

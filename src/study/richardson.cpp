@@ -8,6 +8,7 @@
 
 #include "study/study_support.h"
 #include "failure_load.h"
+#include "model/face_relief.h"
 #include "solver/kinsol_newton.h"
 #include "twb/error_family.h"
 
@@ -36,6 +37,14 @@ Scene refined_mesh(const Scene& scene) {
   Scene fine = scene;
   fine.mesh.radial_nodes = 2 * (scene.mesh.radial_nodes - 1) + 1;
   fine.mesh.circumferential_nodes = 2 * scene.mesh.circumferential_nodes;
+  // The grooves keep their angles and their dam its radius: twice the cells, twice the
+  // dam's line (physics section 14), which every grid refined by two can hold.
+  if (scene.washer.grooves) {
+    fine.washer.grooves =
+        grooves_on_grid(*scene.washer.grooves, {scene.mesh.radial_nodes, scene.mesh.circumferential_nodes},
+                        {fine.mesh.radial_nodes, fine.mesh.circumferential_nodes});
+    if (!fine.washer.grooves) throw InternalError("refined_mesh: the grooves do not lie on the grid refined by two");
+  }
   return fine;
 }
 

@@ -38,7 +38,8 @@ struct MeshErrorEstimate {
   std::string fine_mesh;      // e.g. "17 x 132"
 };
 
-// The scene with its mesh refined by two in each direction.
+// The scene with its mesh refined by two in each direction, its grooves placed on it at
+// their angles and a dam at its radius (the same grooves as BearingModel::on_mesh).
 Scene refined_mesh(const Scene& scene);
 // Its mesh as the run names it, e.g. "17 x 132".
 std::string mesh_name(const Scene& scene);

@@ -112,8 +112,9 @@ std::vector<Variant> parameter_variants(const Scene& scene, std::vector<std::str
   // a named parameter set before; then the named ones in the axes' order (the scene
   // reader placed groove combinations so).
   std::vector<Variant> out;
-  std::vector<std::size_t> at(axes.size(), 0);
-  while (true) {
+  std::vector<std::size_t> at(axes.size(), 0), sizes;
+  for (const MapAxis& axis : axes) sizes.push_back(axis.values.size());
+  do {
     std::vector<std::pair<std::string, double>> inputs;
     for (std::size_t k = 0; k < axes.size(); ++k)
       if (axes[k].parameter == MapParameter::scene_input) inputs.emplace_back(axes[k].path, axes[k].values[at[k]]);
@@ -130,10 +131,7 @@ std::vector<Variant> parameter_variants(const Scene& scene, std::vector<std::str
       if (axes[k].parameter == MapParameter::groove_width) values[k] = variant.washer.grooves->width;
     std::string label = run_axes_text(columns, values);
     out.push_back({std::move(variant), std::move(values), {}, std::move(label)});
-    std::size_t k = axes.size();
-    while (k > 0 && ++at[k - 1] == axes[k - 1].values.size()) at[--k] = 0;
-    if (k == 0) break;
-  }
+  } while (next_combination(at, sizes));
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "model/face_relief.h"
+#include "study/richardson.h"
 #include "study/steady_solver.h"
 #include "twb/error_family.h"
 
@@ -158,6 +159,25 @@ TEST(FaceRelief, ADamKeepsItsRadiusOnAnotherGrid) {
   g.closed_at->line = 3;
   EXPECT_FALSE(grooves_on_grid(g, {5, 24}, {3, 24}));  // line 1.5
   EXPECT_FALSE(grooves_on_grid(g, {9, 24}, {5, 24}));  // line 1.5 again
+}
+
+// An error bar's refined mesh holds the same grooves as the coarse one: twice the cells
+// per groove and land, the dam on twice its line (once its grooves stayed at the coarse
+// cell counts, half as wide, and the dam's line index unchanged, half-way to the bore),
+// the grooves BearingModel::on_mesh places.
+TEST(FaceRelief, TheErrorBarsRefinedMeshKeepsTheGrooves) {
+  Scene s = testing::table1_scene(true, true, true, true, 545.0, 200.0);
+  testing::use_coarse_mesh(s);
+  testing::use_four_grooves(s);
+  s.washer.grooves->closed_at = GrooveDam{GrooveOpening::inner_radius, 0.0, 0.0, 2};
+  const Scene fine = refined_mesh(s);
+  ASSERT_TRUE(fine.washer.grooves);
+  EXPECT_EQ(fine.washer.grooves->cells, 2 * s.washer.grooves->cells);
+  EXPECT_EQ(fine.washer.grooves->closed_at->line, 2 * s.washer.grooves->closed_at->line);
+  const BearingModel model(s);
+  const std::unique_ptr<BearingModel> on = model.on_mesh(fine.mesh.radial_nodes, fine.mesh.circumferential_nodes);
+  EXPECT_EQ(on->scene().washer.grooves->cells, fine.washer.grooves->cells);
+  EXPECT_EQ(on->scene().washer.grooves->closed_at->line, fine.washer.grooves->closed_at->line);
 }
 
 TEST(FaceRelief, AGridThatDoesNotResolveTheGroovesIsAnInternalError) {

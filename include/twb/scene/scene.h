@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -84,7 +85,10 @@ struct MeasuredPoint {
   std::array<double, kMeasuredQuantities> values{};
   // Each reading's own standard deviation (SI; a temperature's in K), where the data give
   // one (a `<quantity>_sd` column); NaN elsewhere
-  std::array<double, kMeasuredQuantities> sd{};
+  std::array<double, kMeasuredQuantities> sd{std::numeric_limits<double>::quiet_NaN(),
+                                             std::numeric_limits<double>::quiet_NaN(),
+                                             std::numeric_limits<double>::quiet_NaN(),
+                                             std::numeric_limits<double>::quiet_NaN()};
   int line = 0;  // its line in the data file
 };
 
@@ -414,6 +418,10 @@ struct GroovesNotPlaced {
   std::string why;
 };
 std::optional<GroovesNotPlaced> place_grooves(Scene& scene, Grooves g);
+// The next combination of a grid's value indices `at` (axis k has sizes[k] values), the
+// last axis turning fastest, as an odometer; false, with `at` back at the first, after
+// the last combination.
+bool next_combination(std::vector<std::size_t>& at, const std::vector<std::size_t>& sizes);
 // The scene path of the input a map axis sets (its own, or a named parameter's, e.g.
 // friction.coefficient); empty for the roughness, which sets several.
 std::string parameter_path(const MapAxis& axis);
