@@ -299,7 +299,10 @@ std::optional<FailureLoadAtInputs::Followed> FailureLoadAtInputs::follow(const F
   if (s->fold) out.fold = s->fold->load;
   for (const SettledCrossing& c : s->crossings) out.crossings.emplace_back(c.kind, c.load);
   out.search_row = s->row;
-  s->model.reset();  // a move starts from the settled states and builds its own bearings
+  // A move starts from the settled states and builds its own bearings; the crossings'
+  // factors serve gradients only: a map of many points keeps neither.
+  s->model.reset();
+  for (SettledCrossing& c : s->crossings) c.lu.reset();
   out.point = std::move(s);
   return out;
 }

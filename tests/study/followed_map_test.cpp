@@ -55,6 +55,35 @@ TEST(FollowedMap, EachRowIsTheSearchesFailureLoad) {
   EXPECT_GE(by_newton, 12);
 }
 
+// A washer that fails by a limit first: the bronze washer, whose film's flash temperature
+// passes the oil's flash point before any fold. The followed crossing is the margin's
+// root to the solver's tolerance; the search's is its secant's, stopped within a tenth
+// of the bracket width (2e-4 of the load): the rows agree to that.
+TEST(FollowedMap, ALimitsCrossingIsFollowedToo) {
+  auto bronze = [](const std::string& method) {
+    BearingModel model(load_scene(
+        std::string(TWB_SOURCE_DIR) + "/configs/washers/bronze_cusn8.yaml",
+        {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24",
+         "study={type: distress_map, method: " + method +
+             ", speeds: [3000 rpm, 3300 rpm], load_start: 100 N, load_end: 4000 N, error_estimate: none, "
+             "parameter: {name: geometry.gear.tilt, values: [0.9 mrad, 1 mrad, 1.1 mrad]}}"}));
+    return run_study(model, {}, RunOptions{.threads = 2});
+  };
+  const StudyOutcome searched = bronze("search"), followed = bronze("follow");
+  ASSERT_EQ(followed.distress.size(), 6u);
+  int crossings = 0;
+  for (std::size_t k = 0; k < 6; ++k) {
+    const DistressRow &f = followed.distress[k], &s = searched.distress[k];
+    SCOPED_TRACE(std::to_string(k) + ": " + f.method);
+    ASSERT_TRUE(s.failure_load && f.failure_load);
+    ASSERT_TRUE(s.criterion && f.criterion);
+    EXPECT_EQ(criterion_name(*f.criterion), criterion_name(*s.criterion));
+    EXPECT_NEAR(*f.failure_load, *s.failure_load, 0.1 * 0.002 * *s.failure_load);
+    crossings += !s.criterion->distress && f.method.starts_with("followed by Newton");
+  }
+  EXPECT_GE(crossings, 4);
+}
+
 // Each point starts from one fixed neighbour: the rows are the same to the last bit on
 // one thread and on two.
 TEST(FollowedMap, TheRowsDoNotDependOnTheThreadCount) {
