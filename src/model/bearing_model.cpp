@@ -26,8 +26,7 @@ BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.oper
   const bool film1_slides = scene_.operating.sliding == SlidingFilm::carrier_washer;
 
   // Film 1 covers the washer annulus; film 2 the overlap of washer and gear (docs/physics.md 1).
-  const double r2_in = std::max(scene_.washer.inner_radius, scene_.gear.inner_radius);
-  const double r2_out = std::min(scene_.washer.outer_radius, scene_.gear.outer_radius);
+  const auto [r2_in, r2_out] = film_radii(scene_, 2);
   if (!(r2_out > r2_in)) throw std::invalid_argument("washer and gear annuli do not overlap");
 
   Film f1{1, FilmMesh(scene_.washer.inner_radius, scene_.washer.outer_radius, nr, nt),

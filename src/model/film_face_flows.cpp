@@ -95,17 +95,17 @@ FaceFlow FilmFaceFlows::evaluate(const ReynoldsFace& f) const {
   out.dh = film_.gap_gradient(x, y);
   const double t_face = 0.5 * (node_t_[std::size_t(out.na)] + node_t_[std::size_t(out.nb)]);
   Conductance g = conductance(h, t_face);
-  // The outer half's share of ∫r dr (the inner half's of ∫dr/r); ½ across a radial face.
-  const double outer = out.circumferential && relief.after != relief.before ? film_.relief.outer_share(f.ia) : 0.5;
-  if (relief.after != relief.before) {
-    const Conductance other = conductance(smooth + relief.after, t_face);
-    const double a = out.circumferential ? outer : 0.5, b = 1.0 - a;  // the before (inner) half's, the after's
-    g = {a * g.g + b * other.g, a * g.dg_dh + b * other.dg_dh, a * g.dg_dt + b * other.dg_dt};
-  }
   ValueSlope carried = out.circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
-  if (out.circumferential && relief.after != relief.before) {
-    const ValueSlope other = carried_gap(smooth + relief.after);
-    carried = {(1.0 - outer) * carried.value + outer * other.value, (1.0 - outer) * carried.slope + outer * other.slope};
+  if (relief.after != relief.before) {
+    // The outer (after) half's share of ∫r dr, which is the inner (before) half's of
+    // ∫dr/r; ½ across a radial face.
+    const double outer = out.circumferential ? film_.relief.outer_share(f.ia) : 0.5, inner = 1.0 - outer;
+    const Conductance other = conductance(smooth + relief.after, t_face);
+    g = {outer * g.g + inner * other.g, outer * g.dg_dh + inner * other.dg_dh, outer * g.dg_dt + inner * other.dg_dt};
+    if (out.circumferential) {
+      const ValueSlope moved = carried_gap(smooth + relief.after);
+      carried = {inner * carried.value + outer * moved.value, inner * carried.slope + outer * moved.slope};
+    }
   }
   // Mass-conserving cavitation (docs/physics.md section 12): the Couette flux carries the
   // film content θ of its upwind node (θ = 1 on the flooded edges and grooves).

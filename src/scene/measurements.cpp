@@ -37,7 +37,8 @@ constexpr ResultsName kResultsNames[] = {
     {"load_N", kLoad, "N"},         {"speed_rad_s", kSpeed, "rad/s"}, {"speed_rpm", kSpeed, "rpm"},
     {"torque_Nm", 0, "N m"},        {"f_eff", 1, "1"},                {"T_mean_C", 2, "degC"},
     {"T_mean_K", 2, "K"},           {"T_max_C", 3, "degC"},           {"T_max_K", 3, "K"},
-    {"ambient_C", kAmbient, "degC"}, {"ambient_K", kAmbient, "K"}};
+    {"ambient_C", kAmbient, "degC"}, {"ambient_K", kAmbient, "K"},
+    {"f_eff_sd", kSd + int(MeasuredQuantity::f_eff), "1"}};  // a ratio's spread, as f_eff, needs no unit
 
 const SiUnit& unit_of(int what) {
   if (is_sd(what)) what -= kSd;
@@ -64,11 +65,6 @@ Column column_of(const CsvText& text, std::size_t line, const CsvField& field) {
   if (h.unit.empty()) {
     const auto known = std::find_if(std::begin(kResultsNames), std::end(kResultsNames),
                                     [&](const ResultsName& r) { return r.name == h.name; });
-    if (h.name == "f_eff_sd") {
-      // A ratio's spread is a ratio: no unit needed, as for f_eff itself.
-      c.what = kSd + int(MeasuredQuantity::f_eff);
-      return c;
-    }
     if (known == std::end(kResultsNames))
       text.fail(line, field.column,
                 fmt::format("the column '{}' gives no unit: name it {} with its unit in brackets, e.g. '{}'",

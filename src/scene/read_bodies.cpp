@@ -60,8 +60,7 @@ void read_geometry(const MapReader& scene, Scene& out) {
 
   // Film 2 lives on the overlap of the washer and gear annuli; without one the washer
   // could not carry the gear's load.
-  const double overlap_inner = std::max(out.washer.inner_radius, out.gear.inner_radius);
-  const double overlap_outer = std::min(out.washer.outer_radius, out.gear.outer_radius);
+  const auto [overlap_inner, overlap_outer] = film_radii(out, 2);
   if (overlap_inner >= overlap_outer) {
     const Node node = out.gear.inner_radius >= out.washer.outer_radius
                           ? gear.get("inner_diameter", "")
@@ -243,3 +242,13 @@ void read_bodies(const MapReader& scene, Scene& out) {
 }
 
 }  // namespace twb::scene_io
+
+namespace twb {
+
+std::array<double, 2> film_radii(const Scene& scene, int film) {
+  if (film == 1) return {scene.washer.inner_radius, scene.washer.outer_radius};
+  return {std::max(scene.washer.inner_radius, scene.gear.inner_radius),
+          std::min(scene.washer.outer_radius, scene.gear.outer_radius)};
+}
+
+}  // namespace twb

@@ -200,7 +200,7 @@ std::optional<GroovesNotPlaced> place_grooves(Scene& scene, Grooves g) {
     // The dam on the grooved film's nearest radial node line, with at least one cell of
     // groove before it and one of dam after it.
     GrooveDam& dam = *g.closed_at;
-    const std::array<double, 2> rims = grooved_film_radii(scene, g.film);
+    const std::array<double, 2> rims = film_radii(scene, g.film);
     const int last = mesh.radial_nodes - 1;
     const double dr = (rims[1] - rims[0]) / last;
     const bool inner = dam.open_at == GrooveOpening::inner_radius;
@@ -223,12 +223,6 @@ std::optional<GroovesNotPlaced> place_grooves(Scene& scene, Grooves g) {
   }
   scene.washer.grooves = g;
   return std::nullopt;
-}
-
-std::array<double, 2> grooved_film_radii(const Scene& scene, int film) {
-  if (film == 1) return {scene.washer.inner_radius, scene.washer.outer_radius};
-  return {std::max(scene.washer.inner_radius, scene.gear.inner_radius),
-          std::min(scene.washer.outer_radius, scene.gear.outer_radius)};
 }
 
 std::optional<GroovesNotPlaced> place_groove_parameter(Scene& scene, MapParameter p, double value) {

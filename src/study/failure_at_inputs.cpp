@@ -260,12 +260,9 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settled_at(st
     } else {
       s = walk(*nearest, x, moved);
     }
-    if (s) {
-      if (!crosses_unfollowed(*s)) return s;
-    } else if (!model_at(x, why)) {
-      return nullptr;  // outside an input's range: no search either
-    }
+    if (s && !crosses_unfollowed(*s)) return s;
   }
+  // (Outside an input's range the search's bearing is refused too, with the reason.)
   return searched_at(x, why);
 }
 
@@ -288,9 +285,8 @@ std::optional<FailureLoadAtInputs::Followed> FailureLoadAtInputs::follow(const F
     std::string moved;
     s = walk(*from->point, x, moved);
     if (s && crosses_unfollowed(*s)) s.reset();
-    if (!s && !model_at(x, why)) return std::nullopt;  // outside an input's range: no search either
   }
-  if (!s) s = searched_at(x, why);
+  if (!s) s = searched_at(x, why);  // (refused, with the reason, outside an input's range)
   if (!s) return std::nullopt;
   Followed out;
   out.failure.load = s->load;

@@ -69,7 +69,8 @@ std::string point_label(const std::vector<std::string>& columns, const std::vect
 
 }  // namespace
 
-void run_followed_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, const Running& how) {
+void run_followed_map(BearingModel& base, const DistressSearchSettings& settings, StudyOutcome& out,
+                      const ProgressReport& progress, const Running& how) {
   const Scene& scene = base.scene();
   const Study& st = scene.study;
   const std::vector<Variant> variants = parameter_variants(scene, out.parameter_columns);
@@ -91,19 +92,8 @@ void run_followed_map(BearingModel& base, StudyOutcome& out, const ProgressRepor
     x.push_back(speeds[flat % speeds.size()]);
     return x;
   };
-  // Each input's typical move (the chooser of a nearest anchor, which chains do not use).
-  std::vector<double> scales;
-  for (std::size_t d = 0; d < dims; ++d) {
-    const std::vector<double> values = d + 1 < dims ? st.axes[d].values : speeds;
-    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-    scales.push_back(std::max({*hi - *lo, std::abs(*hi), 1e-12}));
-  }
-  DistressSearchSettings settings;
-  settings.load_start = st.load_start;
-  settings.load_end = st.load_end;
-  settings.bracket_width = st.bracket_width;
-  settings.march_past_distress = false;
-  FailureLoadAtInputs failure(scene, paths, scales, settings, 1);
+  // (The inputs' scales choose a nearest anchor, which follow() never does.)
+  FailureLoadAtInputs failure(scene, paths, std::vector<double>(dims, 1.0), settings, 1);
 
   const auto t0 = Clock::now();
   std::vector<std::optional<FailureLoadAtInputs::Followed>> at(total);
@@ -170,7 +160,7 @@ void run_followed_map(BearingModel& base, StudyOutcome& out, const ProgressRepor
       row.parameters = parameters;
       row.verdict = DistressVerdict::solver_failure;
       row.method = "solver failure: " + why[flat];
-      row.failure = failure_sentence(row, st.load_end);
+      row.failure = failure_sentence(row, settings.load_end);
       out.message += (out.message.empty() ? "" : "; ") + fmt::format("{}: {}", point_label(out.parameter_columns, x), why[flat]);
       out.distress.push_back(std::move(row));
       continue;

@@ -16,6 +16,8 @@ namespace twb {
 // criterion not followed is crossed first, is searched. Each point starts from one fixed
 // neighbour, so the rows do not depend on the thread count. Rows in the search's order
 // (combination outer, speed inner); no states, trajectories or error bars.
-void run_followed_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, const Running& how);
+// `settings`: the map's search, as a searched map's.
+void run_followed_map(BearingModel& base, const DistressSearchSettings& settings, StudyOutcome& out,
+                      const ProgressReport& progress, const Running& how);
 
 }  // namespace twb

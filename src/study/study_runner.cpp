@@ -146,13 +146,13 @@ void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport
 }
 
 void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, const Running& how) {
+  DistressSearchSettings settings = range_settings(base.scene().study);
+  settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
   if (base.scene().study.map_method == MapMethod::follow) {
-    run_followed_map(base, out, progress, how);
+    run_followed_map(base, settings, out, progress, how);
     return;
   }
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_columns);
-  DistressSearchSettings settings = range_settings(base.scene().study);
-  settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
   run_searches(base, variants, settings, progress, how, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
     out.distress.push_back(found.row);

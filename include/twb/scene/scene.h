@@ -425,9 +425,10 @@ bool next_combination(std::vector<std::size_t>& at, const std::vector<std::size_
 // The scene path of the input a map axis sets (its own, or a named parameter's, e.g.
 // friction.coefficient); empty for the roughness, which sets several.
 std::string parameter_path(const MapAxis& axis);
-// The inner and outer radius of the film whose washer face is grooved: the washer's
-// annulus for film 1, its overlap with the gear's for film 2 (docs/physics.md section 1).
-std::array<double, 2> grooved_film_radii(const Scene& scene, int film);
+// The inner and outer radius of film 1 (the washer's annulus) or film 2 (its overlap
+// with the gear's annulus; empty, inner ≥ outer, where they do not overlap)
+// (docs/physics.md section 1).
+std::array<double, 2> film_radii(const Scene& scene, int film);
 // The scene's grooves with one property (a map's groove_count, groove_width or
 // groove_depth) set to `value`, placed anew from the width the scene gave.
 std::optional<GroovesNotPlaced> place_groove_parameter(Scene& scene, MapParameter p, double value);
