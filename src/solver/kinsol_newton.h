@@ -67,6 +67,17 @@ struct NewtonSettings {
   WatchedQuantities quantities{};
 };
 
+// Whether the quantities read are within `within(k, value)` of the root's, by the
+// contraction's bound (the fixed-point theorem's a-posteriori bound): with the error
+// falling by at least ρ < 1 a step from here on, that of point k is at most ρ/(1 − ρ)
+// times the step from point k − 1 to it. ρ is the largest contraction seen over the
+// last steps (each quantity's last step over the one before, and the residual's):
+// Newton's converges faster after (quadratically, or by about the same factor on its
+// linear stretches across the kinks of contact and cavitation). False before three
+// reads (two steps give a contraction) or while not contracting.
+bool settled_by_contraction(const NewtonSettings::QuantityReads& reads,
+                            const std::function<double(std::size_t, double)>& within);
+
 struct NewtonReport {
   bool converged = false;
   int flag = 0;

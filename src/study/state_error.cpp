@@ -44,18 +44,12 @@ bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const
   const std::vector<double> coarse = mesh_error_quantities(state.state);
   // The bars need the refined quantities to a small part of their distance from the
   // coarse ones only: Newton stops at the first point whose quantities are within 1e-3
-  // of that distance of the root's, or at the tolerance, whichever comes first. The
-  // error left at a point is bounded as a contraction's (the fixed-point theorem's
-  // a-posteriori bound): with the error falling by at least ρ < 1 a step from here on,
-  // that of point k is at most ρ/(1 − ρ) times the step from point k − 1 to it. ρ is
-  // the largest contraction seen over the last steps (each quantity's last step over
-  // the one before, and the residual's): Newton's converges faster after
-  // (quadratically, or by about the same factor on its linear stretches across the
-  // kinks of contact and cavitation). The point is then accepted with its quantities
-  // read (a residual pass) but without the Jacobian, factorization and step past it
-  // that a test on that step would need. Read on Newton's undamped steps only (their
-  // points are consecutive iterates); a solve that needs the line search or the
-  // fallbacks converges to the tolerance.
+  // of that distance of the root's (settled_by_contraction), or at the tolerance,
+  // whichever comes first. The point is then accepted with its quantities read (a
+  // residual pass) but without the Jacobian, factorization and step past it that a test
+  // on that step would need. Read on Newton's undamped steps only (their points are
+  // consecutive iterates); a solve that needs the line search or the fallbacks
+  // converges to the tolerance.
   // The bar differs from the fully converged one's by at most about 1e-3 of itself.
   NewtonSettings newton = newton_settings(model.scene());
   std::vector<double> described_at, described;  // the last point the quantities were read at
@@ -65,22 +59,8 @@ bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const
     return described;
   };
   newton.quantities.settled = [&](const NewtonSettings::QuantityReads& reads) {
-    const std::size_t n = reads.values.size();
-    if (n < 3) return false;  // two steps give a contraction
-    const std::vector<double>&now = reads.values[n - 1], &before = reads.values[n - 2],
-                          &earlier = reads.values[n - 3];
-    double rho = reads.residual_contraction;
-    for (std::size_t k = 0; k < now.size(); ++k) {
-      const double step = std::abs(now[k] - before[k]);
-      if (step == 0.0) continue;  // a quantity the last step left alone bounds nothing
-      const double ratio = step / std::abs(before[k] - earlier[k]);
-      if (!(ratio <= rho)) rho = ratio;  // a NaN (a wild read) makes rho NaN: no stop
-    }
-    if (!(rho < 1.0)) return false;  // not contracting: no bound to lean on
-    for (std::size_t k = 0; k < now.size(); ++k)
-      if (!(rho / (1.0 - rho) * std::abs(now[k] - before[k]) <= kRefinedSettling * std::abs(now[k] - coarse[k])))
-        return false;
-    return true;
+    return settled_by_contraction(
+        reads, [&](std::size_t k, double value) { return kRefinedSettling * std::abs(value - coarse[k]); });
   };
   SteadySolver solver(fine, newton, ordering);
   const SteadyReport rep = solver.solve(v);
