@@ -106,7 +106,7 @@ std::optional<double> state_margin(const BearingModel& model, std::span<const do
 
 std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pair<double, std::vector<double>>& state,
                                     double& slope, double width, double load_end, long& solves, std::string& why,
-                                    KinsolNewton* corrector, BearingState* described) {
+                                    KinsolNewton* corrector, BearingState* described, bool load_only) {
   const OperatingLimits limits = OperatingLimits::of(model.scene());
   const bool thermal = model.scene().effects.thermal;
   NewtonSettings newton = newton_settings(model.scene());
@@ -118,11 +118,25 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
   // The state at `load` from the last one: Newton from it (a constant predictor, a few
   // iterations for the secant's short steps), else continuation along the branch.
   std::vector<double> u = state.second;
+  // The load alone needed: a solve may stop where its margin is settled to a fiftieth of
+  // the width in load at the secant's slope s (a fifth of the secant's last step, the
+  // root's uncertainty at its stop).
+  double s = 0.0;
+  NewtonSettings settling = newton;
+  if (load_only) {
+    settling.quantities.at = [&](std::span<const double> w) {
+      return std::vector<double>{*failure_margin(kind, LimitValues::of(model.describe(w), thermal), limits)};
+    };
+    settling.quantities.settled = [&](const NewtonSettings::QuantityReads& reads) {
+      return settled_by_contraction(
+          reads, [&](std::size_t, double) { return std::abs(s) * 0.02 * width * model.load(); });
+    };
+  }
   auto state_at = [&](double load) -> const std::vector<double>& {
     model.set_load(load);
     std::vector<double> trial = u;
     ++solves;
-    if (corrector->solve(trial, newton).converged) {
+    if (corrector->solve(trial, settling).converged) {
       u = std::move(trial);
       return u;
     }
@@ -140,7 +154,7 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
     double m0 = margin_at(u);
     // The secant on the margin along the branch, its first step with the caller's slope
     // (the crossing's at a nearby parameter), each step at most 30 % of the load.
-    double s = slope < 0.0 ? slope : -std::max(std::abs(m0), 1e-3) / (0.1 * w0);
+    s = slope < 0.0 ? slope : -std::max(std::abs(m0), 1e-3) / (0.1 * w0);
     for (int step = 0; step < 16; ++step) {
       double w1 = std::clamp(w0 - m0 / s, 0.7 * w0, 1.3 * w0);
       if (w1 > load_end && w0 >= load_end) {
@@ -154,7 +168,8 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
         slope = s;
         state = {w0, u};
         if (described) *described = std::move(here);
-        return w0;
+        // The load alone: the secant's root, closer than the last state solved.
+        return load_only ? w1 : w0;
       }
       w1 = std::min(w1, load_end);
       const double m1 = margin_at(state_at(w1));

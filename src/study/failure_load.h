@@ -49,9 +49,15 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
 // `described`, if given, its description; none, with `why`, where the crossing lies
 // above load_end or the branch cannot be continued to it (it folds first). `corrector`,
 // if given, is a Newton solver of `model` (one per curve: its analysis is reused).
+// load_only: the caller needs the crossing's load alone (a refined mesh's, for an error
+// bar): each Newton solve stops where the margin is settled to what moves the root by
+// a fiftieth of `width`; the load returned is the secant's last root (closer than the
+// last state solved), and the state returned is that last solve's, neither at that load
+// nor converged to the solver's tolerance.
 std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pair<double, std::vector<double>>& state,
                                     double& slope, double width, double load_end, long& solves, std::string& why,
-                                    KinsolNewton* corrector = nullptr, BearingState* described = nullptr);
+                                    KinsolNewton* corrector = nullptr, BearingState* described = nullptr,
+                                    bool load_only = false);
 
 // "fails at 307.6 N by the flash temperature (no thermo-viscous distress up to 4000 N)":
 // the sentence of a row whose failure fields are set.

@@ -78,9 +78,10 @@ std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double 
 
 // A failure criterion's crossing (failure_load.h) again on the refined mesh: the coarse
 // crossing's state interpolated onto the refined mesh, Newton there at the coarse load,
-// then the secant on the margin to the crossing (crossing_near). `fine` is the coarse
-// model on the refined mesh (BearingModel::on_mesh), shared by a search's criteria. Empty,
-// with `why`, where Newton or the secant fails there.
+// then the secant on the margin to the crossing (crossing_near), each solve only as far
+// as the crossing's load needs (the bar to about 0.1 %). `fine` is the coarse model on
+// the refined mesh (BearingModel::on_mesh). Empty, with `why`, where Newton or the
+// secant fails there.
 std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, BearingModel& fine, LimitKind kind,
                                                    double load, std::span<const double> u, double width,
                                                    double load_end, std::string& why);

@@ -3,9 +3,12 @@
 // fast; the folds need no transients.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "../../src/study/richardson.h"
+#include "study/failure_load.h"
+#include "study/study_support.h"
 #include "../support/table1_scene.h"
 
 namespace twb {
@@ -126,6 +129,50 @@ TEST(RichardsonEstimate, RefusesARefinedFoldFarFromTheCoarseLoad) {
                                      why, [&](const std::string& s) { said.push_back(s); });
   ASSERT_FALSE(said.empty());
   EXPECT_NE(said.front().find("too far from the coarse fold"), std::string::npos) << said.front();
+}
+
+// A criterion's refined crossing for its bar (crossing_estimate) is solved only as far as
+// its load needs: the polish settled to 1e-3 of the meshes' difference in margin, each
+// secant solve to what moves the root by a fiftieth of the bracket width. Against the
+// refined crossing solved to the tolerance and located a thousand times more closely,
+// it lies within the secant's own stop (a tenth of the width: the root's bound when it
+// stops) and the settling's fiftieth, and the bar within what that moves it.
+TEST(RichardsonEstimate, TheRefinedCrossingIsSolvedAsFarAsItsLoadNeeds) {
+  Scene coarse = testing::table1_scene(true, true, true, true, 545.0, 100.0);
+  testing::use_coarse_mesh(coarse);
+  coarse.lubricant.flash_temperature = 310.15;  // 37 degC: crossed between 132 and 152 N, before the fold
+  BearingModel model(coarse);
+  DistressSearchSettings settings = fold_range();
+  const DistressSearch found = search_distress(model, settings, {});
+  const std::size_t flash =
+      std::size_t(std::find(std::begin(kFailureCriteria), std::end(kFailureCriteria), LimitKind::flash_temperature) -
+                  std::begin(kFailureCriteria));
+  ASSERT_GT(found.crossing_states.size(), flash);
+  const auto& [coarse_load, coarse_state] = found.crossing_states[flash];
+  ASSERT_FALSE(coarse_state.empty()) << found.row.method << " / " << found.row.failure;
+  const Scene refined = refined_mesh(coarse);
+  const auto fine = model.on_mesh(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
+  std::string why;
+  const auto bar = crossing_estimate(model, *fine, LimitKind::flash_temperature, coarse_load, coarse_state,
+                                     settings.bracket_width, settings.load_end, why);
+  ASSERT_TRUE(bar) << why;
+
+  // The same crossing solved to the tolerance throughout.
+  std::pair<double, std::vector<double>> exact{coarse_load, fine->interpolated_from(model, coarse_state)};
+  fine->set_load(coarse_load);
+  KinsolNewton newton(*fine);
+  ASSERT_TRUE(newton.solve(exact.second, newton_settings(refined)).converged);
+  double slope = 0.0;
+  long solves = 0;
+  const double tight = 1e-3 * settings.bracket_width;
+  const auto own = crossing_near(*fine, LimitKind::flash_temperature, exact, slope, tight, settings.load_end, solves,
+                                 why);
+  ASSERT_TRUE(own) << why;
+  const double load_tolerance = (0.1 + 0.02) * settings.bracket_width * *own + 0.1 * tight * *own;
+  EXPECT_NEAR(bar->fine_fold, *own, load_tolerance);
+  const double exact_error = richardson_extrapolation(coarse_load, *own).error;
+  EXPECT_NEAR(bar->error, exact_error, richardson_extrapolation(0.0, load_tolerance).error)
+      << "coarse " << coarse_load << ", refined " << *own;
 }
 
 }  // namespace
