@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
+#include <memory>
 #include <optional>
 
 #include <fmt/format.h>
@@ -13,6 +15,8 @@
 #include "study_support.h"
 #include "solver/natural_continuation.h"
 #include "solver/runaway.h"
+#include "solver/sparse_lu.h"
+#include "study/spare_threads.h"
 #include "study/steady_solver.h"
 
 namespace twb {
@@ -68,6 +72,47 @@ DistressSearch search_from(BearingModel& model, const DistressSearchSettings& se
   return DistressSearchPhases(model, settings, progress, cool, approach).run(std::move(u), first);
 }
 
+// Whether the start's branch leads down to the light load's own state (search_from_start).
+struct StartCheck {
+  double light = 0.0;
+  std::vector<double> down;  // the start's branch continued down to `light`
+  NaturalReport descent;
+  std::vector<double> light_state;
+  SteadyReport light_start;  // the light load's cold start
+  long klu_factorizations = 0;
+};
+
+// The cool branch is the one that goes on down to light loads, where the bearing has one
+// steady state: continued down to a tenth of the start, the start's branch must get
+// there without a turning point and land on that light load's own cold start.
+StartCheck check_start(BearingModel& model, const DistressSearchSettings& settings, std::span<const double> u) {
+  const SparseLu::Counts before = SparseLu::thread_counts();
+  const NewtonSettings newton = newton_settings(model.scene());
+  SteadySolver steady(model, newton);
+  StartCheck c;
+  c.light = settings.load_start * light_load_fraction;
+  if (model.scene().lubricant.supply) {
+    // Oil fed under pressure lifts the gear off a load light enough, which then has no
+    // steady state: the light load is the lightest of a tenth, a fifth, … of the start
+    // that has one, up to two thirds of the start.
+    for (;; c.light *= 2.0) {
+      model.set_load(c.light);
+      c.light_start = steady.solve_cold(c.light_state);
+      if (c.light_start.converged || 2.0 * c.light > settings.load_start / 1.5) break;
+    }
+  }
+  c.down.assign(u.begin(), u.end());
+  NaturalSettings natural;
+  natural.newton = in_basin(newton);
+  natural.initial_step = natural.max_step = 0.15 * settings.load_start;
+  natural.min_step = settings.bracket_width * c.light;
+  c.descent = continue_in_parameter(model, c.down, settings.load_start, c.light, natural);
+  model.set_load(c.light);
+  if (!model.scene().lubricant.supply) c.light_start = steady.solve_cold(c.light_state);
+  c.klu_factorizations = SparseLu::thread_counts().factored_since(before);
+  return c;
+}
+
 DistressSearch search_from_start(BearingModel& model, const DistressSearchSettings& settings,
                                  const SearchProgress& progress, BranchStates& cool, BranchStates& approach) {
   const NewtonSettings newton = newton_settings(model.scene());
@@ -84,45 +129,50 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
     out.row.method = "no steady state at load_start";
     return out;
   }
-  DistressSearch out = search_from(model, settings, u, first, progress, cool, approach);
   const std::vector<double> capacity = model.capacities();
-  if (settings.fold_only || std::none_of(capacity.begin(), capacity.end(), [](double c) { return c > 0.0; }))
-    return out;
-
+  const bool checks_start =
+      !settings.fold_only && std::any_of(capacity.begin(), capacity.end(), [](double c) { return c > 0.0; });
   // Which branch the start lies on. The cold start finds some steady state, and past
   // distress that is a hot one. A branch continued up from the start through stable
   // states to a turning point the dynamics confirm (the step below settles, the step
   // above runs away) is the cool branch of the S: the hot branch turns back only at its
   // lower end, and a start on the unstable middle branch runs away at its first step.
-  // Otherwise the start's branch is checked: the cool branch is the one that goes on down
-  // to light loads, where the bearing has one steady state, so continued down to a tenth
-  // of the start, the start's branch must get there without a turning point and land on
-  // that light load's own cold start. If it does not, the search starts from the light load.
-  if (out.fold_proven) return out;
-  double light = settings.load_start * light_load_fraction;
-  std::vector<double> light_state;
-  SteadyReport light_start;
-  if (model.scene().lubricant.supply) {
-    // Oil fed under pressure lifts the gear off a load light enough, which then has no
-    // steady state: the light load is the lightest of a tenth, a fifth, … of the start
-    // that has one, up to two thirds of the start.
-    for (;; light *= 2.0) {
-      model.set_load(light);
-      light_start = steady.solve_cold(light_state);
-      if (light_start.converged || 2.0 * light > settings.load_start / 1.5) break;
+  // Otherwise the start's branch is checked (check_start); if it does not lead down to
+  // the light load's state, the search starts from the light load. The check depends on
+  // the start alone: on a thread the study lends it runs beside the search, on a model
+  // of its own (the same bearing), and is dropped if the fold is proven.
+  std::optional<BorrowedThreads> helper;
+  std::future<StartCheck> ahead;
+  if (checks_start && settings.spare_threads) {
+    helper.emplace(settings.spare_threads, 1);
+    if (helper->count() == 1) {
+      std::shared_ptr<BearingModel> twin =
+          model.on_mesh(model.scene().mesh.radial_nodes, model.scene().mesh.circumferential_nodes);
+      ahead = std::async(std::launch::async, [twin, &settings, start = u]() {
+        return check_start(*twin, settings, start);
+      });
+    } else {
+      helper.reset();
     }
   }
-  if (progress) progress(fmt::format("  is the start on the cool branch? following it down to {:.3g} N", light));
-  std::vector<double> down = u;
-  NaturalSettings natural;
-  natural.newton = in_basin(newton);
-  natural.initial_step = natural.max_step = 0.15 * settings.load_start;
-  natural.min_step = settings.bracket_width * light;
-  const NaturalReport descent = continue_in_parameter(model, down, settings.load_start, light, natural);
-  model.set_load(light);
-  if (!model.scene().lubricant.supply) light_start = steady.solve_cold(light_state);
-  if (descent.reached_target && light_start.converged && same_state(down, light_state)) return out;
-  if (!light_start.converged) {
+  DistressSearch out = search_from(model, settings, u, first, progress, cool, approach);
+  if (!checks_start) return out;
+  if (out.fold_proven) {
+    if (ahead.valid()) ahead.wait();  // its thread is the study's again once it is done
+    return out;
+  }
+  const bool beside = ahead.valid();
+  const StartCheck check = beside ? ahead.get() : check_start(model, settings, u);
+  helper.reset();
+  // Counted as on one thread: the search's own count holds the check's factorizations
+  // there, and a check dropped with the fold proven counts nowhere.
+  if (beside) out.counts.klu_factorizations += check.klu_factorizations;
+  const double light = check.light;
+  if (progress)
+    progress(fmt::format("  is the start on the cool branch? its branch followed down to {:.3g} N", light));
+  if (check.descent.reached_target && check.light_start.converged && same_state(check.down, check.light_state))
+    return out;
+  if (!check.light_start.converged) {
     // No reference to judge by: the search from the start as it is, and say so.
     out.row.method = fmt::format("the start's branch could not be checked (no steady state at {:.3g} N); {}", light,
                                  out.row.method);
@@ -131,14 +181,14 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
   if (progress)
     progress(fmt::format("  the start at {:.6g} N is not on the cool branch ({}); searching from {:.3g} N",
                          settings.load_start,
-                         descent.reached_target ? "it continues down to another state than the light load's"
-                                                : "its branch turns back on the way down",
+                         check.descent.reached_target ? "it continues down to another state than the light load's"
+                                                      : "its branch turns back on the way down",
                          light));
   // The first search's work counts too.
   const SearchCounts spent = out.counts;
   DistressSearchSettings from_light = settings;
   from_light.load_start = light;
-  out = search_from(model, from_light, light_state, light_start, progress, cool, approach);
+  out = search_from(model, from_light, check.light_state, check.light_start, progress, cool, approach);
   out.counts.add(spent);
   if (out.row.distress_load && *out.row.distress_load < settings.load_start) {
     out.start_past_distress = true;
@@ -182,7 +232,8 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
       progress(fmt::format("  {:.6g} rad/s: {} [{} steady solves, {:.1f} s]", model.speed(), out.row.failure, solves,
                            elapsed_ms(t0) / 1000.0));
   }
-  out.counts.klu_factorizations = SparseLu::thread_counts().factored_since(before) + out.counts.ida_factorizations;
+  // (Plus the start's check where it ran beside the search: search_from_start.)
+  out.counts.klu_factorizations += SparseLu::thread_counts().factored_since(before) + out.counts.ida_factorizations;
   return out;
 }
 

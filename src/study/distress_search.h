@@ -40,6 +40,8 @@
 
 namespace twb {
 
+class SpareThreads;
+
 struct DistressSearchSettings {
   double load_start = 0.0, load_end = 0.0;  // N
   double bracket_width = 0.002;             // relative
@@ -61,6 +63,9 @@ struct DistressSearchSettings {
   // Keep each state's unknowns (DistressSearch::state_vectors), for an error bar on
   // every state (study.error_estimate: every_state).
   bool keep_state_vectors = false;
+  // Not a setting: the study's idle threads (study/spare_threads.h), one of which may
+  // check the start's branch beside the search. The results do not depend on it.
+  SpareThreads* spare_threads = nullptr;
 };
 
 // What a search cost: the work behind one W_d.

@@ -17,6 +17,7 @@
 #include "parallel.h"
 #include "study/search_journal.h"
 #include "study/search_scheduler.h"
+#include "study/spare_threads.h"
 #include "richardson.h"
 #include "state_error.h"
 #include "study_support.h"
@@ -68,86 +69,125 @@ void estimate_state_errors(const BearingModel& model, DistressSearch& found, con
   found.state_vectors.clear();
 }
 
-// W_d's error bar (study.error_estimate: richardson) for a search that found a fold.
-void estimate_mesh_error(const BearingModel& model, const DistressSearchSettings& settings, DistressSearch& found,
-                         const ProgressReport& progress) {
-  const Study& st = model.scene().study;
-  const bool searches_distress = st.type == StudyType::load_sweep || st.type == StudyType::distress_map;
-  if (!searches_distress || st.error_estimate == ErrorEstimate::none || !found.row.distress_load ||
-      !found.row.fold_load || found.states.empty())
-    return;
-  const Scene fine = refined_mesh(model.scene());
-  if (progress)
-    progress(fmt::format("  error bar: the fold on the {} x {} mesh", fine.mesh.radial_nodes,
-                         fine.mesh.circumferential_nodes));
-  DistressSearchSettings from = settings;
-  from.load_start = found.states.front().state.load;  // where the search began (a light load past distress)
+namespace {
+
+// What one piece of a search's bars found: a refined load extrapolated, or why not.
+struct RefinedBar {
+  std::optional<MeshErrorEstimate> estimate;
   std::string why;
-  const auto t0 = Clock::now();
-  std::optional<MeshErrorEstimate> e;
+  double seconds = 0.0;
+  long klu_factorizations = 0;  // on the thread that ran it
+};
+
+bool searches_failure(const Study& st) {
+  return (st.type == StudyType::load_sweep || st.type == StudyType::distress_map) &&
+         st.error_estimate != ErrorEstimate::none;
+}
+
+// W_d again on the refined mesh: from the coarse fold by Newton on the fold system, else
+// by a search there from where the coarse one began (a light load past distress).
+RefinedBar refined_fold(const BearingModel& model, const DistressSearchSettings& settings, const DistressSearch& found,
+                        const ProgressReport& progress) {
+  RefinedBar bar;
+  DistressSearchSettings from = settings;
+  from.load_start = found.states.front().state.load;
   try {
     const CoarseFold coarse{*found.row.fold_load, &model, found.fold ? &*found.fold : nullptr};
-    e = richardson_estimate(model.scene(), model.speed(), coarse, from, why, progress);
+    bar.estimate = richardson_estimate(model.scene(), model.speed(), coarse, from, bar.why, progress);
   } catch (const InternalError&) {
     throw;  // a bug: no fallback may hide it
   } catch (const std::exception& failure) {
-    why = std::string("the refined mesh's search failed: ") + failure.what();
+    bar.why = std::string("the refined mesh's search failed: ") + failure.what();
   }
-  if (!e) {
-    found.row.method += "; no error estimate: " + why;
-    return;
-  }
-  found.row.fine_fold_load = e->fine_fold;
-  found.row.extrapolated_load = e->extrapolated;
-  found.row.discretization_error = e->error;
-  if (progress)
-    progress(fmt::format("  error bar: fold {:.2f} N on {}; extrapolated W_d = {:.2f} ± {:.2f} N [{:.1f} s]",
-                         e->fine_fold, e->fine_mesh, e->extrapolated, e->error, elapsed_ms(t0) / 1000.0));
+  return bar;
 }
 
-// Each failure criterion's crossing again on the refined mesh (study.error_estimate:
-// richardson), and W_fail's mesh-converged value and error bar: W_d's where distress
-// sets it, else its criterion's.
-void estimate_crossing_errors(const BearingModel& model, const DistressSearchSettings& settings, DistressSearch& found,
-                              const ProgressReport& progress) {
-  const Study& st = model.scene().study;
-  const bool searches = st.type == StudyType::load_sweep || st.type == StudyType::distress_map;
+// Criterion c's crossing again on the refined mesh, on a refined model of its own.
+RefinedBar refined_crossing(const BearingModel& model, const DistressSearchSettings& settings,
+                            const DistressSearch& found, std::size_t c) {
+  RefinedBar bar;
+  try {
+    const Scene refined = refined_mesh(model.scene());
+    const std::unique_ptr<BearingModel> fine =
+        model.on_mesh(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
+    bar.estimate = crossing_estimate(model, *fine, kFailureCriteria[c], found.crossing_states[c].first,
+                                     found.crossing_states[c].second, settings.bracket_width, settings.load_end,
+                                     bar.why);
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
+  } catch (const std::exception& failure) {
+    bar.why = failure.what();
+  }
+  return bar;
+}
+
+}  // namespace
+
+long estimate_failure_errors(const BearingModel& model, const DistressSearchSettings& settings,
+                             DistressSearch& found, const ProgressReport& progress, SpareThreads* spare) {
+  if (!searches_failure(model.scene().study)) return 0;
   DistressRow& row = found.row;
-  if (!searches || st.error_estimate == ErrorEstimate::none) return;
-  std::unique_ptr<BearingModel> fine;
-  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
-    if (!row.criterion_loads[c] || found.crossing_states.size() <= c || found.crossing_states[c].second.empty())
-      continue;
-    // A crossing at the start lies below the searched range: no crossing to refine.
-    if (*row.criterion_loads[c] <= settings.load_start) continue;
-    const auto t0 = Clock::now();
-    std::string why;
-    std::optional<MeshErrorEstimate> e;
-    try {
-      if (!fine) {
-        const Scene refined = refined_mesh(model.scene());
-        fine = model.on_mesh(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
-      }
-      e = crossing_estimate(model, *fine, kFailureCriteria[c], found.crossing_states[c].first,
-                            found.crossing_states[c].second, settings.bracket_width, settings.load_end, why);
-    } catch (const InternalError&) {
-      throw;  // a bug: no fallback may hide it
-    } catch (const std::exception& failure) {
-      why = failure.what();
+  // The pieces: W_d's fold where the search found one, and each criterion's crossing
+  // above the searched range's start (one at the start lies below it: nothing to refine).
+  const bool fold = row.distress_load && row.fold_load && !found.states.empty();
+  std::vector<std::size_t> crossings;
+  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
+    if (row.criterion_loads[c] && found.crossing_states.size() > c && !found.crossing_states[c].second.empty() &&
+        *row.criterion_loads[c] > settings.load_start)
+      crossings.push_back(c);
+  const std::size_t pieces = (fold ? 1 : 0) + crossings.size();
+  if (fold && progress) {
+    const Scene fine = refined_mesh(model.scene());
+    progress(fmt::format("  error bar: the fold on the {} x {} mesh", fine.mesh.radial_nodes,
+                         fine.mesh.circumferential_nodes));
+  }
+  std::vector<RefinedBar> bars(pieces);
+  const std::thread::id caller = std::this_thread::get_id();
+  {
+    const BorrowedThreads helpers(spare, int(pieces) - 1);
+    run_in_parallel(pieces, 1 + helpers.count(), [&](std::size_t k) {
+      const auto t0 = Clock::now();
+      const SparseLu::Counts before = SparseLu::thread_counts();
+      bars[k] = fold && k == 0 ? refined_fold(model, settings, found, progress)
+                               : refined_crossing(model, settings, found, crossings[k - (fold ? 1 : 0)]);
+      bars[k].seconds = elapsed_ms(t0) / 1000.0;
+      if (std::this_thread::get_id() != caller)
+        bars[k].klu_factorizations = SparseLu::thread_counts().factored_since(before);
+    });
+  }
+  // The pieces' results in their fixed order, whichever thread ran them.
+  long factorizations = 0;
+  for (const RefinedBar& b : bars) factorizations += b.klu_factorizations;
+  if (fold) {
+    const RefinedBar& b = bars.front();
+    if (!b.estimate) {
+      row.method += "; no error estimate: " + b.why;
+    } else {
+      row.fine_fold_load = b.estimate->fine_fold;
+      row.extrapolated_load = b.estimate->extrapolated;
+      row.discretization_error = b.estimate->error;
+      if (progress)
+        progress(fmt::format("  error bar: fold {:.2f} N on {}; extrapolated W_d = {:.2f} ± {:.2f} N [{:.1f} s]",
+                             b.estimate->fine_fold, b.estimate->fine_mesh, b.estimate->extrapolated,
+                             b.estimate->error, b.seconds));
     }
-    if (!e) {
-      row.method += fmt::format("; no error bar for {}: {}", limit_name(kFailureCriteria[c]), why);
+  }
+  for (std::size_t k = 0; k < crossings.size(); ++k) {
+    const std::size_t c = crossings[k];
+    const RefinedBar& b = bars[k + (fold ? 1 : 0)];
+    if (!b.estimate) {
+      row.method += fmt::format("; no error bar for {}: {}", limit_name(kFailureCriteria[c]), b.why);
       continue;
     }
-    row.criterion_errors[c] = e->error;
+    row.criterion_errors[c] = b.estimate->error;
     if (row.criterion == FailureCriterion::crossing(kFailureCriteria[c])) {
-      row.failure_extrapolated = e->extrapolated;
-      row.failure_error = e->error;
+      row.failure_extrapolated = b.estimate->extrapolated;
+      row.failure_error = b.estimate->error;
     }
     if (progress)
       progress(fmt::format("  error bar: {} crossed at {:.2f} N on {}; extrapolated {:.2f} ± {:.2f} N [{:.1f} s]",
-                           limit_name(kFailureCriteria[c]), e->fine_fold, e->fine_mesh, e->extrapolated, e->error,
-                           elapsed_ms(t0) / 1000.0));
+                           limit_name(kFailureCriteria[c]), b.estimate->fine_fold, b.estimate->fine_mesh,
+                           b.estimate->extrapolated, b.estimate->error, b.seconds));
   }
   if (row.criterion && row.criterion->distress) {
     row.failure_extrapolated = row.extrapolated_load;
@@ -155,6 +195,7 @@ void estimate_crossing_errors(const BearingModel& model, const DistressSearchSet
   }
   if (row.failure_load && row.failure_error)
     row.failure += fmt::format("; mesh-converged {:.1f} ± {:.1f} N", *row.failure_extrapolated, *row.failure_error);
+  return factorizations;
 }
 
 }  // namespace twb

@@ -30,6 +30,7 @@
 #include "study/distress_search.h"
 #include "twb/error_family.h"
 #include "study/search_error_bars.h"
+#include "study/spare_threads.h"
 
 namespace twb {
 
@@ -161,16 +162,20 @@ struct SearchDone {
 };
 
 SearchDone search_one(const BearingModel& base, const SearchTask& task, const DistressSearchSettings& settings,
-                      const ProgressReport& progress) {
+                      const ProgressReport& progress, SpareThreads* spare) {
   SearchDone done;
   DistressSearch& found = done.found;
   const Variant& variant = *task.variant;
   const SparseLu::Counts before = SparseLu::thread_counts();  // this thread's, so this task's
+  bool searched = false;
   try {
     auto model = std::make_shared<BearingModel>(variant.scene ? *variant.scene : base.scene());
     model->set_speed(task.speed);
     done.model = model;
-    found = search_distress(*model, settings, progress);
+    DistressSearchSettings lent = settings;
+    lent.spare_threads = spare;
+    found = search_distress(*model, lent, progress);
+    searched = true;
   } catch (const InternalError&) {
     throw;  // a bug: no fallback may hide it
   } catch (const std::exception& e) {
@@ -181,12 +186,15 @@ SearchDone search_one(const BearingModel& base, const SearchTask& task, const Di
     found.row.method = std::string("solver failure: ") + e.what();
     found.message = found.row.method;
   }
+  // The task's factorizations on every thread: the search's own count (IDA's and a start
+  // check's beside it included; this thread's alone where it failed), then the bars'.
+  const SparseLu::Counts after_search = SparseLu::thread_counts();
+  long factorizations = searched ? found.counts.klu_factorizations : after_search.factored_since(before);
   if (done.model) {
-    estimate_mesh_error(*done.model, settings, found, progress);
-    estimate_crossing_errors(*done.model, settings, found, progress);
+    factorizations += estimate_failure_errors(*done.model, settings, found, progress, spare);
     estimate_state_errors(*done.model, found, progress);
   }
-  done.klu_factorizations = SparseLu::thread_counts().factored_since(before) + found.counts.ida_factorizations;
+  done.klu_factorizations = factorizations + SparseLu::thread_counts().factored_since(after_search);
   found.row.parameters = variant.parameters;
   found.row.sliding = variant.sliding;
   for (std::size_t i = 0; i < found.states.size(); ++i) {
@@ -288,10 +296,16 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
   }
 
   SearchScheduler::Work work;
+  // On this process's threads alone, those no search is left for serve the running
+  // searches' bars (an MPI rank or a slice runs the searches another process deals).
+  std::optional<SpareThreads> spare;
+  if (!how.scheduler) spare.emplace(how.threads, todo.size());
   auto run = [&](std::size_t i) {
     const SearchTask& task = tasks[i];
     if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
-    return search_one(base, task, settings, say);
+    SearchDone result = search_one(base, task, settings, say, spare ? &*spare : nullptr);
+    if (spare) spare->search_finished();
+    return result;
   };
   work.run_here = [&](std::size_t i) {
     if (how.stop && how.stop->load()) return;  // the study ends with the searches taken so far
