@@ -100,13 +100,16 @@ StepMarch march_load_step(BearingModel& model, std::span<const double> start_sta
   // Where IDA cannot go on, the film's mechanical equilibrium has typically lost its
   // branch under the rising temperatures (the collapse itself, an impasse of the DAE):
   // the steady solver's pseudo-transient continuation, in which every unknown relaxes,
-  // carries the state on from the last point integrated to where it lands.
+  // carries the state on from the last point integrated to where it lands. From there
+  // only: the steady solver's ramps from the cold start would reach a state that owes
+  // nothing to the trajectory (and on a fed, oil-cooled washer past its fold took two
+  // minutes to fail).
   auto land = [&](std::string why) {
     finish(std::move(why));
     if (duration > 0) return out;
     std::vector<double> u = out.state;
     SteadySolver steady(model, newton);
-    const SteadyReport rep = steady.solve(u);
+    const SteadyReport rep = steady.solve_near(u);
     out.newton_iterations += rep.iterations;
     if (rep.converged) {
       out.state = u;

@@ -1,6 +1,7 @@
 // The study's independent pieces on several threads: each piece runs whole on one thread
-// with its own model and solvers (no state shared between them), so the results do not
-// depend on the thread count; callers put them in order themselves.
+// with its own model and solvers (what they share they only read: a scene, a coarse
+// model's state to interpolate from), so the results do not depend on the thread count;
+// callers put them in order themselves.
 #pragma once
 
 #include <algorithm>

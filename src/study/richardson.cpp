@@ -232,17 +232,22 @@ std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, B
   // tangent u_W = −J⁻¹F_W with the polish's last factors (a Jacobian one Newton step
   // from the state: its error only moves the secant's first step): with it the
   // secant's first step lands next to the crossing instead of walking towards it.
-  std::vector<double> u_load(v.size());
-  fine.parameter_derivative(v, u_load);
-  polish.factorization().solve(u_load);
-  const double dw = kInputStep * load;
-  double slope = stencil_derivative(kCentred2, dw, [&](std::size_t k) {
-    const double shift = kCentred2.offsets[k] * dw;
-    fine.set_load(load + shift);
-    return std::vector<double>{*failure_margin(kind, LimitValues::of(fine.describe(moved_state(v, u_load, shift)),
-                                                                     thermal), limits)};
-  })[0];
-  fine.set_load(load);
+  // (None where the polish factored nothing, its start already converged: the secant
+  // then walks from its own first guess.)
+  double slope = 0.0;
+  if (polish.factorization().factored()) {
+    std::vector<double> u_load(v.size());
+    fine.parameter_derivative(v, u_load);
+    polish.factorization().solve(u_load);
+    const double dw = kInputStep * load;
+    slope = stencil_derivative(kCentred2, dw, [&](std::size_t k) {
+      const double shift = kCentred2.offsets[k] * dw;
+      fine.set_load(load + shift);
+      return std::vector<double>{*failure_margin(
+          kind, LimitValues::of(fine.describe(moved_state(v, u_load, shift)), thermal), limits)};
+    })[0];
+    fine.set_load(load);
+  }
   std::pair<double, std::vector<double>> state{load, std::move(v)};
   long solves = 0;
   // The secant's solves refactor the polish's Jacobian pattern: its symbolic analysis

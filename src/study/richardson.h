@@ -79,7 +79,8 @@ std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double 
 // A failure criterion's crossing (failure_load.h) again on the refined mesh: the coarse
 // crossing's state interpolated onto the refined mesh, Newton there at the coarse load,
 // then the secant on the margin to the crossing (crossing_near), each solve only as far
-// as the crossing's load needs (the bar to about 0.1 %). `fine` is the coarse model on
+// as the crossing's load needs (within about a tenth of the bracket width, as the coarse
+// crossing is located; docs/physics.md section 8). `fine` is the coarse model on
 // the refined mesh (BearingModel::on_mesh). Empty, with `why`, where Newton or the
 // secant fails there.
 std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, BearingModel& fine, LimitKind kind,

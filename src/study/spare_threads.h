@@ -1,8 +1,10 @@
 // The threads of a study's pool that no search is waiting for. A study runs its
 // independent searches one per thread (study_searches.cpp); once fewer searches are left
-// than threads, the idle ones may serve a running search's own independent pieces (its
-// error bars, each on its own refined model), so that a study of one speed on two cores
-// does not leave one idle. Lending changes where a piece runs, never what it computes.
+// than threads, the idle ones may serve a running search's own independent pieces (the
+// check of its start's branch, on a model of its own, and its error bars, each on its own
+// refined model), so that a study of one speed on two cores does not leave one idle.
+// The pieces only read the search's model (its scene, interpolation from it), never
+// evaluate it. Lending changes where a piece runs, never what it computes.
 #pragma once
 
 #include <algorithm>

@@ -25,6 +25,10 @@ class SteadySolver {
 
   // From u (a warm start), falling back to a speed ramp, then a load ramp, from the cold start.
   SteadyReport solve(std::vector<double>& u);
+  // From u alone: Newton, then pseudo-time steps from u when it fails, and no ramps: for
+  // a caller that asks where u itself leads (the ramps start from the cold start and
+  // would reach a state that owes nothing to u).
+  SteadyReport solve_near(std::vector<double>& u);
   // From the paper's cold start, by the scene's solver.method. On meshes finer than
   // kSequenceAbove nodes per film, by a mesh sequence first (solve_by_mesh_sequence);
   // with thermal deformation, by its homotopy (solve_by_deformation_homotopy); the cold
