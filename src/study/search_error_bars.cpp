@@ -130,6 +130,10 @@ long estimate_failure_errors(const BearingModel& model, const DistressSearchSett
   // The pieces: W_d's fold where the search found one, and each criterion's crossing
   // above the searched range's start (one at the start lies below it: nothing to refine).
   const bool fold = row.distress_load && row.fold_load && !found.states.empty();
+  // A W_d bracketed by transients alone has no fold to locate again on the refined mesh;
+  // a bisection there would cost the search's transients again on four times the nodes.
+  if (row.distress_load && !row.fold_load)
+    row.method += "; no error bar for W_d: bracketed by bisection alone (no fold located to refine)";
   std::vector<std::size_t> crossings;
   for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
     if (row.criterion_loads[c] && found.crossing_states.size() > c && !found.crossing_states[c].second.empty() &&
