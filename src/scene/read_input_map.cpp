@@ -24,6 +24,10 @@ std::vector<InputEntry> input_entries(const Node& map_node, const Scene& out, st
   for (const std::string& path : map.keys()) {
     const Node entry = map.get(path, "");
     if (const std::string why = not_taken(path); !why.empty()) entry.fail(fmt::format("{}: {}", entry.path(), why));
+    // Both studies that read such a map move their inputs along derivatives.
+    if (const std::string why = stepwise_input(path); !why.empty())
+      entry.fail(fmt::format("{}: {}; give a continuous input, or map the bearing over it (type: distress_map)",
+                             entry.path(), why));
     try {
       entries.push_back({entry, scene_input(out, path)});
     } catch (const std::invalid_argument& e) {

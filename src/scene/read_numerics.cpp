@@ -2,6 +2,8 @@
 // stopping rules (solver), the study to run, and where results go (output).
 #include <fmt/format.h>
 
+#include "twb/scene/scene_inputs.h"
+
 #include "scene_names.h"
 #include "physical_bounds.h"
 #include "scene_sections.h"
@@ -312,8 +314,7 @@ void check_followed_axes(const MapReader& study, const Study& s) {
       why = "roughness sets every face's Rq and the summits' statistics at once; give one input by its path (e.g. "
             "surfaces.washer.Rq)";
     else if (axis.parameter == MapParameter::groove_count || axis.parameter == MapParameter::groove_width ||
-             (axis.parameter == MapParameter::scene_input && axis.path.starts_with("geometry.washer.grooves.") &&
-              !axis.path.ends_with(".depth")))
+             (axis.parameter == MapParameter::scene_input && !stepwise_input(axis.path).empty()))
       why = "the grooves' count, width and dam and the lands' inlet fraction are placed on the grid's cells and "
             "lines, so their failure loads change by steps that Newton cannot follow (the depths are continuous)";
     else if (axis.parameter == MapParameter::scene_input && axis.path.starts_with("mesh."))

@@ -65,6 +65,9 @@ void check_study_parameters(const MapReader& scene, const Scene& out) {
   const std::vector<Node> items = study.get("parameters", "").list("");
   for (const Node& item : items) {
     const std::string path = item.yaml().Scalar();
+    if (const std::string why = stepwise_input(path); !why.empty())
+      item.fail(fmt::format("{}: {}; leave it out (a map over it shows its steps: type: distress_map)", item.path(),
+                            why));
     SceneInput input;
     try {
       input = scene_input(out, path);

@@ -47,6 +47,14 @@ bool is_bearing_input_path(std::string_view path) {
                      [&](std::string_view section) { return path.starts_with(section); });
 }
 
+std::string stepwise_input(std::string_view path) {
+  constexpr std::string_view grooves = "geometry.washer.grooves.";
+  if (!path.starts_with(grooves) || path.ends_with(".depth")) return {};
+  return fmt::format("'{}' is placed on the grid's cells and node lines, so the bearing changes with it by steps "
+                     "that have no derivative (the grooves' and lands' depths are smooth inputs)",
+                     path);
+}
+
 SceneInput scene_input(const Scene& scene, const std::string& path) {
   for (const SceneInput& in : scene.inputs)
     if (in.path == path) return in;

@@ -80,9 +80,17 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
   const Scene& scene = model.scene();
   const Study& st = scene.study;
   std::vector<SceneInput> inputs;
-  if (st.parameters.empty())
-    inputs = scene.inputs;
-  else
+  if (st.parameters.empty()) {
+    // Every input the file writes that moves the bearing smoothly (stepwise_input).
+    std::string left_out;
+    for (const SceneInput& in : scene.inputs)
+      if (stepwise_input(in.path).empty())
+        inputs.push_back(in);
+      else
+        left_out += (left_out.empty() ? "" : ", ") + in.path;
+    if (!left_out.empty())
+      out.summary.push_back("sensitivity: left out, placed on the grid (their steps have no derivative): " + left_out);
+  } else
     for (const std::string& path : st.parameters) inputs.push_back(scene_input(scene, path));
 
   // The state at the operating point, and J's factors there.

@@ -228,6 +228,31 @@ TEST(Sensitivity, EveryWrittenInputByDefaultAndNoneTwice) {
   for (const std::string& p : paths) EXPECT_TRUE(is_bearing_input_path(p)) << p;
 }
 
+// The grooves' dam radius and width are placed on the grid (stepwise_input): a default
+// study leaves them out, says so, and still differentiates the grooves' depth.
+TEST(Sensitivity, InputsPlacedOnTheGridAreLeftOutAndNamed) {
+  const Scene scene = load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
+                                 {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24", "operating.load=150 N",
+                                  "operating.sliding=washer_gear",
+                                  "geometry.washer.grooves={count: 8, width: 2 mm, depth: 50 um, closed_at: 10 mm}",
+                                  "study={type: sensitivity}"});
+  EXPECT_FALSE(stepwise_input("geometry.washer.grooves.closed_at").empty());
+  EXPECT_FALSE(stepwise_input("geometry.washer.grooves.land.taper.fraction").empty());
+  EXPECT_TRUE(stepwise_input("geometry.washer.grooves.depth").empty());
+  EXPECT_TRUE(stepwise_input("geometry.washer.grooves.land.step.depth").empty());
+  EXPECT_TRUE(stepwise_input("geometry.gear.tilt").empty());
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  EXPECT_EQ(find_row(out, "torque_Nm", "geometry.washer.grooves.closed_at"), nullptr);
+  EXPECT_NE(find_row(out, "torque_Nm", "geometry.washer.grooves.depth"), nullptr);
+  const bool named = std::any_of(out.summary.begin(), out.summary.end(), [](const std::string& line) {
+    return line.find("left out, placed on the grid") != std::string::npos &&
+           line.find("geometry.washer.grooves.closed_at") != std::string::npos;
+  });
+  EXPECT_TRUE(named);
+}
+
 TEST(Sensitivity, AnInputChangedIsTheSceneWrittenWithIt) {
   const Scene scene = paper_scene("{type: point}");
   const std::pair<std::string, double> set[] = {{"geometry.gear.tilt", 1.5e-3}};

@@ -20,6 +20,14 @@ namespace twb {
 // lubricant, limits, operating, friction) and outside lists: where inputs are.
 bool is_bearing_input_path(std::string_view path);
 
+// Why an input moves the bearing by steps only, or empty where it moves it smoothly: the
+// grooves' width, their dam's radius and the lands' inlet fraction are placed on the
+// grid's cells and node lines (docs/physics.md section 14), so between two placements
+// nothing changes and across one the answer jumps. They have no derivative: no
+// sensitivity, FORM gradient, calibration or followed map can take them (a searched map
+// can).
+std::string stepwise_input(std::string_view path);
+
 // The input at `path`: as the scene file writes it (Scene::inputs), else the default the
 // scene resolved to (describe_scene), e.g. a material's thermal expansion the file leaves
 // out. std::invalid_argument, saying which inputs there are, for a path that names none.
