@@ -1,5 +1,6 @@
 #include "study/failure_at_inputs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -232,8 +233,9 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::searched_at(s
   return s;
 }
 
-std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settled_at(std::span<const double> x,
-                                                                             std::string& why) const {
+std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::from_nearest(std::span<const double> x,
+                                                                               std::string& why,
+                                                                               bool& refused) const {
   const Settled* nearest = nullptr;
   double least = std::numeric_limits<double>::infinity();
   std::vector<std::shared_ptr<const Settled>> anchors;
@@ -247,23 +249,52 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settled_at(st
     for (std::size_t i = 0; i < x.size(); ++i) d += std::pow((x[i] - a->x[i]) / scales_[i], 2);
     if (d < least) least = d, nearest = a.get();
   }
-  if (nearest) {
-    std::string moved;
-    std::unique_ptr<Settled> s;
-    if (least == 0.0 && nearest->crossings.empty()) {
-      // A settled fold's own inputs (FORM's start at the medians the search ran at): its
-      // fold, on a bearing built again.
-      s = bearing_at(x, why);
-      if (!s) return nullptr;
-      s->fold = nearest->fold;
-      s->set_failure();
-    } else {
-      s = walk(*nearest, x, moved);
+  if (!nearest) return nullptr;
+  std::string moved;
+  std::unique_ptr<Settled> s;
+  if (least == 0.0 && nearest->crossings.empty()) {
+    // A settled fold's own inputs (FORM's start at the medians the search ran at): its
+    // fold, on a bearing built again.
+    s = bearing_at(x, why);
+    if (!s) {
+      refused = true;
+      return nullptr;
     }
-    if (s && !crosses_unfollowed(*s)) return s;
+    s->fold = nearest->fold;
+    s->set_failure();
+  } else {
+    s = walk(*nearest, x, moved);
   }
+  if (s && !crosses_unfollowed(*s)) return s;
+  return nullptr;
+}
+
+std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settled_at(std::span<const double> x,
+                                                                             std::string& why) const {
+  bool refused = false;
+  if (std::unique_ptr<Settled> s = from_nearest(x, why, refused)) return s;
+  if (refused) return nullptr;
   // (Outside an input's range the search's bearing is refused too, with the reason.)
   return searched_at(x, why);
+}
+
+std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, double load, std::string& why) const {
+  bool refused = false;
+  if (const std::unique_ptr<Settled> s = from_nearest(x, why, refused)) return s->load <= load;
+  if (refused) return std::nullopt;
+  // The search alone answers, with the loads it located (a sample's state is no point to
+  // follow from: nothing is settled). It ends ten bracket widths above `load`: a failure
+  // load between them is located as any other (and lies above `load`), and none up to
+  // there means none at `load`.
+  const std::unique_ptr<Settled> s = bearing_at(x, why);
+  if (!s) return std::nullopt;
+  DistressSearchSettings settings = search_;
+  settings.load_end = std::clamp(load * (1.0 + 10.0 * search_.bracket_width), search_.load_start, search_.load_end);
+  const DistressSearch found = search_distress(*s->model, settings, {});
+  ++searches_;
+  // No steady state even at the light load: the bearing fails below load_start.
+  if (found.failed) return true;
+  return found.row.failure_load && *found.row.failure_load <= load;
 }
 
 bool FailureLoadAtInputs::crosses_unfollowed(const Settled& s) const {

@@ -53,6 +53,13 @@ class FailureLoadAtInputs {
   // settled there. Safe to call from several threads at once.
   std::optional<FailureAtInputs> at(std::span<const double> x, bool gradient, std::string& why) const;
 
+  // Whether the bearing at x fails at `load` (W_fail(x) ≤ load), a Monte Carlo sample's
+  // question: followed from the nearest settled point as at() does, else by a failure
+  // search that ends just above `load` instead of at the study's load_end (whether the
+  // bearing fails there needs no more of the branch) and settles nothing. None, with why,
+  // as for at(). Safe to call from several threads at once.
+  std::optional<bool> fails_at(std::span<const double> x, double load, std::string& why) const;
+
   // Settle at x and keep it as a point later moves start from (e.g. the design point).
   void keep(std::span<const double> x);
   // Whether every point settled is kept too (each later move then starts nearer): for a
@@ -88,6 +95,10 @@ class FailureLoadAtInputs {
   void remember(std::unique_ptr<Settled> s) const;
   std::unique_ptr<Settled> searched_at(std::span<const double> x, std::string& why) const;
   std::unique_ptr<Settled> settled_at(std::span<const double> x, std::string& why) const;
+  // W_fail at x moved from the nearest settled point; none where there is none, Newton
+  // cannot make the move or a criterion not followed comes first (`refused` set, with
+  // why, where the scene refuses x itself).
+  std::unique_ptr<Settled> from_nearest(std::span<const double> x, std::string& why, bool& refused) const;
   std::unique_ptr<BearingModel> model_at(std::span<const double> x, std::string& why) const;
   // A Settled at x with its bearing built and nothing settled on it yet; none, with why,
   // where the scene refuses x.

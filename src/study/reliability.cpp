@@ -148,22 +148,26 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
     std::mutex first_lock;
     std::string first_why;
     const long before = evaluations;
+    // A sample asks only whether the bearing fails at the operating load: a search it
+    // needs ends just above that load (FailureLoadAtInputs::fails_at).
     const FailureIndicator fails = [&](std::span<const double> u) -> std::optional<bool> {
+      ++evaluations;
       std::string why;
-      std::optional<FailureLoadValue> v;
+      std::optional<bool> failed;
       try {
-        v = h(u, false, why);
+        std::vector<double> x(n);
+        for (std::size_t i = 0; i < n; ++i) x[i] = input_at(inputs[i], u[i]);
+        failed = failure.fails_at(x, load, why);
       } catch (const InternalError&) {
         throw;  // a bug: no sample may hide it
       } catch (const std::exception& e) {
         why = e.what();  // one sample's, not the study's
       }
-      if (!v) {
+      if (!failed) {
         const std::lock_guard<std::mutex> hold(first_lock);
         if (first_why.empty()) first_why = why;
-        return std::nullopt;
       }
-      return v->load <= load;
+      return failed;
     };
     SamplingSettings sampling;
     sampling.cov = st.sampling_cov;

@@ -15,6 +15,7 @@
 
 #include "model/bearing_model.h"
 #include "study/distress_search.h"
+#include "study/failure_at_inputs.h"
 #include "study/first_order_reliability.h"
 #include "study/study_runner.h"
 #include "twb/scene/scene_inputs.h"
@@ -45,6 +46,32 @@ double fold_load_at(const Scene& scene, double ambient) {
   const DistressRow row = failure_at(scene, ambient);
   EXPECT_TRUE(row.fold_load.has_value()) << row.method;
   return row.fold_load.value_or(0.0);
+}
+
+// A sample's question, whether the bearing fails at a load, answered by a failure search
+// that ends just above that load (no point settled yet to follow from) and by a move from
+// the point the study's search settled: both as the full search's W_fail says, a percent
+// either side of it (five times the bracket width the loads are located to).
+TEST(ReliabilityStudy, ASampleFailsWhereItsFailureLoadLiesBelowTheLoad) {
+  const Scene scene = paper_scene({"operating.load=150 N"});
+  DistressSearchSettings search;
+  search.load_start = 50.0;
+  search.load_end = 400.0;
+  for (const bool settled_first : {false, true}) {
+    FailureLoadAtInputs failure(scene, {"operating.ambient"}, {3.0}, search, 1);
+    std::string why;
+    if (settled_first) ASSERT_NE(failure.search_at(std::vector<double>{297.15}, {}, why), nullptr) << why;
+    for (const double ambient : {297.15, 303.15}) {
+      const DistressRow row = failure_at(scene, ambient);
+      ASSERT_TRUE(row.failure_load.has_value()) << row.method;
+      const double w = *row.failure_load;
+      const std::vector<double> x{ambient};
+      const long searches = failure.searches();
+      EXPECT_EQ(failure.fails_at(x, 0.99 * w, why), std::optional<bool>(false)) << ambient << " K: " << why;
+      EXPECT_EQ(failure.fails_at(x, 1.01 * w, why), std::optional<bool>(true)) << ambient << " K: " << why;
+      if (!settled_first) EXPECT_EQ(failure.searches(), searches + 2) << "each answered by a search of its own";
+    }
+  }
 }
 
 TEST(ReliabilityStudy, DesignPointsLieOnTheFailureSurfaceAndSamplingAgrees) {
