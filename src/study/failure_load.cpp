@@ -125,7 +125,7 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
   NewtonSettings settling = newton;
   if (load_only) {
     settling.quantities.at = [&](std::span<const double> w) {
-      return std::vector<double>{*failure_margin(kind, LimitValues::of(model.describe(w), thermal), limits)};
+      return std::vector<double>{*state_margin(model, w, kind, limits)};
     };
     settling.quantities.settled = [&](const NewtonSettings::QuantityReads& reads) {
       return settled_by_contraction(

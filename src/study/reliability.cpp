@@ -100,12 +100,16 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
 
   // W_fail at the inputs x(u), and its gradient in u.
   std::atomic<long> evaluations{0};
+  // The inputs at standard-normal coordinates u.
+  const auto inputs_at = [&](std::span<const double> u) {
+    std::vector<double> x(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = input_at(inputs[i], u[i]);
+    return x;
+  };
   const FailureLoadFunction h = [&](std::span<const double> u, bool gradient,
                                     std::string& why) -> std::optional<FailureLoadValue> {
     ++evaluations;
-    std::vector<double> x(n);
-    for (std::size_t i = 0; i < n; ++i) x[i] = input_at(inputs[i], u[i]);
-    const std::optional<FailureAtInputs> f = failure.at(x, gradient, why);
+    const std::optional<FailureAtInputs> f = failure.at(inputs_at(u), gradient, why);
     if (!f) return std::nullopt;
     FailureLoadValue v{f->load, {}};
     for (std::size_t i = 0; i < f->gradient.size(); ++i) v.gradient.push_back(f->gradient[i] * input_slope(inputs[i], u[i]));
@@ -136,9 +140,7 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
                                     "{:.6g} N at the inputs' medians, {} failure loads evaluated)",
                                     load, speed, form.probability, form.beta, *found.row.failure_load, form.evaluations));
   out.summary.push_back("reliability: design point: " + design_point_words(form, inputs));
-  std::vector<double> x_star(n);
-  for (std::size_t i = 0; i < n; ++i) x_star[i] = input_at(inputs[i], form.u[i]);
-  failure.keep(x_star);
+  failure.keep(inputs_at(form.u));
 
   // The Monte Carlo check round the design point: its samples start from the points
   // FORM settled, none from each other's.
@@ -155,9 +157,7 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
       std::string why;
       std::optional<bool> failed;
       try {
-        std::vector<double> x(n);
-        for (std::size_t i = 0; i < n; ++i) x[i] = input_at(inputs[i], u[i]);
-        failed = failure.fails_at(x, load, why);
+        failed = failure.fails_at(inputs_at(u), load, why);
       } catch (const InternalError&) {
         throw;  // a bug: no sample may hide it
       } catch (const std::exception& e) {

@@ -215,9 +215,8 @@ std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, B
   // itself it moves the refined crossing by 1e-3 of that difference, the bar by 0.1 %
   // (the same part as a state's bars: refine_state).
   const OperatingLimits limits = OperatingLimits::of(fine.scene());
-  const bool thermal = fine.scene().effects.thermal;
   newton.quantities.at = [&](std::span<const double> w) {
-    return std::vector<double>{*failure_margin(kind, LimitValues::of(fine.describe(w), thermal), limits)};
+    return std::vector<double>{*state_margin(fine, w, kind, limits)};
   };
   newton.quantities.settled = [&](const NewtonSettings::QuantityReads& reads) {
     return settled_by_contraction(reads, [](std::size_t, double margin) { return 1e-3 * std::abs(margin); });
@@ -243,8 +242,7 @@ std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, B
     slope = stencil_derivative(kCentred2, dw, [&](std::size_t k) {
       const double shift = kCentred2.offsets[k] * dw;
       fine.set_load(load + shift);
-      return std::vector<double>{*failure_margin(
-          kind, LimitValues::of(fine.describe(moved_state(v, u_load, shift)), thermal), limits)};
+      return std::vector<double>{*state_margin(fine, moved_state(v, u_load, shift), kind, limits)};
     })[0];
     fine.set_load(load);
   }

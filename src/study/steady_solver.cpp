@@ -31,19 +31,7 @@ SteadySolver::SteadySolver(BearingModel& model, NewtonSettings settings, SparseL
 
 SteadyReport SteadySolver::solve(std::vector<double>& u) { return settle(u, true); }
 
-SteadyReport SteadySolver::solve_near(std::vector<double>& u) {
-  const auto t0 = std::chrono::steady_clock::now();
-  SteadyReport rep;
-  rep.strategy = "newton";
-  std::vector<double> trial = u;
-  if (reach(trial, rep, true)) {
-    u = trial;
-    rep.converged = true;
-    rep.message.clear();
-  }
-  rep.wall_ms = elapsed_ms(t0);
-  return rep;
-}
+SteadyReport SteadySolver::solve_near(std::vector<double>& u) { return settle(u, true, false); }
 
 namespace {
 
@@ -246,7 +234,7 @@ SteadyReport SteadySolver::solve_by_paper(std::vector<double>& u) {
   return rep;
 }
 
-SteadyReport SteadySolver::settle(std::vector<double>& u, bool newton_first) {
+SteadyReport SteadySolver::settle(std::vector<double>& u, bool newton_first, bool ramps) {
   const auto t0 = std::chrono::steady_clock::now();
   SteadyReport rep;
   rep.strategy = "newton";
@@ -255,7 +243,7 @@ SteadyReport SteadySolver::settle(std::vector<double>& u, bool newton_first) {
     u = trial;
     rep.converged = true;
     rep.message.clear();
-  } else {
+  } else if (ramps) {
     rep = ramp(u, rep);
   }
   rep.wall_ms = elapsed_ms(t0);

@@ -59,8 +59,8 @@ class SteadySolver {
   bool reach(std::vector<double>& u, SteadyReport& rep, bool newton_first = true) {
     return pseudo_transient_.reach(u, rep, newton_first);
   }
-  // reach(), then the ramps when it fails.
-  SteadyReport settle(std::vector<double>& u, bool newton_first);
+  // reach(), then the ramps when it fails (where `ramps`).
+  SteadyReport settle(std::vector<double>& u, bool newton_first, bool ramps = true);
   // Walks a parameter (speed, load) from `from` up to `target`, each step warm-started
   // from the last state; the step grows 1.5× after a success and halves after a failure,
   // giving up below 1e-4 of the target. Returns the value reached; leaves the
