@@ -16,6 +16,13 @@ class FilmFaceFlows;
 
 class ConvectionEffect final : public EffectAssembler {
  public:
+  // The supply oil present at every radius of a fed groove, as a share of the Couette
+  // flow a film of the roughness's height carries across a row, (ω r/2)·σ·Δr: it joins the
+  // lands' deliveries in the groove's flow-weighted mean, which without it jumps from one
+  // land's temperature to the supply's where the only delivering face's flow changes sign
+  // (Newton's iterates then toggle across the jump). docs/physics.md section 15.
+  static constexpr double kGrooveFreshShare = 0.01;
+
   explicit ConvectionEffect(ModelSetup& setup);
   void add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const override;
 
@@ -24,8 +31,8 @@ class ConvectionEffect final : public EffectAssembler {
   // The mixed temperature rows of one fed groove at one radius (docs/physics.md section 15).
   struct Delivery;
   void add_groove_mixing(std::span<const double> u, const Film& film, const FilmFaceFlows& flows,
-                         const std::vector<int>& nodes, const std::vector<Delivery>& delivered, Assembler& a,
-                         FilmTotals& totals) const;
+                         const std::vector<int>& nodes, const std::vector<Delivery>& delivered, double fresh,
+                         Assembler& a, FilmTotals& totals) const;
 
   const BearingModel& model_;
   double heat_capacity_ = 0.0;  // ρ c of the oil, J/(m³ K), at the sump's temperature

@@ -128,14 +128,19 @@ void ConvectionEffect::add_film(std::span<const double> u, const Film& film, Ass
   for (int i = 1; i < m.radial_nodes() - 1; ++i)
     for (int j = 0; j < m.circumferential_nodes(); ++j)
       if (film.fed_node(i, j)) nodes[group(i, j)].push_back(m.node(i, j));
-  for (std::size_t g = 0; g < nodes.size(); ++g) add_groove_mixing(u, film, flows, nodes[g], delivered[g], a, totals);
+  for (std::size_t g = 0; g < nodes.size(); ++g) {
+    if (nodes[g].empty()) continue;
+    const double r = m.radius(int(g) % rows + 1);
+    const double fresh = kGrooveFreshShare * std::abs(model_.scene().operating.speed) * r / 2 * film.sigma * m.dr();
+    add_groove_mixing(u, film, flows, nodes[g], delivered[g], fresh, a, totals);
+  }
 }
 
 void ConvectionEffect::add_groove_mixing(std::span<const double> u, const Film& film, const FilmFaceFlows& flows,
                                          const std::vector<int>& nodes, const std::vector<Delivery>& delivered,
-                                         Assembler& a, FilmTotals& totals) const {
+                                         double fresh, Assembler& a, FilmTotals& totals) const {
   const double k = model_.scene().lubricant.supply->carry_over;
-  double carried = 0.0, heat = 0.0;  // Σ inflow (m³/s), Σ inflow · T (m³/s · K)
+  double carried = fresh, heat = fresh * supply_rise_;  // Σ inflow (m³/s), Σ inflow · T (m³/s · K)
   for (const Delivery& d : delivered) {
     const double inflow = std::max(d.direction * d.flow.flux.q, 0.0);
     carried += inflow;

@@ -10,6 +10,7 @@
 #include "../support/solved_film.h"
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
+#include "model/convection_effect.h"
 #include "physics/average_gap.h"
 #include "study/steady_solver.h"
 
@@ -27,8 +28,9 @@ namespace {
 //
 // (the continuous land's 2 μ ω β_l r²/(ρ c h²) with β_l = L Δθ, less the heat of the half
 // cells beside the grooves, which their oil takes: first order in the land's cells). With
-// the groove's mixing the periodic state enters each land at T_s + k ΔT/(1 − k) and leaves
-// it at T_s + ΔT/(1 − k). Discretely exact in θ; in r the node's heat is its cells'
+// the groove's mixing the periodic state enters each land at T_s + κ ΔT/(1 − κ) and leaves
+// it at T_s + ΔT/(1 − κ), κ = k Q/(Q + q₀) = k h/(h + ε σ) the carry-over the supply oil
+// always in the groove (q₀ = ε (ω r/2) σ Δr) dilutes. Discretely exact in θ; in r the node's heat is its cells'
 // bilinear share of μ(ωr)²/h̄T · r, ∫(1 − |x|/Δr)(r + x)³ dx = r³Δr(1 + (Δr/r)²/2), while the
 // Couette flux through its faces is exact: the rise is ΔT·(1 + (Δr/r)²/2), to the next
 // term, of order (Δr/r)⁴ = 1e-4 at the checked row.
@@ -56,18 +58,20 @@ TEST(Convection, TheAdiabaticLandBetweenFedGroovesWarmsTheOilAsTheClosedForm) {
   const int i = 5;
   const double r = m.radius(i), dtheta = 2 * std::numbers::pi / m.circumferential_nodes();
   const double h = f.gap[std::size_t(m.node(i, 4))];  // mid-land
-  const double h_bar = average_gap(h, std::hypot(s.washer.roughness.rq, s.gear.roughness.rq)).value;
+  const double h_bar = average_gap(h, std::hypot(s.washer.roughness.rq, s.gear.roughness.rq)).value;  // σ below
   const double rho_c = s.lubricant.density_at(s.operating.ambient) * s.lubricant.specific_heat;
   const double closed_form = 2 * s.lubricant.constant_viscosity * s.operating.speed * (land - 1) * dtheta * r * r /
                       (rho_c * h * h_bar);
   const double dr = (m.outer_radius() - m.inner_radius()) / (m.radial_nodes() - 1);
   const double rise = closed_form * (1 + 0.5 * (dr / r) * (dr / r)), tolerance = std::pow(dr / r, 4);
+  const double sigma = std::hypot(s.washer.roughness.rq, s.gear.roughness.rq);
+  const double carry = k * h / (h + ConvectionEffect::kGrooveFreshShare * sigma);
   for (int groove = 0; groove < count; ++groove) {
     const int first = groove * pitch + g.cells;  // the land's inlet edge line (a groove's)
     const double inlet = f.film_temperature[std::size_t(m.node(i, first))];
     const double outlet = f.film_temperature[std::size_t(m.node(i, first + land - 1))];  // its last free node
-    EXPECT_NEAR(inlet - supply, k * rise / (1 - k), tolerance * k * rise / (1 - k)) << groove;
-    EXPECT_NEAR(outlet - supply, rise / (1 - k), tolerance * rise / (1 - k)) << groove;
+    EXPECT_NEAR(inlet - supply, carry * rise / (1 - carry), tolerance * carry * rise / (1 - carry)) << groove;
+    EXPECT_NEAR(outlet - supply, rise / (1 - carry), tolerance * rise / (1 - carry)) << groove;
     // Linear along the land: every free node warms the oil alike.
     for (int n = 1; n < land; ++n)
       EXPECT_NEAR(f.film_temperature[std::size_t(m.node(i, first + n))] -
