@@ -126,7 +126,11 @@ const DistressSearch* FailureLoadAtInputs::search_at(std::span<const double> x, 
   std::unique_ptr<Settled> s = bearing_at(x, why);
   if (!s) return nullptr;
   s->searched = true;
-  first_search_ = search_distress(*s->model, search_, progress);
+  first_x_.assign(x.begin(), x.end());
+  // Its cool branch's states are where the states at an operating load start (operate_at).
+  DistressSearchSettings settings = search_;
+  settings.keep_state_vectors = true;
+  first_search_ = search_distress(*s->model, settings, progress);
   ++searches_;
   s->take(first_search_, why);
   remember(std::move(s));
@@ -278,9 +282,52 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settled_at(st
   return searched_at(x, why);
 }
 
-std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, double load, std::string& why) const {
+void FailureLoadAtInputs::operate_at(double load, std::span<const double> towards) {
+  operating_ = std::make_unique<OperatingStates>(
+      load, scales_, [this](std::span<const double> x, std::string& why) { return model_at(x, why); });
+  // The first search's cool state nearest the load.
+  const DistressSearch& found = first_search_;
+  const std::size_t cool = std::min(found.cool_states, found.state_vectors.size());
+  std::optional<std::size_t> from;
+  for (std::size_t i = 0; i < cool; ++i)
+    if (!from || std::abs(found.states[i].state.load - load) < std::abs(found.states[*from].state.load - load)) from = i;
+  std::string why;
+  if (!from || !operating_->hold_from_branch(first_x_, found.states[*from].state.load, found.state_vectors[*from], why))
+    return;
+  operating_->hold_towards(towards);
+}
+
+void FailureLoadAtInputs::hold_samples() {
+  if (operating_) operating_->hold_those_waiting();
+}
+
+std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, double load, std::string& why,
+                                                  std::optional<Sample> sample) const {
+  // By the state at the load where it can be reached (from the states held at the load
+  // first on FORM's safe side, from those below it first on its failing side).
+  const bool by_state = operating_ && operating_->load() == load;
+  if (by_state) {
+    const bool safe_side = !sample || sample->likely_safe;
+    std::optional<OperatingStates::Verdict> v = operating_->judge(x, safe_side);
+    if (!v) v = operating_->judge(x, !safe_side);
+    if (v) {
+      ++judged_by_state_;
+      if (sample) operating_->hold_later(sample->number, v->state);
+      return v->fails;
+    }
+  }
+  // Else by the failure load, followed from a settled point or searched.
   bool refused = false;
-  if (const std::unique_ptr<Settled> s = from_nearest(x, why, refused)) return s->load <= load;
+  if (const std::unique_ptr<Settled> s = from_nearest(x, why, refused)) {
+    // A crossing at most the load: its state is one later samples' states start from.
+    if (by_state && sample && s->load <= load)
+      for (const SettledCrossing& c : s->crossings)
+        if (c.load == s->load) {
+          s->model->set_load(c.load);
+          operating_->hold_later(sample->number, OperatingStates::state_of(*s->model, x, c.u));
+        }
+    return s->load <= load;
+  }
   if (refused) return std::nullopt;
   // The search alone answers, with the loads it located (a sample's state is no point to
   // follow from: nothing is settled). It ends ten bracket widths above `load`: a failure
@@ -294,7 +341,16 @@ std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, dou
   ++searches_;
   // No steady state even at the light load: the bearing fails below load_start.
   if (found.failed) return true;
-  return found.row.failure_load && *found.row.failure_load <= load;
+  const bool fails = found.row.failure_load && *found.row.failure_load <= load;
+  // Failing by a crossing: its state is one later samples' states start from.
+  if (by_state && sample && fails && found.row.criterion && !found.row.criterion->distress)
+    for (std::size_t c = 0; c < found.crossing_states.size(); ++c)
+      if (const auto& [at_load, u] = found.crossing_states[c];
+          kFailureCriteria[c] == found.row.criterion->limit && !u.empty() && at_load <= load) {
+        s->model->set_load(at_load);
+        operating_->hold_later(sample->number, OperatingStates::state_of(*s->model, x, u));
+      }
+  return fails;
 }
 
 bool FailureLoadAtInputs::crosses_unfollowed(const Settled& s) const {

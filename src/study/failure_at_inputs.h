@@ -11,6 +11,8 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -22,6 +24,7 @@
 #include "model/bearing_model.h"
 #include "solver/fold_location.h"
 #include "study/distress_search.h"
+#include "study/operating_states.h"
 #include "twb/scene/scene.h"
 
 namespace twb {
@@ -58,7 +61,25 @@ class FailureLoadAtInputs {
   // search that ends just above `load` instead of at the study's load_end (whether the
   // bearing fails there needs no more of the branch) and settles nothing. None, with why,
   // as for at(). Safe to call from several threads at once.
-  std::optional<bool> fails_at(std::span<const double> x, double load, std::string& why) const;
+  // A Monte Carlo sample: its number, and whether it lies on FORM's safe side (its state
+  // at the load, where operate_at holds states, is tried first there; on the failing side,
+  // where the state most often does not exist, last). A sample's state at the load, where
+  // it has one, is held for later samples once hold_samples() is called (between
+  // batches: see OperatingStates).
+  struct Sample {
+    std::uint64_t number = 0;
+    bool likely_safe = true;
+  };
+  std::optional<bool> fails_at(std::span<const double> x, double load, std::string& why,
+                               std::optional<Sample> sample = std::nullopt) const;
+  // Prepares fails_at at `load`: the first search's cool branch moved to that load, and
+  // walked towards the inputs `towards` (the design point round which the samples lie).
+  // Where the first search's branch does not reach the load, fails_at follows failure
+  // loads as before.
+  void operate_at(double load, std::span<const double> towards);
+  void hold_samples();
+  // Samples judged by their state at the load (operate_at), not by a failure load.
+  long judged_by_state() const { return judged_by_state_; }
 
   // Settle at x and keep it as a point later moves start from (e.g. the design point).
   void keep(std::span<const double> x);
@@ -110,6 +131,7 @@ class FailureLoadAtInputs {
   DistressSearchSettings search_;
   int threads_ = 1;
   DistressSearch first_search_;
+  std::vector<double> first_x_;  // its inputs
   // The points moves start from: the first search's, and while keeping, every point
   // settled on the way.
   mutable std::vector<std::shared_ptr<const Settled>> anchors_;
@@ -119,6 +141,8 @@ class FailureLoadAtInputs {
   // search at the target, which costs about as much as three failed steps (past a cusp).
   static constexpr double kLeastStep = 0.25;
   mutable std::atomic<long> searches_{0};
+  std::unique_ptr<OperatingStates> operating_;
+  mutable std::atomic<long> judged_by_state_{0};
 };
 
 }  // namespace twb

@@ -24,7 +24,7 @@ std::vector<double> standard_normal_sample(std::uint64_t seed, std::uint64_t i, 
 }
 
 SamplingEstimate importance_sampling(const FailureIndicator& fails, std::span<const double> centre,
-                                     const SamplingSettings& settings) {
+                                     const SamplingSettings& settings, const std::function<void()>& between_batches) {
   const std::size_t n = centre.size();
   const double shift = 0.5 * std::inner_product(centre.begin(), centre.end(), centre.begin(), 0.0);
   SamplingEstimate e;
@@ -34,14 +34,16 @@ SamplingEstimate importance_sampling(const FailureIndicator& fails, std::span<co
     const int count = int(std::min<long>(batch, settings.max_samples - e.samples));
     std::vector<std::optional<double>> weighted(static_cast<std::size_t>(count));
     run_in_parallel(std::size_t(count), settings.threads, [&](std::size_t k) {
-      std::vector<double> u = standard_normal_sample(settings.seed, std::uint64_t(e.samples) + k, n);
+      const std::uint64_t sample = std::uint64_t(e.samples) + k;
+      std::vector<double> u = standard_normal_sample(settings.seed, sample, n);
       for (std::size_t j = 0; j < n; ++j) u[j] += centre[j];
-      const std::optional<bool> failed = fails(u);
+      const std::optional<bool> failed = fails(sample, u);
       if (!failed) return;
       // φ(u)/φ(u − u*) = exp(|u*|²/2 − u·u*)
       weighted[k] = *failed ? std::exp(shift - std::inner_product(u.begin(), u.end(), centre.begin(), 0.0))
                             : 0.0;
     });
+    if (between_batches) between_batches();
     for (const std::optional<double>& w : weighted) {
       ++e.samples;
       if (!w) {

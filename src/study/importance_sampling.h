@@ -25,9 +25,9 @@ struct SamplingSettings {
   int threads = 1;
 };
 
-// Whether the bearing at u fails; none where it cannot be told (the sample is counted
-// as unresolved, and left out).
-using FailureIndicator = std::function<std::optional<bool>(std::span<const double> u)>;
+// Whether the bearing at u, sample number `sample`, fails; none where it cannot be told
+// (the sample is counted as unresolved, and left out).
+using FailureIndicator = std::function<std::optional<bool>(std::uint64_t sample, std::span<const double> u)>;
 
 struct SamplingEstimate {
   double probability = 0.0;
@@ -37,8 +37,10 @@ struct SamplingEstimate {
   bool reached = false;            // cov reached within max_samples
 };
 
+// `between_batches` is called after each batch's samples, before the next batch's (what
+// the indicator learnt from a batch may serve the next ones, never its own).
 SamplingEstimate importance_sampling(const FailureIndicator& fails, std::span<const double> centre,
-                                     const SamplingSettings& settings);
+                                     const SamplingSettings& settings, const std::function<void()>& between_batches = {});
 
 // Sample i's standard normal variates (its own generator: the same whatever thread draws it).
 std::vector<double> standard_normal_sample(std::uint64_t seed, std::uint64_t i, std::size_t dimension);

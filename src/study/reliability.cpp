@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <numeric>
 
 #include <fmt/format.h>
 
@@ -152,12 +153,18 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
     const long before = evaluations;
     // A sample asks only whether the bearing fails at the operating load: a search it
     // needs ends just above that load (FailureLoadAtInputs::fails_at).
-    const FailureIndicator fails = [&](std::span<const double> u) -> std::optional<bool> {
+    // Most samples are told by their state at the load, moved from the states held there
+    // (OperatingStates): the first search's, the way to the design point, and the samples
+    // of the batches before.
+    failure.operate_at(load, inputs_at(form.u));
+    const FailureIndicator fails = [&](std::uint64_t sample, std::span<const double> u) -> std::optional<bool> {
       ++evaluations;
       std::string why;
       std::optional<bool> failed;
       try {
-        failed = failure.fails_at(inputs_at(u), load, why);
+        // FORM's safe side: u·u* < β².
+        const bool safe_side = std::inner_product(u.begin(), u.end(), form.u.begin(), 0.0) < form.beta * form.beta;
+        failed = failure.fails_at(inputs_at(u), load, why, FailureLoadAtInputs::Sample{sample, safe_side});
       } catch (const InternalError&) {
         throw;  // a bug: no sample may hide it
       } catch (const std::exception& e) {
@@ -175,7 +182,7 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
     sampling.min_samples = std::min(100, st.max_samples);
     sampling.seed = std::uint64_t(st.seed);
     sampling.threads = threads;
-    const SamplingEstimate e = importance_sampling(fails, form.u, sampling);
+    const SamplingEstimate e = importance_sampling(fails, form.u, sampling, [&] { failure.hold_samples(); });
     ReliabilityRow& mc = out.reliability.emplace_back();
     mc.method = "monte_carlo";
     mc.load = load;
@@ -192,8 +199,9 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
     mc.converged = e.reached && e.unresolved == 0;
     out.summary.push_back(fmt::format(
         "reliability: Monte Carlo (importance sampling round the design point): P_f = {:.3g}, 95 % interval [{:.3g}, "
-        "{:.3g}], coefficient of variation {:.3g} from {} samples ({} failed{}){}",
-        e.probability, e.low, e.high, e.cov, e.samples, e.failures,
+        "{:.3g}], coefficient of variation {:.3g} from {} samples ({} failed; {} told by their state at the load, the "
+        "others by their failure load{}){}",
+        e.probability, e.low, e.high, e.cov, e.samples, e.failures, failure.judged_by_state(),
         e.unresolved ? fmt::format(", {} unresolved: {}", e.unresolved, first_why) : "",
         e.reached ? "" : fmt::format("; the coefficient of variation {:.3g} was not reached in {} samples", st.sampling_cov,
                                      st.max_samples)));

@@ -113,7 +113,7 @@ TEST(ImportanceSampling, EstimatesALinearLimitStatesProbability) {
   const double a0 = 188.0, load = 115.0;
   const DesignPoint p = design_point(linear(a0, a), 2, load);
   ASSERT_TRUE(p.converged);
-  const FailureIndicator fails = [&](std::span<const double> u) -> std::optional<bool> {
+  const FailureIndicator fails = [&](std::uint64_t, std::span<const double> u) -> std::optional<bool> {
     return a0 + a[0] * u[0] + a[1] * u[1] <= load;
   };
   SamplingSettings settings;
@@ -129,7 +129,7 @@ TEST(ImportanceSampling, EstimatesALinearLimitStatesProbability) {
 }
 
 TEST(ImportanceSampling, TheEstimateDoesNotDependOnTheThreadCount) {
-  const FailureIndicator fails = [](std::span<const double> u) -> std::optional<bool> {
+  const FailureIndicator fails = [](std::uint64_t, std::span<const double> u) -> std::optional<bool> {
     if (u[0] > 3.5) return std::nullopt;  // some unresolved samples too
     return 1.0 - 0.4 * u[0] - 0.2 * u[1] * u[1] <= 0.0;
   };

@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,6 +74,64 @@ TEST(ReliabilityStudy, ASampleFailsWhereItsFailureLoadLiesBelowTheLoad) {
       if (!settled_first) EXPECT_EQ(failure.searches(), searches + 2) << "each answered by a search of its own";
     }
   }
+}
+
+// Samples told by their state at the load (FailureLoadAtInputs::operate_at,
+// study/operating_states.h), ambients rising past the failure surface: each sample whose
+// failure load lies more than the bracket width from the load is told as the failure
+// search says. The safe ones are told by their states at the load (the branch the
+// failure search ran on, moved there); those failing by distress (no state at the load)
+// by their failure load; past the cusp, where the flash temperature sets W_fail, the first
+// by its failure load and the next by its state, moved from the first one's crossing.
+TEST(ReliabilityStudy, ASampleToldByItsStateAtTheLoadFailsAsItsFailureLoadSays) {
+  const Scene scene = paper_scene({"operating.load=150 N"});
+  DistressSearchSettings search;
+  search.load_start = 50.0;
+  search.load_end = 400.0;
+  FailureLoadAtInputs failure(scene, {"operating.ambient"}, {3.0}, search, 1);
+  std::string why;
+  ASSERT_NE(failure.search_at(std::vector<double>{297.15}, {}, why), nullptr) << why;
+  failure.operate_at(150.0, std::vector<double>{305.0});
+  std::uint64_t number = 0;
+  int past_cusp = 0;
+  for (const double ambient : {291.15, 294.15, 297.15, 299.15, 301.15, 303.15, 305.15, 307.15, 309.15}) {
+    const DistressRow row = failure_at(scene, ambient);
+    ASSERT_TRUE(row.failure_load.has_value()) << row.method;
+    if (std::abs(*row.failure_load - 150.0) <= 0.002 * 150.0) continue;
+    const bool expected = *row.failure_load <= 150.0;
+    const bool distress = row.criterion && row.criterion->distress;
+    const long before = failure.judged_by_state();
+    // Either side of FORM's plane, as a sample may lie: the verdict must not depend on it.
+    const std::optional<bool> verdict = failure.fails_at(std::vector<double>{ambient}, 150.0, why,
+                                                         FailureLoadAtInputs::Sample{number++, !expected});
+    EXPECT_EQ(verdict, std::optional<bool>(expected)) << ambient << " K, W_fail " << *row.failure_load << " N: " << why;
+    const bool told = failure.judged_by_state() > before;
+    if (!expected) EXPECT_TRUE(told) << ambient << " K: a safe sample told by its state";
+    if (expected && distress) EXPECT_FALSE(told) << ambient << " K: no state at the load past the fold";
+    if (expected && !distress) EXPECT_EQ(told, past_cusp++ > 0) << ambient << " K, past the cusp";
+    failure.hold_samples();
+  }
+  EXPECT_EQ(past_cusp, 2) << "samples failing by the flash temperature";
+}
+
+// The samples' states held between batches in sample order: the estimate and how each
+// sample was told do not depend on the thread count.
+TEST(ReliabilityStudy, SamplingIsTheSameOnOneAndTwoThreads) {
+  const Scene scene = paper_scene({"operating.load=150 N",
+                                   "study={type: reliability, load_start: 50 N, load_end: 400 N, inputs: "
+                                   "{operating.ambient: {distribution: normal, sd: 3 K}, geometry.gear.tilt: "
+                                   "{distribution: normal, sd: 0.2 mrad}}, monte_carlo: {cov: 0.01, max_samples: 100}}"});
+  std::vector<StudyOutcome> runs;
+  for (const int threads : {1, 2}) {
+    BearingModel model(scene);
+    runs.push_back(run_study(model, {}, RunOptions{.threads = threads}));
+    ASSERT_EQ(runs.back().reliability.size(), 2u) << (runs.back().summary.empty() ? "" : runs.back().summary.back());
+  }
+  const ReliabilityRow &one = runs[0].reliability[1], &two = runs[1].reliability[1];
+  EXPECT_EQ(one.samples, two.samples);
+  EXPECT_EQ(one.failures, two.failures);
+  EXPECT_EQ(one.probability, two.probability);
+  EXPECT_EQ(runs[0].summary, runs[1].summary);  // the count told by their states among them
 }
 
 TEST(ReliabilityStudy, DesignPointsLieOnTheFailureSurfaceAndSamplingAgrees) {
