@@ -303,13 +303,15 @@ void FailureLoadAtInputs::hold_samples() {
 
 std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, double load, std::string& why,
                                                   std::optional<Sample> sample) const {
-  // By the state at the load where it can be reached (from the states held at the load
-  // first on FORM's safe side, from those below it first on its failing side).
+  // By the state at the load where it can be reached: on FORM's safe side from the states
+  // held at the load, then from those below it; on its failing side from those below it
+  // only (the states at the load seldom reach a sample there, whose cool branch most often
+  // ends below the load: trying them cost more than the few they tell).
   const bool by_state = operating_ && operating_->load() == load;
   if (by_state) {
     const bool safe_side = !sample || sample->likely_safe;
     std::optional<OperatingStates::Verdict> v = operating_->judge(x, safe_side);
-    if (!v) v = operating_->judge(x, !safe_side);
+    if (!v && safe_side) v = operating_->judge(x, false);
     if (v) {
       ++judged_by_state_;
       if (sample) operating_->hold_later(sample->number, v->state);

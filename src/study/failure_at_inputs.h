@@ -62,8 +62,9 @@ class FailureLoadAtInputs {
   // bearing fails there needs no more of the branch) and settles nothing. None, with why,
   // as for at(). Safe to call from several threads at once.
   // A Monte Carlo sample: its number, and whether it lies on FORM's safe side (its state
-  // at the load, where operate_at holds states, is tried first there; on the failing side,
-  // where the state most often does not exist, last). A sample's state at the load, where
+  // at the load, where operate_at holds states, is moved from the states held at the load
+  // there; on the failing side, where it most often does not exist, only from states below
+  // the load). A sample's state at the load, where
   // it has one, is held for later samples once hold_samples() is called (between
   // batches: see OperatingStates).
   struct Sample {

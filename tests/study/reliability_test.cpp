@@ -101,7 +101,7 @@ TEST(ReliabilityStudy, ASampleToldByItsStateAtTheLoadFailsAsItsFailureLoadSays) 
     const bool expected = *row.failure_load <= 150.0;
     const bool distress = row.criterion && row.criterion->distress;
     const long before = failure.judged_by_state();
-    // Either side of FORM's plane, as a sample may lie: the verdict must not depend on it.
+    // On the side of FORM's plane a sample there would lie.
     const std::optional<bool> verdict = failure.fails_at(std::vector<double>{ambient}, 150.0, why,
                                                          FailureLoadAtInputs::Sample{number++, !expected});
     EXPECT_EQ(verdict, std::optional<bool>(expected)) << ambient << " K, W_fail " << *row.failure_load << " N: " << why;
