@@ -135,7 +135,9 @@ TEST(GrooveSupply, TheOilSuppliedLeavesAtTheRimsWithMassConservingCavitation) {
               << "; fluid share " << solved.state.fluid_share << "\n";
     // (With Reynolds' condition and the dam, the film returns more oil to the bore than
     // the grooves supply: the ruptured nodes make the difference. Only JFO must be fed.)
-    if (cavitation == CavitationModel::jfo || !dammed) EXPECT_GT(q.supplied, 0.0);
+    if (cavitation == CavitationModel::jfo || !dammed) {
+      EXPECT_GT(q.supplied, 0.0);
+    }
     EXPECT_GT(q.outer, 0.0);
     // The fed bore's inflow is supply: inner is negative, supplied = grooves − inner.
     EXPECT_DOUBLE_EQ(q.supplied, q.grooves - q.inner);

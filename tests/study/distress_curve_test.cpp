@@ -207,7 +207,7 @@ TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
 TEST(DistressCurve, FamilyOfCurvesByFrictionCoefficient) {
   Scene scene = speed_curve_scene();
   scene.friction.law = FrictionLaw::constant;
-  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .values = {0.1, 0.3}}};
+  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .path = {}, .unit = {}, .values = {0.1, 0.3}}};
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
   EXPECT_EQ(out.parameter_columns, std::vector<std::string>{"friction_coefficient"});

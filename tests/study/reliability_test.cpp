@@ -62,7 +62,9 @@ TEST(ReliabilityStudy, ASampleFailsWhereItsFailureLoadLiesBelowTheLoad) {
   for (const bool settled_first : {false, true}) {
     FailureLoadAtInputs failure(scene, {"operating.ambient"}, {3.0}, search, 1);
     std::string why;
-    if (settled_first) ASSERT_NE(failure.search_at(std::vector<double>{297.15}, {}, why), nullptr) << why;
+    if (settled_first) {
+      ASSERT_NE(failure.search_at(std::vector<double>{297.15}, {}, why), nullptr) << why;
+    }
     for (const double ambient : {297.15, 303.15}) {
       const DistressRow row = failure_at(scene, ambient);
       ASSERT_TRUE(row.failure_load.has_value()) << row.method;
@@ -71,7 +73,9 @@ TEST(ReliabilityStudy, ASampleFailsWhereItsFailureLoadLiesBelowTheLoad) {
       const long searches = failure.searches();
       EXPECT_EQ(failure.fails_at(x, 0.99 * w, why), std::optional<bool>(false)) << ambient << " K: " << why;
       EXPECT_EQ(failure.fails_at(x, 1.01 * w, why), std::optional<bool>(true)) << ambient << " K: " << why;
-      if (!settled_first) EXPECT_EQ(failure.searches(), searches + 2) << "each answered by a search of its own";
+      if (!settled_first) {
+        EXPECT_EQ(failure.searches(), searches + 2) << "each answered by a search of its own";
+      }
     }
   }
 }
@@ -106,9 +110,13 @@ TEST(ReliabilityStudy, ASampleToldByItsStateAtTheLoadFailsAsItsFailureLoadSays) 
                                                          FailureLoadAtInputs::Sample{number++, !expected});
     EXPECT_EQ(verdict, std::optional<bool>(expected)) << ambient << " K, W_fail " << *row.failure_load << " N: " << why;
     const bool told = failure.judged_by_state() > before;
-    if (!expected) EXPECT_TRUE(told) << ambient << " K: a safe sample told by its state";
-    if (expected && distress) EXPECT_FALSE(told) << ambient << " K: no state at the load past the fold";
-    if (expected && !distress) EXPECT_EQ(told, past_cusp++ > 0) << ambient << " K, past the cusp";
+    if (!expected) {
+      EXPECT_TRUE(told) << ambient << " K: a safe sample told by its state";
+    } else if (distress) {
+      EXPECT_FALSE(told) << ambient << " K: no state at the load past the fold";
+    } else {
+      EXPECT_EQ(told, past_cusp++ > 0) << ambient << " K, past the cusp";
+    }
     failure.hold_samples();
   }
   EXPECT_EQ(past_cusp, 2) << "samples failing by the flash temperature";
