@@ -12,6 +12,7 @@
 #include "study/failure_load.h"
 #include "study/fold_response.h"
 #include "study/input_neighbours.h"
+#include "study/move_in_steps.h"
 #include "study/parallel.h"
 #include "twb/error_family.h"
 #include "twb/scene/input_error.h"
@@ -178,14 +179,12 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settle_once(c
 std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::walk(const Settled& from, std::span<const double> x,
                                                                        std::string& why) const {
   // Newton reaches a few percent of the load from a settled point: the move from `from`
-  // to x is walked in steps, each halved where Newton fails and doubled after it succeeds.
+  // to x is walked in steps.
   std::unique_ptr<Settled> here;
   const Settled* last = &from;
-  double done = 0.0, step = 1.0;
   std::vector<double> at(x.size());
-  while (done < 1.0) {
-    step = std::min(step, 1.0 - done);
-    for (std::size_t i = 0; i < x.size(); ++i) at[i] = from.x[i] + (done + step) * (x[i] - from.x[i]);
+  const bool made = move_in_steps(kLeastStep, [&](double, double reached) {
+    for (std::size_t i = 0; i < x.size(); ++i) at[i] = from.x[i] + reached * (x[i] - from.x[i]);
     std::string failed;
     std::unique_ptr<Settled> next;
     try {
@@ -196,20 +195,15 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::walk(const Se
       failed = e.what();  // a load or state a step cannot take: a shorter one may
     }
     if (!next) {
-      if (failed.empty() || 0.5 * step < kLeastStep) {
-        why = failed;
-        return nullptr;
-      }
-      step *= 0.5;
-      continue;
+      why = failed;
+      return failed.empty() ? StepTaken::never : StepTaken::no;
     }
-    done += step;
-    step *= 2.0;
     if (here && keeping_) remember(std::move(here));
     here = std::move(next);
     last = here.get();
-  }
-  return here;
+    return StepTaken::yes;
+  });
+  return made ? std::move(here) : nullptr;
 }
 
 void FailureLoadAtInputs::remember(std::unique_ptr<Settled> s) const {
@@ -283,18 +277,41 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::settled_at(st
 }
 
 void FailureLoadAtInputs::operate_at(double load, std::span<const double> towards) {
-  operating_ = std::make_unique<OperatingStates>(
+  operating_.reset();
+  // Where the search's cool branch ends below the load there is no state there to hold.
+  const DistressSearch& found = first_search_;
+  if (found.row.distress_load && *found.row.distress_load <= load) return;
+  if (found.row.fold_load && *found.row.fold_load <= load) return;
+  auto states = std::make_unique<OperatingStates>(
       load, scales_, [this](std::span<const double> x, std::string& why) { return model_at(x, why); });
   // The first search's cool state nearest the load.
-  const DistressSearch& found = first_search_;
   const std::size_t cool = std::min(found.cool_states, found.state_vectors.size());
   std::optional<std::size_t> from;
   for (std::size_t i = 0; i < cool; ++i)
     if (!from || std::abs(found.states[i].state.load - load) < std::abs(found.states[*from].state.load - load)) from = i;
-  std::string why;
-  if (!from || !operating_->hold_from_branch(first_x_, found.states[*from].state.load, found.state_vectors[*from], why))
-    return;
-  operating_->hold_towards(towards);
+  if (!from) return;
+  try {
+    std::string why;
+    if (!states->hold_from_branch(first_x_, found.states[*from].state.load, found.state_vectors[*from], why)) return;
+    states->hold_towards(towards);
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
+  } catch (const std::exception&) {
+    return;  // no state to start from: every sample by its failure load
+  }
+  operating_ = std::move(states);
+}
+
+void FailureLoadAtInputs::hold_later(const Sample& sample, BearingModel& model, std::span<const double> x,
+                                     double load, const std::vector<double>& u) const {
+  // A state only the next batches start from: where it cannot be described, none is held.
+  try {
+    model.set_load(load);
+    operating_->hold_later(sample.number, OperatingStates::state_of(model, x, u));
+  } catch (const InternalError&) {
+    throw;
+  } catch (const std::exception&) {
+  }
 }
 
 void FailureLoadAtInputs::hold_samples() {
@@ -324,10 +341,7 @@ std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, dou
     // A crossing at most the load: its state is one later samples' states start from.
     if (by_state && sample && s->load <= load)
       for (const SettledCrossing& c : s->crossings)
-        if (c.load == s->load) {
-          s->model->set_load(c.load);
-          operating_->hold_later(sample->number, OperatingStates::state_of(*s->model, x, c.u));
-        }
+        if (c.load == s->load) hold_later(*sample, *s->model, x, c.load, c.u);
     return s->load <= load;
   }
   if (refused) return std::nullopt;
@@ -345,13 +359,13 @@ std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, dou
   if (found.failed) return true;
   const bool fails = found.row.failure_load && *found.row.failure_load <= load;
   // Failing by a crossing: its state is one later samples' states start from.
+  // (its state at the crossing, or on the cool branch below it where the crossing lies
+  // next to the fold: failure_load.cpp).
   if (by_state && sample && fails && found.row.criterion && !found.row.criterion->distress)
     for (std::size_t c = 0; c < found.crossing_states.size(); ++c)
       if (const auto& [at_load, u] = found.crossing_states[c];
-          kFailureCriteria[c] == found.row.criterion->limit && !u.empty() && at_load <= load) {
-        s->model->set_load(at_load);
-        operating_->hold_later(sample->number, OperatingStates::state_of(*s->model, x, u));
-      }
+          kFailureCriteria[c] == found.row.criterion->limit && !u.empty() && at_load <= load)
+        hold_later(*sample, *s->model, x, at_load, u);
   return fails;
 }
 

@@ -12,7 +12,6 @@
 
 #include <atomic>
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -75,8 +74,8 @@ class FailureLoadAtInputs {
                                std::optional<Sample> sample = std::nullopt) const;
   // Prepares fails_at at `load`: the first search's cool branch moved to that load, and
   // walked towards the inputs `towards` (the design point round which the samples lie).
-  // Where the first search's branch does not reach the load, fails_at follows failure
-  // loads as before.
+  // Where the first search's branch does not reach the load (it ends below it, or Newton
+  // cannot move it there), every sample is told by its failure load.
   void operate_at(double load, std::span<const double> towards);
   void hold_samples();
   // Samples judged by their state at the load (operate_at), not by a failure load.
@@ -122,6 +121,9 @@ class FailureLoadAtInputs {
   // why, where the scene refuses x itself).
   std::unique_ptr<Settled> from_nearest(std::span<const double> x, std::string& why, bool& refused) const;
   std::unique_ptr<BearingModel> model_at(std::span<const double> x, std::string& why) const;
+  // A sample's state u of `model` (inputs x) at `load`, held for the next batches' samples.
+  void hold_later(const Sample& sample, BearingModel& model, std::span<const double> x, double load,
+                  const std::vector<double>& u) const;
   // A Settled at x with its bearing built and nothing settled on it yet; none, with why,
   // where the scene refuses x.
   std::unique_ptr<Settled> bearing_at(std::span<const double> x, std::string& why) const;

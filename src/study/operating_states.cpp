@@ -6,6 +6,8 @@
 
 #include "model/limit_thresholds.h"
 #include "solver/kinsol_newton.h"
+#include "solver/linear_stability.h"
+#include "study/move_in_steps.h"
 #include "study/study_support.h"
 #include "twb/error_family.h"
 
@@ -61,6 +63,17 @@ std::shared_ptr<const OperatingStates::State> OperatingStates::settle_near(Beari
   if (!solver.solve(u, newton).converged) return nullptr;
   std::shared_ptr<const State> s = state_of(model, x, std::move(u));
   if (!(s->rise <= kLargestRiseFactor * from.rise && from.rise <= kLargestRiseFactor * s->rise)) return nullptr;
+  // The unstable middle branch lies next to the cool one near the fold, within the rise's
+  // bound: a state shown unstable (with the factors Newton ended on) is not the cool one.
+  // (Without the thermal effect there is neither: nothing has a capacity.)
+  if (!model.scene().effects.thermal) return s;
+  SparseLu& factors = solver.factorization();
+  if (!factors.factored()) {  // (a start already converged: Newton factored nothing)
+    std::vector<double> residual(std::size_t(model.size())), jacobian(std::size_t(model.pattern().nnz()));
+    model.evaluate(s->u, residual, jacobian);
+    if (!factors.factor(jacobian)) return nullptr;
+  }
+  if (linear_stability(model, factors).verdict == Stability::unstable) return nullptr;
   return s;
 }
 
@@ -70,23 +83,17 @@ bool OperatingStates::hold_from_branch(std::span<const double> x, double from_lo
   if (!model) return false;
   model->set_load(from_load);
   std::shared_ptr<const State> last = state_of(*model, x, std::vector<double>(u.begin(), u.end()));
-  // Along the branch in load: steps halved where one fails, as a walk's.
-  double done = 0.0, step = 1.0;
-  while (done < 1.0) {
-    step = std::min(step, 1.0 - done);
-    model->set_load(done + step < 1.0 ? from_load + (done + step) * (load_ - from_load) : load_);
+  // Along the branch in load, in steps as a walk's.
+  const bool made = move_in_steps(kLeastStep, [&](double, double reached) {
+    model->set_load(reached < 1.0 ? from_load + reached * (load_ - from_load) : load_);
     std::shared_ptr<const State> next = settle_near(*model, x, *last);
-    if (!next) {
-      if (0.5 * step < kLeastStep) {
-        why = "Newton could not follow the branch to the operating load";
-        return false;
-      }
-      step *= 0.5;
-      continue;
-    }
-    done += step;
-    step *= 2.0;
+    if (!next) return StepTaken::no;
     last = std::move(next);
+    return StepTaken::yes;
+  });
+  if (!made) {
+    why = "Newton could not follow the branch to the operating load";
+    return false;
   }
   const std::lock_guard<std::mutex> hold(lock_);
   held_.push_back(std::move(last));
@@ -98,12 +105,9 @@ std::vector<std::shared_ptr<const OperatingStates::State>> OperatingStates::walk
     std::unique_ptr<BearingModel>* bearing) const {
   std::vector<std::shared_ptr<const State>> way;
   const State* last = &from;
-  double done = 0.0, step = 1.0;
   std::vector<double> at(x.size());
-  while (done < 1.0) {
-    step = std::min(step, 1.0 - done);
-    for (std::size_t i = 0; i < x.size(); ++i)
-      at[i] = done + step < 1.0 ? from.x[i] + (done + step) * (x[i] - from.x[i]) : x[i];
+  move_in_steps(least, [&](double, double reached) {
+    for (std::size_t i = 0; i < x.size(); ++i) at[i] = reached < 1.0 ? from.x[i] + reached * (x[i] - from.x[i]) : x[i];
     std::string why;
     std::shared_ptr<const State> next;
     std::unique_ptr<BearingModel> model;
@@ -117,18 +121,15 @@ std::vector<std::shared_ptr<const OperatingStates::State>> OperatingStates::walk
     } catch (const std::exception&) {
       // a state a step cannot take: a shorter one may
     }
-    if (!next) {
-      if (0.5 * step < least) return way;
-      step *= 0.5;
-      continue;
-    }
-    done += step;
-    step *= 2.0;
+    // Inputs the scene refuses: no shorter step reaches them either.
+    if (!model) return StepTaken::never;
+    if (!next) return StepTaken::no;
     if (!all) way.clear();
     way.push_back(std::move(next));
     last = way.back().get();
     if (bearing) *bearing = std::move(model);
-  }
+    return StepTaken::yes;
+  });
   return way;
 }
 

@@ -4,11 +4,12 @@
 //
 // A state at x is moved from the nearest state held, at that state's load, x walked
 // towards in steps (halved where one fails). A step is taken where Newton reaches it in
-// at most eight undamped steps and the hottest film node's rise above the ambient changes
-// by at most a factor of two: such a move stays on the branch it starts from (the hot
-// branch's rises at the same load are many times the cool one's: about 150 K against
-// 10-45 K on the paper's washer at 115 N; the unstable middle branch meets the cool one
-// only at the fold, where the failure load is the load and a sample's verdict no matter).
+// at most twelve undamped steps, the hottest film node's rise above the ambient changes by
+// at most a factor of two, and the state is not shown unstable: the rise's bound keeps
+// the move off the hot branch (whose rises at the same load are many times the cool
+// one's: about 150 K against 10-45 K on the paper's washer at 115 N), the stability test
+// off the unstable middle branch, which lies next to the cool one near the fold. Neither
+// is a proof; both are checks a jump between branches would have to slip past.
 // On the cool branch every criterion's margin falls with load (section 8), so a negative
 // margin at a load at most the operating one proves the failure (W_fail below it), and
 // positive margins at the operating load prove the bearing safe there (the branch reached
@@ -57,11 +58,11 @@ class OperatingStates {
   void hold_towards(std::span<const double> x);
 
   // Whether the bearing at x fails at the operating load, and its state; none where that
-  // is not shown (nothing held near, the branch ends, x refused, or the margins are
-  // positive below the operating load). `at_load`: from states at the operating load
-  // (a sample on FORM's safe side); else from states below it (one on its failing side,
-  // whose cool branch most often ends below the operating load). Safe from
-  // several threads at once; depends only on the states held.
+  // is not shown (nothing held near, the branch ends, x refused). `at_load`: from states
+  // at the operating load (a sample on FORM's safe side); else from states below it (one
+  // on its failing side, whose cool branch most often ends below the operating load),
+  // walked up in load at x until a margin is negative or the operating load is reached.
+  // Safe from several threads at once; depends only on the states held.
   struct Verdict {
     bool fails = false;
     std::shared_ptr<const State> state;

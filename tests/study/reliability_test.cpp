@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/bearing_model.h"
@@ -83,43 +84,76 @@ TEST(ReliabilityStudy, ASampleFailsWhereItsFailureLoadLiesBelowTheLoad) {
 // Samples told by their state at the load (FailureLoadAtInputs::operate_at,
 // study/operating_states.h), ambients rising past the failure surface: each sample whose
 // failure load lies more than the bracket width from the load is told as the failure
-// search says. The safe ones are told by their states at the load (the branch the
-// failure search ran on, moved there); those failing by distress (no state at the load)
-// by their failure load; past the cusp, where the flash temperature sets W_fail, the first
-// by its failure load and the next by its state, moved from the first one's crossing.
+// search says, whichever side of FORM's plane it is said to lie on (in several inputs the
+// plane misplaces samples near the surface). On its own side the safe ones are told by
+// their states at the load (the branch the failure search ran on, moved there); those
+// failing by distress (no state at the load) by their failure load; past the cusp, where
+// the flash temperature sets W_fail, the first by its failure load and the next by its
+// state, moved from the first one's crossing. Said to be safe, a failing sample is first
+// walked at the load from the states held there, which must not tell it safe.
 TEST(ReliabilityStudy, ASampleToldByItsStateAtTheLoadFailsAsItsFailureLoadSays) {
   const Scene scene = paper_scene({"operating.load=150 N"});
   DistressSearchSettings search;
   search.load_start = 50.0;
   search.load_end = 400.0;
+  std::vector<std::pair<double, DistressRow>> rows;
+  for (const double ambient : {291.15, 294.15, 297.15, 299.15, 301.15, 303.15, 305.15, 307.15, 309.15})
+    rows.emplace_back(ambient, failure_at(scene, ambient));
+  for (const bool own_side : {true, false}) {
+    FailureLoadAtInputs failure(scene, {"operating.ambient"}, {3.0}, search, 1);
+    std::string why;
+    ASSERT_NE(failure.search_at(std::vector<double>{297.15}, {}, why), nullptr) << why;
+    failure.operate_at(150.0, std::vector<double>{305.0});
+    std::uint64_t number = 0;
+    int past_cusp = 0, told_safe = 0;
+    for (const auto& [ambient, row] : rows) {
+      ASSERT_TRUE(row.failure_load.has_value()) << row.method;
+      if (std::abs(*row.failure_load - 150.0) <= 0.002 * 150.0) continue;
+      const bool expected = *row.failure_load <= 150.0;
+      const bool distress = row.criterion && row.criterion->distress;
+      const long before = failure.judged_by_state();
+      const std::optional<bool> verdict = failure.fails_at(std::vector<double>{ambient}, 150.0, why,
+                                                           FailureLoadAtInputs::Sample{number++, own_side ? !expected : true});
+      EXPECT_EQ(verdict, std::optional<bool>(expected))
+          << ambient << " K, W_fail " << *row.failure_load << " N: " << why << (own_side ? "" : " (said safe)");
+      const bool told = failure.judged_by_state() > before;
+      if (!expected) {
+        EXPECT_TRUE(told) << ambient << " K: a safe sample told by its state";
+        told_safe += told;
+      } else if (own_side && distress) {
+        EXPECT_FALSE(told) << ambient << " K: no state at the load past the fold";
+      } else if (own_side) {
+        EXPECT_EQ(told, past_cusp++ > 0) << ambient << " K, past the cusp";
+      }
+      failure.hold_samples();
+    }
+    EXPECT_GE(told_safe, 3) << "safe samples";
+    if (own_side) {
+      EXPECT_EQ(past_cusp, 2) << "samples failing by the flash temperature";
+    }
+  }
+}
+
+// The search's branch has a state at the load itself (the load on its grid): Newton has
+// nothing to do there, and the stability test of the held state must factor J itself.
+TEST(ReliabilityStudy, AStateOfTheSearchAtTheLoadIsHeldAsItIs) {
+  const Scene scene = paper_scene({"operating.load=150 N"});
+  DistressSearchSettings search;
+  search.load_start = 50.0;
+  search.load_end = 400.0;
+  search.grid = {150.0};
   FailureLoadAtInputs failure(scene, {"operating.ambient"}, {3.0}, search, 1);
   std::string why;
-  ASSERT_NE(failure.search_at(std::vector<double>{297.15}, {}, why), nullptr) << why;
-  failure.operate_at(150.0, std::vector<double>{305.0});
-  std::uint64_t number = 0;
-  int past_cusp = 0;
-  for (const double ambient : {291.15, 294.15, 297.15, 299.15, 301.15, 303.15, 305.15, 307.15, 309.15}) {
-    const DistressRow row = failure_at(scene, ambient);
-    ASSERT_TRUE(row.failure_load.has_value()) << row.method;
-    if (std::abs(*row.failure_load - 150.0) <= 0.002 * 150.0) continue;
-    const bool expected = *row.failure_load <= 150.0;
-    const bool distress = row.criterion && row.criterion->distress;
-    const long before = failure.judged_by_state();
-    // On the side of FORM's plane a sample there would lie.
-    const std::optional<bool> verdict = failure.fails_at(std::vector<double>{ambient}, 150.0, why,
-                                                         FailureLoadAtInputs::Sample{number++, !expected});
-    EXPECT_EQ(verdict, std::optional<bool>(expected)) << ambient << " K, W_fail " << *row.failure_load << " N: " << why;
-    const bool told = failure.judged_by_state() > before;
-    if (!expected) {
-      EXPECT_TRUE(told) << ambient << " K: a safe sample told by its state";
-    } else if (distress) {
-      EXPECT_FALSE(told) << ambient << " K: no state at the load past the fold";
-    } else {
-      EXPECT_EQ(told, past_cusp++ > 0) << ambient << " K, past the cusp";
-    }
-    failure.hold_samples();
-  }
-  EXPECT_EQ(past_cusp, 2) << "samples failing by the flash temperature";
+  const DistressSearch* found = failure.search_at(std::vector<double>{297.15}, {}, why);
+  ASSERT_NE(found, nullptr) << why;
+  bool on_grid = false;
+  for (const SolvedState& s : found->states) on_grid = on_grid || s.state.load == 150.0;
+  ASSERT_TRUE(on_grid) << "the search's branch has a state at 150 N";
+  failure.operate_at(150.0, std::vector<double>{297.15});
+  EXPECT_EQ(failure.fails_at(std::vector<double>{297.15}, 150.0, why, FailureLoadAtInputs::Sample{0, true}),
+            std::optional<bool>(false))
+      << why;
+  EXPECT_EQ(failure.judged_by_state(), 1) << "told by the state held";
 }
 
 // The samples' states held between batches in sample order: the estimate and how each
@@ -140,6 +174,10 @@ TEST(ReliabilityStudy, SamplingIsTheSameOnOneAndTwoThreads) {
   EXPECT_EQ(one.failures, two.failures);
   EXPECT_EQ(one.probability, two.probability);
   EXPECT_EQ(runs[0].summary, runs[1].summary);  // the count told by their states among them
+  bool told_by_state = false;
+  for (const std::string& line : runs[0].summary)
+    if (line.find("told by their state") != std::string::npos) told_by_state = line.find("; 0 told") == std::string::npos;
+  EXPECT_TRUE(told_by_state) << "the states at the load told some samples";
 }
 
 TEST(ReliabilityStudy, DesignPointsLieOnTheFailureSurfaceAndSamplingAgrees) {
