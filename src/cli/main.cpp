@@ -156,13 +156,14 @@ int write_results(const std::filesystem::path& dir, const std::string& scene_pat
 
 twb::ProgressReport progress_lines(bool quiet, const std::string& prefix = {}) {
   if (quiet) return {};
-  return [prefix](const std::string& s) { std::cerr << prefix << s << "\n"; };
+  // One write a line: the ranks of an MPI job share the terminal.
+  return [prefix](const std::string& s) { std::cerr << (prefix + s + "\n") << std::flush; };
 }
 
 // Another rank of an MPI job: the same scene and model, its share of the searches, no files.
 int run_as_worker(const RunRequest& r, const twb::cli::MpiJob& job) {
   const twb::Scene scene = twb::load_scene(r.path, r.overrides);
-  if (!twb::has_independent_searches(scene.study)) return 0;  // rank 0 runs such a study alone
+  if (!twb::spreads_over_ranks(scene.study)) return 0;  // rank 0 runs such a study alone
   twb::BearingModel model(scene);
   twb::cli::MpiScheduler scheduler(job);
   twb::run_study(model, progress_lines(r.quiet || !r.verbose, fmt::format("twb[rank {}]: ", job.rank())),
@@ -177,6 +178,11 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   print_warnings(scene, std::cerr);
   std::optional<twb::SliceScheduler> slice;
   if (!r.slice.empty()) {
+    if (twb::spreads_over_ranks(scene.study) && !twb::has_independent_searches(scene.study))
+      throw std::invalid_argument("--slice cannot share out a reliability study: each batch of its Monte Carlo "
+                                  "samples starts from the states the batches before it found, which the slices of "
+                                  "a job array cannot pass each other; spread it over the ranks of one MPI job "
+                                  "(mpirun -np N twb run SCENE) or over threads (--threads)");
     if (!twb::has_independent_searches(scene.study))
       throw std::invalid_argument("--slice needs a study of independent searches (load_sweep, distress_map, "
                                   "sliding_choice; a distress_map with method: follow chains its combinations): "
@@ -201,7 +207,7 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   if (slice) {
     scheduler = &*slice;
   } else if (job.active()) {
-    if (twb::has_independent_searches(scene.study)) {
+    if (twb::spreads_over_ranks(scene.study)) {
       ranks.emplace(job);
       scheduler = &*ranks;
       if (threads == 0) threads = 1;  // one search per rank, as on every other rank

@@ -142,6 +142,16 @@ void MpiScheduler::run(const std::vector<std::size_t>& todo, int threads, const 
   }
 }
 
+void MpiScheduler::share(std::string& bytes) {
+  std::int64_t size = std::int64_t(bytes.size());
+  check(MPI_Bcast(&size, 1, MPI_INT64_T, 0, MPI_COMM_WORLD), "MPI_Bcast");
+  bytes.resize(std::size_t(size));
+  // In pieces: a count is an int.
+  constexpr std::int64_t kPiece = std::int64_t(1) << 30;
+  for (std::int64_t at = 0; at < size; at += kPiece)
+    check(MPI_Bcast(bytes.data() + at, int(std::min(kPiece, size - at)), MPI_BYTE, 0, MPI_COMM_WORLD), "MPI_Bcast");
+}
+
 bool built_with_mpi() { return true; }
 
 #else
@@ -152,6 +162,7 @@ void MpiJob::abort(int status) const { std::exit(status); }
 void MpiScheduler::run(const std::vector<std::size_t>& todo, int threads, const Work& work) {
   ThreadScheduler().run(todo, threads, work);
 }
+void MpiScheduler::share(std::string&) {}
 bool built_with_mpi() { return false; }
 
 #endif

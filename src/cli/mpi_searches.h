@@ -36,6 +36,7 @@ class MpiScheduler final : public SearchScheduler {
   explicit MpiScheduler(const MpiJob& job) : job_(job) {}
   void run(const std::vector<std::size_t>& todo, int threads, const Work& work) override;
   bool takes_results() const override { return job_.rank() == 0; }
+  void share(std::string& bytes) override;
 
  private:
   const MpiJob& job_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -316,6 +317,42 @@ void FailureLoadAtInputs::hold_later(const Sample& sample, BearingModel& model, 
 
 void FailureLoadAtInputs::hold_samples() {
   if (operating_) operating_->hold_those_waiting();
+  const std::lock_guard<std::mutex> hold(told_lock_);
+  told_.clear();
+}
+
+void FailureLoadAtInputs::note(const std::optional<Sample>& sample, Told how) const {
+  if (!sample) return;
+  const std::lock_guard<std::mutex> hold(told_lock_);
+  told_[sample->number] = how;
+}
+
+std::string FailureLoadAtInputs::sample_report(std::uint64_t sample) const {
+  Told how = Told::by_failure_load;
+  {
+    const std::lock_guard<std::mutex> hold(told_lock_);
+    if (const auto it = told_.find(sample); it != told_.end()) how = it->second;
+  }
+  return std::string(1, char(how)) + (operating_ ? operating_->waiting_bytes(sample) : std::string());
+}
+
+void FailureLoadAtInputs::take_sample_report(std::uint64_t sample, const std::string& report) {
+  if (report.empty() || std::uint8_t(report[0]) > std::uint8_t(Told::by_search))
+    throw std::runtime_error(fmt::format("sample {}'s report arrived damaged", sample));
+  const Told how = Told(report[0]);
+  if (how == Told::by_state) ++judged_by_state_;
+  if (how == Told::by_search) ++searches_;
+  note(Sample{sample, true}, how);
+  if (report.size() > 1) {
+    if (!operating_) throw std::runtime_error(fmt::format("sample {}'s report holds a state where none is held", sample));
+    operating_->take_waiting(report.substr(1), false);
+  }
+}
+
+std::string FailureLoadAtInputs::batch_states() const { return operating_ ? operating_->waiting_bytes() : std::string(); }
+
+void FailureLoadAtInputs::take_batch_states(const std::string& bytes) {
+  if (operating_) operating_->take_waiting(bytes, true);
 }
 
 std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, double load, std::string& why,
@@ -331,6 +368,7 @@ std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, dou
     if (!v && safe_side) v = operating_->judge(x, false);
     if (v) {
       ++judged_by_state_;
+      note(sample, Told::by_state);
       if (sample) operating_->hold_later(sample->number, v->state);
       return v->fails;
     }
@@ -355,6 +393,7 @@ std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, dou
   settings.load_end = std::clamp(load * (1.0 + 10.0 * search_.bracket_width), search_.load_start, search_.load_end);
   const DistressSearch found = search_distress(*s->model, settings, {});
   ++searches_;
+  note(sample, Told::by_search);
   // No steady state even at the light load: the bearing fails below load_start.
   if (found.failed) return true;
   const bool fails = found.row.failure_load && *found.row.failure_load <= load;

@@ -12,6 +12,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -80,6 +81,17 @@ class FailureLoadAtInputs {
   void hold_samples();
   // Samples judged by their state at the load (operate_at), not by a failure load.
   long judged_by_state() const { return judged_by_state_; }
+  // The states held that samples start from (operate_at's and the samples' own).
+  std::size_t states_held() const { return operating_ ? operating_->held() : 0; }
+  // Samples judged by other processes of the study (MPI ranks: reliability.cpp). What this
+  // process learnt judging `sample` (fails_at, just before): how it was told and the state
+  // it leaves to hold, as bytes; and such bytes taken here, as if it had been judged here.
+  std::string sample_report(std::uint64_t sample) const;
+  void take_sample_report(std::uint64_t sample, const std::string& report);
+  // The states a batch's samples leave to hold, for the processes that judged only some
+  // of them; taken there in place of their own, so that every process holds the same.
+  std::string batch_states() const;
+  void take_batch_states(const std::string& bytes);
 
   // Settle at x and keep it as a point later moves start from (e.g. the design point).
   void keep(std::span<const double> x);
@@ -146,6 +158,11 @@ class FailureLoadAtInputs {
   mutable std::atomic<long> searches_{0};
   std::unique_ptr<OperatingStates> operating_;
   mutable std::atomic<long> judged_by_state_{0};
+  // How each sample of the batch was told, for its report.
+  enum class Told : std::uint8_t { by_failure_load, by_state, by_search };
+  void note(const std::optional<Sample>& sample, Told how) const;
+  mutable std::mutex told_lock_;
+  mutable std::map<std::uint64_t, Told> told_;
 };
 
 }  // namespace twb

@@ -22,7 +22,7 @@ struct SamplingSettings {
   int max_samples = 4000;
   int batch = 50;          // samples between verdicts (and the unit threads share)
   std::uint64_t seed = 1;
-  int threads = 1;
+  int threads = 1;         // of the default spread (batch_on_threads)
 };
 
 // Whether the bearing at u, sample number `sample`, fails; none where it cannot be told
@@ -37,10 +37,26 @@ struct SamplingEstimate {
   bool reached = false;            // cov reached within max_samples
 };
 
-// `between_batches` is called after each batch's samples, before the next batch's (what
-// the indicator learnt from a batch may serve the next ones, never its own).
+// Where a batch's samples are judged: `judge(sample)` judges one on the calling thread;
+// every sample of [first, first + count) is judged somewhere and its verdict returned in
+// order, and what the indicator learnt from the batch is made ready for the next ones
+// (never for its own: a sample's verdict must not depend on which was judged first).
+using JudgeSample = std::function<std::optional<bool>(std::uint64_t sample)>;
+using SpreadBatch =
+    std::function<std::vector<std::optional<bool>>(std::uint64_t first, std::size_t count, const JudgeSample& judge)>;
+
+// On settings.threads threads of this process, with `between_batches` called after each
+// batch.
+SpreadBatch batch_on_threads(int threads, std::function<void()> between_batches = {});
+
+// `after_batch` is told the estimate after each batch (a long check's progress).
 SamplingEstimate importance_sampling(const FailureIndicator& fails, std::span<const double> centre,
-                                     const SamplingSettings& settings, const std::function<void()>& between_batches = {});
+                                     const SamplingSettings& settings, const SpreadBatch& spread,
+                                     const std::function<void(const SamplingEstimate&)>& after_batch = {});
+inline SamplingEstimate importance_sampling(const FailureIndicator& fails, std::span<const double> centre,
+                                            const SamplingSettings& settings) {
+  return importance_sampling(fails, centre, settings, batch_on_threads(settings.threads));
+}
 
 // Sample i's standard normal variates (its own generator: the same whatever thread draws it).
 std::vector<double> standard_normal_sample(std::uint64_t seed, std::uint64_t i, std::size_t dimension);

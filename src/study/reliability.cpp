@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
+#include <map>
 #include <mutex>
+#include <stdexcept>
 #include <numeric>
 
 #include <fmt/format.h>
@@ -13,6 +16,7 @@
 #include "study/failure_load.h"
 #include "study/first_order_reliability.h"
 #include "study/importance_sampling.h"
+#include "study/search_scheduler.h"
 #include "scene/input_distribution.h"
 #include "study/study_support.h"
 #include "twb/error_family.h"
@@ -58,9 +62,76 @@ std::string design_point_words(const DesignPoint& p, const std::vector<Uncertain
   return words;
 }
 
+// Verdict bytes: none, safe, fails.
+char verdict_byte(const std::optional<bool>& v) { return !v ? 0 : *v ? 2 : 1; }
+std::optional<bool> verdict_of(char c) {
+  if (c == 0) return std::nullopt;
+  if (c == 1 || c == 2) return c == 2;
+  throw std::runtime_error("a sample's verdict arrived damaged");
+}
+
+// A batch's samples through `scheduler` (MPI ranks): each rank judges its share, whose
+// verdicts, reasons and states arrive at the rank that takes the results; that rank then
+// gives every rank the batch's verdicts and its states to hold, so that every rank holds
+// the same states, in sample order, and draws the same next batch.
+SpreadBatch spread_over(SearchScheduler& scheduler, int threads, FailureLoadAtInputs& failure, std::mutex& why_lock,
+                        std::map<std::uint64_t, std::string>& unresolved_why) {
+  return [&scheduler, threads, &failure, &why_lock, &unresolved_why](std::uint64_t first, std::size_t count,
+                                                                     const JudgeSample& judge) {
+    std::vector<std::optional<bool>> verdicts(count);
+    std::vector<std::size_t> todo(count);
+    for (std::size_t k = 0; k < count; ++k) todo[k] = first + k;
+    SearchScheduler::Work work;
+    work.run_here = [&](std::size_t i) { verdicts[i - first] = judge(i); };
+    // [verdict][why's length: 8 bytes][why][the sample's report]
+    work.run_for_another = [&](std::size_t i) {
+      const std::optional<bool> v = judge(i);
+      std::string why;
+      if (!v) {
+        const std::lock_guard<std::mutex> hold(why_lock);
+        why = unresolved_why[i];
+      }
+      const std::uint64_t length = why.size();
+      std::string bytes(1, verdict_byte(v));
+      bytes.append(reinterpret_cast<const char*>(&length), sizeof length);
+      return bytes + why + failure.sample_report(i);
+    };
+    work.arrived = [&](std::size_t i, const std::string& bytes) {
+      std::uint64_t length = 0;
+      if (i < first || i >= first + count || bytes.size() < 1 + sizeof length)
+        throw std::runtime_error(fmt::format("sample {}'s verdict arrived damaged", i));
+      std::memcpy(&length, bytes.data() + 1, sizeof length);
+      if (length > bytes.size() - 1 - sizeof length)
+        throw std::runtime_error(fmt::format("sample {}'s verdict arrived damaged", i));
+      verdicts[i - first] = verdict_of(bytes[0]);
+      if (!verdicts[i - first]) {
+        const std::lock_guard<std::mutex> hold(why_lock);
+        unresolved_why[i] = bytes.substr(1 + sizeof length, length);
+      }
+      failure.take_sample_report(i, bytes.substr(1 + sizeof length + length));
+    };
+    scheduler.run(todo, threads, work);
+    // [the verdicts: one byte each][the states to hold]
+    std::string batch;
+    if (scheduler.takes_results()) {
+      for (const std::optional<bool>& v : verdicts) batch += verdict_byte(v);
+      batch += failure.batch_states();
+    }
+    scheduler.share(batch);
+    if (!scheduler.takes_results()) {
+      if (batch.size() < count) throw std::runtime_error("a batch's verdicts arrived damaged");
+      for (std::size_t k = 0; k < count; ++k) verdicts[k] = verdict_of(batch[k]);
+      failure.take_batch_states(batch.substr(count));
+    }
+    failure.hold_samples();
+    return verdicts;
+  };
+}
+
 }  // namespace
 
-void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads) {
+void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads,
+                     SearchScheduler* scheduler) {
   const Scene& scene = model.scene();
   const Study& st = scene.study;
   const std::vector<UncertainInput>& inputs = st.uncertain_inputs;
@@ -148,17 +219,16 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
   failure.keep_every_point(false);
   if (st.max_samples > 0) {
     if (progress) progress(fmt::format("reliability: importance sampling to a coefficient of variation of {:.3g}", st.sampling_cov));
-    std::mutex first_lock;
-    std::string first_why;
-    const long before = evaluations;
+    // Why each sample that could not be told was not (the first, by number, is reported).
+    std::mutex why_lock;
+    std::map<std::uint64_t, std::string> unresolved_why;
     // A sample asks only whether the bearing fails at the operating load: a search it
     // needs ends just above that load (FailureLoadAtInputs::fails_at).
-    // Most samples are told by their state at the load, moved from the states held there
-    // (OperatingStates): the first search's, the way to the design point, and the samples
-    // of the batches before.
+    // Most samples are told by their state at the load, moved from the states held at the
+    // load (OperatingStates): the first search's, the way to the design point, and the
+    // samples of the batches before.
     failure.operate_at(load, inputs_at(form.u));
     const FailureIndicator fails = [&](std::uint64_t sample, std::span<const double> u) -> std::optional<bool> {
-      ++evaluations;
       std::string why;
       std::optional<bool> failed;
       try {
@@ -171,8 +241,8 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
         why = e.what();  // one sample's, not the study's
       }
       if (!failed) {
-        const std::lock_guard<std::mutex> hold(first_lock);
-        if (first_why.empty()) first_why = why;
+        const std::lock_guard<std::mutex> hold(why_lock);
+        unresolved_why[sample] = why;
       }
       return failed;
     };
@@ -182,7 +252,18 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
     sampling.min_samples = std::min(100, st.max_samples);
     sampling.seed = std::uint64_t(st.seed);
     sampling.threads = threads;
-    const SamplingEstimate e = importance_sampling(fails, form.u, sampling, [&] { failure.hold_samples(); });
+    const SpreadBatch spread = scheduler ? spread_over(*scheduler, threads, failure, why_lock, unresolved_why)
+                                         : batch_on_threads(threads, [&] { failure.hold_samples(); });
+    // Every rank of an MPI job holds the same states after each batch (spread_over): its
+    // progress lines say so.
+    const SamplingEstimate e = importance_sampling(fails, form.u, sampling, spread, [&](const SamplingEstimate& now) {
+      if (progress)
+        progress(fmt::format("reliability: {} samples, P_f = {:.4g}, coefficient of variation {:.3g}; {} states held",
+                             now.samples, now.probability, now.cov, failure.states_held()));
+    });
+    // The other ranks of an MPI job leave the rest to the one that takes the results.
+    if (scheduler && !scheduler->takes_results()) return;
+    const std::string first_why = unresolved_why.empty() ? std::string() : unresolved_why.begin()->second;
     ReliabilityRow& mc = out.reliability.emplace_back();
     mc.method = "monte_carlo";
     mc.load = load;
@@ -194,7 +275,7 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
     mc.samples = e.samples;
     mc.failures = e.failures;
     mc.unresolved = e.unresolved;
-    mc.evaluations = evaluations - before;
+    mc.evaluations = e.samples;  // one each, wherever judged
     // Unresolved samples are left out, and they need not be like the others.
     mc.converged = e.reached && e.unresolved == 0;
     out.summary.push_back(fmt::format(

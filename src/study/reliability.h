@@ -11,6 +11,14 @@
 
 namespace twb {
 
-void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads);
+class SearchScheduler;
+
+// The Monte Carlo samples run on `threads` threads here, or through `scheduler` (the
+// ranks of an MPI job: every rank runs the study, FORM included, and judges its share of
+// each batch; the batch's verdicts and states are then shared, so that every rank holds
+// the same states and draws the same next batch). Only the process that takes the
+// results goes on past the Monte Carlo check.
+void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads,
+                     SearchScheduler* scheduler = nullptr);
 
 }  // namespace twb

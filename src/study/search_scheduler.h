@@ -29,6 +29,11 @@ class SearchScheduler {
   virtual void run(const std::vector<std::size_t>& todo, int threads, const Work& work) = 0;
   // Whether this process takes the study's results (and writes its files).
   virtual bool takes_results() const { return true; }
+  // What the process that takes the results holds (`bytes` there) given to every other
+  // process of the study (`bytes` replaced there): for searches that start from what
+  // earlier ones found (a reliability study's Monte Carlo batches). Every process calls
+  // it at the same point of the study; one process alone has nothing to share.
+  virtual void share(std::string& bytes) { (void)bytes; }
 };
 
 // Every search here, on `threads` threads.

@@ -60,4 +60,8 @@ bool has_independent_searches(const Study& study) {
   return study.type == StudyType::load_sweep || study.type == StudyType::sliding_choice;
 }
 
+bool spreads_over_ranks(const Study& study) {
+  return has_independent_searches(study) || (study.type == StudyType::reliability && study.max_samples > 0);
+}
+
 }  // namespace twb

@@ -272,7 +272,7 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
       run_sensitivity(model, out, progress, threads);
       break;
     case StudyType::reliability:
-      run_reliability(model, out, progress, threads);
+      run_reliability(model, out, progress, threads, plumbing.scheduler);
       break;
     case StudyType::calibration:
       run_calibration(model, out, progress, threads);

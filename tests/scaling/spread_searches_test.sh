@@ -7,6 +7,10 @@
 #   - under mpirun -np 2 (when MPIEXEC is given);
 #   - under mpirun -np 2 --resume on a results directory whose journal holds slice 1 of 2
 #     (rank 0 reads those searches, the ranks share the others).
+# And a reliability study's Monte Carlo samples (coarse mesh, two batches of 50) under
+# mpirun -np 2 give the files and the summary of one thread, and both ranks hold the same
+# states after each batch (the second batch starts from the states the first found, which
+# the ranks share); --slice refuses it, saying why.
 # run.json holds timings and is not compared; every CSV is, but for states.csv's wall_ms.
 #
 #   spread_searches_test.sh TWB SOURCE_DIR WORK_DIR [MPIEXEC]
@@ -65,6 +69,19 @@ grep -q "in none of the slices' journals" "$work/incomplete.err" || { cat "$work
 same_files "$work/one-thread" "$work/merged"
 echo "3 slices merged: the same files"
 
+reliability() {
+  "$twb" run "$source/configs/studies/reliability.yaml" \
+    --set mesh.radial_nodes=5 --set mesh.circumferential_nodes=24 \
+    --set 'study.monte_carlo={max_samples: 100}' --set 'study.probabilities=[]' "$@" 2> /dev/null
+}
+reliability --threads 1 --out "$work/reliability-one" | grep '^reliability' > "$work/reliability-one.txt"
+grep -q 'told by their state' "$work/reliability-one.txt" || { cat "$work/reliability-one.txt"; exit 1; }
+if "$twb" run "$source/configs/studies/reliability.yaml" --slice 1/2 --out "$work/reliability-slice" \
+  2> "$work/reliability-slice.err"; then
+  echo "a slice of a reliability study ran"; exit 1
+fi
+grep -q "cannot share out a reliability study" "$work/reliability-slice.err" || { cat "$work/reliability-slice.err"; exit 1; }
+
 if [ -n "$mpiexec" ]; then
   # Open MPI refuses root unless told; CI runs as root.
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -84,4 +101,20 @@ if [ -n "$mpiexec" ]; then
   twb_run_mpi --resume --out "$work/resumed"
   same_files "$work/one-thread" "$work/resumed"
   echo "2 MPI ranks resuming half a journal: the same files"
+
+  mpi "$twb" run "$source/configs/studies/reliability.yaml" \
+    --set mesh.radial_nodes=5 --set mesh.circumferential_nodes=24 \
+    --set 'study.monte_carlo={max_samples: 100}' --set 'study.probabilities=[]' --out "$work/reliability-ranks" \
+    --verbose 2> "$work/reliability-ranks.err" | grep '^reliability' > "$work/reliability-ranks.txt"
+  same_files "$work/reliability-one" "$work/reliability-ranks"
+  cmp "$work/reliability-one.txt" "$work/reliability-ranks.txt" || {
+    diff "$work/reliability-one.txt" "$work/reliability-ranks.txt"; exit 1; }
+  # After each batch both ranks hold the same states (their progress lines say how many).
+  grep '^reliability: .* states held' "$work/reliability-ranks.err" > "$work/held-rank-0.txt" || true
+  grep '^twb\[rank 1\]: reliability: .* states held' "$work/reliability-ranks.err" | sed 's/^twb\[rank 1\]: //' \
+    > "$work/held-rank-1.txt" || true
+  [ "$(wc -l < "$work/held-rank-0.txt")" -eq 2 ] || { cat "$work/reliability-ranks.err"; exit 1; }
+  cmp "$work/held-rank-0.txt" "$work/held-rank-1.txt" || {
+    diff "$work/held-rank-0.txt" "$work/held-rank-1.txt"; exit 1; }
+  echo "a reliability study's samples on 2 MPI ranks: the same files and summary"
 fi

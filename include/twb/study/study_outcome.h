@@ -80,5 +80,9 @@ std::vector<std::string> summary_lines(const StudyOutcome& outcome);
 // what RunOptions::stop can stop between. A followed distress map is one piece of work
 // (each combination starts from its neighbour's).
 bool has_independent_searches(const Study& study);
+// Whether a study's work spreads over the ranks of an MPI job: its independent searches,
+// or a reliability study's Monte Carlo samples (whose batches share what they found, so
+// that the slices of a job array, which cannot share, do not take them).
+bool spreads_over_ranks(const Study& study);
 
 }  // namespace twb
