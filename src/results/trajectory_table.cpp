@@ -6,12 +6,35 @@ namespace twb {
 
 using cells::kelvin_offset;
 
+Regime regime_of(const BearingState& state) {
+  if (state.contact_share < 0.01) return Regime::full_film;
+  if (state.fluid_share < 0.1) return Regime::boundary;
+  return Regime::mixed;
+}
+
+std::string_view regime_name(Regime regime) {
+  switch (regime) {
+    case Regime::full_film: return "full_film";
+    case Regime::mixed: return "mixed";
+    case Regime::boundary: return "boundary";
+  }
+  return "";
+}
+
 ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const std::vector<std::string>& parameter_columns,
-                             bool sliding_column) {
+                             bool sliding_column, bool cycle) {
   ResultTable t;
   const auto time = t.number("t_s"), t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"),
              hmin = t.number("hmin_over_sigma"), contact = t.number("contact_share"), f_eff = t.number("f_eff"),
-             load = t.number("load_N"), speed = t.number("speed_rad_s");
+             load = t.number("load_N"), speed = t.number("speed_rad_s"), torque = t.number("torque_Nm"),
+             fluid = t.number("fluid_share");
+  const auto regime = t.text("regime");
+  const auto generated = t.number("heat_generated_W"), to_ambient = t.number("heat_to_ambient_W");
+  std::optional<ResultTable::Column> ambient, tilt, margin, criterion;
+  if (cycle) {
+    ambient = t.number("ambient_C"), tilt = t.number("tilt_rad"), margin = t.number("least_margin");
+    criterion = t.text("least_margin_criterion");
+  }
   const cells::RunColumns run(t, parameter_columns, sliding_column);
   for (const TrajectorySample& p : samples) {
     const BearingState& s = p.state;
@@ -23,6 +46,17 @@ ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const
     t.put_number(f_eff, s.f_eff);
     t.put_number(load, s.load);
     t.put_number(speed, s.speed);
+    t.put_number(torque, s.torque);
+    t.put_number(fluid, s.fluid_share);
+    t.put_text(regime, std::string(regime_name(regime_of(s))));
+    t.put_number(generated, s.heat_generated);
+    t.put_number(to_ambient, s.heat_to_ambient);
+    if (cycle) {
+      t.put_number(*ambient, p.ambient ? std::optional<double>(*p.ambient - kelvin_offset) : std::nullopt);
+      t.put_number(*tilt, p.tilt);
+      t.put_number(*margin, p.least_margin);
+      t.put_text(*criterion, p.least_criterion ? std::string(limit_name(*p.least_criterion)) : std::string());
+    }
     run.put(t, p.parameters, p.sliding);
   }
   return t;

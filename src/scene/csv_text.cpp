@@ -84,4 +84,28 @@ CsvHeader csv_header(const CsvField& field) {
   return h;
 }
 
+std::optional<CsvHeader> results_header(const CsvField& field, std::span<const ResultsName> results, int& what) {
+  CsvHeader h = csv_header(field);
+  if (!h.unit.empty()) return std::nullopt;
+  for (const ResultsName& r : results)
+    if (r.name == h.name) {
+      what = r.what;
+      h.unit = r.unit;
+      h.unit_column = field.column;
+      return h;
+    }
+  return std::nullopt;
+}
+
+UnitToSi unit_to_si(const CsvText& text, std::size_t line, const CsvHeader& header, const SiUnit& si_unit) {
+  UnitToSi c;
+  try {
+    c.offset = to_si("0 " + header.unit, si_unit);
+    c.scale = to_si("1 " + header.unit, si_unit) - c.offset;
+  } catch (const QuantityError& e) {
+    text.fail(line, header.unit_column, fmt::format("the {} column's unit '{}': {}", header.name, header.unit, e.what()));
+  }
+  return c;
+}
+
 }  // namespace twb::scene_io

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,5 +51,23 @@ struct CsvHeader {
   std::size_t unit_column = 0;
 };
 CsvHeader csv_header(const CsvField& field);
+
+// A column named the way the results tables name theirs, its unit in the name (load_N,
+// ambient_C): what the reader takes it for (the reader's own code) and that unit.
+struct ResultsName {
+  std::string_view name;
+  int what;
+  std::string_view unit;
+};
+// A header field without brackets as one of `results`: its name's unit at the field's
+// start (where a fault in it is shown); none where the field has brackets or is none of them.
+std::optional<CsvHeader> results_header(const CsvField& field, std::span<const ResultsName> results, int& what);
+
+// A column's unit as its conversion to SI, si = scale·v + offset (a temperature in degC
+// has an offset); a fault at the unit's place where it is not of si_unit's kind.
+struct UnitToSi {
+  double scale = 1.0, offset = 0.0;
+};
+UnitToSi unit_to_si(const CsvText& text, std::size_t line, const CsvHeader& header, const SiUnit& si_unit);
 
 }  // namespace twb::scene_io

@@ -28,11 +28,6 @@ constexpr int kLoad = 10, kSpeed = 11, kAmbient = 12, kSd = 13, kWhats = kSd + i
 bool is_sd(int what) { return what >= kSd; }
 
 // The results' own column names, with their units.
-struct ResultsName {
-  std::string_view name;
-  int what;
-  std::string_view unit;
-};
 constexpr ResultsName kResultsNames[] = {
     {"load_N", kLoad, "N"},         {"speed_rad_s", kSpeed, "rad/s"}, {"speed_rpm", kSpeed, "rpm"},
     {"torque_Nm", 0, "N m"},        {"f_eff", 1, "1"},                {"T_mean_C", 2, "degC"},
@@ -58,20 +53,15 @@ std::string allowed_names() {
 }
 
 Column column_of(const CsvText& text, std::size_t line, const CsvField& field) {
-  const CsvHeader h = csv_header(field);
   Column c;
-  std::string unit = h.unit;
-  std::size_t unit_at = h.unit_column;
+  CsvHeader h = csv_header(field);
   if (h.unit.empty()) {
-    const auto known = std::find_if(std::begin(kResultsNames), std::end(kResultsNames),
-                                    [&](const ResultsName& r) { return r.name == h.name; });
-    if (known == std::end(kResultsNames))
+    const std::optional<CsvHeader> known = results_header(field, kResultsNames, c.what);
+    if (!known)
       text.fail(line, field.column,
                 fmt::format("the column '{}' gives no unit: name it {} with its unit in brackets, e.g. '{}'",
                             field.text, allowed_names(), kHeaderExample));
-    c.what = known->what;
-    unit = known->unit;
-    unit_at = field.column;
+    h = *known;
   } else if (h.name == "load") {
     c.what = kLoad;
   } else if (h.name == "speed") {
@@ -87,15 +77,10 @@ Column column_of(const CsvText& text, std::size_t line, const CsvField& field) {
                 fmt::format("the column '{}' is none a calibration reads; the columns are {}", h.name, allowed_names()));
     c.what = int(q - std::begin(kMeasuredNames)) + (sd ? kSd : 0);
   }
-  try {
-    const SiUnit& si_unit = unit_of(c.what);
-    c.offset = to_si("0 " + unit, si_unit);
-    c.scale = to_si("1 " + unit, si_unit) - c.offset;
-    // A spread is a difference: a temperature's in degC is one in K (no offset).
-    if (is_sd(c.what)) c.offset = 0.0;
-  } catch (const QuantityError& e) {
-    text.fail(line, unit_at, fmt::format("the {} column's unit '{}': {}", h.name, unit, e.what()));
-  }
+  const UnitToSi to_si = unit_to_si(text, line, h, unit_of(c.what));
+  c.scale = to_si.scale;
+  // A spread is a difference: a temperature's in degC is one in K (no offset).
+  c.offset = is_sd(c.what) ? 0.0 : to_si.offset;
   return c;
 }
 

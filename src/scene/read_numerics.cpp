@@ -423,6 +423,16 @@ void read_study(const MapReader& scene, Scene& out) {
                                        "Levenberg-Marquardt iterations before the fit stops unconverged");
       study.get("fit", "a map from input paths to bounds, e.g. {surfaces.washer.Rq: {lower: 0.1 um, upper: 1.5 um}}");
       break;
+    case StudyType::duty_cycle:
+      // The schedule is read once the operating point is known (read_schedule).
+      study.restrict_to({"type", "schedule"}, "with type: duty_cycle");
+      if (!out.effects.thermal) {
+        const Node type = study.get("type", "");
+        type.fail(fmt::format("{}: a duty cycle marches the bodies' heat in time (docs/physics.md section 19), so it "
+                              "needs the thermal effect; add 'thermal' to effects",
+                              type.path()));
+      }
+      break;
     case StudyType::distress_map: {
       study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate",
                          "method"},

@@ -137,6 +137,7 @@ Scene read_scene(const Node& root) {
   check_input_axis(scene, out);
   read_uncertain_inputs(scene, out);
   read_calibration(scene, out);
+  read_schedule(scene, out);
   return out;
 }
 

@@ -40,7 +40,8 @@ inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start",
                                                    "speeds",        "parameter",  "bracket_width", "duration",
                                                    "error_estimate", "from",       "to",       "family",
                                                    "parameters", "inputs", "probabilities", "monte_carlo",
-                                                   "data", "fit", "sd", "max_iterations", "method"};
+                                                   "data", "fit", "sd", "max_iterations", "method",
+                                                   "schedule"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
@@ -49,12 +50,12 @@ inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
 inline constexpr EnumNames<FrictionLaw, 2> kFrictionLaws{
     {"empirical", "constant"}, {FrictionLaw::empirical, FrictionLaw::constant}};
 
-inline constexpr EnumNames<StudyType, 9> kStudyTypes{
+inline constexpr EnumNames<StudyType, 10> kStudyTypes{
     {"point", "load_sweep", "distress_map", "transient", "sliding_choice", "distress_curve", "sensitivity",
-     "reliability", "calibration"},
+     "reliability", "calibration", "duty_cycle"},
     {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient,
      StudyType::sliding_choice, StudyType::distress_curve, StudyType::sensitivity, StudyType::reliability,
-     StudyType::calibration}};
+     StudyType::calibration, StudyType::duty_cycle}};
 // A calibration's measured quantities: their names in the scene's `sd` and the data
 // file's header (MeasuredQuantity's order).
 inline constexpr std::string_view kMeasuredNames[] = {"torque", "f_eff", "T_mean", "T_max"};

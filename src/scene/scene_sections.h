@@ -61,6 +61,8 @@ std::vector<InputEntry> input_entries(const Node& map, const Scene& out, std::st
 // A calibration study's data file, fitted inputs and measurement spreads (read once the
 // scene's inputs are known).
 void read_calibration(const MapReader& scene, Scene& out);
+// study type duty_cycle: its schedule, in the scene or a CSV file it names (read_schedule.cpp).
+void read_schedule(const MapReader& scene, Scene& out);
 // A reliability study's uncertain inputs: `study.inputs`, each an input of the scene with
 // a distribution the scene accepts (read once the scene's inputs are known).
 void read_uncertain_inputs(const MapReader& scene, Scene& out);

@@ -208,7 +208,7 @@ void write_numerics(Writer& w, const Scene& s) {
   w.line(0, "study:");
   w.entry(1, "type", std::string(kStudyTypes.name(s.study.type)));
   const Study& st = s.study;
-  if (st.type != StudyType::point && st.type != StudyType::calibration &&
+  if (st.type != StudyType::point && st.type != StudyType::calibration && st.type != StudyType::duty_cycle &&
       !(st.type == StudyType::sensitivity && st.load_end == 0.0)) {
     w.entry(1, "load_start", quantity(st.load_start, "N"));
     w.entry(1, "load_end", quantity(st.load_end, "N"));
@@ -279,6 +279,14 @@ void write_numerics(Writer& w, const Scene& s) {
     w.entry(2, "cov", quantity(st.sampling_cov, "1"));
     w.entry(2, "max_samples", fmt::format("{}", st.max_samples));
     w.entry(2, "seed", fmt::format("{}", st.seed));
+  }
+  if (st.type == StudyType::duty_cycle) {
+    // Every point with every field: the resolved scene needs no schedule file.
+    w.line(1, "schedule:");
+    for (const SchedulePoint& p : st.schedule)
+      w.line(2, fmt::format("- {{t: {}, load: {}, speed: {}, ambient: {}, tilt: {}}}", quantity(p.time, "s"),
+                            quantity(p.load, "N"), quantity(p.speed, "rad/s"), quantity(p.ambient, "K"),
+                            quantity(p.tilt, "rad")));
   }
   if (st.type == StudyType::calibration) {
     w.entry(1, "data", quoted(std::filesystem::absolute(st.data).string()));

@@ -21,6 +21,9 @@ namespace twb {
 struct IdaTransient::Callbacks {
   const SteadySystem* system;
   const std::vector<double>* capacities;
+  const std::function<double(double)>* inputs_at;  // may be empty
+  // The inputs at t; the rate of the differential unknowns' reference there.
+  double set_inputs(double t) const { return *inputs_at ? (*inputs_at)(t) : 0.0; }
   // IDA's Jacobian needs (k, k) wherever C_k > 0; the system's pattern may lack it, so
   // IDA works on the union and the system's entries are scattered into it.
   SparsePattern pattern;
@@ -55,26 +58,28 @@ SparsePattern with_capacity_diagonal(const SparsePattern& p, const std::vector<d
 // Trampolines: no exception may cross into C. A non-finite residual is recoverable
 // (IDA retries with a smaller step, and a blow-up then ends in a step failure the
 // caller reads); anything thrown is unrecoverable and its message kept.
-int residual_fn(double, N_Vector y, N_Vector yp, N_Vector g, void* data) {
+int residual_fn(double t, N_Vector y, N_Vector yp, N_Vector g, void* data) {
   auto* cb = static_cast<IdaTransient::Callbacks*>(data);
   return guarded_callback(cb->failure, [&]() -> int {
     const auto n = std::size_t(N_VGetLength(y));
     const double* up = N_VGetArrayPointer(yp);
     std::span<double> r(N_VGetArrayPointer(g), n);
+    const double reference_rate = cb->set_inputs(t);
     cb->system->evaluate(std::span<const double>(N_VGetArrayPointer(y), n), r, {});
     const std::vector<double>& c = *cb->capacities;
-    for (std::size_t k = 0; k < n; ++k) r[k] += c[k] * up[k];
+    for (std::size_t k = 0; k < n; ++k) r[k] += c[k] * (up[k] + reference_rate);
     for (double v : r)
       if (!std::isfinite(v)) return 1;
     return 0;
   });
 }
 
-int jacobian_fn(double, double cj, N_Vector y, N_Vector, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector,
+int jacobian_fn(double t, double cj, N_Vector y, N_Vector, N_Vector, SUNMatrix J, void* data, N_Vector, N_Vector,
                 N_Vector) {
   auto* cb = static_cast<IdaTransient::Callbacks*>(data);
   return guarded_callback(cb->failure, [&]() -> int {
     const auto n = std::size_t(N_VGetLength(y));
+    cb->set_inputs(t);
     cb->system->evaluate(std::span<const double>(N_VGetArrayPointer(y), n), cb->scratch, cb->system_values);
     std::fill(cb->values.begin(), cb->values.end(), 0.0);
     for (std::size_t e = 0; e < cb->from_system.size(); ++e)
@@ -114,6 +119,7 @@ IdaTransient::IdaTransient(const SteadySystem& system, TransientSettings setting
   Callbacks& cb = *callbacks_;
   cb.system = &system_;
   cb.capacities = &capacities_;
+  cb.inputs_at = &settings_.inputs_at;
   const SparsePattern& own = system_.pattern();
   cb.pattern = with_capacity_diagonal(own, capacities_);
   for (Index r = 0; r < n; ++r)
@@ -218,6 +224,7 @@ TransientStatus IdaTransient::consistent_start(double t0, std::span<const double
 TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
   if (Index(u0.size()) != system_.size()) throw InternalError("IdaTransient::start: state has the wrong size");
   const std::vector<double> held(u0.begin(), u0.end());  // u0 may be our own state()
+  const double reference_rate = callbacks_->set_inputs(t0);
   const double fastest = fastest_time(held);
   TransientStatus s = consistent_start(t0, held, fastest);
   if (s.ok) return s;
@@ -228,7 +235,11 @@ TransientStatus IdaTransient::start(double t0, std::span<const double> u0) {
   // that point of the trajectory, at t0 + Δτ.
   const double dtau = 1e-3 * fastest;
   std::vector<double> stepped = held;
-  const PseudoTimeShift euler{1.0 / dtau, held, capacities_};
+  // C·((u − u0)/Δτ + r): the anchor moved back by the reference's move over the step.
+  std::vector<double> anchor = held;
+  for (std::size_t k = 0; k < anchor.size(); ++k)
+    if (capacities_[k] > 0.0) anchor[k] -= reference_rate * dtau;
+  const PseudoTimeShift euler{1.0 / dtau, anchor, capacities_};
   NewtonReport rep;
   try {
     // From the start itself, a step this short is well inside Newton's quadratic basin

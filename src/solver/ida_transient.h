@@ -8,7 +8,8 @@
 // IDA keeps them on the constraint manifold F_alg = 0 at every step.
 //
 // A change of λ (a load step) is a discontinuity of the right-hand side: restart with
-// start(), which re-initializes IDA and recomputes consistent initial conditions.
+// start(), which re-initializes IDA and recomputes consistent initial conditions. Inputs
+// that move in time (TransientSettings::inputs_at) are set at every evaluation's time.
 #pragma once
 
 #include <functional>
@@ -36,6 +37,13 @@ struct TransientSettings {
   double absolute_tolerance = 1e-8;
   // Per unknown; replaces absolute_tolerance when not empty.
   std::vector<double> absolute_tolerances;
+  // A transient in real time whose inputs change with it (a duty cycle, docs/physics.md
+  // section 19): called before every evaluation at t, it sets the system's inputs there
+  // and returns the rate r(t) at which the reference the differential unknowns are
+  // measured from moves (the bearing's temperatures are rises above the ambient, which
+  // the schedule moves), so that the residual is C·(u' + r) + F(u; t). Empty: λ fixed,
+  // r = 0. The inputs must be smooth between the stop times the caller restarts at.
+  std::function<double(double t)> inputs_at;
 };
 
 // A failure of IDA is data, not an exception: a finite-time blow-up ends in

@@ -47,7 +47,8 @@ std::string result_columns_json() {
   tables["distress"] = columns(distress_table({}, {parameter}, true), distress_table({}, {}, false));
   tables["sliding"] = columns(sliding_table({}), sliding_table({}));
   tables["fold_curve"] = columns(fold_curve_table({}, parameter, family), fold_curve_table({}, parameter));
-  tables["trajectory"] = columns(trajectory_table({}, {parameter}, true), trajectory_table({}, {}, false));
+  tables["trajectory"] = columns(trajectory_table({}, {parameter}, true, true), trajectory_table({}, {}, false));
+  tables["cycle_events"] = columns(cycle_events_table({}), cycle_events_table({}));
   tables["fields"] = columns(fields_table({}), fields_table({}));
   tables["sensitivity"] = columns(sensitivity_table({}), sensitivity_table({}));
   tables["reliability"] = columns(reliability_table({}), reliability_table({}));

@@ -72,7 +72,8 @@ void fields_of_solved(A& a, S& s) {
 }
 template <class A, class S>
 void fields_of_sample(A& a, S& t) {
-  a(t.time), a(t.state), a(t.parameters), a(t.sliding);
+  a(t.time), a(t.state), a(t.parameters), a(t.sliding), a(t.ambient), a(t.tilt), a(t.least_margin),
+      a(t.least_criterion);
 }
 template <class A, class S>
 void fields_of_row(A& a, S& r) {

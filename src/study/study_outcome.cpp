@@ -14,12 +14,13 @@ std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
   std::vector<NamedTable> tables;
   tables.push_back({"states", states_table(out.states, parameter, sliding)});
   if (type != StudyType::point && type != StudyType::transient && type != StudyType::sensitivity &&
-      type != StudyType::reliability && type != StudyType::calibration)
+      type != StudyType::reliability && type != StudyType::calibration && type != StudyType::duty_cycle)
     tables.push_back({"distress", distress_table(out.distress, parameter, sliding)});
   if (type == StudyType::sliding_choice) tables.push_back({"sliding", sliding_table(out.sliding)});
   if (type == StudyType::distress_curve)
     tables.push_back({"fold_curve", fold_curve_table(out.fold_curve, out.fold_curve_column, parameter.empty() ? std::string() : parameter.front())});
-  if ((type == StudyType::sensitivity || type == StudyType::reliability) && !out.distress.empty())
+  if ((type == StudyType::sensitivity || type == StudyType::reliability || type == StudyType::duty_cycle) &&
+      !out.distress.empty())
     tables.push_back({"distress", distress_table(out.distress, parameter, sliding)});
   if (type == StudyType::sensitivity) tables.push_back({"sensitivity", sensitivity_table(out.sensitivity)});
   if (type == StudyType::reliability) {
@@ -31,7 +32,12 @@ std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
     tables.push_back({"calibration_correlation", correlation_table(out.correlations)});
     tables.push_back({"calibration_points", calibration_points_table(out.calibration_points)});
   }
-  if (!out.trajectory.empty()) tables.push_back({"trajectory", trajectory_table(out.trajectory, parameter, sliding)});
+  if (type == StudyType::duty_cycle) {
+    tables.push_back({"trajectory", trajectory_table(out.trajectory, {}, false, true)});
+    tables.push_back({"cycle_events", cycle_events_table(out.cycle_events)});
+  } else if (!out.trajectory.empty()) {
+    tables.push_back({"trajectory", trajectory_table(out.trajectory, parameter, sliding)});
+  }
   return tables;
 }
 

@@ -31,6 +31,7 @@
 #include "study/operating_point.h"
 #include "study/calibration.h"
 #include "study/reliability.h"
+#include "study/duty_cycle.h"
 #include "study/sensitivity.h"
 
 namespace twb {
@@ -277,6 +278,9 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
     case StudyType::calibration:
       run_calibration(model, out, progress, threads);
       break;
+    case StudyType::duty_cycle:
+      run_duty_cycle(model, out, progress);
+      break;
   }
   // Searches run on worker threads count their own (run_searches); the rest ran here.
   const StudyType type = model.scene().study.type;
@@ -297,7 +301,7 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
   // Continuation and distress searches count their work in states, transients and
   // factorizations; their Newton iterations are those that solved the reported states.
   if (type != StudyType::point && type != StudyType::transient && type != StudyType::sensitivity &&
-      type != StudyType::reliability && type != StudyType::calibration)
+      type != StudyType::reliability && type != StudyType::calibration && type != StudyType::duty_cycle)
     for (const SolvedState& s : out.states) out.timings.newton_iterations += s.iterations;
   out.timings.solve_ms = elapsed_ms(t0);
   return out;

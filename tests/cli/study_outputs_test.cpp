@@ -73,7 +73,7 @@ TEST(StudyOutputs, TransientWritesTheTrajectory) {
   ASSERT_EQ(run_twb("transient_step_545.yaml", dir, ""), 0);
   const auto rows = lines_of(dir / "trajectory.csv");
   ASSERT_GT(rows.size(), 10u);
-  EXPECT_EQ(rows[0], "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s");
+  EXPECT_EQ(rows[0], "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,torque_Nm,fluid_share,regime,heat_generated_W,heat_to_ambient_W");
   EXPECT_EQ(rows[1].rfind("0,", 0), 0u);  // starts at the step
   EXPECT_EQ(lines_of(dir / "states.csv").size(), 3u);  // before and after the step
   fs::remove_all(dir);
@@ -147,7 +147,7 @@ TEST(StudyOutputs, PaperLoadSweepsWriteEverySpeed) {
   ASSERT_EQ(distress.size(), 3u);
   EXPECT_EQ(distress[1].rfind("136,", 0), 0u);
   EXPECT_EQ(distress[2].rfind("545,", 0), 0u);
-  EXPECT_EQ(header(dir / "trajectory.csv"), "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s");
+  EXPECT_EQ(header(dir / "trajectory.csv"), "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,torque_Nm,fluid_share,regime,heat_generated_W,heat_to_ambient_W");
   fs::remove_all(dir);
 }
 

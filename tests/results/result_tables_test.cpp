@@ -69,9 +69,23 @@ TEST(TrajectoryTable, ColumnsInCelsius) {
   s.state.f_eff = 0.03;
   s.state.load = 180.0;
   s.state.speed = 545.0;
+  s.state.torque = 0.04;
+  s.state.fluid_share = 0.99;
+  s.state.heat_generated = 20.0;
+  s.state.heat_to_ambient = 19.5;
   EXPECT_EQ(trajectory_csv({s}),
-            "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s\n"
-            "1.5,30,45,3.2,0.01,0.03,180,545\n");
+            "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,torque_Nm,fluid_share,regime,"
+            "heat_generated_W,heat_to_ambient_W\n"
+            "1.5,30,45,3.2,0.01,0.03,180,545,0.04,0.99,mixed,20,19.5\n");
+  // A duty cycle's columns: the schedule's ambient (in Celsius) and tilt, the least margin.
+  s.ambient = 273.15 + 40.0;
+  s.tilt = 0.002;
+  s.least_margin = 0.25;
+  s.least_criterion = LimitKind::flash_temperature;
+  EXPECT_EQ(trajectory_table({s}, {}, false, true).csv(),
+            "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,torque_Nm,fluid_share,regime,"
+            "heat_generated_W,heat_to_ambient_W,ambient_C,tilt_rad,least_margin,least_margin_criterion\n"
+            "1.5,30,45,3.2,0.01,0.03,180,545,0.04,0.99,mixed,20,19.5,40,0.002,0.25,flash_temperature\n");
   s.state.f_eff = INFINITY;
   EXPECT_THROW(trajectory_csv({s}), std::runtime_error);
 }
@@ -113,8 +127,9 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   t.sliding = SlidingFilm::carrier_washer;
   const std::string trajectory = trajectory_csv({t}, {"friction_coefficient"}, true);
   EXPECT_EQ(trajectory.substr(0, trajectory.find('\n')),
-            "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,friction_coefficient,sliding");
-  EXPECT_NE(trajectory.find(",150,545,0.05,carrier_washer\n"), std::string::npos) << trajectory;
+            "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,torque_Nm,fluid_share,regime,"
+            "heat_generated_W,heat_to_ambient_W,friction_coefficient,sliding");
+  EXPECT_NE(trajectory.find(",0.05,carrier_washer\n"), std::string::npos) << trajectory;
 
   DistressRow row{953.0, {}, 400.0, 399.0, 401.0, 400.5, "runaway", SlidingFilm::washer_gear, {}, {}, {}};
   EXPECT_EQ(distress_csv({row}, {}, true),
@@ -143,6 +158,27 @@ TEST(SlidingTable, OneRowPerConfigurationWithTheChoiceMarked) {
             "545,200,carrier_washer,0.00030793,190,0.95,0.05,0.02,0.011,3.5,40,1\n");
   row.solved.state.torque = NAN;
   EXPECT_THROW(sliding_csv({row}), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace twb
+
+namespace twb {
+namespace {
+
+// The regime is who carries the load (docs/physics.md section 19): the film alone below
+// 1 % on the asperities, the asperities almost alone below 10 % on the film.
+TEST(TrajectoryTable, TheRegimeIsWhoCarriesTheLoad) {
+  BearingState s;
+  s.contact_share = 0.009, s.fluid_share = 0.991;
+  EXPECT_EQ(regime_of(s), Regime::full_film);
+  s.contact_share = 0.011, s.fluid_share = 0.989;
+  EXPECT_EQ(regime_of(s), Regime::mixed);
+  s.contact_share = 0.89, s.fluid_share = 0.11;
+  EXPECT_EQ(regime_of(s), Regime::mixed);
+  s.contact_share = 0.91, s.fluid_share = 0.09;
+  EXPECT_EQ(regime_of(s), Regime::boundary);
+  EXPECT_EQ(regime_name(Regime::boundary), "boundary");
 }
 
 }  // namespace

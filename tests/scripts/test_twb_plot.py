@@ -760,6 +760,44 @@ class TwbPlotTest(unittest.TestCase):
         self.assertEqual(broken.returncode, 2)
         self.assertIn("reliability.csv: line 3", broken.stderr)
 
+    def test_duty_cycle_figure(self):
+        """trajectory.csv and cycle_events.csv of a duty cycle: the inputs, the temperatures
+        and the least margin against time, the crossing and the runaway marked, the worst
+        moment with the failure load there; not drawn as a pseudo-time transient; a
+        malformed event is located."""
+        d = self.results_dir("duty_cycle")
+        header = ("t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,torque_Nm,"
+                  "fluid_share,regime,heat_generated_W,heat_to_ambient_W,ambient_C,tilt_rad,least_margin,"
+                  "least_margin_criterion")
+        rows = [header]
+        for k in range(21):
+            t = 3.0 * k
+            rows.append(f"{t},{30 + k},{34 + 8 * k},{6 - 0.2 * k},{0.01 * k},0.04,{100 + 5 * k},545,0.03,"
+                        f"{1 - 0.01 * k},mixed,18,17,24,0.002,{0.9 - 0.09 * k},flash_temperature")
+        events = ["t_s,event,criterion,load_N,speed_rad_s,ambient_C,tilt_rad,margin,failure_load_N,failure_criterion",
+                  "40.3,runaway,,200.8,545,24,0.002,0.68,,",
+                  "47.5,crossing,flash_temperature,218.7,545,24,0.002,0,,",
+                  "60,end,,200,545,24,0.002,-0.9,,",
+                  "60,worst,flash_temperature,200,545,24,0.002,-0.9,188.38,distress"]
+        write(os.path.join(d, "trajectory.csv"), rows)
+        write(os.path.join(d, "cycle_events.csv"), events)
+        result = plot(d, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        out_dir = os.path.join(d, "figures")
+        self.assert_figures(out_dir, ("duty_cycle",), formats=("svg",))
+        self.assertFalse(os.path.exists(os.path.join(out_dir, "transient_trajectory.svg")))
+        text = self.svg_text(os.path.join(out_dir, "duty_cycle.svg"))
+        for label in ("thermo-viscous runaway", "a limit crossed", "fails there at 188.4 N by distress",
+                      "least margin"):
+            self.assertIn(label, text)
+        read = tp.read_cycle_events(os.path.join(d, "cycle_events.csv"))
+        self.assertEqual([e["event"] for e in read], ["runaway", "crossing", "end", "worst"])
+        self.assertIsNone(read[0]["failure_load_N"])
+        write(os.path.join(d, "cycle_events.csv"), events[:2] + ["47.5,crossing,flash_temperature,oops,545,24,0.002,0,,"])
+        broken = plot(d, "--format", "svg")
+        self.assertEqual(broken.returncode, 2)
+        self.assertIn("cycle_events.csv: line 3", broken.stderr)
+
     def write_calibration(self, d, calibration=None, correlation=None, points=None):
         """A calibration study's three tables, by default those of a real run (two inputs
         fitted to torques and a mean temperature, a relative fit: no readings' sd)."""

@@ -41,7 +41,8 @@ enum class FrictionLaw { constant, empirical };
 // sliding_choice: both sliding configurations over a load grid, the one of lower
 // friction torque kept (docs/physics.md section 2, the paper's "Component Rotational Speed").
 enum class StudyType {
-  point, load_sweep, distress_map, transient, sliding_choice, distress_curve, sensitivity, reliability, calibration
+  point, load_sweep, distress_map, transient, sliding_choice, distress_curve, sensitivity, reliability, calibration,
+  duty_cycle
 };
 
 // The optional second axis of a distress map or load sweep (besides speed).
@@ -315,6 +316,20 @@ struct MapAxis {
 // or followed by Newton from a neighbour's settled criteria (docs/physics.md section 16).
 enum class MapMethod { search, follow };
 
+// A point of a duty cycle's schedule (study type duty_cycle, docs/physics.md section 19):
+// the operating point at `time`, piecewise linear between points, held after the last.
+struct SchedulePoint {
+  double time = 0.0;     // s, strictly increasing along the schedule
+  double load = 0.0;     // N
+  double speed = 0.0;    // rad/s; negative: the washer turns back
+  double ambient = 0.0;  // K
+  double tilt = 0.0;     // rad, the gear's imposed tilt (geometry.gear.tilt)
+  // Where it was written, for messages: the scene file's or the schedule CSV's path and
+  // 1-based line.
+  std::string file;
+  int line = 0;
+};
+
 struct Study {
   StudyType type = StudyType::point;
   // load_sweep, distress_map, sliding_choice: the load range continued over; transient:
@@ -360,6 +375,12 @@ struct Study {
   std::vector<FittedInput> fitted;
   std::array<double, kMeasuredQuantities> measurement_sd{};
   int fit_iterations = 50;  // calibration: Levenberg-Marquardt iterations at most (study.max_iterations)
+  // duty_cycle: the operating point in time, every field given (a field a point leaves
+  // out is the point before's, the first point's the scene's operating point and gear
+  // tilt); `schedule_file`: the CSV it was read from (as resolved), empty where the scene
+  // lists it.
+  std::vector<SchedulePoint> schedule;
+  std::string schedule_file;
 };
 
 struct Output {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "twb/results/calibration_table.h"
+#include "twb/results/cycle_table.h"
 #include "twb/results/distress_table.h"
 #include "twb/results/fold_curve_table.h"
 #include "twb/results/reliability_table.h"
@@ -26,7 +27,8 @@ struct StudyOutcome {
   std::vector<DistressRow> distress;  // load_sweep, distress_map, sliding_choice: one row per search
   std::vector<std::string> parameter_columns;  // the study's axes (run_axes.h), e.g. "friction_coefficient"
   bool sliding_column = false;        // sliding_choice: rows name their sliding film
-  // transient; load_sweep, sliding_choice: the first step past distress of each search
+  // transient; load_sweep, sliding_choice: the first step past distress of each search;
+  // duty_cycle: the bearing along the cycle
   std::vector<TrajectorySample> trajectory;
   std::vector<SlidingRow> sliding;    // sliding_choice: both configurations at every grid load
   // distress_curve: the fold along the curve parameter (fold_curve.csv) and its column
@@ -38,6 +40,7 @@ struct StudyOutcome {
   std::vector<CalibrationRow> calibration;             // calibration: each fitted input
   std::vector<CorrelationRow> correlations;            // calibration: each pair of fitted inputs
   std::vector<CalibrationPointRow> calibration_points;  // calibration: each measured value
+  std::vector<CycleEvent> cycle_events;  // duty_cycle: crossings, runaway, the worst moment, the end
   std::vector<std::string> summary;  // lines for the end of the run's output (e.g. the cusp)
   // The solvers' own words where a search went on regardless (twb run --verbose).
   std::vector<std::string> diagnostics;

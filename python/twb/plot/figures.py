@@ -5,6 +5,7 @@ and what cannot be drawn is said on stderr, so a missing figure is never a silen
 import sys
 
 from .calibration import figure_calibration
+from .cycle import figure_cycle
 from .distress import figure_distress_grid, figure_distress_map, figure_fold_curve, grid_rows
 from .reliability import figure_failure_probability
 from .sensitivity import figure_tornado
@@ -70,6 +71,7 @@ def make_figures(data, out_dir, formats):
          "reliability.csv has no probability to draw"),
         (data.calibrations, "calibration", figure_calibration,
          "calibration_points.csv has no measured value to draw"),
+        (data.cycles, "duty_cycle", figure_cycle, "trajectory.csv has no step of the cycle to draw"),
     )
     for runs, base, draw, nothing in studies:
         for k, (name, *tables) in enumerate(runs):

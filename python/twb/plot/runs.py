@@ -12,7 +12,8 @@ import numpy as np
 
 from .style import Style, axis_label, parameter_label, speed_key, speed_label
 from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_calibration, read_calibration_correlation,
-                     read_calibration_points, read_design_point, read_distress, read_fold_curve,
+                     read_calibration_points, read_cycle, read_cycle_events, read_design_point, read_distress,
+                     read_fold_curve,
                      read_reliability, read_sensitivity, read_sliding, read_states, read_trajectory,
                      run_axes, STATE_ERROR_COLUMNS)
 
@@ -61,6 +62,8 @@ class Run:
     calibration: list = field(default_factory=list)  # rows of calibration.csv
     calibration_correlation: list = field(default_factory=list)  # rows of calibration_correlation.csv
     calibration_points: list = field(default_factory=list)  # rows of calibration_points.csv
+    cycle: object = None  # a duty cycle's trajectory.csv columns
+    cycle_events: list = field(default_factory=list)  # rows of cycle_events.csv
 
 
 def read_run(directory):
@@ -76,7 +79,13 @@ def read_run(directory):
     if os.path.isfile(distress_path):
         run.distress = read_distress(distress_path)
     trajectory_path = os.path.join(directory, "trajectory.csv")
-    if os.path.isfile(trajectory_path):
+    events_path = os.path.join(directory, "cycle_events.csv")
+    if os.path.isfile(events_path):
+        # A duty cycle: its trajectory in real time, with what happened along it.
+        run.cycle_events = read_cycle_events(events_path)
+        if os.path.isfile(trajectory_path):
+            run.cycle = read_cycle(trajectory_path)
+    elif os.path.isfile(trajectory_path):
         run.trajectory, run.trajectory_tags = read_trajectory(trajectory_path)
     sliding_path = os.path.join(directory, "sliding.csv")
     if os.path.isfile(sliding_path):
@@ -127,6 +136,7 @@ class Data:
     reliabilities: list = field(default_factory=list)
     # (run name, rows of calibration.csv, rows of calibration_points.csv)
     calibrations: list = field(default_factory=list)
+    cycles: list = field(default_factory=list)  # (run name, trajectory columns, rows of cycle_events.csv)
     rpm: bool = False       # speeds drawn in rpm
 
 
@@ -183,4 +193,5 @@ def merge(runs):
     data.reliabilities = [(r.name, r.reliability, r.design_point) for r in runs if r.reliability]
     data.calibrations = [(r.name, r.calibration, r.calibration_points) for r in runs
                          if r.calibration or r.calibration_points]
+    data.cycles = [(r.name, r.cycle, r.cycle_events) for r in runs if r.cycle is not None]
     return data

@@ -60,6 +60,12 @@ DISTRESS_ERROR_COLUMNS = _written("distress", ("W_d_fine_N", "W_d_extrapolated_N
 SLIDING_COLUMNS = tuple(_TABLES["sliding"]["columns"])
 SENSITIVITY_COLUMNS = tuple(_TABLES["sensitivity"]["columns"])
 SENSITIVITY_TEXTS = tuple(_TABLES["sensitivity"]["texts"])
+# A duty cycle's trajectory.csv (the cycle's own columns after the transient's) and its
+# cycle_events.csv.
+CYCLE_COLUMNS = _written("trajectory", (
+    "t_s", "load_N", "speed_rad_s", "ambient_C", "T_mean_C", "T_max_C", "hmin_over_sigma", "least_margin"))
+CYCLE_EVENT_COLUMNS = tuple(_TABLES["cycle_events"]["columns"])
+CYCLE_EVENT_TEXTS = tuple(_TABLES["cycle_events"]["texts"])
 RELIABILITY_COLUMNS = tuple(_TABLES["reliability"]["columns"])
 RELIABILITY_TEXTS = tuple(_TABLES["reliability"]["texts"])
 DESIGN_POINT_COLUMNS = tuple(_TABLES["design_point"]["columns"])
@@ -332,6 +338,20 @@ def read_sensitivity(path):
     twb left it empty (a quantity or an input of zero)."""
     return _read_rows(path, SENSITIVITY_COLUMNS, SENSITIVITY_TEXTS, "sensitivity.csv",
                       lambda c: c == "elasticity")
+
+
+def read_cycle(path):
+    """A duty cycle's trajectory.csv: its columns as float arrays (least_margin NaN where
+    the scene applies no criterion)."""
+    columns, _ = _read_table(path, CYCLE_COLUMNS, "trajectory.csv", blank_ok=("least_margin",))
+    return columns
+
+
+def read_cycle_events(path):
+    """cycle_events.csv: one dict per event (crossing, recovery, runaway, worst, end); a
+    value an event does not have (a crossing's failure load) None."""
+    return _read_rows(path, CYCLE_EVENT_COLUMNS, CYCLE_EVENT_TEXTS, "cycle_events.csv",
+                      lambda c: c in ("margin", "failure_load_N"))
 
 
 def read_reliability(path):

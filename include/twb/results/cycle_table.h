@@ -1,0 +1,34 @@
+// A duty cycle's events (study type duty_cycle, docs/physics.md section 19),
+// cycle_events.csv: what happened along the cycle whose trajectory is trajectory.csv
+// (trajectory_table.h): each failure criterion's crossing and recovery, the
+// thermo-viscous runaway, the cycle's worst moment and its end,
+//   t_s, event, criterion, load_N, speed_rad_s, ambient_C, tilt_rad, margin,
+//   failure_load_N, failure_criterion
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "twb/model/operating_limits.h"
+#include "twb/results/distress_table.h"
+#include "twb/results/result_table.h"
+
+namespace twb {
+
+struct CycleEvent {
+  double time = 0.0;
+  // "crossing" (a criterion's margin reaches zero, `criterion` says which), "recovery"
+  // (back within it), "runaway" (the thermo-viscous runaway), "worst" (the least margin
+  // of the cycle, with the failure load at that moment's speed, ambient and tilt), "end".
+  std::string event;
+  std::optional<LimitKind> criterion;
+  double load = 0.0, speed = 0.0, ambient = 0.0, tilt = 0.0;
+  std::optional<double> margin;                      // as trajectory.csv's least_margin
+  std::optional<double> failure_load;                // N, "worst": W_fail at that moment
+  std::optional<FailureCriterion> failure_criterion;
+};
+
+ResultTable cycle_events_table(const std::vector<CycleEvent>& events);
+
+}  // namespace twb

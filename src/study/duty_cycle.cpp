@@ -1,0 +1,313 @@
+#include "study/duty_cycle.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "model/limit_thresholds.h"
+#include "solver/ida_transient.h"
+#include "solver/linear_stability.h"
+#include "solver/sparse_lu.h"
+#include "study/distress_search.h"
+#include "study/operating_point.h"
+#include "study/operating_schedule.h"
+#include "study/steady_solver.h"
+#include "study/study_support.h"
+#include "twb/error_family.h"
+
+namespace twb {
+
+namespace {
+
+// IDA restarts at a kink of the model (contact or cavitation switching on) before a
+// failure to go on is read as the trajectory's end.
+constexpr int kRestarts = 3;
+
+// How far a criterion lets the state move from rest: a temperature's limit above the
+// ambient, the least film ratio itself (docs/physics.md section 19); the margin divided by
+// it is 1 at rest and 0 on the limit, whatever the criterion's unit.
+std::optional<double> allowance(LimitKind kind, const OperatingLimits& limits, double ambient) {
+  switch (kind) {
+    case LimitKind::oil_temperature: return limits.max_oil_temperature - ambient;
+    case LimitKind::flash_temperature: return limits.flash_temperature - ambient;
+    case LimitKind::carrier_temperature:
+    case LimitKind::washer_temperature:
+    case LimitKind::gear_temperature: {
+      const std::size_t body = kind == LimitKind::carrier_temperature ? 0 : kind == LimitKind::washer_temperature ? 1 : 2;
+      if (!limits.material_temperature[body]) return std::nullopt;
+      return *limits.material_temperature[body] - ambient;
+    }
+    case LimitKind::film_ratio: return limits.min_film_ratio;
+    default: return std::nullopt;
+  }
+}
+
+// Each failure criterion's margin in its own unit (none where the scene applies none).
+using Margins = std::array<std::optional<double>, std::size(kFailureCriteria)>;
+
+class CycleWatch {
+ public:
+  CycleWatch(const BearingModel& model, StudyOutcome& out)
+      : limits_(OperatingLimits::of(model.scene())), thermal_(model.scene().effects.thermal), out_(out) {}
+
+  // The sample at t (the model's inputs already those of t), its crossings since the
+  // sample before.
+  void sample(const BearingModel& model, double t, const SchedulePoint& inputs, std::span<const double> u) {
+    TrajectorySample& s = out_.trajectory.emplace_back();
+    s.time = t;
+    s.ambient = inputs.ambient;
+    s.tilt = inputs.tilt;
+    s.state = model.describe(u);
+    const LimitValues values = LimitValues::of(s.state, thermal_);
+    Margins margins;
+    for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
+      const LimitKind kind = kFailureCriteria[c];
+      margins[c] = failure_margin(kind, values, limits_);
+      const std::optional<double> room = allowance(kind, limits_, inputs.ambient);
+      if (!margins[c] || !room || !(*room > 0.0)) continue;
+      const double fraction = *margins[c] / *room;
+      if (!s.least_margin || fraction < *s.least_margin) s.least_margin = fraction, s.least_criterion = kind;
+    }
+    if (last_margins_) {
+      const TrajectorySample& before = out_.trajectory[out_.trajectory.size() - 2];
+      for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
+        const std::optional<double> a = (*last_margins_)[c], b = margins[c];
+        if (!a || !b || (*a >= 0.0) == (*b >= 0.0)) continue;
+        // Where the margin's line between the two samples is zero: within IDA's step.
+        const double share = *a / (*a - *b);
+        CycleEvent& e = event(*b < 0.0 ? "crossing" : "recovery", before.time + share * (t - before.time), inputs);
+        e.criterion = kFailureCriteria[c];
+        e.margin = 0.0;
+        e.load = before.state.load + share * (s.state.load - before.state.load);
+        e.speed = before.state.speed + share * (s.state.speed - before.state.speed);
+      }
+    }
+    last_margins_ = margins;
+    if (s.least_margin && (!worst_ || *s.least_margin < *out_.trajectory[*worst_].least_margin))
+      worst_ = out_.trajectory.size() - 1;
+  }
+
+  CycleEvent& event(std::string what, double t, const SchedulePoint& inputs) {
+    CycleEvent& e = out_.cycle_events.emplace_back();
+    e.time = t;
+    e.event = std::move(what);
+    e.load = inputs.load;
+    e.speed = inputs.speed;
+    e.ambient = inputs.ambient;
+    e.tilt = inputs.tilt;
+    return e;
+  }
+
+  std::optional<std::size_t> worst() const { return worst_; }
+
+ private:
+  OperatingLimits limits_;
+  bool thermal_;
+  StudyOutcome& out_;
+  std::optional<Margins> last_margins_;
+  std::optional<std::size_t> worst_;
+};
+
+// The thermo-viscous runaway's signature at a point of the trajectory (docs/physics.md
+// sections 8 and 19): the hottest film temperature rising ever faster, and the slowest
+// thermal mode of the bearing's linearization there grown unstable. A ramp of the inputs
+// alone can make the temperatures accelerate, but leaves the slow mode stable.
+class RunawayWatch {
+ public:
+  explicit RunawayWatch(BearingModel& model)
+      : model_(model), factors_(model.pattern(), SparseLu::Ordering::by_size),
+        residual_(std::size_t(model.size())), jacobian_(std::size_t(model.pattern().nnz())) {}
+
+  // Whether the trajectory runs away at (t, u), the model's inputs those of t.
+  bool runs_away(double t, double hottest, std::span<const double> u) {
+    const bool accelerating = times_.size() == 2 && rate(t, hottest) > 0.0 &&
+                              rate(t, hottest) > (hottest_[1] - hottest_[0]) / (times_[1] - times_[0]);
+    if (times_.size() == 2) times_.erase(times_.begin()), hottest_.erase(hottest_.begin());
+    times_.push_back(t);
+    hottest_.push_back(hottest);
+    if (!accelerating) return false;
+    model_.evaluate(u, residual_, jacobian_);
+    if (!factors_.factor(jacobian_)) return false;  // singular: at the fold itself; the next point decides
+    return linear_stability(model_, factors_).verdict == Stability::unstable;
+  }
+
+ private:
+  double rate(double t, double hottest) const { return (hottest - hottest_[1]) / (t - times_[1]); }
+
+  BearingModel& model_;
+  SparseLu factors_;
+  std::vector<double> residual_, jacobian_;
+  std::vector<double> times_, hottest_;
+};
+
+// W_fail at the worst moment's speed, ambient and tilt: how close the operating point
+// came to the quasi-steady failure load.
+void failure_at_worst(BearingModel& model, StudyOutcome& out, const TrajectorySample& worst, double largest_load,
+                      CycleEvent& e) {
+  SchedulePoint p;
+  p.load = worst.state.load;
+  p.speed = worst.state.speed;
+  p.ambient = *worst.ambient;
+  p.tilt = *worst.tilt;
+  OperatingSchedule::apply(model, p);
+  DistressSearchSettings settings;
+  settings.load_start = 0.25 * p.load;
+  settings.load_end = 10.0 * largest_load;
+  settings.march_past_distress = false;
+  try {
+    DistressSearch found = search_distress(model, settings, {});
+    add_search_work(out.timings, found.counts);
+    if (found.row.failure_load) {
+      e.failure_load = found.row.failure_load;
+      e.failure_criterion = found.row.criterion;
+    }
+    out.distress.push_back(std::move(found.row));
+  } catch (const InternalError&) {
+    throw;
+  } catch (const std::exception& ex) {
+    out.summary.push_back(fmt::format("duty cycle: no failure load at the worst moment: {}", ex.what()));
+  }
+}
+
+}  // namespace
+
+void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const OperatingSchedule schedule(model.scene().study.schedule);
+  const NewtonSettings newton = newton_settings(model.scene());
+
+  // The steady state at the schedule's start.
+  const SchedulePoint first = schedule.points().front();
+  OperatingSchedule::apply(model, first);
+  SteadySolver steady(model, newton);
+  std::vector<double> u;
+  const SteadyReport rep = steady.solve_cold(u);
+  if (!rep.converged) {
+    out.solver_failed = true;
+    out.message = fmt::format("duty cycle: no steady state at the schedule's start ({:.6g} N, {:.6g} rad/s): {}",
+                              first.load, first.speed, rep.message);
+    return;
+  }
+  out.states.push_back(recorded_state(model, u, rep));
+  out.timings.newton_iterations += rep.iterations;
+  out.timings.jacobian_evaluations += rep.jacobian_evaluations;
+
+  // The inputs on the segment being marched, set at every evaluation's time.
+  std::size_t segment = 0;
+  TransientSettings settings;
+  settings.inputs_at = [&](double t) {
+    OperatingSchedule::apply(model, schedule.on_segment(segment, t));
+    return schedule.ambient_rate(segment);
+  };
+  IdaTransient ida(model, settings);
+  CycleWatch watch(model, out);
+  RunawayWatch runaway(model);
+  bool ran_away = false;
+  std::string ended;  // why the march ended before the schedule did
+  auto bank = [&] {
+    const TransientStatistics s = ida.statistics();
+    out.timings.ida_steps += s.steps;
+    out.timings.ida_factorizations += s.linear_setups;
+  };
+  auto record = [&](double t, std::span<const double> state) {
+    const SchedulePoint inputs = schedule.on_segment(segment, t);
+    OperatingSchedule::apply(model, inputs);
+    watch.sample(model, t, inputs, state);
+    if (!ran_away && runaway.runs_away(t, out.trajectory.back().state.max_film_temperature, state)) {
+      ran_away = true;
+      watch.event("runaway", t, inputs).margin = out.trajectory.back().least_margin;
+      if (progress) progress(fmt::format("duty cycle: thermo-viscous runaway at t = {:.6g} s", t));
+    }
+  };
+
+  for (; segment < schedule.segments() && ended.empty(); ++segment) {
+    const double t_start = schedule.points()[segment].time, t_end = schedule.points()[segment + 1].time;
+    if (progress)
+      progress(fmt::format("duty cycle: segment {} of {}, {:.6g} s to {:.6g} s", segment + 1, schedule.segments(),
+                           t_start, t_end));
+    // Restarted at every point of the schedule: the inputs' rates jump there, and so do
+    // the state's (consistent values computed afresh).
+    if (segment > 0) bank();
+    TransientStatus status = ida.start(t_start, u);
+    if (!status.ok) {
+      ended = fmt::format("no consistent state at t = {:.6g} s: {}", t_start, status.message);
+      break;
+    }
+    if (segment == 0) record(ida.time(), ida.state());
+    int restarts = 0;
+    while (ida.time() < t_end) {
+      status = ida.step(t_end);
+      if (!status.ok && restarts < kRestarts) {
+        ++restarts;
+        const std::vector<double> here(ida.state().begin(), ida.state().end());
+        bank();
+        if (ida.start(ida.time(), here).ok) continue;
+      }
+      if (!status.ok) {
+        ended = fmt::format("IDA could not go on at t = {:.6g} s ({}, {} restarts)", ida.time(), status.flag_name,
+                            restarts);
+        break;
+      }
+      record(ida.time(), ida.state());
+    }
+    u.assign(ida.state().begin(), ida.state().end());
+  }
+  bank();
+
+  const TrajectorySample& last = out.trajectory.back();
+  CycleEvent& end = watch.event("end", last.time, schedule.at(last.time));
+  end.margin = last.least_margin;
+  if (!ended.empty()) {
+    // A blow-up (IDA stopped by temperatures running away) is the runaway itself; any
+    // other end is the solver's failure.
+    if (ran_away) {
+      out.message = fmt::format("duty cycle: the trajectory blew up after the runaway: {}", ended);
+    } else {
+      out.solver_failed = true;
+      out.message = "duty cycle: the march ended early: " + ended;
+    }
+  }
+
+  double largest_load = 0.0;
+  for (const SchedulePoint& p : schedule.points()) largest_load = std::max(largest_load, p.load);
+  if (const std::optional<std::size_t> w = watch.worst()) {
+    const TrajectorySample worst = out.trajectory[*w];
+    CycleEvent& e = watch.event("worst", worst.time, schedule.at(worst.time));
+    e.criterion = worst.least_criterion;
+    e.margin = worst.least_margin;
+    if (progress) progress(fmt::format("duty cycle: the failure load at the worst moment, t = {:.6g} s", worst.time));
+    CycleEvent found = e;
+    failure_at_worst(model, out, worst, largest_load, found);
+    out.cycle_events.back() = found;
+  }
+  std::stable_sort(out.cycle_events.begin(), out.cycle_events.end(),
+                   [](const CycleEvent& a, const CycleEvent& b) { return a.time < b.time; });
+
+  // The summary: what the cycle did.
+  out.summary.push_back(fmt::format("duty cycle: {} segments, {:.6g} s to {:.6g} s, {} steps ({:.1f} s)",
+                                    schedule.segments(), schedule.start(), last.time, out.trajectory.size() - 1,
+                                    elapsed_ms(t0) / 1000.0));
+  for (const CycleEvent& e : out.cycle_events) {
+    if (e.event == "crossing" || e.event == "recovery")
+      out.summary.push_back(fmt::format("duty cycle: {} {} at t = {:.6g} s ({:.6g} N, {:.6g} rad/s)",
+                                        e.event == "crossing" ? "crosses" : "recovers from",
+                                        criterion_phrase(*e.criterion), e.time, e.load, e.speed));
+    else if (e.event == "runaway")
+      out.summary.push_back(fmt::format("duty cycle: thermo-viscous runaway at t = {:.6g} s ({:.6g} N, {:.6g} rad/s)",
+                                        e.time, e.load, e.speed));
+    else if (e.event == "worst")
+      out.summary.push_back(fmt::format(
+          "duty cycle: the worst moment is t = {:.6g} s ({:.6g} N, {:.6g} rad/s): {:.3g} of {}'s allowance left{}",
+          e.time, e.load, e.speed, e.margin.value_or(0.0), e.criterion ? criterion_phrase(*e.criterion) : "",
+          e.failure_load ? fmt::format("; it would fail there at {:.6g} N by {}", *e.failure_load,
+                                       e.failure_criterion ? criterion_name(*e.failure_criterion) : "")
+                         : ""));
+  }
+  out.timings.transients += 1;
+}
+
+}  // namespace twb

@@ -1,0 +1,51 @@
+#include "study/operating_schedule.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace twb {
+
+OperatingSchedule::OperatingSchedule(std::vector<SchedulePoint> points) : points_(std::move(points)) {
+  if (points_.size() < 2) throw std::invalid_argument("a schedule needs at least two points, its start and its end");
+  for (std::size_t k = 1; k < points_.size(); ++k)
+    if (!(points_[k].time > points_[k - 1].time))
+      throw std::invalid_argument("a schedule's times must increase strictly from point to point");
+}
+
+std::size_t OperatingSchedule::segment_at(double t) const {
+  const auto after = std::upper_bound(points_.begin(), points_.end(), t,
+                                      [](double time, const SchedulePoint& p) { return time < p.time; });
+  const std::size_t k = after == points_.begin() ? 0 : std::size_t(after - points_.begin()) - 1;
+  return std::min(k, segments() - 1);
+}
+
+SchedulePoint OperatingSchedule::on_segment(std::size_t k, double t) const {
+  const SchedulePoint& a = points_[k];
+  const SchedulePoint& b = points_[k + 1];
+  // Held outside the schedule; on the line within it.
+  const double s = std::clamp((t - a.time) / (b.time - a.time), 0.0, 1.0);
+  SchedulePoint p = s < 1.0 ? a : b;
+  p.time = t;
+  p.load = a.load + s * (b.load - a.load);
+  p.speed = a.speed + s * (b.speed - a.speed);
+  p.ambient = a.ambient + s * (b.ambient - a.ambient);
+  p.tilt = a.tilt + s * (b.tilt - a.tilt);
+  return p;
+}
+
+double OperatingSchedule::ambient_rate(std::size_t k) const {
+  const SchedulePoint& a = points_[k];
+  const SchedulePoint& b = points_[k + 1];
+  return (b.ambient - a.ambient) / (b.time - a.time);
+}
+
+void OperatingSchedule::apply(BearingModel& model, const SchedulePoint& p) {
+  model.set_load(p.load);
+  model.set_speed(p.speed);
+  if (model.curve_parameter(CurveParameter::ambient_temperature) != p.ambient)
+    model.set_curve_parameter(CurveParameter::ambient_temperature, p.ambient);
+  if (model.curve_parameter(CurveParameter::gear_tilt) != p.tilt)
+    model.set_curve_parameter(CurveParameter::gear_tilt, p.tilt);
+}
+
+}  // namespace twb

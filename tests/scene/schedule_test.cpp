@@ -1,0 +1,168 @@
+// A duty cycle's schedule (scene/read_schedule.cpp): in the scene or a CSV file, a field
+// a point leaves out is the point before's (the first point's the scene's operating point
+// and gear tilt), units converted, the resolved scene self-contained, and every fault
+// located: in the scene at its key, in the file at its line and column.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "scene_test_support.h"
+#include "twb/scene/input_error.h"
+#include "twb/scene/scene_loader.h"
+
+namespace twb {
+namespace {
+
+using testing::TempScene;
+
+// The paper's scene with a duty cycle whose schedule is `schedule` (YAML).
+std::string cycle_scene(const std::string& schedule) {
+  return "extends: " + testing::source_path("configs/jackson_green_2006.yaml") +
+         "\nstudy: !replace\n  type: duty_cycle\n  schedule: " + schedule + "\n";
+}
+
+TEST(Schedule, FieldsLeftOutAreThePointBeforesAndTheFirstPointsTheScenes) {
+  const TempScene file(cycle_scene("\n    - {t: 0 s, load: 100 N}\n    - {t: 1 min, speed: 3000 rpm}\n"
+                                   "    - {t: 90 s, ambient: 80 degC, tilt: 1 mrad}\n"));
+  const Scene s = load_scene(file.path());
+  ASSERT_EQ(s.study.schedule.size(), 3u);
+  const SchedulePoint& a = s.study.schedule[0];
+  const SchedulePoint& b = s.study.schedule[1];
+  const SchedulePoint& c = s.study.schedule[2];
+  EXPECT_EQ(a.time, 0.0);
+  EXPECT_EQ(a.load, 100.0);
+  EXPECT_EQ(a.speed, s.operating.speed);
+  EXPECT_EQ(a.ambient, s.operating.ambient);
+  EXPECT_EQ(a.tilt, s.gear.tilt);
+  EXPECT_EQ(b.time, 60.0);
+  EXPECT_EQ(b.load, 100.0);
+  EXPECT_NEAR(b.speed, 3000.0 * 2.0 * M_PI / 60.0, 1e-12);
+  EXPECT_EQ(c.load, 100.0);
+  EXPECT_EQ(c.speed, b.speed);
+  EXPECT_NEAR(c.ambient, 353.15, 1e-12);
+  EXPECT_NEAR(c.tilt, 1e-3, 1e-18);
+  EXPECT_EQ(a.line, 5);  // the scene's line of the point
+  EXPECT_EQ(a.file, file.path());
+}
+
+// A speed may turn negative (the washer turns back); the points join in a straight line.
+TEST(Schedule, ASpeedMayTurnBack) {
+  const TempScene file(cycle_scene("[{t: 0 s}, {t: 10 s, speed: -100 rad/s}]"));
+  EXPECT_EQ(load_scene(file.path()).study.schedule[1].speed, -100.0);
+}
+
+TEST(Schedule, FromACsvFileWithUnitsOrTheResultsOwnNames) {
+  const TempScene csv("# a launch\nt [s], load [kN], speed [rpm], ambient [degC]\n0, 0.1, 0, 40\n2, 0.3, 3000, \n"
+                      "10, , 3000, 60\n",
+                      "_data", ".csv");
+  const TempScene file(cycle_scene(csv.path()));
+  const Scene s = load_scene(file.path());
+  ASSERT_EQ(s.study.schedule.size(), 3u);
+  EXPECT_EQ(s.study.schedule_file, csv.path());
+  EXPECT_DOUBLE_EQ(s.study.schedule[0].load, 100.0);
+  EXPECT_EQ(s.study.schedule[0].speed, 0.0);
+  EXPECT_NEAR(s.study.schedule[1].ambient, 313.15, 1e-12);  // an empty field: the point before's
+  EXPECT_DOUBLE_EQ(s.study.schedule[2].load, 300.0);
+  EXPECT_NEAR(s.study.schedule[2].ambient, 333.15, 1e-12);
+  EXPECT_EQ(s.study.schedule[2].tilt, s.gear.tilt);  // no column: the scene's
+  EXPECT_EQ(s.study.schedule[2].line, 5);
+
+  // A duty cycle's trajectory.csv is a schedule.
+  const TempScene results("t_s,load_N,speed_rad_s,ambient_C,tilt_rad,T_mean_C\n0,100,545,24,0.002,30\n"
+                          "5,120,545,24,0.002,31\n",
+                          "_results", ".csv");
+  const TempScene again(cycle_scene(results.path()), "_again");
+  const Scene r = load_scene(again.path());
+  ASSERT_EQ(r.study.schedule.size(), 2u);
+  EXPECT_EQ(r.study.schedule[1].load, 120.0);
+}
+
+// The resolved scene carries the schedule itself: read again it is the same.
+TEST(Schedule, TheResolvedSceneHoldsEveryPoint) {
+  const TempScene csv("t [s], load [N], speed [rpm]\n0, 100, 3000\n7.5, 180, 2000\n", "_data", ".csv");
+  const TempScene file(cycle_scene(csv.path()));
+  const Scene s = load_scene(file.path());
+  const TempScene resolved(describe_scene(s), "_resolved");
+  const Scene r = load_scene(resolved.path());
+  ASSERT_EQ(r.study.schedule.size(), s.study.schedule.size());
+  for (std::size_t k = 0; k < s.study.schedule.size(); ++k) {
+    EXPECT_EQ(r.study.schedule[k].time, s.study.schedule[k].time);
+    EXPECT_EQ(r.study.schedule[k].load, s.study.schedule[k].load);
+    EXPECT_EQ(r.study.schedule[k].speed, s.study.schedule[k].speed);
+    EXPECT_EQ(r.study.schedule[k].ambient, s.study.schedule[k].ambient);
+    EXPECT_EQ(r.study.schedule[k].tilt, s.study.schedule[k].tilt);
+  }
+}
+
+struct SceneFault {
+  const char* schedule;
+  int line, column;
+  const char* says;
+};
+
+TEST(Schedule, FaultsInTheSceneAreLocated) {
+  const SceneFault faults[] = {
+      {"[{t: 0 s}, {t: 0 s, load: 120 N}]", 4, 28, "the times must increase strictly"},
+      {"[{t: 5 s}, {t: 2 s}]", 4, 28, "the times must increase strictly"},
+      {"[{t: 0 s}, {t: 2 s, load: -10 N}]", 4, 39, "positive load"},
+      {"[{t: 0 s}, {t: 2 s, load: 0 N}]", 4, 39, "squeeze"},
+      {"[{t: 0 s}, {t: 2 s, load: 10 rad}]", 4, 39, "a force"},
+      {"[{t: 0 s}, {load: 10 N}]", 4, 24, "missing required key 't'"},
+      {"[{t: 0 s}, {t: 1 s, sped: 3 rpm}]", 4, 33, "sped"},
+      {"[{t: 0 s}]", 4, 13, "at least two"},
+      {"[{t: 0 s, ambient: 160 degC}, {t: 1 s}]", 4, 14, "past the oil's maximum temperature"},
+      {"{t: 0 s}", 4, 13, "a list of points"},
+  };
+  for (const SceneFault& f : faults) {
+    SCOPED_TRACE(f.schedule);
+    const TempScene file(cycle_scene(f.schedule));
+    const InputError e = testing::load_error(file.path());
+    EXPECT_EQ(e.line(), f.line);
+    EXPECT_EQ(e.column(), f.column);
+    EXPECT_NE(std::string(e.what()).find(f.says), std::string::npos) << e.what();
+  }
+}
+
+TEST(Schedule, FaultsInTheFileAreLocated) {
+  const SceneFault faults[] = {
+      {"t [s], load [N]\n0, 100\n0, 120\n", 3, 1, "the times must increase strictly"},
+      {"t [s], load [N]\n0, 100\n1, -5\n", 3, 4, "out of range"},
+      {"t, load [N]\n0, 100\n1, 120\n", 1, 1, "the column 't' gives no unit"},
+      {"t [s], load [K]\n0, 100\n1, 120\n", 1, 14, "the load column's unit 'K'"},
+      {"t [s], wear [um]\n0, 1\n1, 2\n", 1, 8, "the column 'wear' is none a schedule reads"},
+      {"load [N]\n100\n120\n", 1, 1, "no time column"},
+      {"t [s], load [N]\n0, 100\n", 0, 0, "at least two"},
+      {"t [s], load [N]\n0, 100\n1\n", 3, 1, "a row has one field a column"},
+      {"t [s], load [N]\n0, 100\n, 120\n", 3, 1, "the time is empty"},
+      {"t [s], ambient [degC]\n0, 200\n1, 30\n", 2, 1, "past the oil's maximum temperature"},
+  };
+  for (const SceneFault& f : faults) {
+    SCOPED_TRACE(f.schedule);
+    const TempScene csv(f.schedule, "_data", ".csv");
+    const TempScene file(cycle_scene(csv.path()));
+    const InputError e = testing::load_error(file.path());
+    EXPECT_EQ(e.file(), csv.path());
+    EXPECT_EQ(e.line(), f.line);
+    EXPECT_EQ(e.column(), f.column);
+    EXPECT_NE(std::string(e.what()).find(f.says), std::string::npos) << e.what();
+  }
+}
+
+// A schedule file that is not there is the scene's fault, at its key.
+TEST(Schedule, AMissingFileIsTheScenesFault) {
+  const TempScene file(cycle_scene("no-such-cycle.csv"));
+  const InputError e = testing::load_error(file.path());
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_NE(std::string(e.what()).find("cannot read the schedule"), std::string::npos) << e.what();
+}
+
+// The march needs the bodies' heat: a duty cycle without the thermal effect is refused.
+TEST(Schedule, ADutyCycleNeedsTheThermalEffect) {
+  const TempScene file(cycle_scene("[{t: 0 s}, {t: 1 s}]") + "effects: [hydrodynamics, asperity_contact]\n");
+  const InputError e = testing::load_error(file.path());
+  EXPECT_NE(std::string(e.what()).find("needs the thermal effect"), std::string::npos) << e.what();
+}
+
+}  // namespace
+}  // namespace twb

@@ -1,0 +1,153 @@
+// The duty cycle (study/duty_cycle.h, docs/physics.md section 19): the schedule's inputs
+// in time, a held point's end at the point study's steady state, the bodies' heat
+// capacities delaying an ambient ramp, and the thermo-viscous runaway recognised on a
+// ramp past W_d and not on one that stops short of it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "model/bearing_model.h"
+#include "solver/relaxation_time.h"
+#include "study/distress_search.h"
+#include "study/operating_schedule.h"
+#include "study/steady_solver.h"
+#include "study/study_runner.h"
+#include "study/study_support.h"
+#include "twb/scene/scene_loader.h"
+
+namespace twb {
+namespace {
+
+// The paper's washer on a coarse mesh (the march's behaviour, not its mesh error, is
+// under test) with a duty cycle of the given schedule (YAML).
+Scene cycle_scene(const std::string& schedule) {
+  return load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
+                    {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24", "operating.load=100 N",
+                     "study={type: duty_cycle, schedule: " + schedule + "}"});
+}
+
+SchedulePoint point(double t, double load, double speed, double ambient, double tilt) {
+  SchedulePoint p;
+  p.time = t, p.load = load, p.speed = speed, p.ambient = ambient, p.tilt = tilt;
+  return p;
+}
+
+TEST(OperatingSchedule, StraightLinesBetweenThePointsHeldOutside) {
+  const OperatingSchedule s({point(0, 100, 500, 300, 1e-3), point(10, 200, 300, 320, 2e-3), point(30, 200, -100, 320, 0)});
+  EXPECT_EQ(s.segments(), 2u);
+  EXPECT_EQ(s.segment_at(-1.0), 0u);
+  EXPECT_EQ(s.segment_at(5.0), 0u);
+  EXPECT_EQ(s.segment_at(10.0), 1u);
+  EXPECT_EQ(s.segment_at(99.0), 1u);
+  const SchedulePoint a = s.at(2.5);
+  EXPECT_DOUBLE_EQ(a.load, 125.0);
+  EXPECT_DOUBLE_EQ(a.speed, 450.0);
+  EXPECT_DOUBLE_EQ(a.ambient, 305.0);
+  EXPECT_DOUBLE_EQ(a.tilt, 1.25e-3);
+  EXPECT_DOUBLE_EQ(s.at(20.0).speed, 100.0);  // through zero on the second segment
+  EXPECT_DOUBLE_EQ(s.at(-5.0).load, 100.0);   // the first point's before the schedule
+  EXPECT_DOUBLE_EQ(s.at(50.0).speed, -100.0);  // the last's after it
+  // Both segments give the point between them.
+  EXPECT_DOUBLE_EQ(s.on_segment(0, 10.0).speed, s.on_segment(1, 10.0).speed);
+  EXPECT_DOUBLE_EQ(s.ambient_rate(0), 2.0);
+  EXPECT_DOUBLE_EQ(s.ambient_rate(1), 0.0);
+  EXPECT_THROW(OperatingSchedule({point(0, 100, 500, 300, 0)}), std::invalid_argument);
+  EXPECT_THROW(OperatingSchedule({point(1, 100, 500, 300, 0), point(1, 100, 500, 300, 0)}), std::invalid_argument);
+}
+
+// Held long enough at a point, the cycle ends at the point's steady state: the slowest
+// mode's share of the start's distance is then below e^−40, and what is left is IDA's
+// error, a few times its relative tolerance (1e-6) of the temperatures (a contractive
+// march does not accumulate it): 1e-4 K and 1e-5 of h_min/σ allow a hundred times that.
+TEST(DutyCycle, HeldAtAPointItEndsAtThePointsSteadyState) {
+  const double hold = 600.0;  // s
+  const Scene scene = cycle_scene(fmt::format("[{{t: 0 s, load: 100 N}}, {{t: 5 s, load: 130 N, ambient: 30 degC}}, "
+                                              "{{t: {} s}}]",
+                                              hold));
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  const TrajectorySample& end = out.trajectory.back();
+  EXPECT_DOUBLE_EQ(end.time, hold);
+
+  BearingModel point(scene);
+  OperatingSchedule::apply(point, scene.study.schedule.back());
+  std::vector<double> u;
+  ASSERT_TRUE(SteadySolver(point, newton_settings(scene)).solve_cold(u).converged);
+  ASSERT_LT(40.0 * slowest_relaxation_time(point, u, 20), hold - 5.0) << "hold the point longer";
+  const BearingState steady = point.describe(u);
+  EXPECT_NEAR(end.state.washer_mean_temperature, steady.washer_mean_temperature, 1e-4);
+  EXPECT_NEAR(end.state.max_film_temperature, steady.max_film_temperature, 1e-4);
+  EXPECT_NEAR(end.state.hmin_over_sigma, steady.hmin_over_sigma, 1e-5 * steady.hmin_over_sigma);
+  EXPECT_NEAR(*end.ambient, 303.15, 1e-12);
+  // No criterion was crossed and the bearing did not run away.
+  for (const CycleEvent& e : out.cycle_events) EXPECT_TRUE(e.event == "end" || e.event == "worst") << e.event;
+}
+
+// The bodies hold heat: an ambient raised by 20 K in 0.05 s, short against the carrier's
+// and gear's time constants (about 6 s through their 10 mm), leaves the washer's mean
+// temperature well short of the new ambient's rise at first (its rise above the ambient
+// falls by nearly the ambient's step), and it follows over the bodies' time. With the
+// temperatures taken as rises above an ambient that moved without them (no moving
+// reference), it would jump with the ambient at once.
+TEST(DutyCycle, TheBodiesHeatCapacitiesDelayAnAmbientRamp) {
+  const Scene scene = cycle_scene("[{t: 0 s, ambient: 24 degC}, {t: 0.05 s, ambient: 44 degC}, {t: 60 s}]");
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  const TrajectorySample& start = out.trajectory.front();
+  const auto at = [&](double t) {
+    return *std::find_if(out.trajectory.begin(), out.trajectory.end(), [&](const TrajectorySample& s) { return s.time >= t; });
+  };
+  const double moved_at_ramp_end = at(0.05).state.washer_mean_temperature - start.state.washer_mean_temperature;
+  const double moved_at_end = out.trajectory.back().state.washer_mean_temperature - start.state.washer_mean_temperature;
+  EXPECT_LT(moved_at_ramp_end, 0.5 * 20.0);
+  EXPECT_GT(moved_at_end, 0.9 * 20.0);  // after ten time constants, nearly all of it
+}
+
+// A ramp past W_d runs away (the temperatures accelerate with the slowest mode unstable),
+// after the ramp has passed W_d (the bodies lag the quasi-steady branch) and before the
+// schedule ends; one that stops 5 % short of W_d settles without a runaway or a crossing.
+TEST(DutyCycle, ARampPastDistressRunsAwayAndOneShortOfItDoesNot) {
+  const Scene base = cycle_scene("[{t: 0 s}, {t: 1 s}]");
+  double w_d = 0.0;
+  {
+    BearingModel model(base);
+    DistressSearchSettings settings;
+    settings.load_start = 100.0;
+    settings.load_end = 400.0;
+    settings.march_past_distress = false;
+    const DistressSearch found = search_distress(model, settings, {});
+    ASSERT_TRUE(found.row.distress_load);
+    w_d = *found.row.distress_load;
+  }
+  const double ramp = 20.0;  // s, from 100 N to the top load
+  for (const double top : {1.05 * w_d, 0.95 * w_d}) {
+    SCOPED_TRACE(fmt::format("up to {:.6g} N (W_d {:.6g} N)", top, w_d));
+    const Scene scene = cycle_scene(fmt::format("[{{t: 0 s, load: 100 N}}, {{t: {} s, load: {} N}}, {{t: 200 s}}]",
+                                                ramp, top));
+    BearingModel model(scene);
+    const StudyOutcome out = run_study(model, {});
+    ASSERT_FALSE(out.solver_failed) << out.message;
+    const auto runaway = std::find_if(out.cycle_events.begin(), out.cycle_events.end(),
+                                      [](const CycleEvent& e) { return e.event == "runaway"; });
+    if (top > w_d) {
+      ASSERT_NE(runaway, out.cycle_events.end());
+      const double passes_w_d = ramp * (w_d - 100.0) / (top - 100.0);
+      EXPECT_GT(runaway->time, passes_w_d);
+      EXPECT_GT(runaway->load, w_d);
+    } else {
+      EXPECT_EQ(runaway, out.cycle_events.end()) << "at t = " << runaway->time;
+      for (const CycleEvent& e : out.cycle_events) EXPECT_NE(e.event, "crossing");
+      EXPECT_GT(*out.trajectory.back().least_margin, 0.0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace twb
