@@ -115,33 +115,52 @@ class CycleWatch {
 // The thermo-viscous runaway's signature at a point of the trajectory (docs/physics.md
 // sections 8 and 19): the hottest film temperature rising ever faster, and the slowest
 // thermal mode of the bearing's linearization there grown unstable. A ramp of the inputs
-// alone can make the temperatures accelerate, but leaves the slow mode stable.
+// alone can make the temperatures accelerate, but leaves the slow mode stable. A runaway
+// is over where the temperatures no longer accelerate and the slow mode is stable again:
+// on the hot branch, or back on the cool one where the load fell in time (a brief
+// overload); from there another can begin.
 class RunawayWatch {
  public:
   explicit RunawayWatch(BearingModel& model)
       : model_(model), factors_(model.pattern(), SparseLu::Ordering::by_size),
         residual_(std::size_t(model.size())), jacobian_(std::size_t(model.pattern().nnz())) {}
 
-  // Whether the trajectory runs away at (t, u), the model's inputs those of t.
-  bool runs_away(double t, double hottest, std::span<const double> u) {
+  enum class Change { none, runs_away, settles };
+  // What changes at (t, u), the model's inputs those of t.
+  Change at(double t, double hottest, std::span<const double> u) {
     const bool accelerating = times_.size() == 2 && rate(t, hottest) > 0.0 &&
                               rate(t, hottest) > (hottest_[1] - hottest_[0]) / (times_[1] - times_[0]);
+    const bool known = times_.size() == 2;
     if (times_.size() == 2) times_.erase(times_.begin()), hottest_.erase(hottest_.begin());
     times_.push_back(t);
     hottest_.push_back(hottest);
-    if (!accelerating) return false;
-    model_.evaluate(u, residual_, jacobian_);
-    if (!factors_.factor(jacobian_)) return false;  // singular: at the fold itself; the next point decides
-    return linear_stability(model_, factors_).verdict == Stability::unstable;
+    if (!known || accelerating == running_away_) return Change::none;
+    const std::optional<Stability> slow_mode = stability(u);
+    if (!running_away_ && slow_mode == Stability::unstable) {
+      running_away_ = true;
+      return Change::runs_away;
+    }
+    if (running_away_ && slow_mode == Stability::stable) {
+      running_away_ = false;
+      return Change::settles;
+    }
+    return Change::none;
   }
 
  private:
   double rate(double t, double hottest) const { return (hottest - hottest_[1]) / (t - times_[1]); }
+  // None where J is singular (at a fold itself: the next point decides).
+  std::optional<Stability> stability(std::span<const double> u) {
+    model_.evaluate(u, residual_, jacobian_);
+    if (!factors_.factor(jacobian_)) return std::nullopt;
+    return linear_stability(model_, factors_).verdict;
+  }
 
   BearingModel& model_;
   SparseLu factors_;
   std::vector<double> residual_, jacobian_;
   std::vector<double> times_, hottest_;
+  bool running_away_ = false;
 };
 
 // W_fail at the worst moment's speed, ambient and tilt: how close the operating point
@@ -171,6 +190,13 @@ void failure_at_worst(BearingModel& model, StudyOutcome& out, const TrajectorySa
   } catch (const std::exception& ex) {
     out.summary.push_back(fmt::format("duty cycle: no failure load at the worst moment: {}", ex.what()));
   }
+}
+
+// The hottest film temperature (K) of the trajectory's step at t.
+double hottest_at(const std::vector<TrajectorySample>& trajectory, double t) {
+  const auto at = std::lower_bound(trajectory.begin(), trajectory.end(), t,
+                                   [](const TrajectorySample& s, double time) { return s.time < time; });
+  return (at == trajectory.end() ? trajectory.back() : *at).state.max_film_temperature;
 }
 
 }  // namespace
@@ -217,10 +243,17 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
     const SchedulePoint inputs = schedule.on_segment(segment, t);
     OperatingSchedule::apply(model, inputs);
     watch.sample(model, t, inputs, state);
-    if (!ran_away && runaway.runs_away(t, out.trajectory.back().state.max_film_temperature, state)) {
-      ran_away = true;
-      watch.event("runaway", t, inputs).margin = out.trajectory.back().least_margin;
-      if (progress) progress(fmt::format("duty cycle: thermo-viscous runaway at t = {:.6g} s", t));
+    switch (runaway.at(t, out.trajectory.back().state.max_film_temperature, state)) {
+      case RunawayWatch::Change::runs_away:
+        ran_away = true;
+        watch.event("runaway", t, inputs).margin = out.trajectory.back().least_margin;
+        if (progress) progress(fmt::format("duty cycle: thermo-viscous runaway at t = {:.6g} s", t));
+        break;
+      case RunawayWatch::Change::settles:
+        watch.event("settled", t, inputs).margin = out.trajectory.back().least_margin;
+        break;
+      case RunawayWatch::Change::none:
+        break;
     }
   };
 
@@ -299,6 +332,10 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
     else if (e.event == "runaway")
       out.summary.push_back(fmt::format("duty cycle: thermo-viscous runaway at t = {:.6g} s ({:.6g} N, {:.6g} rad/s)",
                                         e.time, e.load, e.speed));
+    else if (e.event == "settled")
+      out.summary.push_back(fmt::format("duty cycle: the runaway is over at t = {:.6g} s ({:.6g} N, {:.6g} rad/s): "
+                                        "the slow thermal mode is stable again, the hottest film at {:.4g} degC",
+                                        e.time, e.load, e.speed, hottest_at(out.trajectory, e.time) - 273.15));
     else if (e.event == "worst")
       out.summary.push_back(fmt::format(
           "duty cycle: the worst moment is t = {:.6g} s ({:.6g} N, {:.6g} rad/s): {:.3g} of {}'s allowance left{}",

@@ -141,6 +141,11 @@ TEST(DutyCycle, ARampPastDistressRunsAwayAndOneShortOfItDoesNot) {
       const double passes_w_d = ramp * (w_d - 100.0) / (top - 100.0);
       EXPECT_GT(runaway->time, passes_w_d);
       EXPECT_GT(runaway->load, w_d);
+      // Held past W_d it ends on the hot branch, where the slow mode is stable again.
+      const auto settled = std::find_if(runaway, out.cycle_events.end(),
+                                        [](const CycleEvent& e) { return e.event == "settled"; });
+      ASSERT_NE(settled, out.cycle_events.end());
+      EXPECT_GT(out.trajectory.back().state.contact_share, 0.5);
     } else {
       EXPECT_EQ(runaway, out.cycle_events.end()) << "at t = " << runaway->time;
       for (const CycleEvent& e : out.cycle_events) EXPECT_NE(e.event, "crossing");

@@ -1,7 +1,7 @@
 // A duty cycle's events (study type duty_cycle, docs/physics.md section 19),
 // cycle_events.csv: what happened along the cycle whose trajectory is trajectory.csv
 // (trajectory_table.h): each failure criterion's crossing and recovery, the
-// thermo-viscous runaway, the cycle's worst moment and its end,
+// thermo-viscous runaway and its end, the cycle's worst moment and its end,
 //   t_s, event, criterion, load_N, speed_rad_s, ambient_C, tilt_rad, margin,
 //   failure_load_N, failure_criterion
 #pragma once
@@ -19,8 +19,10 @@ namespace twb {
 struct CycleEvent {
   double time = 0.0;
   // "crossing" (a criterion's margin reaches zero, `criterion` says which), "recovery"
-  // (back within it), "runaway" (the thermo-viscous runaway), "worst" (the least margin
-  // of the cycle, with the failure load at that moment's speed, ambient and tilt), "end".
+  // (back within it), "runaway" (the thermo-viscous runaway), "settled" (the runaway is
+  // over: the slow thermal mode stable again, on the hot branch or back on the cool one),
+  // "worst" (the least margin of the cycle, with the failure load at that moment's speed,
+  // ambient and tilt), "end".
   std::string event;
   std::optional<LimitKind> criterion;
   double load = 0.0, speed = 0.0, ambient = 0.0, tilt = 0.0;
