@@ -287,6 +287,7 @@ void write_numerics(Writer& w, const Scene& s) {
       w.line(2, fmt::format("- {{t: {}, load: {}, speed: {}, ambient: {}, tilt: {}}}", quantity(p.time, "s"),
                             quantity(p.load, "N"), quantity(p.speed, "rad/s"), quantity(p.ambient, "K"),
                             quantity(p.tilt, "rad")));
+    w.entry(1, "failure_load_at_worst", st.failure_load_at_worst ? "true" : "false");
   }
   if (st.type == StudyType::calibration) {
     w.entry(1, "data", quoted(std::filesystem::absolute(st.data).string()));

@@ -312,10 +312,12 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
     CycleEvent& e = watch.event("worst", worst.time, schedule.at(worst.time));
     e.criterion = worst.least_criterion;
     e.margin = worst.least_margin;
-    if (progress) progress(fmt::format("duty cycle: the failure load at the worst moment, t = {:.6g} s", worst.time));
-    CycleEvent found = e;
-    failure_at_worst(model, out, worst, largest_load, found);
-    out.cycle_events.back() = found;
+    if (model.scene().study.failure_load_at_worst) {
+      if (progress) progress(fmt::format("duty cycle: the failure load at the worst moment, t = {:.6g} s", worst.time));
+      CycleEvent found = e;
+      failure_at_worst(model, out, worst, largest_load, found);
+      out.cycle_events.back() = found;
+    }
   }
   std::stable_sort(out.cycle_events.begin(), out.cycle_events.end(),
                    [](const CycleEvent& a, const CycleEvent& b) { return a.time < b.time; });

@@ -46,6 +46,18 @@ TEST(Schedule, FieldsLeftOutAreThePointBeforesAndTheFirstPointsTheScenes) {
   EXPECT_EQ(a.file, file.path());
 }
 
+// The failure search at the worst moment is on unless the scene turns it off; the
+// resolved scene says which.
+TEST(Schedule, TheFailureLoadAtTheWorstMomentMayBeLeftOut) {
+  const TempScene on(cycle_scene("[{t: 0 s}, {t: 1 s}]"));
+  EXPECT_TRUE(load_scene(on.path()).study.failure_load_at_worst);
+  const TempScene off(cycle_scene("[{t: 0 s}, {t: 1 s}]\n  failure_load_at_worst: false"), "_off");
+  const Scene s = load_scene(off.path());
+  EXPECT_FALSE(s.study.failure_load_at_worst);
+  const TempScene resolved(describe_scene(s), "_resolved");
+  EXPECT_FALSE(load_scene(resolved.path()).study.failure_load_at_worst);
+}
+
 // A speed may turn negative (the washer turns back); the points join in a straight line.
 TEST(Schedule, ASpeedMayTurnBack) {
   const TempScene file(cycle_scene("[{t: 0 s}, {t: 10 s, speed: -100 rad/s}]"));

@@ -381,6 +381,8 @@ struct Study {
   // lists it.
   std::vector<SchedulePoint> schedule;
   std::string schedule_file;
+  // duty_cycle: the failure load at the cycle's worst moment (a failure search there).
+  bool failure_load_at_worst = true;
 };
 
 struct Output {
