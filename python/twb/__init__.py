@@ -24,7 +24,7 @@ except ImportError as _error:  # the plotting part (twb.plot) works without it
     _import_error = _error
 
 __all__ = ["Bearing", "Scene", "Results", "Table", "SceneError", "SolverFailure", "InternalError", "run",
-           "override_texts"]
+           "override_texts", "schedule"]
 
 
 def _core():
@@ -89,6 +89,36 @@ def override_texts(overrides):
     if isinstance(overrides, str):
         return [overrides]
     return [str(o) for o in overrides]
+
+
+def schedule(t, load=None, speed=None, ambient=None, tilt=None):
+    """A duty cycle's schedule from arrays (lists, tuples or numpy arrays of one length),
+    as the scene's `study.schedule` takes it: one point per time, e.g.
+
+        twb.run(scene, {"study": {"type": "duty_cycle",
+                                  "schedule": twb.schedule(t=[0, 20, 60], load=[100, 300, 300])}})
+
+    A number is in SI (s, N, rad/s, K, rad), as a bare number in a scene; a string carries
+    its unit ("3000 rpm", "90 degC"). An array left out, or None in one, leaves the value
+    to the point before (the first point's to the scene's operating point and gear tilt)."""
+    columns = {"t": t, "load": load, "speed": speed, "ambient": ambient, "tilt": tilt}
+    columns = {k: list(v) for k, v in columns.items() if v is not None}
+    n = len(columns["t"])
+    for key, values in columns.items():
+        if len(values) != n:
+            raise ValueError(f"schedule: {key} has {len(values)} values, t has {n}: one a point")
+    points = []
+    for i in range(n):
+        point = {}
+        for key, values in columns.items():
+            v = values[i]
+            if v is None:
+                if key == "t":
+                    raise ValueError(f"schedule: point {i + 1} has no time")
+                continue
+            point[key] = v if isinstance(v, str) else float(v)
+        points.append(point)
+    return points
 
 
 class Scene:
@@ -184,7 +214,7 @@ class Table(dict):
 class Results:
     """What a study gives back. Tables (None where the study writes no such file):
     states, distress, trajectory, sliding, fold_curve, sensitivity, reliability, design_point,
-    calibration, calibration_correlation, calibration_points; fields: per state, its fields
+    calibration, calibration_correlation, calibration_points, cycle_events; fields: per state, its fields
     table (output.fields) or None; summary and limit_notes: the lines twb run prints at
     the end; message, solver_failed; timings: run.json's counts."""
 
@@ -210,6 +240,7 @@ class Results:
     calibration = property(lambda self: self.tables.get("calibration"))
     calibration_correlation = property(lambda self: self.tables.get("calibration_correlation"))
     calibration_points = property(lambda self: self.tables.get("calibration_points"))
+    cycle_events = property(lambda self: self.tables.get("cycle_events"))
 
     def __repr__(self):
         parts = ", ".join(f"{name}: {table.rows} rows" for name, table in self.tables.items())

@@ -86,6 +86,23 @@ class CommandComparison(unittest.TestCase):
                                          "load_start": "100 N", "load_end": "800 N",
                                          "error_estimate": "none"}))
 
+    def test_duty_cycle_from_arrays(self):
+        """A duty cycle whose schedule is given as arrays (twb.schedule: SI numbers, strings
+        with units, None for the point before's): the trajectory and the events the command
+        writes, to the last bit."""
+        points = twb.schedule(t=[0, 5, 30], load=[100, 150, None], speed=[None, "6000 rpm", None])
+        self.assertEqual(points[1], {"t": 5.0, "load": 150.0, "speed": "6000 rpm"})
+        self.assertEqual(points[2], {"t": 30.0})
+        result = self.compare(dict(COARSE, **{"operating.load": "100 N", "study": {
+            "type": "duty_cycle", "failure_load_at_worst": False, "schedule": points}}))
+        self.assertEqual(result.scene.study_type, "duty_cycle")
+        self.assertEqual(result.trajectory["t_s"][-1], 30.0)
+        self.assertAlmostEqual(result.trajectory["speed_rad_s"][-1], 6000 * 2 * math.pi / 60, delta=1e-9)
+        self.assertIn("least_margin", list(result.trajectory))
+        self.assertEqual(list(result.cycle_events["event"]), ["end", "worst"])
+        with self.assertRaises(ValueError):
+            twb.schedule(t=[0, 1], load=[100])
+
 
 class Errors(unittest.TestCase):
     def test_malformed_scene_raises_scene_error_with_its_line(self):
