@@ -119,6 +119,7 @@ struct RunRequest {
   bool quiet = false, verbose = false, resume = false, full_precision = false;
   int threads = 0;
   std::string slice;  // "K/N", or empty
+  std::string continue_from;  // a duty cycle's results directory, or empty
 };
 
 // "K/N" of --slice.
@@ -137,6 +138,12 @@ int write_results(const std::filesystem::path& dir, const std::string& scene_pat
   for (const twb::NamedTable& table : twb::study_tables(outcome, scene.study.type))
     twb::write_file_atomically(dir / (table.name + ".csv"), table.table.csv(digits));
   twb::write_state_fields(dir, outcome.states, digits);
+  // A completed duty cycle's end, for the next part of a long cycle (--continue-from).
+  // (None from an unfinished one: no earlier run's end may be left to look like this one's.)
+  if (outcome.cycle_end)
+    twb::write_file_atomically(dir / "cycle_end_state.json", twb::cycle_state_json(*outcome.cycle_end));
+  else
+    std::filesystem::remove(dir / "cycle_end_state.json");
   const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message
                                                     : (outcome.message.empty() ? "ok" : outcome.message);
   twb::write_file_atomically(dir / "run.json", twb::run_json(scene_path, twb::describe_scene(scene), model.layout(),
@@ -190,6 +197,12 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
     const auto [k, n] = parse_slice(r.slice);
     slice.emplace(k, n);
   }
+  std::optional<twb::CycleState> cycle_start;
+  if (!r.continue_from.empty()) {
+    if (scene.study.type != twb::StudyType::duty_cycle)
+      throw std::invalid_argument("--continue-from goes on with a duty cycle; this scene's study is another");
+    cycle_start = twb::read_cycle_state((std::filesystem::path(r.continue_from) / "cycle_end_state.json").string());
+  }
   if (r.out_dir.empty()) r.out_dir = scene.output.directory;
   // Before any work: a directory this run cannot write into, or one another run is
   // writing into, is the user's to fix now, not after the study.
@@ -215,8 +228,10 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
       std::cerr << "twb: this study is one piece of work: rank 0 runs it, the other ranks wait\n";
     }
   }
-  twb::StudyOutcome outcome = twb::run_study(model, progress_lines(r.quiet), twb::RunOptions{.threads = threads},
-                                             twb::StudyPlumbing{.journal = &journal, .scheduler = scheduler});
+  twb::StudyOutcome outcome =
+      twb::run_study(model, progress_lines(r.quiet),
+                     twb::RunOptions{.threads = threads, .cycle_start = cycle_start ? &*cycle_start : nullptr},
+                     twb::StudyPlumbing{.journal = &journal, .scheduler = scheduler});
   outcome.timings.setup_ms = setup_ms;
   outcome.timings.total_ms = twb::elapsed_ms(t0);
   if (slice) {
@@ -287,6 +302,9 @@ int main(int argc, char** argv) {
                       "threads for a study's independent searches (speeds, parameter values); default: one per core "
                       "(under mpirun: one per rank). The results are the same for any number")
       ->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--continue-from", request.continue_from,
+                      "DIR: a duty cycle goes on from where the one whose results are in DIR ended (its "
+                      "cycle_end_state.json): the schedule's first point must be that end's time and inputs");
   run_cmd->add_flag("--resume", request.resume,
                     "finish a run that was killed: the searches it finished are read from the results directory's "
                     "journal, the others run (the same scene and --set values)");

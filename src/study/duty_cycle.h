@@ -14,6 +14,8 @@
 
 namespace twb {
 
-void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport& progress);
+// `start`: an earlier cycle's end to go on from (RunOptions::cycle_start), else none.
+void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport& progress,
+                    const CycleState* start = nullptr);
 
 }  // namespace twb

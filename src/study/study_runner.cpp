@@ -279,7 +279,7 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
       run_calibration(model, out, progress, threads);
       break;
     case StudyType::duty_cycle:
-      run_duty_cycle(model, out, progress);
+      run_duty_cycle(model, out, progress, options.cycle_start);
       break;
   }
   // Searches run on worker threads count their own (run_searches); the rest ran here.

@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,6 +21,7 @@
 #include "study/steady_solver.h"
 #include "study/study_runner.h"
 #include "study/study_support.h"
+#include "twb/results/cycle_state.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {
@@ -152,6 +156,61 @@ TEST(DutyCycle, ARampPastDistressRunsAwayAndOneShortOfItDoesNot) {
       EXPECT_GT(*out.trajectory.back().least_margin, 0.0);
     }
   }
+}
+
+// A long cycle run in two parts, the second continued from the first's end (through its
+// file, as twb run --continue-from reads it), ends where the whole cycle ends, to the
+// last bit: the whole march restarts IDA at the same point of the schedule, from the same
+// state (the file holds every double exactly).
+TEST(DutyCycle, ACycleRunInTwoPartsEndsAsTheWholeCycle) {
+  const std::string a = "{t: 0 s, load: 100 N}, {t: 5 s, load: 150 N, speed: 600 rad/s}, {t: 10 s}";
+  const std::string b = "{t: 10 s, load: 150 N, speed: 600 rad/s}, {t: 14 s, load: 120 N, ambient: 30 degC}, {t: 20 s}";
+  const Scene whole_scene = cycle_scene("[" + a + ", {t: 14 s, load: 120 N, ambient: 30 degC}, {t: 20 s}]");
+  BearingModel whole_model(whole_scene);
+  const StudyOutcome whole = run_study(whole_model, {});
+  ASSERT_FALSE(whole.solver_failed) << whole.message;
+
+  const Scene first_scene = cycle_scene("[" + a + "]");
+  BearingModel first_model(first_scene);
+  const StudyOutcome first = run_study(first_model, {});
+  ASSERT_TRUE(first.cycle_end);
+  const std::string file = ::testing::TempDir() + "twb_cycle_end_state.json";
+  { std::ofstream(file) << cycle_state_json(*first.cycle_end); }
+  const CycleState end = read_cycle_state(file);
+  EXPECT_EQ(end.unknowns, first.cycle_end->unknowns);
+
+  const Scene second_scene = cycle_scene("[" + b + "]");
+  BearingModel second_model(second_scene);
+  const StudyOutcome second = run_study(second_model, {}, RunOptions{.cycle_start = &end});
+  ASSERT_FALSE(second.solver_failed) << second.message;
+  EXPECT_EQ(second.trajectory.front().time, 10.0);
+  const BearingState& w = whole.trajectory.back().state;
+  const BearingState& s = second.trajectory.back().state;
+  EXPECT_EQ(s.washer_mean_temperature, w.washer_mean_temperature);
+  EXPECT_EQ(s.max_film_temperature, w.max_film_temperature);
+  EXPECT_EQ(s.hmin_over_sigma, w.hmin_over_sigma);
+  EXPECT_EQ(second.cycle_end->unknowns, whole.cycle_end->unknowns);
+
+  // Refused: a schedule that does not start where the end was, another bearing's state.
+  const Scene elsewhere = cycle_scene("[{t: 10 s, load: 160 N, speed: 600 rad/s}, {t: 20 s}]");
+  BearingModel elsewhere_model(elsewhere);
+  try {
+    run_study(elsewhere_model, {}, RunOptions{.cycle_start = &end});
+    ADD_FAILURE() << "a schedule starting elsewhere was continued";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("starts where the last one ended"), std::string::npos) << e.what();
+  }
+  const Scene finer = load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
+                                 {"mesh.radial_nodes=9", "mesh.circumferential_nodes=24",
+                                  "study={type: duty_cycle, schedule: [" + b + "]}"});
+  BearingModel finer_model(finer);
+  try {
+    run_study(finer_model, {}, RunOptions{.cycle_start = &end});
+    ADD_FAILURE() << "another bearing's state was continued";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("another bearing"), std::string::npos) << e.what();
+  }
+  std::remove(file.c_str());
 }
 
 }  // namespace

@@ -5,10 +5,12 @@
 
 #include <atomic>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "twb/results/calibration_table.h"
+#include "twb/results/cycle_state.h"
 #include "twb/results/cycle_table.h"
 #include "twb/results/distress_table.h"
 #include "twb/results/fold_curve_table.h"
@@ -41,6 +43,7 @@ struct StudyOutcome {
   std::vector<CorrelationRow> correlations;            // calibration: each pair of fitted inputs
   std::vector<CalibrationPointRow> calibration_points;  // calibration: each measured value
   std::vector<CycleEvent> cycle_events;  // duty_cycle: crossings, runaway, the worst moment, the end
+  std::optional<CycleState> cycle_end;   // duty_cycle: where a completed cycle ended, to go on from
   std::vector<std::string> summary;  // lines for the end of the run's output (e.g. the cusp)
   // The solvers' own words where a search went on regardless (twb run --verbose).
   std::vector<std::string> diagnostics;
@@ -61,6 +64,11 @@ struct RunOptions {
   // with what it has and StudyOutcome::stopped. A search under way runs to its end, and
   // a study of one piece of work (point, transient, fold curve) is not stopped.
   const std::atomic<bool>* stop = nullptr;
+  // A duty cycle continued from where an earlier one ended (its StudyOutcome::cycle_end,
+  // or twb run --continue-from DIR): the march starts from that state instead of the
+  // steady state at the schedule's start, whose first point must be the end's time and
+  // inputs (std::invalid_argument otherwise, or for another bearing's state).
+  const CycleState* cycle_start = nullptr;
 };
 
 // The tables a study writes, named by their file's stem ("states", "distress",
