@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include <ida/ida.h>
+#include <idas/idas.h>  // IDA with quadratures (a duty cycle's heat integrals)
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
@@ -22,6 +22,7 @@ struct IdaTransient::Callbacks {
   const SteadySystem* system;
   const std::vector<double>* capacities;
   const std::function<double(double)>* inputs_at;  // may be empty
+  const TransientSettings* settings;
   // The inputs at t; the rate of the differential unknowns' reference there.
   double set_inputs(double t) const { return *inputs_at ? (*inputs_at)(t) : 0.0; }
   // IDA's Jacobian needs (k, k) wherever C_k > 0; the system's pattern may lack it, so
@@ -91,6 +92,19 @@ int jacobian_fn(double t, double cj, N_Vector y, N_Vector, N_Vector, SUNMatrix J
   });
 }
 
+int quadrature_fn(double t, N_Vector y, N_Vector, N_Vector rates, void* data) {
+  auto* cb = static_cast<IdaTransient::Callbacks*>(data);
+  return guarded_callback(cb->failure, [&]() -> int {
+    const auto n = std::size_t(N_VGetLength(y));
+    cb->set_inputs(t);
+    std::span<double> q(N_VGetArrayPointer(rates), std::size_t(N_VGetLength(rates)));
+    cb->settings->quadrature_rates(t, std::span<const double>(N_VGetArrayPointer(y), n), q);
+    for (double v : q)
+      if (!std::isfinite(v)) return 1;
+    return 0;
+  });
+}
+
 void error_handler(int, const char*, const char*, char* msg, void* data) {
   try {
     static_cast<IdaTransient::Callbacks*>(data)->last_error = msg;
@@ -120,6 +134,7 @@ IdaTransient::IdaTransient(const SteadySystem& system, TransientSettings setting
   cb.system = &system_;
   cb.capacities = &capacities_;
   cb.inputs_at = &settings_.inputs_at;
+  cb.settings = &settings_;
   const SparsePattern& own = system_.pattern();
   cb.pattern = with_capacity_diagonal(own, capacities_);
   for (Index r = 0; r < n; ++r)
@@ -157,6 +172,13 @@ IdaTransient::IdaTransient(const SteadySystem& system, TransientSettings setting
   check_flag(IDASetLinearSolver(ida_.get(), klu_.get(), jac_.get()), "IDASetLinearSolver");
   check_flag(IDASetJacFn(ida_.get(), jacobian_fn), "IDASetJacFn");
   check_flag(IDASetId(ida_.get(), id_.get()), "IDASetId");
+  if (settings_.quadrature_count > 0) {
+    if (!settings_.quadrature_rates) throw InternalError("IdaTransient: quadratures without their rates");
+    quadrature_.reset(N_VNew_Serial(settings_.quadrature_count, ctx_.get()));
+    if (!quadrature_) throw SolverFailure("could not allocate the transient's quadratures", -1);
+    N_VConst(0.0, quadrature_.get());
+    check_flag(IDAQuadInit(ida_.get(), quadrature_fn, quadrature_.get()), "IDAQuadInit");
+  }
 }
 
 IdaTransient::~IdaTransient() = default;
@@ -216,6 +238,11 @@ TransientStatus IdaTransient::consistent_start(double t0, std::span<const double
   time_ = t0;
   int flag = IDAReInit(ida_.get(), t0, y_.get(), yp_.get());
   if (flag < 0) return status_from(flag, "IDAReInit");
+  if (quadrature_) {
+    N_VConst(0.0, quadrature_.get());
+    flag = IDAQuadReInit(ida_.get(), quadrature_.get());
+    if (flag < 0) return status_from(flag, "IDAQuadReInit");
+  }
   flag = IDACalcIC(ida_.get(), IDA_YA_YDP_INIT, t0 + fastest);
   if (flag < 0) return status_from(flag, "IDACalcIC");
   return status_from(IDAGetConsistentIC(ida_.get(), y_.get(), yp_.get()), "IDAGetConsistentIC");
@@ -300,6 +327,15 @@ double IdaTransient::differential_distance(std::span<const double> a, std::span<
     d = std::max(d, scaled);
   }
   return d;
+}
+
+std::vector<double> IdaTransient::quadratures() const {
+  if (!quadrature_) return {};
+  double t = time_;
+  // Before the first step IDAS has no quadrature history: the integrals are zero.
+  if (IDAGetQuad(ida_.get(), &t, quadrature_.get()) < 0) N_VConst(0.0, quadrature_.get());
+  const double* q = N_VGetArrayPointer(quadrature_.get());
+  return {q, q + settings_.quadrature_count};
 }
 
 TransientStatistics IdaTransient::statistics() const {

@@ -1,5 +1,5 @@
 // The pseudo-time transient of a SteadySystem, C·u' = −F(u; λ), integrated by SUNDIALS
-// IDA as the DAE residual
+// IDA (IDAS, its edition with quadratures) as the DAE residual
 //
 //     G(t, u, u') = C·u' + F(u; λ) = 0,       ∂G/∂u + c_j·∂G/∂u' = ∂F/∂u + c_j·C,
 //
@@ -44,6 +44,12 @@ struct TransientSettings {
   // the schedule moves), so that the residual is C·(u' + r) + F(u; t). Empty: λ fixed,
   // r = 0. The inputs must be smooth between the stop times the caller restarts at.
   std::function<double(double t)> inputs_at;
+  // Integrals of functions of the state along the march (IDAS's quadratures: the same
+  // BDF formula as the state, kept out of the error test, so they are as accurate as the
+  // state is): `count` of them, whose rates at (t, u) `rates` writes (the inputs set at t
+  // first). Read with IdaTransient::quadratures(), from zero at each start().
+  int quadrature_count = 0;
+  std::function<void(double t, std::span<const double> u, std::span<double> rates)> quadrature_rates;
 };
 
 // A failure of IDA is data, not an exception: a finite-time blow-up ends in
@@ -97,6 +103,8 @@ class IdaTransient {
   // units of the integration tolerance (1 = what IDA cannot resolve).
   double differential_distance(std::span<const double> a, std::span<const double> b) const;
   TransientStatistics statistics() const;
+  // The quadratures' integrals from the last start() to time() (TransientSettings).
+  std::vector<double> quadratures() const;
 
   // Callback state, public for the C trampolines.
   struct Callbacks;
@@ -110,7 +118,7 @@ class IdaTransient {
   TransientSettings settings_;
   std::vector<double> capacities_, absolute_;
   SundialsContext ctx_;
-  Vector y_, yp_, id_, atol_;
+  Vector y_, yp_, id_, atol_, quadrature_;
   Matrix jac_;
   LinearSolver klu_;
   IdaMemory ida_;

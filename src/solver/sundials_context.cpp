@@ -1,7 +1,7 @@
 #include "solver/sundials_context.h"
 
 #include <fmt/format.h>
-#include <ida/ida.h>
+#include <idas/idas.h>  // IDA with quadratures (a duty cycle's heat integrals)
 #include <kinsol/kinsol.h>
 
 #include "twb/error_family.h"

@@ -60,12 +60,12 @@ class CycleWatch {
 
   // The sample at t (the model's inputs already those of t), its crossings since the
   // sample before.
-  void sample(const BearingModel& model, double t, const SchedulePoint& inputs, std::span<const double> u) {
+  void sample(double t, const SchedulePoint& inputs, BearingState state) {
     TrajectorySample& s = out_.trajectory.emplace_back();
     s.time = t;
     s.ambient = inputs.ambient;
     s.tilt = inputs.tilt;
-    s.state = model.describe(u);
+    s.state = std::move(state);
     const LimitValues values = LimitValues::of(s.state, thermal_);
     Margins margins;
     for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
@@ -203,6 +203,18 @@ double hottest_at(const std::vector<TrajectorySample>& trajectory, double t) {
   return (at == trajectory.end() ? trajectory.back() : *at).state.max_film_temperature;
 }
 
+// The bodies' heat content (J) at state u and ambient T_a: Σ ρ·c·t·A·(T_a + ϑ) over every
+// body node (the capacities of physics §7, in physical units).
+double heat_content(const BearingModel& model, std::span<const double> u, double ambient) {
+  double e = 0.0;
+  for (const ComponentHeat& comp : model.components())
+    for (int local = 0; local < comp.node_count(); ++local) {
+      const int ring = comp.axisymmetric ? local : local / comp.grid.circumferential_nodes();
+      e += comp.capacity_per_area * comp.node_area(ring) * (ambient + u[std::size_t(comp.offset + local)]);
+    }
+  return e;
+}
+
 // The unknowns of an earlier cycle's end, checked to be this bearing's and to end where
 // this schedule starts (std::invalid_argument saying what differs).
 std::vector<double> continued_state(const BearingModel& model, const CycleState& end, const SchedulePoint& first,
@@ -270,12 +282,42 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
     OperatingSchedule::apply(model, schedule.on_segment(segment, t));
     return schedule.ambient_rate(segment);
   };
+  // The heat generated, conducted to the ambient and carried off, integrated with the
+  // state (the cycle's energy balance, physics §19).
+  // IDAS evaluates them once a step, at the state the step ends on: the state described
+  // there is the step's sample too (described once).
+  struct Described {
+    double t = 0.0;
+    std::vector<double> u;
+    BearingState state;
+  } described;
+  const auto describe_at = [&](double t, std::span<const double> state) -> const BearingState& {
+    if (described.t != t || !std::equal(state.begin(), state.end(), described.u.begin(), described.u.end())) {
+      described.state = model.describe(state);
+      described.t = t;
+      described.u.assign(state.begin(), state.end());
+    }
+    return described.state;
+  };
+  settings.quadrature_count = 3;
+  settings.quadrature_rates = [&](double t, std::span<const double> state, std::span<double> rates) {
+    const BearingState& s = describe_at(t, state);
+    rates[0] = s.heat_generated;
+    rates[1] = s.heat_to_ambient;
+    rates[2] = s.heat_carried.value_or(0.0);
+  };
+  CycleHeat heat;
+  const double content_at_start = heat_content(model, u, first.ambient);
   IdaTransient ida(model, settings);
   CycleWatch watch(model, out);
   RunawayWatch runaway(model);
   bool ran_away = false;
   std::string ended;  // why the march ended before the schedule did
   auto bank = [&] {
+    const std::vector<double> q = ida.quadratures();
+    heat.generated += q[0];
+    heat.to_ambient += q[1];
+    heat.carried += q[2];
     const TransientStatistics s = ida.statistics();
     out.timings.ida_steps += s.steps;
     out.timings.ida_factorizations += s.linear_setups;
@@ -283,7 +325,7 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   auto record = [&](double t, std::span<const double> state) {
     const SchedulePoint inputs = schedule.on_segment(segment, t);
     OperatingSchedule::apply(model, inputs);
-    watch.sample(model, t, inputs, state);
+    watch.sample(t, inputs, describe_at(t, state));
     switch (runaway.at(t, out.trajectory.back().state.max_film_temperature, state)) {
       case RunawayWatch::Change::runs_away:
         ran_away = true;
@@ -339,6 +381,8 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
     const SchedulePoint at = schedule.at(last.time);
     out.cycle_end = CycleState{last.time, at.load, at.speed, at.ambient, at.tilt, u, bearing};
   }
+  heat.stored = heat_content(model, u, schedule.at(last.time).ambient) - content_at_start;
+  out.cycle_heat = heat;
   if (!ended.empty()) {
     // A blow-up (IDA stopped by temperatures running away) is the runaway itself; any
     // other end is the solver's failure.
@@ -371,6 +415,11 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   out.summary.push_back(fmt::format("duty cycle: {} segments, {:.6g} s to {:.6g} s, {} steps ({:.1f} s)",
                                     schedule.segments(), schedule.start(), last.time, out.trajectory.size() - 1,
                                     elapsed_ms(t0) / 1000.0));
+  out.summary.push_back(fmt::format(
+      "duty cycle: heat: {:.6g} J generated = {:.6g} J to the ambient + {:.6g} J carried by the oil + {:.6g} J stored in "
+      "the bodies, to {:.2g} J ({:.2g} of the generated)",
+      heat.generated, heat.to_ambient, heat.carried, heat.stored, heat.error(),
+      std::abs(heat.error()) / std::max(heat.generated, 1e-300)));
   for (const CycleEvent& e : out.cycle_events) {
     if (e.event == "crossing" || e.event == "recovery")
       out.summary.push_back(fmt::format("duty cycle: {} {} at t = {:.6g} s ({:.6g} N, {:.6g} rad/s)",

@@ -41,6 +41,20 @@ SchedulePoint point(double t, double load, double speed, double ambient, double 
   return p;
 }
 
+// The heat over the cycle: generated = conducted + carried + stored (physics §19). The
+// integrals follow the state with IDA's formula and its relative tolerance, 1e-6 a step:
+// their balance closes to a few times that of the heat generated, and 1e-5 allows ten.
+// (Without the ambient's rate on the bodies' rows, their content would jump with the
+// ambient with no heat to account for it.)
+void expect_heat_balance(const StudyOutcome& out) {
+  ASSERT_TRUE(out.cycle_heat);
+  const CycleHeat& h = *out.cycle_heat;
+  EXPECT_GT(h.generated, 0.0);
+  EXPECT_LT(std::abs(h.error()), 1e-5 * h.generated)
+      << "generated " << h.generated << " J, to the ambient " << h.to_ambient << " J, carried " << h.carried
+      << " J, stored " << h.stored << " J";
+}
+
 TEST(OperatingSchedule, StraightLinesBetweenThePointsHeldOutside) {
   const OperatingSchedule s({point(0, 100, 500, 300, 1e-3), point(10, 200, 300, 320, 2e-3), point(30, 200, -100, 320, 0)});
   EXPECT_EQ(s.segments(), 2u);
@@ -112,6 +126,7 @@ TEST(DutyCycle, TheBodiesHeatCapacitiesDelayAnAmbientRamp) {
   const double moved_at_end = out.trajectory.back().state.washer_mean_temperature - start.state.washer_mean_temperature;
   EXPECT_LT(moved_at_ramp_end, 0.5 * 20.0);
   EXPECT_GT(moved_at_end, 0.9 * 20.0);  // after ten time constants, nearly all of it
+  expect_heat_balance(out);
 }
 
 // A ramp past W_d runs away (the temperatures accelerate with the slowest mode unstable),
@@ -150,6 +165,7 @@ TEST(DutyCycle, ARampPastDistressRunsAwayAndOneShortOfItDoesNot) {
                                         [](const CycleEvent& e) { return e.event == "settled"; });
       ASSERT_NE(settled, out.cycle_events.end());
       EXPECT_GT(out.trajectory.back().state.contact_share, 0.5);
+      expect_heat_balance(out);  // through the runaway, with much heat stored
     } else {
       EXPECT_EQ(runaway, out.cycle_events.end()) << "at t = " << runaway->time;
       for (const CycleEvent& e : out.cycle_events) EXPECT_NE(e.event, "crossing");

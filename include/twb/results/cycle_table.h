@@ -31,6 +31,15 @@ struct CycleEvent {
   std::optional<FailureCriterion> failure_criterion;
 };
 
+// The heat over a duty cycle (J, docs/physics.md section 19): generated in the films,
+// conducted to the ambient, carried off by the oil (with convection), and stored in the
+// bodies (their heat content at the end less at the start). generated = to_ambient +
+// carried + stored to the integrator's tolerance.
+struct CycleHeat {
+  double generated = 0.0, to_ambient = 0.0, carried = 0.0, stored = 0.0;
+  double error() const { return generated - to_ambient - carried - stored; }
+};
+
 ResultTable cycle_events_table(const std::vector<CycleEvent>& events);
 
 }  // namespace twb

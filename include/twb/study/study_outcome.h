@@ -44,6 +44,7 @@ struct StudyOutcome {
   std::vector<CalibrationPointRow> calibration_points;  // calibration: each measured value
   std::vector<CycleEvent> cycle_events;  // duty_cycle: crossings, runaway, the worst moment, the end
   std::optional<CycleState> cycle_end;   // duty_cycle: where a completed cycle ended, to go on from
+  std::optional<CycleHeat> cycle_heat;   // duty_cycle: the heat balance over the march
   std::vector<std::string> summary;  // lines for the end of the run's output (e.g. the cusp)
   // The solvers' own words where a search went on regardless (twb run --verbose).
   std::vector<std::string> diagnostics;
