@@ -219,6 +219,37 @@ TEST(DutyCycle, AStepPastDistressRunsAwayInTheTimeTheFoldsSlowModePredicts) {
   EXPECT_LT(1.5 * nearer, farther);
 }
 
+// A washer that stops and turns back (physics §19, "Speed through zero"): the march goes
+// through ω = 0, where the film has no lift and the asperities carry the load (boundary),
+// and comes back to a film that carries it at the reversed speed; the heat balance
+// closes through it.
+TEST(DutyCycle, TheSpeedGoesThroughZero) {
+  const Scene scene = cycle_scene(
+      "[{t: 0 s, speed: 545 rad/s}, {t: 10 s, speed: 0 rad/s}, {t: 20 s, speed: -545 rad/s}, {t: 600 s}]");
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  const auto at_rest = std::find_if(out.trajectory.begin(), out.trajectory.end(),
+                                    [](const TrajectorySample& s) { return s.time >= 10.0; });
+  ASSERT_NE(at_rest, out.trajectory.end());
+  EXPECT_EQ(at_rest->state.speed, 0.0);
+  EXPECT_EQ(regime_of(at_rest->state), Regime::boundary);
+  const TrajectorySample& end = out.trajectory.back();
+  EXPECT_EQ(end.state.speed, -545.0);
+  EXPECT_EQ(regime_of(end.state), regime_of(out.trajectory.front().state));
+  // The washer is symmetric under reversal (a property test of the model): held long
+  // enough (the slow mode's share below e^−40) it is back at the state it started from,
+  // to IDA's error, as in HeldAtAPointItEndsAtThePointsSteadyState.
+  BearingModel start(scene);
+  OperatingSchedule::apply(start, scene.study.schedule.front());
+  std::vector<double> u;
+  ASSERT_TRUE(SteadySolver(start, newton_settings(scene)).solve_cold(u).converged);
+  ASSERT_LT(40.0 * slowest_relaxation_time(start, u, 20), 600.0 - 20.0) << "hold the reversed speed longer";
+  EXPECT_NEAR(end.state.washer_mean_temperature, out.trajectory.front().state.washer_mean_temperature, 1e-4);
+  EXPECT_NEAR(end.state.max_film_temperature, out.trajectory.front().state.max_film_temperature, 1e-4);
+  expect_heat_balance(out);
+}
+
 // A long cycle run in two parts, the second continued from the first's end (through its
 // file, as twb run --continue-from reads it), ends where the whole cycle ends, to the
 // last bit: the whole march restarts IDA at the same point of the schedule, from the same
