@@ -99,11 +99,16 @@ def schedule(t, load=None, speed=None, ambient=None, tilt=None):
                                   "schedule": twb.schedule(t=[0, 20, 60], load=[100, 300, 300])}})
 
     A number is in SI (s, N, rad/s, K, rad), as a bare number in a scene; a string carries
-    its unit ("3000 rpm", "90 degC"). An array left out, or None in one, leaves the value
-    to the point before (the first point's to the scene's operating point and gear tilt)."""
+    its unit ("3000 rpm", "90 degC"); a single value for an input holds at every point. An
+    array left out, or None in one, leaves the value to the point before (the first
+    point's to the scene's operating point and gear tilt)."""
     columns = {"t": t, "load": load, "speed": speed, "ambient": ambient, "tilt": tilt}
-    columns = {k: list(v) for k, v in columns.items() if v is not None}
-    n = len(columns["t"])
+    if isinstance(t, (str, numbers.Number)):
+        raise ValueError("schedule: t is one value; give the points' times as an array")
+    n = len(list(t))
+    # A single value (a number or a string with its unit) holds at every point.
+    columns = {k: ([v] * n if isinstance(v, (str, numbers.Number)) else list(v))
+               for k, v in columns.items() if v is not None}
     for key, values in columns.items():
         if len(values) != n:
             raise ValueError(f"schedule: {key} has {len(values)} values, t has {n}: one a point")

@@ -204,6 +204,13 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
     cycle_start = twb::read_cycle_state((std::filesystem::path(r.continue_from) / "cycle_end_state.json").string());
   }
   if (r.out_dir.empty()) r.out_dir = scene.output.directory;
+  if (cycle_start) {
+    std::error_code same_error;
+    if (std::filesystem::equivalent(r.out_dir, r.continue_from, same_error))
+      throw std::invalid_argument(fmt::format("--continue-from {}: the continued part's results go to another "
+                                              "directory (--out DIR), or its end state would replace the one it starts from",
+                                              r.continue_from));
+  }
   // Before any work: a directory this run cannot write into, or one another run is
   // writing into, is the user's to fix now, not after the study.
   const twb::cli::ResultsDirectory results(r.out_dir);

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <yaml-cpp/yaml.h>
 
 namespace twb {
 
@@ -24,18 +25,16 @@ double finite(double v, const char* what) {
 }  // namespace
 
 std::string bearing_of(const std::string& resolved_scene) {
-  std::istringstream in(resolved_scene);
-  std::string out, line;
-  bool skipping = false;
-  for (; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    if (line[0] != ' ') {
-      const std::string key = line.substr(0, line.find(':'));
-      skipping = key == "study" || key == "output" || key == "operating";
-    }
-    if (!skipping) out += line + "\n";
-  }
-  return out;
+  YAML::Node scene = YAML::Load(resolved_scene);
+  scene.remove("study");
+  scene.remove("output");
+  // The schedule's inputs; the rest of operating (which film slides) is the bearing's.
+  if (YAML::Node operating = scene["operating"])
+    for (const char* key : {"load", "speed", "ambient"}) operating.remove(key);
+  if (YAML::Node gear = scene["geometry"]["gear"]) gear.remove("tilt");
+  YAML::Emitter out;
+  out << scene;
+  return std::string(out.c_str()) + "\n";
 }
 
 std::string cycle_state_json(const CycleState& s) {
@@ -64,8 +63,7 @@ CycleState read_cycle_state(const std::string& path) {
   }
   try {
     if (j.at("format") != "twb-cycle-state 1")
-      throw std::invalid_argument(fmt::format("{}: format '{}', this twb reads 'twb-cycle-state 1'", path,
-                                              j.at("format").dump()));
+      throw std::invalid_argument(fmt::format("format {}, this twb reads 'twb-cycle-state 1'", j.at("format").dump()));
     CycleState s;
     s.time = j.at("time_s").get<double>();
     s.load = j.at("load_N").get<double>();
@@ -74,7 +72,12 @@ CycleState read_cycle_state(const std::string& path) {
     s.tilt = j.at("tilt_rad").get<double>();
     s.unknowns = j.at("unknowns").get<std::vector<double>>();
     s.bearing = j.at("bearing").get<std::string>();
+    // As written: finite numbers only (a hand-edited file must not reach the solver).
+    for (double v : {s.time, s.load, s.speed, s.ambient, s.tilt}) finite(v, "a time or an input");
+    for (double u : s.unknowns) finite(u, "an unknown");
     return s;
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format("{}: not a cycle's end state ({})", path, e.what()));
   } catch (const Json::exception& e) {
     throw std::invalid_argument(fmt::format("{}: not a cycle's end state ({})", path, e.what()));
   }

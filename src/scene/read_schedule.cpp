@@ -229,8 +229,12 @@ std::vector<SchedulePoint> schedule_in_file(const std::string& path, const Scene
                               range.reason.empty() ? "" : fmt::format(" ({})", range.reason)));
       set(p, col.what, value);
     }
-    if (!points.empty() && !(p.time > before.time))
+    if (!points.empty() && !(p.time > before.time)) {
+      // A trajectory's steps may lie closer than its ten digits tell apart: the first of
+      // them stands for all.
+      if (results && p.time == before.time) continue;
       text.fail(k, row[*seen[kTime]].column, time_order_message(p.time, before.time));
+    }
     if (points.empty())
       if (const std::optional<std::string> why = past_limits_at_start(p, scene)) text.fail(k, 0, *why);
     points.push_back(p);

@@ -55,8 +55,12 @@ using Margins = std::array<std::optional<double>, std::size(kFailureCriteria)>;
 
 class CycleWatch {
  public:
-  CycleWatch(const BearingModel& model, StudyOutcome& out)
-      : limits_(OperatingLimits::of(model.scene())), thermal_(model.scene().effects.thermal), out_(out) {}
+  // `lowest_ambient`: the schedule's, from which every allowance is measured (the reader
+  // keeps the first point's ambient below every limit; a later, warmer ambient must not
+  // shrink an allowance to nothing just as the limit is crossed).
+  CycleWatch(const BearingModel& model, StudyOutcome& out, double lowest_ambient)
+      : limits_(OperatingLimits::of(model.scene())), thermal_(model.scene().effects.thermal), out_(out),
+        lowest_ambient_(lowest_ambient) {}
 
   // The sample at t (the model's inputs already those of t), its crossings since the
   // sample before.
@@ -71,7 +75,7 @@ class CycleWatch {
     for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
       const LimitKind kind = kFailureCriteria[c];
       margins[c] = failure_margin(kind, values, limits_);
-      const std::optional<double> room = allowance(kind, limits_, inputs.ambient);
+      const std::optional<double> room = allowance(kind, limits_, lowest_ambient_);
       if (!margins[c] || !room || !(*room > 0.0)) continue;
       const double fraction = *margins[c] / *room;
       if (!s.least_margin || fraction < *s.least_margin) s.least_margin = fraction, s.least_criterion = kind;
@@ -83,11 +87,14 @@ class CycleWatch {
         if (!a || !b || (*a >= 0.0) == (*b >= 0.0)) continue;
         // Where the margin's line between the two samples is zero: within IDA's step.
         const double share = *a / (*a - *b);
-        CycleEvent& e = event(*b < 0.0 ? "crossing" : "recovery", before.time + share * (t - before.time), inputs);
+        const auto between = [&](double a0, double a1) { return a0 + share * (a1 - a0); };
+        CycleEvent& e = event(*b < 0.0 ? "crossing" : "recovery", between(before.time, t), inputs);
         e.criterion = kFailureCriteria[c];
         e.margin = 0.0;
-        e.load = before.state.load + share * (s.state.load - before.state.load);
-        e.speed = before.state.speed + share * (s.state.speed - before.state.speed);
+        e.load = between(before.state.load, s.state.load);
+        e.speed = between(before.state.speed, s.state.speed);
+        e.ambient = between(*before.ambient, *s.ambient);
+        e.tilt = between(*before.tilt, *s.tilt);
       }
     }
     last_margins_ = margins;
@@ -114,6 +121,7 @@ class CycleWatch {
   StudyOutcome& out_;
   std::optional<Margins> last_margins_;
   std::optional<std::size_t> worst_;
+  double lowest_ambient_;
 };
 
 // The thermo-viscous runaway's signature at a point of the trajectory (docs/physics.md
@@ -130,6 +138,7 @@ class RunawayWatch {
         residual_(std::size_t(model.size())), jacobian_(std::size_t(model.pattern().nnz())) {}
 
   enum class Change { none, runs_away, settles };
+  bool running_away() const { return running_away_; }
   // What changes at (t, u), the model's inputs those of t.
   Change at(double t, double hottest, std::span<const double> u) {
     const bool accelerating = times_.size() == 2 && rate(t, hottest) > 0.0 &&
@@ -309,9 +318,10 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   CycleHeat heat;
   const double content_at_start = heat_content(model, u, first.ambient);
   IdaTransient ida(model, settings);
-  CycleWatch watch(model, out);
+  double lowest_ambient = first.ambient;
+  for (const SchedulePoint& p : schedule.points()) lowest_ambient = std::min(lowest_ambient, p.ambient);
+  CycleWatch watch(model, out, lowest_ambient);
   RunawayWatch runaway(model);
-  bool ran_away = false;
   std::string ended;  // why the march ended before the schedule did
   auto bank = [&] {
     const std::vector<double> q = ida.quadratures();
@@ -328,7 +338,6 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
     watch.sample(t, inputs, describe_at(t, state));
     switch (runaway.at(t, out.trajectory.back().state.max_film_temperature, state)) {
       case RunawayWatch::Change::runs_away:
-        ran_away = true;
         watch.event("runaway", t, inputs).margin = out.trajectory.back().least_margin;
         if (progress) progress(fmt::format("duty cycle: thermo-viscous runaway at t = {:.6g} s", t));
         break;
@@ -354,25 +363,36 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
       break;
     }
     if (segment == 0) record(ida.time(), ida.state());
+    // Restarts in a row: a kink of the model (contact or cavitation switching on) is passed
+    // by one; a march that fails again and again has ended.
     int restarts = 0;
+    std::string restart_failed;
     while (ida.time() < t_end) {
       status = ida.step(t_end);
       if (!status.ok && restarts < kRestarts) {
         ++restarts;
         const std::vector<double> here(ida.state().begin(), ida.state().end());
         bank();
-        if (ida.start(ida.time(), here).ok) continue;
+        const TransientStatus again = ida.start(ida.time(), here);
+        if (again.ok) continue;
+        restart_failed = "; starting again there: " + again.message;
       }
       if (!status.ok) {
-        ended = fmt::format("IDA could not go on at t = {:.6g} s ({}, {} restarts)", ida.time(), status.flag_name,
-                            restarts);
+        ended = fmt::format("IDA could not go on at t = {:.6g} s ({}, {} restarts in a row){}", ida.time(),
+                            status.flag_name, restarts, restart_failed);
         break;
       }
+      restarts = 0;
       record(ida.time(), ida.state());
     }
     u.assign(ida.state().begin(), ida.state().end());
   }
   bank();
+  if (out.trajectory.empty()) {
+    out.solver_failed = true;
+    out.message = "duty cycle: the march did not start: " + ended;
+    return;
+  }
 
   const TrajectorySample& last = out.trajectory.back();
   CycleEvent& end = watch.event("end", last.time, schedule.at(last.time));
@@ -386,7 +406,7 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   if (!ended.empty()) {
     // A blow-up (IDA stopped by temperatures running away) is the runaway itself; any
     // other end is the solver's failure.
-    if (ran_away) {
+    if (runaway.running_away()) {
       out.message = fmt::format("duty cycle: the trajectory blew up after the runaway: {}", ended);
     } else {
       out.solver_failed = true;

@@ -102,6 +102,10 @@ class CommandComparison(unittest.TestCase):
         self.assertEqual(list(result.cycle_events["event"]), ["end", "worst"])
         with self.assertRaises(ValueError):
             twb.schedule(t=[0, 1], load=[100])
+        # A single value holds at every point; a single time is no schedule.
+        self.assertEqual([p["speed"] for p in twb.schedule(t=[0, 1], speed="3000 rpm")], ["3000 rpm"] * 2)
+        with self.assertRaises(ValueError):
+            twb.schedule(t=5, load=[100])
 
 
 class Errors(unittest.TestCase):

@@ -81,8 +81,9 @@ TEST(Schedule, FromACsvFileWithUnitsOrTheResultsOwnNames) {
   EXPECT_EQ(s.study.schedule[2].line, 5);
 
   // A duty cycle's trajectory.csv is a schedule.
+  // (Its steps closer than its ten digits tell apart: the first of them stands for all.)
   const TempScene results("t_s,load_N,speed_rad_s,ambient_C,tilt_rad,T_mean_C\n0,100,545,24,0.002,30\n"
-                          "5,120,545,24,0.002,31\n",
+                          "5,120,545,24,0.002,31\n5,120.0000001,545,24,0.002,31\n",
                           "_results", ".csv");
   const TempScene again(cycle_scene(results.path()), "_again");
   const Scene r = load_scene(again.path());

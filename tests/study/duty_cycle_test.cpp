@@ -302,6 +302,12 @@ TEST(DutyCycle, ACycleRunInTwoPartsEndsAsTheWholeCycle) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("another bearing"), std::string::npos) << e.what();
   }
+  // The other film sliding is another bearing too (operating.sliding is the bearing's).
+  const Scene other_film = load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
+                                      {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24",
+                                       "operating.sliding=washer_gear", "study={type: duty_cycle, schedule: [" + b + "]}"});
+  BearingModel other_film_model(other_film);
+  EXPECT_THROW(run_study(other_film_model, {}, RunOptions{.cycle_start = &end}), std::invalid_argument);
   std::remove(file.c_str());
 }
 

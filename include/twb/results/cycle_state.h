@@ -1,8 +1,8 @@
 // Where a duty cycle ended, to go on from there (twb run --continue-from DIR; docs/scenes.md,
 // duty_cycle): cycle_end_state.json in its results directory holds the time, the
 // schedule's inputs there, every unknown of the bearing's state (doubles bit for bit) and
-// the bearing they belong to (the resolved scene without its study, output and operating
-// sections, which a continued cycle may change).
+// the bearing they belong to (the resolved scene without its study and output sections and
+// the inputs a schedule sets, which a continued cycle may change).
 #pragma once
 
 #include <string>
@@ -17,8 +17,9 @@ struct CycleState {
   std::string bearing;  // bearing_of(the resolved scene)
 };
 
-// The resolved scene's text (describe_scene) without its study, output and operating
-// sections and its comments: what a state's unknowns mean.
+// The resolved scene's text (describe_scene) without its study and output sections and
+// the schedule's inputs (operating.load, .speed, .ambient, geometry.gear.tilt): what a
+// state's unknowns mean.
 std::string bearing_of(const std::string& resolved_scene);
 
 std::string cycle_state_json(const CycleState& state);

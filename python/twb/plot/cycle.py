@@ -14,6 +14,7 @@ EVENT_MARKS = {
     "crossing": ("tab:red", ":", "a limit crossed"),
     "recovery": ("tab:green", ":", "back within a limit"),
     "runaway": ("black", "-", "thermo-viscous runaway"),
+    "settled": ("gray", "--", "the runaway over"),
 }
 
 
