@@ -36,15 +36,21 @@ void BearingModel::parameter_derivative_given(std::span<const double> u, std::sp
 // A component row is (heat in − heat out)·s_k with s_k = 1/(reference conductance)
 // (K/W), oriented to −(gains − losses)·s_k; the node's balance ρ c t A_k dT/dt =
 // gains − losses then reads C_k dT̂/dt = −F_k with C_k = ρ c t A_k s_k, in seconds.
-std::vector<double> BearingModel::capacities() const {
+std::vector<double> BearingModel::heat_capacities() const {
   std::vector<double> c(std::size_t(size()), 0.0);
   for (const ComponentHeat& comp : components_) {
     for (int local = 0; local < comp.node_count(); ++local) {
       const int ring = comp.axisymmetric ? local : local / comp.grid.circumferential_nodes();
-      c[std::size_t(comp.offset + local)] =
-          comp.capacity_per_area * comp.node_area(ring) * layout_.row_scale(comp.offset + local);
+      c[std::size_t(comp.offset + local)] = comp.capacity_per_area * comp.node_area(ring);
     }
   }
+  return c;
+}
+
+std::vector<double> BearingModel::capacities() const {
+  std::vector<double> c = heat_capacities();
+  for (std::size_t k = 0; k < c.size(); ++k)
+    if (c[k] > 0.0) c[k] *= layout_.row_scale(Index(k));
   return c;
 }
 

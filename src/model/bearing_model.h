@@ -79,6 +79,9 @@ class BearingModel final : public SegregatedSystem {
   void parameter_derivative_given(std::span<const double> u, std::span<const double> residual,
                                   std::span<double> derivative) const override;
   std::vector<double> capacities() const override;
+  // Each unknown's heat capacity ρ·c·t·A in J/K: a body node's; 0 for every other unknown
+  // (the capacities above without the rows' scales).
+  std::vector<double> heat_capacities() const;
   std::vector<double> step_weights() const override;
   std::string block_name(Index k) const override { return layout_.block_of(k).name; }
   std::string describe_row(Index k) const override;  // row_meaning.cpp

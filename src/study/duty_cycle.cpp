@@ -141,9 +141,9 @@ class RunawayWatch {
   bool running_away() const { return running_away_; }
   // What changes at (t, u), the model's inputs those of t.
   Change at(double t, double hottest, std::span<const double> u) {
-    const bool accelerating = times_.size() == 2 && rate(t, hottest) > 0.0 &&
-                              rate(t, hottest) > (hottest_[1] - hottest_[0]) / (times_[1] - times_[0]);
     const bool known = times_.size() == 2;
+    const double now = known ? rate(t, hottest) : 0.0;
+    const bool accelerating = known && now > 0.0 && now > (hottest_[1] - hottest_[0]) / (times_[1] - times_[0]);
     if (times_.size() == 2) times_.erase(times_.begin()), hottest_.erase(hottest_.begin());
     times_.push_back(t);
     hottest_.push_back(hottest);
@@ -215,12 +215,10 @@ double hottest_at(const std::vector<TrajectorySample>& trajectory, double t) {
 // The bodies' heat content (J) at state u and ambient T_a: Σ ρ·c·t·A·(T_a + ϑ) over every
 // body node (the capacities of physics §7, in physical units).
 double heat_content(const BearingModel& model, std::span<const double> u, double ambient) {
+  const std::vector<double> capacity = model.heat_capacities();
   double e = 0.0;
-  for (const ComponentHeat& comp : model.components())
-    for (int local = 0; local < comp.node_count(); ++local) {
-      const int ring = comp.axisymmetric ? local : local / comp.grid.circumferential_nodes();
-      e += comp.capacity_per_area * comp.node_area(ring) * (ambient + u[std::size_t(comp.offset + local)]);
-    }
+  for (std::size_t k = 0; k < capacity.size(); ++k)
+    if (capacity[k] > 0.0) e += capacity[k] * (ambient + u[k]);
   return e;
 }
 

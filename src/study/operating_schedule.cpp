@@ -1,6 +1,7 @@
 #include "study/operating_schedule.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace twb {
@@ -26,10 +27,11 @@ SchedulePoint OperatingSchedule::on_segment(std::size_t k, double t) const {
   const double s = std::clamp((t - a.time) / (b.time - a.time), 0.0, 1.0);
   SchedulePoint p = s < 1.0 ? a : b;
   p.time = t;
-  p.load = a.load + s * (b.load - a.load);
-  p.speed = a.speed + s * (b.speed - a.speed);
-  p.ambient = a.ambient + s * (b.ambient - a.ambient);
-  p.tilt = a.tilt + s * (b.tilt - a.tilt);
+  // (std::lerp: each point's own values exactly at its time.)
+  p.load = std::lerp(a.load, b.load, s);
+  p.speed = std::lerp(a.speed, b.speed, s);
+  p.ambient = std::lerp(a.ambient, b.ambient, s);
+  p.tilt = std::lerp(a.tilt, b.tilt, s);
   return p;
 }
 
