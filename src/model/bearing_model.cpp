@@ -319,6 +319,23 @@ void BearingModel::evaluate(std::span<const double> u, std::span<double> residua
   if (!jacobian.empty() && !a.on_tape()) slot_tape_ = std::move(retaped);
 }
 
+void BearingModel::evaluate_in_time(std::span<const double> u, std::span<const double> rate, double cj,
+                                    std::span<double> residual, std::span<double> jacobian) const {
+  SlotTape retaped;
+  Assembler a(&pattern_, residual, jacobian, &rate_slot_tape_, &retaped);
+  const StateRates rates{rate, cj, imposed_tilt_rate_};
+  assemble(u, a, nullptr, &rates);
+  if (!jacobian.empty() && !a.on_tape()) rate_slot_tape_ = std::move(retaped);
+}
+
+std::vector<char> BearingModel::rate_unknowns() const {
+  std::vector<char> reads(std::size_t(size()), 0);
+  for (const Film& f : films_)
+    if (f.pressure_offset >= 0)
+      for (const Index k : f.rigid_columns()) reads[std::size_t(k)] = 1;
+  return reads;
+}
+
 double BearingModel::groove_supply_force() const {
   const Film& film = sliding_film();
   if (!film.groove_pressure) return 0.0;
@@ -329,11 +346,16 @@ double BearingModel::groove_supply_force() const {
   return *film.groove_pressure * area;
 }
 
-void BearingModel::assemble(std::span<const double> u, Assembler& a, AssemblyTotals* totals) const {
+void BearingModel::assemble(std::span<const double> u, Assembler& a, AssemblyTotals* totals,
+                            const StateRates* rates) const {
   AssemblyTotals local;
   AssemblyTotals& t = totals ? *totals : local;
   t.film.assign(films_.size(), FilmTotals{});
-  for (const auto& effect : effects_) effect->add_terms(u, a, t);
+  for (const auto& effect : effects_)
+    if (rates)
+      effect->add_terms_in_time(u, *rates, a, t);
+    else
+      effect->add_terms(u, a, t);
   // The films' loads were added with their signs; only the external load remains: eq [37].
   a.add_residual(rigid_offset_ + 3, -1.0);
   orient_rows(a);

@@ -82,6 +82,15 @@ class BearingModel final : public SegregatedSystem {
   // Each unknown's heat capacity ρ·c·t·A in J/K: a body node's; 0 for every other unknown
   // (the capacities above without the rows' scales).
   std::vector<double> heat_capacities() const;
+  // Real time (docs/physics.md section 19): the film's squeeze reads the rates of the
+  // sliding film's rigid unknowns (ĉ, γ̂x, γ̂y); none without hydrodynamics.
+  std::vector<char> rate_unknowns() const override;
+  void evaluate_in_time(std::span<const double> u, std::span<const double> rate, double cj,
+                        std::span<double> residual, std::span<double> jacobian) const override;
+  // The imposed gear tilt's rate (rad/s) the squeeze of film 2 reads in real time: a duty
+  // cycle's schedule sets it with the tilt.
+  void set_imposed_tilt_rate(double rate) { imposed_tilt_rate_ = rate; }
+  double imposed_tilt_rate() const { return imposed_tilt_rate_; }
   std::vector<double> step_weights() const override;
   std::string block_name(Index k) const override { return layout_.block_of(k).name; }
   std::string describe_row(Index k) const override;  // row_meaning.cpp
@@ -209,7 +218,8 @@ class BearingModel final : public SegregatedSystem {
  private:
   // The effects of the scene, in the order they add their terms (effect_registry.cpp).
   void register_effects();
-  void assemble(std::span<const double> u, Assembler& a, AssemblyTotals* totals) const;
+  void assemble(std::span<const double> u, Assembler& a, AssemblyTotals* totals,
+                const StateRates* rates = nullptr) const;
   void orient_rows(Assembler& a) const;
 
   // Viscosity temperature (K) at film node (i, j) and its gradient in the unknowns.
@@ -239,6 +249,9 @@ class BearingModel final : public SegregatedSystem {
   // then the last Jacobian pass's that left it (evaluate()): a model is used by one thread
   // at a time (study/parallel.h).
   mutable SlotTape slot_tape_;
+  // The same for passes in real time, whose squeeze terms add entries of their own.
+  mutable SlotTape rate_slot_tape_;
+  double imposed_tilt_rate_ = 0.0;
   std::vector<std::vector<LinearForm>> viscosity_forms_;  // per film, per node
 
   // Thermal deformation's shapes (film_shape.cpp): δ = form · u per film, per node.

@@ -49,6 +49,14 @@ struct ModelSetup {
 // A film's block name, e.g. "film 1 pressure".
 std::string fmt_film_block(int number, const char* what);
 
+// The state's rates in real time (docs/physics.md section 19), IDA's c_j and the imposed
+// gear tilt's rate: a term in the rates enters the iteration matrix as ∂/∂u + c_j·∂/∂u'.
+struct StateRates {
+  std::span<const double> rate;
+  double cj = 0.0;
+  double imposed_tilt_rate = 0.0;  // rad/s
+};
+
 class EffectAssembler {
  public:
   virtual ~EffectAssembler() = default;
@@ -56,6 +64,12 @@ class EffectAssembler {
   // assembler wants them (the same entries in the same order on every call: the
   // Jacobian's slot tape, sparse_assembly.h). totals gathers what reports need.
   virtual void add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const = 0;
+  // The same in real time, with the terms in the state's rates an effect has (the film's
+  // squeeze); most have none.
+  virtual void add_terms_in_time(std::span<const double> u, const StateRates& /*rates*/, Assembler& a,
+                                 AssemblyTotals& totals) const {
+    add_terms(u, a, totals);
+  }
 };
 
 }  // namespace twb

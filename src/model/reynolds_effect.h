@@ -9,15 +9,22 @@
 namespace twb {
 
 struct FilmTotals;
+class FilmFaceFlows;
 
 class ReynoldsEffect final : public EffectAssembler {
  public:
   // Declares the pressure block (and the content block) of every sliding film.
   explicit ReynoldsEffect(ModelSetup& setup);
   void add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const override;
+  // With the film's squeeze (docs/physics.md section 19).
+  void add_terms_in_time(std::span<const double> u, const StateRates& rates, Assembler& a,
+                         AssemblyTotals& totals) const override;
 
  private:
-  void add_film(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const;
+  void add_film(std::span<const double> u, const StateRates* rates, const Film& film, Assembler& a,
+                FilmTotals& totals) const;
+  void add_squeeze(std::span<const double> u, const StateRates* rates, const Film& film, const FilmFaceFlows& flows,
+                   Assembler& a) const;
 
   const BearingModel& model_;
   // Per interior node: p_ref times the Poiseuille diagonal of a uniform reference

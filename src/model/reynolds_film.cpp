@@ -19,6 +19,8 @@
 
 #include "model/assembly_totals.h"
 #include "model/film_face_flows.h"
+#include "physics/average_gap.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -68,10 +70,67 @@ ReynoldsEffect::ReynoldsEffect(ModelSetup& setup) : model_(setup.model) {
 
 void ReynoldsEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const {
   for (std::size_t f = 0; f < model_.films().size(); ++f)
-    if (model_.films()[f].pressure_offset >= 0) add_film(u, model_.films()[f], a, totals.film[f]);
+    if (model_.films()[f].pressure_offset >= 0) add_film(u, nullptr, model_.films()[f], a, totals.film[f]);
 }
 
-void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const {
+void ReynoldsEffect::add_terms_in_time(std::span<const double> u, const StateRates& rates, Assembler& a,
+                                       AssemblyTotals& totals) const {
+  for (std::size_t f = 0; f < model_.films().size(); ++f)
+    if (model_.films()[f].pressure_offset >= 0) add_film(u, &rates, model_.films()[f], a, totals.film[f]);
+}
+
+// The oil a control volume gains as its gap opens, ∫ ∂h̄T/∂t dA over it, joins its
+// outflow: w + squeeze = 0 where the film is full (docs/physics.md section 19). The
+// content is the average gap h̄T with flow factors and the nominal gap without, as the
+// Couette term carries; ∂h/∂t is the gap plane's rate in the rigid unknowns' rates, and
+// on film 2 the imposed tilt's (the shape's rate, thermal deformation's, is not in it:
+// physics §19). Each part of a control volume on a relief's edge has its own gap.
+// Registered in the structure pass too, whose pattern then holds every entry.
+void ReynoldsEffect::add_squeeze(std::span<const double> u, const StateRates* rates, const Film& film,
+                                 const FilmFaceFlows& flows, Assembler& a) const {
+  const BearingModel& model = model_;
+  const FilmMesh& m = film.mesh;
+  const ReynoldsOperator& op = flows.grid();
+  const bool factors = model.scene().effects.flow_factors;
+  const bool jac = a.wants_jacobian();
+  const GapPlane plane = film.plane(model.position(u));
+  const std::vector<double> delta = model.node_shapes(u, film);
+  const std::array<Index, 3> cols = film.rigid_columns();
+  const double tilt_rate = film.upper == ComponentId::gear && rates ? rates->imposed_tilt_rate : 0.0;
+  const double cj = rates ? rates->cj : 0.0;
+  for (int i = 1; i < m.radial_nodes() - 1; ++i) {
+    const double r = m.radius(i);
+    for (int j = 0; j < m.circumferential_nodes(); ++j) {
+      const int k = op.interior_index(i, j);
+      const Index row = flows.pressure_column(k);
+      if (row < 0) continue;
+      const double x = r * std::cos(m.angle(j)), y = r * std::sin(m.angle(j));
+      const std::array<double, 3> dh = film.gap_gradient(x, y);
+      double h_rate = -tilt_rate * x;
+      if (rates)
+        for (std::size_t d = 0; d < 3; ++d) h_rate += dh[d] * rates->rate[std::size_t(cols[d])];
+      const int node = m.node(i, j);
+      const double h = plane.at(x, y) + (delta.empty() ? 0.0 : delta[std::size_t(node)]);
+      const FaceRelief::NodeParts parts = film.relief.flat() ? FaceRelief::NodeParts{} : film.relief.node_parts(i, j);
+      // Σ over the parts of share · dh̄T/dh, and of share · d²h̄T/dh².
+      double slope = 0.0, curvature = 0.0;
+      for (int p = 0; p < parts.count; ++p) {
+        const double part_h = h + parts.relief[std::size_t(p)], share = parts.share[std::size_t(p)];
+        slope += share * (factors ? average_gap(part_h, film.sigma).slope : 1.0);
+        if (factors) curvature += share * average_gap_curvature(part_h, film.sigma);
+      }
+      const double area = m.node_area(i);  // the control volume's, r_i·Δr·Δθ
+      a.add_residual(row, area * slope * h_rate);
+      if (!jac) continue;
+      for (std::size_t d = 0; d < 3; ++d)
+        a.add_derivative(row, cols[d], area * dh[d] * (curvature * h_rate + slope * cj));
+      a.add_form(row, area * curvature * h_rate, model.shape_form(film, node));
+    }
+  }
+}
+
+void ReynoldsEffect::add_film(std::span<const double> u, const StateRates* rates, const Film& film, Assembler& a,
+                              FilmTotals& totals) const {
   const BearingModel& model = model_;
   const Scene& scene = model.scene();
   const bool jac = a.wants_jacobian();
@@ -108,6 +167,13 @@ void ReynoldsEffect::add_film(std::span<const double> u, const Film& film, Assem
       if (jac) flows.add_gradient(a, row, sign, flow);
     }
   });
+
+  if (rates || a.mode() == Assembler::Mode::structure) {
+    // The content's own rate, θ̇·h̄T, would make θ a differential unknown pinned at 1
+    // wherever the film is full: a DAE of index two, which the duty cycle refuses.
+    if (rates && jfo) throw InternalError("the film's squeeze with mass-conserving cavitation is not solved");
+    if (!jfo) add_squeeze(u, rates, film, flows, a);
+  }
 
   // A fed node's rows: p̂ = p_s / p_ref, and θ = 1.
   for (int k = 0; k < op.interior_count(); ++k) {

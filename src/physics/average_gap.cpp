@@ -32,6 +32,12 @@ ValueSlope average_gap(double h, double sigma) {
   return {h * opened_fraction + gaussian, opened_fraction};
 }
 
+double average_gap_curvature(double h, double sigma) {
+  const double scaled = h / (sigma * std::numbers::sqrt2);
+  if (scaled >= exact_open_threshold) return 0.0;
+  return std::exp(-scaled * scaled) / (sigma * std::sqrt(2.0 * std::numbers::pi));
+}
+
 void average_gap(std::span<const double> h, double sigma, std::span<ValueSlope> out) {
   // The scalar function's arithmetic, with its exp and erfc taken over the batch; points
   // open beyond the threshold get {h, 1} as there (their lanes compute a dummy value).

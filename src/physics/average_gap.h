@@ -13,6 +13,10 @@ namespace twb {
 // Value (m) and d h_T / dh = [1 + erf(h/(sigma sqrt2))]/2 (dimensionless).
 // Always positive for any h (including h <= 0), equal to h within 1.3e-4 for h >= 3 sigma.
 ValueSlope average_gap(double h, double sigma);
+// d²h_T/dh² = G(h) = exp(−h²/(2σ²))/(σ√(2π)) (1/m): how the content's slope changes with
+// the gap (the film's squeeze, docs/physics.md section 19); 0 where average_gap returns
+// {h, 1} (below 1e-16/σ there).
+double average_gap_curvature(double h, double sigma);
 // The same at every gap of a batch, into out (same size), with exp and erfc vectorized
 // (physics/batch_math.h): equal to the scalar values to a few ulp.
 void average_gap(std::span<const double> h, double sigma, std::span<ValueSlope> out);

@@ -433,6 +433,14 @@ void read_study(const MapReader& scene, Scene& out) {
                               "needs the thermal effect; add 'thermal' to effects",
                               type.path()));
       }
+      if (out.effects.hydrodynamics && out.effects.cavitation == CavitationModel::jfo) {
+        const Node type = study.get("type", "");
+        type.fail(fmt::format("{}: a duty cycle solves the film's squeeze (docs/physics.md section 19) with the "
+                              "Reynolds cavitation condition only: the mass-conserving model's film content would "
+                              "be a differential unknown held at 1 wherever the film is full (a DAE of index two, "
+                              "not solved); use hydrodynamics: {{cavitation: reynolds}}",
+                              type.path()));
+      }
       break;
     case StudyType::distress_map: {
       study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate",

@@ -5,7 +5,9 @@
 //
 // with the system's exact sparse Jacobian factored by KLU. Unknowns with C_k = 0 are
 // algebraic (on the bearing: pressures, film-node temperatures, rigid body; physics §7):
-// IDA keeps them on the constraint manifold F_alg = 0 at every step.
+// IDA keeps them on the constraint manifold F_alg = 0 at every step. In real time
+// (TransientSettings::real_time) F also holds the system's terms in u' (the film's
+// squeeze, physics §19), and the unknowns whose rates they read are differential too.
 //
 // A change of λ (a load step) is a discontinuity of the right-hand side: restart with
 // start(), which re-initializes IDA and recomputes consistent initial conditions. Inputs
@@ -44,6 +46,11 @@ struct TransientSettings {
   // the schedule moves), so that the residual is C·(u' + r) + F(u; t). Empty: λ fixed,
   // r = 0. The inputs must be smooth between the stop times the caller restarts at.
   std::function<double(double t)> inputs_at;
+  // A transient in physical time: the system's terms in the state's rates beyond C·u'
+  // (SteadySystem::rate_unknowns, the bearing's film squeeze) are on, and the unknowns
+  // they read are differential. A pseudo-time transient, which only decides which steady
+  // state a step reaches, leaves them off.
+  bool real_time = false;
   // Integrals of functions of the state along the march (IDAS's quadratures: the same
   // BDF formula as the state, kept out of the error test, so they are as accurate as the
   // state is): `count` of them, whose rates at (t, u) `rates` writes (the inputs set at t
@@ -88,7 +95,9 @@ class IdaTransient {
   // IDACalcIC(IDA_YA_YDP_INIT) solves the algebraic unknowns and u' with the
   // differential unknowns held at u0. Should CalcIC fail, one implicit Euler step by
   // KINSOL supplies the algebraic unknowns and the transient starts there, a
-  // thousandth of the fastest relaxation time later (time() says when).
+  // thousandth of the fastest relaxation time later (time() says when). In real time
+  // KINSOL solves for them directly (consistent_rates.h), from the rates of the march
+  // so far as the guess, and the transient starts at t0.
   TransientStatus start(double t0, std::span<const double> u0);
   // One internal step of IDA, never past t_stop (> time()).
   TransientStatus step(double t_stop);
@@ -99,6 +108,8 @@ class IdaTransient {
   std::span<const double> state() const;
   std::span<const double> rate() const;  // u'
   const std::vector<double>& capacities() const { return capacities_; }
+  // Whether unknown k is differential: a capacity, or a rate the system's terms read.
+  bool differential(std::size_t k) const { return differential_[k] != 0; }
   // max over differential unknowns of |a_k − b_k| / (rtol·|b_k| + atol_k): a distance in
   // units of the integration tolerance (1 = what IDA cannot resolve).
   double differential_distance(std::span<const double> a, std::span<const double> b) const;
@@ -113,10 +124,13 @@ class IdaTransient {
   TransientStatus status_from(int flag, const char* call) const;
   double fastest_time(std::span<const double> u) const;
   TransientStatus consistent_start(double t0, std::span<const double> u0, double fastest);
+  TransientStatus reinitialize(double t0, std::span<const double> u0, std::span<const double> rate0);
+  TransientStatus start_in_real_time(double t0, const std::vector<double>& held, double reference_rate);
 
   const SteadySystem& system_;
   TransientSettings settings_;
   std::vector<double> capacities_, absolute_;
+  std::vector<char> differential_;
   SundialsContext ctx_;
   Vector y_, yp_, id_, atol_, quadrature_;
   Matrix jac_;

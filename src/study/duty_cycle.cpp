@@ -284,9 +284,12 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
 
   // The inputs on the segment being marched, set at every evaluation's time.
   std::size_t segment = 0;
+  // Real time: the film's squeeze is on, the rigid body moves at its rate (physics §19).
   TransientSettings settings;
+  settings.real_time = true;
   settings.inputs_at = [&](double t) {
     OperatingSchedule::apply(model, schedule.on_segment(segment, t));
+    model.set_imposed_tilt_rate(schedule.tilt_rate(segment));
     return schedule.ambient_rate(segment);
   };
   // The heat generated, conducted to the ambient and carried off, integrated with the
@@ -386,6 +389,7 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
     u.assign(ida.state().begin(), ida.state().end());
   }
   bank();
+  model.set_imposed_tilt_rate(0.0);  // quasi-steady from here on (the worst moment's search)
   if (out.trajectory.empty()) {
     out.solver_failed = true;
     out.message = "duty cycle: the march did not start: " + ended;

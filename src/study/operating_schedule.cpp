@@ -41,6 +41,12 @@ double OperatingSchedule::ambient_rate(std::size_t k) const {
   return (b.ambient - a.ambient) / (b.time - a.time);
 }
 
+double OperatingSchedule::tilt_rate(std::size_t k) const {
+  const SchedulePoint& a = points_[k];
+  const SchedulePoint& b = points_[k + 1];
+  return (b.tilt - a.tilt) / (b.time - a.time);
+}
+
 void OperatingSchedule::apply(BearingModel& model, const SchedulePoint& p) {
   model.set_load(p.load);
   model.set_speed(p.speed);

@@ -30,6 +30,8 @@ class OperatingSchedule {
   SchedulePoint at(double t) const { return on_segment(segment_at(t), t); }
   // The ambient's rate on segment k (K/s): where a march restarts, the rates jump.
   double ambient_rate(std::size_t k) const;
+  // The gear tilt's rate on segment k (rad/s), which the film's squeeze reads.
+  double tilt_rate(std::size_t k) const;
 
   // Sets the point's load, speed, ambient and gear tilt on the bearing.
   static void apply(BearingModel& model, const SchedulePoint& p);

@@ -45,6 +45,18 @@ class SteadySystem {
   // Diagonal of C (time units of the transient); 0 marks an algebraic unknown.
   virtual std::vector<double> capacities() const = 0;
 
+  // The transient in real time (a duty cycle, docs/physics.md section 19) may read the
+  // rates of unknowns beyond C·u': the bearing's film squeeze, the rigid body's rates in
+  // the Reynolds rows. rate_unknowns() marks the unknowns whose rates those terms read
+  // (differential in the DAE beside those with C_k > 0; empty: none); evaluate_in_time
+  // gives the residual with them at u' = rate and, with a jacobian, the iteration matrix
+  // ∂/∂u + c_j·∂/∂u' of everything but C·u' in pattern(), which must hold its entries.
+  virtual std::vector<char> rate_unknowns() const { return {}; }
+  virtual void evaluate_in_time(std::span<const double> u, std::span<const double> /*rate*/, double /*cj*/,
+                                std::span<double> residual, std::span<double> jacobian) const {
+    evaluate(u, residual, jacobian);
+  }
+
   // Weights KINSOL measures a Newton step with (its maximum step is in these units).
   virtual std::vector<double> step_weights() const { return std::vector<double>(std::size_t(size()), 1.0); }
   // Name of the group of unknowns holding unknown k, for failure reports.

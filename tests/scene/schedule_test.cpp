@@ -119,7 +119,7 @@ TEST(Schedule, FaultsInTheSceneAreLocated) {
       {"[{t: 0 s}, {t: 0 s, load: 120 N}]", 4, 28, "the times must increase strictly"},
       {"[{t: 5 s}, {t: 2 s}]", 4, 28, "the times must increase strictly"},
       {"[{t: 0 s}, {t: 2 s, load: -10 N}]", 4, 39, "positive load"},
-      {"[{t: 0 s}, {t: 2 s, load: 0 N}]", 4, 39, "squeeze"},
+      {"[{t: 0 s}, {t: 2 s, load: 0 N}]", 4, 39, "axial play"},
       {"[{t: 0 s}, {t: 2 s, load: 10 rad}]", 4, 39, "a force"},
       {"[{t: 0 s}, {load: 10 N}]", 4, 24, "missing required key 't'"},
       {"[{t: 0 s}, {t: 1 s, sped: 3 rpm}]", 4, 33, "sped"},
@@ -175,6 +175,16 @@ TEST(Schedule, ADutyCycleNeedsTheThermalEffect) {
   const TempScene file(cycle_scene("[{t: 0 s}, {t: 1 s}]") + "effects: [hydrodynamics, asperity_contact]\n");
   const InputError e = testing::load_error(file.path());
   EXPECT_NE(std::string(e.what()).find("needs the thermal effect"), std::string::npos) << e.what();
+}
+
+// The film's squeeze is solved with the Reynolds cavitation condition only: with the
+// mass-conserving model the run is refused at the study's type, and says what to use.
+TEST(Schedule, ADutyCycleRefusesTheMassConservingCavitationModel) {
+  const TempScene file(cycle_scene("[{t: 0 s}, {t: 1 s}]") +
+                       "effects: !replace [{hydrodynamics: {cavitation: jfo}}, asperity_contact, thermal]\n");
+  const InputError e = testing::load_error(file.path());
+  EXPECT_EQ(e.line(), 3);
+  EXPECT_NE(std::string(e.what()).find("cavitation: reynolds"), std::string::npos) << e.what();
 }
 
 }  // namespace
