@@ -425,8 +425,10 @@ void read_study(const MapReader& scene, Scene& out) {
       break;
     case StudyType::duty_cycle:
       // The schedule is read once the operating point is known (read_schedule).
-      study.restrict_to({"type", "schedule", "failure_load_at_worst"}, "with type: duty_cycle");
+      study.restrict_to({"type", "schedule", "failure_load_at_worst", "relative_tolerance"}, "with type: duty_cycle");
       s.failure_load_at_worst = study.boolean("failure_load_at_worst", s.failure_load_at_worst);
+      s.march_tolerance =
+          study.quantity("relative_tolerance", si::dimensionless, bounds::march_tolerance, s.march_tolerance);
       if (!out.effects.thermal) {
         const Node type = study.get("type", "");
         type.fail(fmt::format("{}: a duty cycle marches the bodies' heat in time (docs/physics.md section 19), so it "

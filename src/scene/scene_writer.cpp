@@ -288,6 +288,7 @@ void write_numerics(Writer& w, const Scene& s) {
                             quantity(p.load, "N"), quantity(p.speed, "rad/s"), quantity(p.ambient, "K"),
                             quantity(p.tilt, "rad")));
     w.entry(1, "failure_load_at_worst", st.failure_load_at_worst ? "true" : "false");
+    w.entry(1, "relative_tolerance", quantity(st.march_tolerance, "1"));
   }
   if (st.type == StudyType::calibration) {
     w.entry(1, "data", quoted(std::filesystem::absolute(st.data).string()));

@@ -287,6 +287,7 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   // Real time: the film's squeeze is on, the rigid body moves at its rate (physics §19).
   TransientSettings settings;
   settings.real_time = true;
+  settings.relative_tolerance = model.scene().study.march_tolerance;
   settings.inputs_at = [&](double t) {
     OperatingSchedule::apply(model, schedule.on_segment(segment, t));
     model.set_imposed_tilt_rate(schedule.tilt_rate(segment));

@@ -58,6 +58,22 @@ TEST(Schedule, TheFailureLoadAtTheWorstMomentMayBeLeftOut) {
   EXPECT_FALSE(load_scene(resolved.path()).study.failure_load_at_worst);
 }
 
+// The march's relative tolerance: 1e-6 by default, a looser one read and kept by the
+// resolved scene, one outside its range located at its key.
+TEST(Schedule, TheMarchsToleranceMayBeSet) {
+  const TempScene plain(cycle_scene("[{t: 0 s}, {t: 1 s}]"));
+  EXPECT_EQ(load_scene(plain.path()).study.march_tolerance, 1e-6);
+  const TempScene loose(cycle_scene("[{t: 0 s}, {t: 1 s}]\n  relative_tolerance: 1e-4"), "_loose");
+  const Scene s = load_scene(loose.path());
+  EXPECT_EQ(s.study.march_tolerance, 1e-4);
+  const TempScene resolved(describe_scene(s), "_resolved");
+  EXPECT_EQ(load_scene(resolved.path()).study.march_tolerance, 1e-4);
+  const TempScene wrong(cycle_scene("[{t: 0 s}, {t: 1 s}]\n  relative_tolerance: 0.5"), "_wrong");
+  const InputError e = testing::load_error(wrong.path());
+  EXPECT_EQ(e.line(), 5);
+  EXPECT_NE(std::string(e.what()).find("from 1e-10 to 1e-3"), std::string::npos) << e.what();
+}
+
 // A speed may turn negative (the washer turns back); the points join in a straight line.
 TEST(Schedule, ASpeedMayTurnBack) {
   const TempScene file(cycle_scene("[{t: 0 s}, {t: 10 s, speed: -100 rad/s}]"));

@@ -185,5 +185,82 @@ TEST(IdaTransient, BlowUpIsReportedByFlagName) {
   std::cout << "blow-up at t = " << ida.time() << ": " << s.message << "\n";
 }
 
+// A lumped body in real time (docs/physics.md section 19): a plate of thickness t_b,
+// heated over its face by a flux q and losing heat through its thickness to an ambient
+// T_a(t), uniform in its plane. With ϑ = T − T_a its balance, in the bearing's form
+// (a row scaled by t_b/(K·A), in kelvin), is
+//     τ·(ϑ' + T_a') + ϑ − q·t_b/K = 0,     τ = ρ·c·t_b²/K,
+// so that with q and T_a' held over a segment ϑ relaxes to ϑ_∞ = q·t_b/K − τ·T_a' as
+// exp(−t/τ). The schedule's inputs move through TransientSettings::inputs_at, which
+// returns T_a', as a duty cycle's do.
+class LumpedBody final : public SteadySystem {
+ public:
+  LumpedBody() {
+    pattern_.rows = pattern_.cols = 1;
+    pattern_.row_start = {0, 1};
+    pattern_.column = {0};
+  }
+  Index size() const override { return 1; }
+  const SparsePattern& pattern() const override { return pattern_; }
+  void evaluate(std::span<const double> u, std::span<double> r, std::span<double> jac) const override {
+    r[0] = u[0] - flux * thickness / conductivity;
+    if (!jac.empty()) jac[0] = 1.0;
+  }
+  double parameter() const override { return flux; }
+  void set_parameter(double v) override { flux = v; }
+  void parameter_derivative(std::span<const double>, std::span<double> d) const override {
+    d[0] = -thickness / conductivity;
+  }
+  std::vector<double> capacities() const override { return {time_constant()}; }
+  static double time_constant() { return density * specific_heat * thickness * thickness / conductivity; }
+
+  // Steel, the paper's carrier: τ = 6.1 s.
+  static constexpr double density = 7850.0, specific_heat = 470.0, thickness = 10e-3, conductivity = 60.5;
+  double flux = 0.0;  // W/m²
+
+ private:
+  SparsePattern pattern_;
+};
+
+// Heated for 20 s at 50 kW/m² while the ambient rises at 0.5 K/s, then cooled for 40 s with
+// the flux off and the ambient held: the march restarts at the kink, as a duty cycle does
+// at a point of its schedule. The body's rise ϑ against the closed form of each segment,
+// in units of IDA's local tolerance, bounded as on the linear cooling above (a global
+// error of at most the local one times the steps per relaxation time).
+TEST(IdaTransient, ALumpedBodyHeatsAndCoolsInRealTimeAsTheClosedFormSays) {
+  LumpedBody body;
+  const double tau = LumpedBody::time_constant(), q = 5e4, ramp = 0.5, heated = 20.0, end = 60.0;
+  std::size_t segment = 0;
+  TransientSettings settings;
+  settings.real_time = true;
+  settings.inputs_at = [&](double) {
+    body.flux = segment == 0 ? q : 0.0;
+    return segment == 0 ? ramp : 0.0;
+  };
+  IdaTransient ida(body, settings);
+  const double rise = q * LumpedBody::thickness / LumpedBody::conductivity;  // 8.26 K
+  auto expect_follows = [&](double t0, double t1, double start, double settles) {
+    const TransientStatus begun = ida.start(t0, std::vector<double>{start});
+    ASSERT_TRUE(begun.ok) << begun.message;
+    EXPECT_NEAR(ida.rate()[0], (settles - start) / tau, 1e-12);  // the consistent rate
+    double worst = 0.0;
+    long samples = 0;
+    const TransientStatus done = ida.advance(t1, [&](double t, std::span<const double> u) {
+      const double exact = settles + (start - settles) * std::exp(-(t - t0) / tau);
+      worst = std::max(worst, std::abs(u[0] - exact) /
+                                  (settings.relative_tolerance * std::abs(exact) + settings.absolute_tolerance));
+      ++samples;
+    });
+    ASSERT_TRUE(done.ok) << done.message;
+    EXPECT_LE(worst, std::max(1.0, double(samples) * tau / (t1 - t0)));
+    EXPECT_GT(samples, 10);
+  };
+  expect_follows(0.0, heated, 0.0, rise - tau * ramp);
+  segment = 1;
+  const double at_kink = ida.state()[0];
+  EXPECT_NEAR(at_kink, (rise - tau * ramp) * (1.0 - std::exp(-heated / tau)), 1e-5);
+  expect_follows(heated, end, at_kink, 0.0);
+}
+
 }  // namespace
 }  // namespace twb

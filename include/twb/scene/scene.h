@@ -383,6 +383,8 @@ struct Study {
   std::string schedule_file;
   // duty_cycle: the failure load at the cycle's worst moment (a failure search there).
   bool failure_load_at_worst = true;
+  // duty_cycle: IDA's relative tolerance a step (study.relative_tolerance).
+  double march_tolerance = 1e-6;
 };
 
 struct Output {
