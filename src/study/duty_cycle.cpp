@@ -31,23 +31,17 @@ namespace {
 // failure to go on is read as the trajectory's end.
 constexpr int kRestarts = 3;
 
-// How far a criterion lets the state move from rest: a temperature's limit above the
-// ambient, the least film ratio itself (docs/physics.md section 19); the margin divided by
-// it is 1 at rest and 0 on the limit, whatever the criterion's unit.
+// How far a criterion lets the state move from rest: a temperature's margin with every
+// temperature at the ambient (its limit above it), the least film ratio itself (docs/
+// physics.md section 19); the margin divided by it is 1 at rest and 0 on the limit,
+// whatever the criterion's unit.
 std::optional<double> allowance(LimitKind kind, const OperatingLimits& limits, double ambient) {
-  switch (kind) {
-    case LimitKind::oil_temperature: return limits.max_oil_temperature - ambient;
-    case LimitKind::flash_temperature: return limits.flash_temperature - ambient;
-    case LimitKind::carrier_temperature:
-    case LimitKind::washer_temperature:
-    case LimitKind::gear_temperature: {
-      const std::size_t body = kind == LimitKind::carrier_temperature ? 0 : kind == LimitKind::washer_temperature ? 1 : 2;
-      if (!limits.material_temperature[body]) return std::nullopt;
-      return *limits.material_temperature[body] - ambient;
-    }
-    case LimitKind::film_ratio: return limits.min_film_ratio;
-    default: return std::nullopt;
-  }
+  if (kind == LimitKind::film_ratio) return limits.min_film_ratio;
+  LimitValues rest;
+  rest.thermal = true;
+  rest.washer_mean_temperature = rest.max_film_temperature = ambient;
+  rest.body_temperature.fill(ambient);
+  return failure_margin(kind, rest, limits);
 }
 
 // Each failure criterion's margin in its own unit (none where the scene applies none).
