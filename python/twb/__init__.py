@@ -190,9 +190,9 @@ class Scene:
     def study_type(self):
         return self._scene.study_type
 
-    def run(self, progress=None, threads=0):
+    def run(self, progress=None, threads=0, continue_from=None):
         """Runs the scene's study (see twb.run)."""
-        return Results(_core().run(self._scene, progress, threads), self)
+        return Results(_core().run(self._scene, progress, threads, _cycle_end_text(continue_from)), self)
 
     def __repr__(self):
         extra = f", overrides={self.overrides!r}" if self.overrides else ""
@@ -233,6 +233,9 @@ class Results:
         self.solver_failed = bool(raw["solver_failed"])
         self.message = raw["message"]
         self.timings = dict(raw["timings"])
+        # A duty cycle's end state (cycle_end_state.json's text) where it ran to its end:
+        # twb.run(..., continue_from=these results) goes on from it.
+        self.cycle_end = raw.get("cycle_end")
 
     states = property(lambda self: self.tables.get("states"))
     distress = property(lambda self: self.tables.get("distress"))
@@ -286,18 +289,39 @@ class Bearing:
         self._bearing.forget_state()
 
 
-def run(scene, overrides=None, progress=None, threads=0):
+def run(scene, overrides=None, progress=None, threads=0, continue_from=None):
     """Runs the study a scene names and returns its Results.
 
     scene: a path or a twb.Scene; overrides: as for twb.Scene (applied after the
     scene's own); progress: called with each progress line twb run would print (from
     the solving threads, one at a time); threads: for the study's independent searches,
-    0 = one per core (the results do not depend on it). The GIL is released while
-    solving. An exception from the callback, or Ctrl-C, stops the study: the searches
-    under way finish, no new one begins, and the exception is raised then."""
+    0 = one per core (the results do not depend on it); continue_from: a duty cycle goes
+    on from where an earlier one ended, its Results or its results directory (as twb run
+    --continue-from; the schedule's first point must be that end's time and inputs). The
+    GIL is released while solving. An exception from the callback, or Ctrl-C, stops the
+    study: the searches under way finish, no new one begins, and the exception is raised
+    then."""
     if isinstance(scene, Scene):
         if overrides:
             scene = scene.override(overrides)
     else:
         scene = Scene(scene, overrides)
-    return scene.run(progress=progress, threads=threads)
+    return scene.run(progress=progress, threads=threads, continue_from=continue_from)
+
+
+def _cycle_end_text(continue_from):
+    """The end state's JSON text of a duty cycle's Results or results directory, or None."""
+    if continue_from is None:
+        return None
+    if isinstance(continue_from, Results):
+        if continue_from.cycle_end is None:
+            raise ValueError("continue_from: these results hold no cycle's end (not a duty cycle, "
+                             "or one that did not run to its end)")
+        return continue_from.cycle_end
+    path = os.path.join(os.fspath(continue_from), "cycle_end_state.json")
+    try:
+        with open(path, encoding="utf-8") as f:
+            return f.read()
+    except OSError as e:
+        raise ValueError(f"continue_from: cannot read {path} (a duty cycle's results directory holds one): "
+                         f"{e.strerror}") from None

@@ -7,7 +7,8 @@
 //
 // w is the net volumetric outflow of a node's control volume: Couette outflow minus
 // Poiseuille inflow. Where the film ruptures (p = 0, diverging gap) more oil leaves
-// than enters, so w ≥ 0 there, and w = 0 wherever p > 0.
+// than enters, so w ≥ 0 there, and w = 0 wherever p > 0. In real time (a duty cycle)
+// the balance is w plus the oil the control volume gains as its gap opens (add_squeeze).
 //
 // The discretization itself (control volumes, faces, the face flux and which balances
 // it enters) is ReynoldsOperator's, the face fluxes of the bearing's film with their
@@ -81,12 +82,15 @@ void ReynoldsEffect::add_terms_in_time(std::span<const double> u, const StateRat
 
 // The oil a control volume gains as its gap opens, ∫ ∂h̄T/∂t dA over it, joins its
 // outflow: w + squeeze = 0 where the film is full (docs/physics.md section 19). The
-// content is the average gap h̄T with flow factors and the nominal gap without, as the
-// Couette term carries; ∂h/∂t is the gap plane's rate in the rigid unknowns' rates, and
-// on film 2 the imposed tilt's (the shape's rate, thermal deformation's, is not in it:
-// physics §19). Each part of a control volume on a relief's edge has its own gap.
-// Registered in the structure pass too, whose pattern then holds every entry.
-void ReynoldsEffect::add_squeeze(std::span<const double> u, const StateRates* rates, const Film& film,
+// content is the average gap h̄T with flow factors and the nominal gap without (what the
+// Couette term carries but its shear flow factor's part, a flux, not oil held in the
+// gap); ∂h/∂t is the gap plane's rate in the rigid unknowns' rates, and on film 2 the
+// imposed tilt's (the shape's rate, thermal deformation's, is not in it: physics §19).
+// Each part of a control volume on a relief's edge has its own gap. Its entries are the
+// node's rigid columns and shape form, which every face flux of the node already brings
+// into the pattern (FilmFaceFlows::add_gradient): the structure pass needs none of its
+// own, and the steady passes keep the structure pass's slot tape.
+void ReynoldsEffect::add_squeeze(std::span<const double> u, const StateRates& rates, const Film& film,
                                  const FilmFaceFlows& flows, Assembler& a) const {
   const BearingModel& model = model_;
   const FilmMesh& m = film.mesh;
@@ -96,8 +100,7 @@ void ReynoldsEffect::add_squeeze(std::span<const double> u, const StateRates* ra
   const GapPlane plane = film.plane(model.position(u));
   const std::vector<double> delta = model.node_shapes(u, film);
   const std::array<Index, 3> cols = film.rigid_columns();
-  const double tilt_rate = film.upper == ComponentId::gear && rates ? rates->imposed_tilt_rate : 0.0;
-  const double cj = rates ? rates->cj : 0.0;
+  const double tilt_rate = film.upper == ComponentId::gear ? rates.imposed_tilt_rate : 0.0;
   for (int i = 1; i < m.radial_nodes() - 1; ++i) {
     const double r = m.radius(i);
     for (int j = 0; j < m.circumferential_nodes(); ++j) {
@@ -107,12 +110,10 @@ void ReynoldsEffect::add_squeeze(std::span<const double> u, const StateRates* ra
       const double x = r * std::cos(m.angle(j)), y = r * std::sin(m.angle(j));
       const std::array<double, 3> dh = film.gap_gradient(x, y);
       double h_rate = -tilt_rate * x;
-      if (rates)
-        for (std::size_t d = 0; d < 3; ++d) h_rate += dh[d] * rates->rate[std::size_t(cols[d])];
+      for (std::size_t d = 0; d < 3; ++d) h_rate += dh[d] * rates.rate[std::size_t(cols[d])];
       const int node = m.node(i, j);
       const double h = plane.at(x, y) + (delta.empty() ? 0.0 : delta[std::size_t(node)]);
       const FaceRelief::NodeParts parts = film.relief.flat() ? FaceRelief::NodeParts{} : film.relief.node_parts(i, j);
-      // Σ over the parts of share · dh̄T/dh, and of share · d²h̄T/dh².
       double slope = 0.0, curvature = 0.0;
       for (int p = 0; p < parts.count; ++p) {
         const double part_h = h + parts.relief[std::size_t(p)], share = parts.share[std::size_t(p)];
@@ -123,7 +124,7 @@ void ReynoldsEffect::add_squeeze(std::span<const double> u, const StateRates* ra
       a.add_residual(row, area * slope * h_rate);
       if (!jac) continue;
       for (std::size_t d = 0; d < 3; ++d)
-        a.add_derivative(row, cols[d], area * dh[d] * (curvature * h_rate + slope * cj));
+        a.add_derivative(row, cols[d], area * dh[d] * (curvature * h_rate + slope * rates.cj));
       a.add_form(row, area * curvature * h_rate, model.shape_form(film, node));
     }
   }
@@ -168,11 +169,11 @@ void ReynoldsEffect::add_film(std::span<const double> u, const StateRates* rates
     }
   });
 
-  if (rates || a.mode() == Assembler::Mode::structure) {
+  if (rates) {
     // The content's own rate, θ̇·h̄T, would make θ a differential unknown pinned at 1
     // wherever the film is full: a DAE of index two, which the duty cycle refuses.
-    if (rates && jfo) throw InternalError("the film's squeeze with mass-conserving cavitation is not solved");
-    if (!jfo) add_squeeze(u, rates, film, flows, a);
+    if (jfo) throw InternalError("the film's squeeze with mass-conserving cavitation is not solved");
+    add_squeeze(u, *rates, film, flows, a);
   }
 
   // A fed node's rows: p̂ = p_s / p_ref, and θ = 1.

@@ -138,7 +138,14 @@ class ProgressRelay {
   std::atomic<bool> stop_{false};
 };
 
-py::dict run_scene(const twb::Scene& scene, py::object progress, int threads) {
+// continue_from: a duty cycle's end state (cycle_end_state.json's text) to go on from.
+py::dict run_scene(const twb::Scene& scene, py::object progress, int threads, std::optional<std::string> continue_from) {
+  std::optional<twb::CycleState> cycle_start;
+  if (continue_from) {
+    if (scene.study.type != twb::StudyType::duty_cycle)
+      throw std::invalid_argument("continue_from goes on with a duty cycle; this scene's study is another");
+    cycle_start = twb::cycle_state_of(*continue_from, "continue_from");
+  }
   ProgressRelay relay(std::move(progress));
   const twb::ProgressReport report = relay.report();
   twb::StudyOutcome outcome;
@@ -147,7 +154,8 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads) {
     const auto t0 = std::chrono::steady_clock::now();
     twb::Bearing bearing(scene);
     const double setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    outcome = bearing.run_study(report, twb::RunOptions{.threads = threads, .stop = relay.stop()});
+    outcome = bearing.run_study(report, twb::RunOptions{.threads = threads, .stop = relay.stop(),
+                                                        .cycle_start = cycle_start ? &*cycle_start : nullptr});
     outcome.timings.setup_ms = setup_ms;
     outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
@@ -177,6 +185,7 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads) {
   out["solver_failed"] = outcome.solver_failed;
   out["message"] = outcome.message;
   out["timings"] = timings_dict(outcome.timings);
+  out["cycle_end"] = outcome.cycle_end ? py::object(py::str(twb::cycle_state_json(*outcome.cycle_end))) : py::none();
   return out;
 }
 
@@ -245,7 +254,8 @@ PYBIND11_MODULE(_twb, m) {
         return out;
       },
       py::arg("path"), py::arg("overrides") = std::vector<std::string>{});
-  m.def("run", &run_scene, py::arg("scene"), py::arg("progress") = py::none(), py::arg("threads") = 0);
+  m.def("run", &run_scene, py::arg("scene"), py::arg("progress") = py::none(), py::arg("threads") = 0,
+        py::arg("continue_from") = py::none());
 
   // One bearing for point after point (twb::Bearing): each state a mapping of states.csv's
   // columns to their values, unrounded.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 
@@ -55,9 +56,14 @@ std::string cycle_state_json(const CycleState& s) {
 CycleState read_cycle_state(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::invalid_argument(fmt::format("{}: cannot read it (a results directory of a duty cycle holds one)", path));
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return cycle_state_of(text, path);
+}
+
+CycleState cycle_state_of(const std::string& json, const std::string& path) {
   Json j;
   try {
-    j = Json::parse(in);
+    j = Json::parse(json);
   } catch (const Json::exception& e) {
     throw std::invalid_argument(fmt::format("{}: not a cycle's end state (JSON: {})", path, e.what()));
   }

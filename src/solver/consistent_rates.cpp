@@ -47,13 +47,13 @@ void ConsistentRates::evaluate(std::span<const double> z, std::span<double> resi
   // their difference is ∂F/∂y' (nonzero only on the columns of the rates it reads).
   system_.evaluate_in_time(y_, rate_, 0.0, residual, jacobian);
   if (!jacobian.empty()) {
-    jacobian_in_rates_.resize(jacobian.size());
-    system_.evaluate_in_time(y_, rate_, 1.0, scratch_, jacobian_in_rates_);
+    matrix_at_unit_cj_.resize(jacobian.size());
+    system_.evaluate_in_time(y_, rate_, 1.0, scratch_, matrix_at_unit_cj_);
     const SparsePattern& p = system_.pattern();
     for (Index r = 0; r < p.rows; ++r)
       for (Index e = p.row_start[std::size_t(r)]; e < p.row_start[std::size_t(r + 1)]; ++e) {
         const std::size_t c = std::size_t(p.column[std::size_t(e)]);
-        if (differential_[c]) jacobian[std::size_t(e)] = jacobian_in_rates_[std::size_t(e)] - jacobian[std::size_t(e)];
+        if (differential_[c]) jacobian[std::size_t(e)] = matrix_at_unit_cj_[std::size_t(e)] - jacobian[std::size_t(e)];
       }
   }
   for (std::size_t k = 0; k < rate_.size(); ++k) {

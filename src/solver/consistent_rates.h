@@ -44,19 +44,19 @@ class ConsistentRates final : public SteadySystem {
   void parameter_derivative(std::span<const double> z, std::span<double> derivative) const override;
   std::vector<double> capacities() const override { return std::vector<double>(std::size_t(size()), 0.0); }
   // KINSOL caps a Newton step in these units: the system's own for the algebraic
-  // unknowns; a rate may move as far as it must.
+  // unknowns, 1e-3 for a rate (as for a field: a step may move it by 1e3 times the cap,
+  // 2e4 of its scaled units a second with the default cap of 20).
   std::vector<double> step_weights() const override;
   std::string block_name(Index k) const override { return system_.block_name(k); }
   std::string describe_row(Index k) const override { return system_.describe_row(k); }
 
  private:
   const SteadySystem& system_;
-  std::vector<double> held_;
-  const std::vector<double>& capacities_;
-  const std::vector<char>& differential_;
+  std::vector<double> held_, capacities_;
+  std::vector<char> differential_;
   double reference_rate_;
   std::vector<Index> diagonal_;  // position of (k, k) in the pattern, −1 where absent
-  mutable std::vector<double> y_, rate_, scratch_, jacobian_in_rates_;
+  mutable std::vector<double> y_, rate_, scratch_, matrix_at_unit_cj_;
 };
 
 }  // namespace twb

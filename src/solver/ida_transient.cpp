@@ -91,8 +91,8 @@ int jacobian_fn(double t, double cj, N_Vector y, N_Vector yp, N_Vector, SUNMatri
   return guarded_callback(cb->failure, [&]() -> int {
     const auto n = std::size_t(N_VGetLength(y));
     cb->set_inputs(t);
-    cb->evaluate(std::span<const double>(N_VGetArrayPointer(y), n), std::span<const double>(N_VGetArrayPointer(yp), n), cj,
-                 cb->scratch, cb->system_values);
+    const std::span<const double> state(N_VGetArrayPointer(y), n), rate(N_VGetArrayPointer(yp), n);
+    cb->evaluate(state, rate, cj, cb->scratch, cb->system_values);
     std::fill(cb->values.begin(), cb->values.end(), 0.0);
     for (std::size_t e = 0; e < cb->from_system.size(); ++e)
       cb->values[std::size_t(cb->from_system[e])] = cb->system_values[e];
@@ -142,7 +142,8 @@ IdaTransient::IdaTransient(const SteadySystem& system, TransientSettings setting
   if (Index(absolute_.size()) != n) throw InternalError("IdaTransient: one absolute tolerance per unknown");
   differential_.assign(std::size_t(n), 0);
   const std::vector<char> rates_read = settings_.real_time ? system_.rate_unknowns() : std::vector<char>{};
-  if (!rates_read.empty() && Index(rates_read.size()) != n) throw InternalError("IdaTransient: rate_unknowns() has the wrong size");
+  if (!rates_read.empty() && Index(rates_read.size()) != n)
+    throw InternalError("IdaTransient: rate_unknowns() has the wrong size");
   for (std::size_t k = 0; k < std::size_t(n); ++k)
     differential_[k] = capacities_[k] > 0.0 || (!rates_read.empty() && rates_read[k]);
 

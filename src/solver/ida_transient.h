@@ -96,8 +96,8 @@ class IdaTransient {
   // differential unknowns held at u0. Should CalcIC fail, one implicit Euler step by
   // KINSOL supplies the algebraic unknowns and the transient starts there, a
   // thousandth of the fastest relaxation time later (time() says when). In real time
-  // KINSOL solves for them directly (consistent_rates.h), from the rates of the march
-  // so far as the guess, and the transient starts at t0.
+  // KINSOL solves for them directly (consistent_rates.h), from rates of zero (a restart
+  // is a function of the state alone), and the transient starts at t0.
   TransientStatus start(double t0, std::span<const double> u0);
   // One internal step of IDA, never past t_stop (> time()).
   TransientStatus step(double t_stop);

@@ -25,6 +25,7 @@
 
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
+#include "solver/consistent_rates.h"
 
 namespace twb {
 namespace {
@@ -201,6 +202,21 @@ TEST_P(JacobianTest, InRealTimeMatchesCentralDifferences) {
         },
         std::string(e.name) + " in real time, trial " + std::to_string(trial));
   }
+  // The consistent start's system (solver/consistent_rates.h): its unknowns are the
+  // algebraic unknowns and the differential ones' rates, its Jacobian ∂G/∂y and ∂G/∂y' by
+  // column, built from two of the model's matrices (c_j = 0 and 1).
+  const std::vector<double> capacities = m->capacities();
+  const std::vector<char> reads = m->rate_unknowns();
+  std::vector<char> differential(capacities.size());
+  for (std::size_t k = 0; k < differential.size(); ++k) differential[k] = capacities[k] > 0.0 || reads[k];
+  const std::vector<double> u = random_state(*m, rng);
+  std::vector<double> rate(u.size());
+  for (double& v : rate) v = 5.0 * unit(rng);
+  const ConsistentRates start(*m, u, capacities, differential, 0.4);
+  expect_differences_match(
+      *m, start.unknowns_of(u, rate),
+      [&](std::span<const double> z, std::span<double> r, std::span<double> jac) { start.evaluate(z, r, jac); },
+      std::string(e.name) + " consistent start");
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -107,6 +107,36 @@ class CommandComparison(unittest.TestCase):
         with self.assertRaises(ValueError):
             twb.schedule(t=5, load=[100])
 
+    def test_duty_cycle_continued_from_its_results(self):
+        """A cycle run in two parts, the second continued from the first's Results (and
+        from the command's results directory), ends as the whole cycle does, to the last bit
+        (tests/study/duty_cycle_test.cpp: IDA restarts at the same point from the same state)."""
+        first = [{"t": "0 s", "load": "100 N"}, {"t": "4 s", "load": "140 N"}, {"t": "8 s"}]
+        second = [{"t": "8 s", "load": "140 N"}, {"t": "12 s", "load": "120 N"}, {"t": "16 s"}]
+
+        def cycle(points):
+            return dict(COARSE, **{"operating.load": "100 N", "study": {
+                "type": "duty_cycle", "failure_load_at_worst": False, "schedule": points}})
+
+        whole = twb.run(SCENE, overrides=cycle(first + second[1:]))
+        part = twb.run(SCENE, overrides=cycle(first))
+        self.assertIsNotNone(part.cycle_end)
+        rest = twb.run(SCENE, overrides=cycle(second), continue_from=part)
+        for column in ("T_max_C", "hmin_over_sigma", "torque_Nm"):
+            self.assertEqual(rest.trajectory[column][-1], whole.trajectory[column][-1], column)
+        with tempfile.TemporaryDirectory(prefix="twb_python_") as out:
+            args = [TWB, "run", SCENE, "--out", out, "--quiet"]
+            for o in twb.override_texts(cycle(first)):
+                args += ["--set", o]
+            subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
+            from_directory = twb.run(SCENE, overrides=cycle(second), continue_from=out)
+            self.assertEqual(from_directory.trajectory["T_max_C"][-1], whole.trajectory["T_max_C"][-1])
+        with self.assertRaises(ValueError):  # a point study has no cycle's end
+            twb.run(SCENE, overrides=cycle(second), continue_from=twb.run(SCENE, overrides=dict(COARSE, **POINT)))
+        with self.assertRaises(ValueError):  # nor has an empty directory
+            with tempfile.TemporaryDirectory(prefix="twb_python_") as empty:
+                twb.run(SCENE, overrides=cycle(second), continue_from=empty)
+
 
 class Errors(unittest.TestCase):
     def test_malformed_scene_raises_scene_error_with_its_line(self):

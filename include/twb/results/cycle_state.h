@@ -26,5 +26,7 @@ std::string cycle_state_json(const CycleState& state);
 // std::invalid_argument naming `path` and what is wrong with it (not there, not JSON, a
 // field missing or of the wrong kind).
 CycleState read_cycle_state(const std::string& path);
+// The same from the file's text (twb.run's continue_from); `where` names it in errors.
+CycleState cycle_state_of(const std::string& json, const std::string& where);
 
 }  // namespace twb
