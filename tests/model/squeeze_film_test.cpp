@@ -82,5 +82,41 @@ TEST(SqueezeFilm, ParallelAnnuliCarryTheClosedFormsLoadAndCloseInItsTime) {
   for (const SqueezeErrors& e : {coarse, middle, fine}) EXPECT_NEAR(e.approach, e.rate, 1e-7);
 }
 
+// The squeeze's gap rate on film 2 (sliding, under the gear): the gap plane's rate, the
+// clearance's ċ2·σ_ref and the imposed tilt's −γ̇·x (docs/physics.md sections 1, 19). With
+// the flow balances as rows (ŵ alone) the squeeze enters each row as area·ḣ/scale, the
+// same scale for both rates: at every node the tilt's term over the clearance's is
+// −γ̇·x/(ċ2·σ_ref), exactly, whatever the node's area and scale.
+TEST(SqueezeFilm, TheGearsTiltingSqueezesFilm2AsItsPlaneSays) {
+  Scene s = testing::wide_parallel_annulus(545.0, 100.0);
+  s.mesh.radial_nodes = 5;
+  s.mesh.circumferential_nodes = 8;
+  BearingModel m(s);
+  m.set_flow_balance_rows(true);
+  const std::vector<double> u = m.cold_start();
+  const auto n = u.size();
+  const Film& film = m.sliding_film();
+  ASSERT_EQ(film.number, 2);
+  const Index gap = film.rigid_offset + film.clearance_unknown;
+  std::vector<double> still(n, 0.0), closing(n, 0.0), r0(n), rc(n), rt(n);
+  closing[std::size_t(gap)] = 0.5;  // ċ2 in σ_ref a second
+  const double tilting = 2e-3;      // γ̇, rad/s
+  m.evaluate_in_time(u, still, 1.0, r0, {});
+  m.evaluate_in_time(u, closing, 1.0, rc, {});
+  m.set_imposed_tilt_rate(tilting);
+  m.evaluate_in_time(u, still, 1.0, rt, {});
+  int nodes = 0;
+  for (int i = 1; i < film.mesh.radial_nodes() - 1; ++i)
+    for (int j = 0; j < film.mesh.circumferential_nodes(); ++j) {
+      const std::size_t row = std::size_t(film.pressure_column(i, j));
+      const double x = film.mesh.radius(i) * std::cos(film.mesh.angle(j));
+      const double expected = -tilting * x / (0.5 * m.clearance_scale());
+      EXPECT_NEAR((rt[row] - r0[row]) / (rc[row] - r0[row]), expected, 1e-12 * std::abs(expected) + 1e-12)
+          << "node (" << i << ", " << j << ")";
+      ++nodes;
+    }
+  EXPECT_EQ(nodes, 3 * 8);
+}
+
 }  // namespace
 }  // namespace twb
