@@ -380,6 +380,14 @@ std::span<const double> IdaTransient::rate() const {
   return {N_VGetArrayPointer(yp_.get()), std::size_t(system_.size())};
 }
 
+bool IdaTransient::state_at(double t, std::span<double> out) const {
+  if (Index(out.size()) != system_.size()) throw InternalError("IdaTransient::state_at: state has the wrong size");
+  // A vector over the caller's array (IDA writes into it; destroying it leaves the array).
+  const Vector at(N_VMake_Serial(system_.size(), out.data(), ctx_.get()));
+  if (!at) throw SolverFailure("could not allocate the transient's interpolation", -1);
+  return IDAGetDky(ida_.get(), t, 0, at.get()) == IDA_SUCCESS;
+}
+
 double IdaTransient::differential_distance(std::span<const double> a, std::span<const double> b) const {
   double d = 0.0;
   for (std::size_t k = 0; k < capacities_.size(); ++k) {

@@ -107,6 +107,11 @@ class IdaTransient {
   double time() const { return time_; }
   std::span<const double> state() const;
   std::span<const double> rate() const;  // u'
+  // The state at t within the last step, [time() − its length, time()], on IDA's
+  // interpolating polynomial (IDAGetDky): what the march computed between its steps, to
+  // the step's own accuracy (the algebraic unknowns there are the polynomial's too, not
+  // re-solved). False outside that interval or before the first step.
+  bool state_at(double t, std::span<double> out) const;
   const std::vector<double>& capacities() const { return capacities_; }
   // Whether unknown k is differential: a capacity, or a rate the system's terms read.
   bool differential(std::size_t k) const { return differential_[k] != 0; }

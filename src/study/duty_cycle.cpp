@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include <boost/math/tools/toms748_solve.hpp>
 #include <fmt/format.h>
 
 #include "model/limit_thresholds.h"
@@ -47,14 +50,18 @@ std::optional<double> allowance(LimitKind kind, const OperatingLimits& limits, d
 // Each failure criterion's margin in its own unit (none where the scene applies none).
 using Margins = std::array<std::optional<double>, std::size(kFailureCriteria)>;
 
+// Where between two of the march's steps (times a < b) a criterion's margin is zero:
+// the inputs there (their time the crossing's), none where it cannot say.
+using CrossingLocator = std::function<std::optional<SchedulePoint>(double a, double b, LimitKind kind)>;
+
 class CycleWatch {
  public:
   // `lowest_ambient`: the schedule's, from which every allowance is measured (the reader
   // keeps the first point's ambient below every limit; a later, warmer ambient must not
   // shrink an allowance to nothing just as the limit is crossed).
-  CycleWatch(const BearingModel& model, StudyOutcome& out, double lowest_ambient)
+  CycleWatch(const BearingModel& model, StudyOutcome& out, double lowest_ambient, CrossingLocator locate)
       : limits_(OperatingLimits::of(model.scene())), thermal_(model.scene().effects.thermal), out_(out),
-        lowest_ambient_(lowest_ambient) {}
+        lowest_ambient_(lowest_ambient), locate_(std::move(locate)) {}
 
   // The sample at t (the model's inputs already those of t), its crossings since the
   // sample before.
@@ -79,6 +86,13 @@ class CycleWatch {
       for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
         const std::optional<double> a = (*last_margins_)[c], b = margins[c];
         if (!a || !b || (*a >= 0.0) == (*b >= 0.0)) continue;
+        const std::optional<SchedulePoint> at = locate_(before.time, t, kFailureCriteria[c]);
+        if (at) {
+          CycleEvent& e = event(*b < 0.0 ? "crossing" : "recovery", at->time, *at);
+          e.criterion = kFailureCriteria[c];
+          e.margin = 0.0;
+          continue;
+        }
         // Where the margin's line between the two samples is zero: within IDA's step.
         const double share = *a / (*a - *b);
         const auto between = [&](double a0, double a1) { return a0 + share * (a1 - a0); };
@@ -116,6 +130,7 @@ class CycleWatch {
   std::optional<Margins> last_margins_;
   std::optional<std::size_t> worst_;
   double lowest_ambient_;
+  CrossingLocator locate_;
 };
 
 // The thermo-viscous runaway's signature at a point of the trajectory (docs/physics.md
@@ -316,7 +331,37 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   IdaTransient ida(model, settings);
   double lowest_ambient = first.ambient;
   for (const SchedulePoint& p : schedule.points()) lowest_ambient = std::min(lowest_ambient, p.ambient);
-  CycleWatch watch(model, out, lowest_ambient);
+  // A crossing's time: the root of the margin of the state on IDA's interpolating
+  // polynomial over the step (IDAS's own root finding does the same, on every step; this
+  // searches only the steps whose ends differ in sign), to a millionth of a microsecond.
+  std::vector<double> between(std::size_t(model.size()));
+  const OperatingLimits limits = OperatingLimits::of(model.scene());
+  const CrossingLocator locate = [&](double a, double b, LimitKind kind) -> std::optional<SchedulePoint> {
+    const auto margin_at = [&](double t) -> double {
+      if (!ida.state_at(t, between)) throw std::domain_error("outside the step");
+      OperatingSchedule::apply(model, schedule.on_segment(segment, t));
+      return failure_margin(kind, LimitValues::of(model.describe(between), model.scene().effects.thermal), limits)
+          .value_or(NAN);
+    };
+    std::optional<SchedulePoint> at;
+    try {
+      const double ma = margin_at(a), mb = margin_at(b);
+      if (std::isfinite(ma) && std::isfinite(mb) && (ma >= 0.0) != (mb >= 0.0)) {
+        std::uintmax_t iterations = 60;
+        const auto [lo, hi] = boost::math::tools::toms748_solve(
+            margin_at, a, b, ma, mb, [](double x, double y) { return std::abs(x - y) <= 1e-12 * std::max(1.0, std::abs(x)); },
+            iterations);
+        at = schedule.on_segment(segment, 0.5 * (lo + hi));
+      }
+    } catch (const InternalError&) {
+      throw;
+    } catch (const std::exception&) {
+      at.reset();  // the straight line between the steps instead
+    }
+    OperatingSchedule::apply(model, schedule.on_segment(segment, b));
+    return at;
+  };
+  CycleWatch watch(model, out, lowest_ambient, locate);
   RunawayWatch runaway(model);
   std::string ended;  // why the march ended before the schedule did
   auto bank = [&] {
