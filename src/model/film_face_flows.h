@@ -52,6 +52,9 @@ class FilmFaceFlows {
     for (const int i : {0, film_.mesh.radial_nodes() - 1})
       for (int j = 0; j < film_.mesh.circumferential_nodes(); ++j) visit(evaluate(op_.edge_face(i, j)));
   }
+  // The thermal deformation's shape δ (m) at every node of the film, as the fluxes read it;
+  // empty without the effect.
+  const std::vector<double>& node_shapes() const { return delta_; }
   // d(row) += c · ∇Q of a face, in the order the Reynolds rows have always summed it.
   void add_gradient(Assembler& a, Index row, double c, const FaceFlow& flow) const;
 

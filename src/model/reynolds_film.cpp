@@ -98,7 +98,7 @@ void ReynoldsEffect::add_squeeze(std::span<const double> u, const StateRates& ra
   const bool factors = model.scene().effects.flow_factors;
   const bool jac = a.wants_jacobian();
   const GapPlane plane = film.plane(model.position(u));
-  const std::vector<double> delta = model.node_shapes(u, film);
+  const std::vector<double>& delta = flows.node_shapes();
   const std::array<Index, 3> cols = film.rigid_columns();
   const double tilt_rate = film.upper == ComponentId::gear ? rates.imposed_tilt_rate : 0.0;
   for (int i = 1; i < m.radial_nodes() - 1; ++i) {

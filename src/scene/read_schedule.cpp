@@ -47,17 +47,17 @@ constexpr ResultsName kResultsNames[] = {
     {"speed_rpm", kSpeed, "rpm"}, {"ambient_C", kAmbient, "degC"}, {"ambient_K", kAmbient, "K"},
     {"tilt_rad", kTilt, "rad"}};
 
-// What each quantity may be. Unloaded, the gear leaves its film for its stop at its axial
-// play, a jump unless the squeeze of the film under it damps it (docs/physics.md section
-// 19), which twb does not solve yet; the force balances are also scaled by the load.
+// What each quantity may be. Unloaded, the washer lifts off its film and the gear goes to
+// its stop at its axial play (docs/physics.md section 19), which twb does not solve yet;
+// the force balances are also scaled by the load.
 Range range_of(int q, const Scene& scene) {
   switch (q) {
     case kTime: return Range{.low = 0.0, .high = 1e9, .reason = "a time from 0 s, at most 1e9 s"};
     case kLoad:
       return Range{.low = 0.0, .low_open = true, .high = bounds::load.high,
-                   .reason = "a positive load up to 1 MN (unloaded to zero, the gear leaves its film for its stop: "
-                             "that needs the gear's axial play and the squeeze of the film under it, "
-                             "docs/physics.md section 19, which twb does not solve yet)"};
+                   .reason = "a positive load up to 1 MN (unloaded to zero, the washer lifts off its film and the "
+                             "gear goes to its stop at its axial play, docs/physics.md section 19, which twb does "
+                             "not solve yet)"};
     case kSpeed:
       return Range{.low = -bounds::speed.high, .high = bounds::speed.high,
                    .reason = "a speed of at most 1e5 rad/s either way (negative: the washer turns back)"};

@@ -182,7 +182,7 @@ TEST(DutyCycle, ARampPastDistressRunsAwayAndOneShortOfItDoesNot) {
 // below it the time is π·τ₁·√((W* − λ₁)/δ). The normal form is exact as δ → 0 and off by
 // O(√δ) beside it (the cubic terms; the approach from the start adds less): the march's
 // time tends to the prediction, its relative error falling about as √δ, by 2 from δ =
-// 0.2 % to 0.05 % of W* (measured: 0.19 and 0.06; 0.40 at 1 %). Asserted: within 15 % at
+// 0.2 % to 0.05 % of W* (measured: 0.16 and 0.05 with the squeeze on). Asserted: within 15 % at
 // 0.05 %, and the error at least 1.5 times smaller than at 0.2 %.
 TEST(DutyCycle, AStepPastDistressRunsAwayInTheTimeTheFoldsSlowModePredicts) {
   const Scene base = cycle_scene("[{t: 0 s}, {t: 1 s}]");
