@@ -10,6 +10,8 @@
 //                            the trajectory's own loads (K), and IDA's steps
 //   BM_BranchByContinuation  the same branch traced by continuation (a load sweep from
 //                            100 to 180 N in 41 states), the cost the slow ramp is held to
+//   BM_LightLoadLift         100 to 1 N in 5 s, held to 60 s: the washer lifting off its
+//                            film; counter: IDA's steps
 // Targets (issue): the ten-minute cycle < 10 s; the slow-ramp limit equal to the steady
 // branch to the solver's tolerance at no more than 2x the continuation's cost. Wall time of
 // one run each; compare the ratios within one invocation.
@@ -99,6 +101,19 @@ void BM_SlowRamp(benchmark::State& state) {
   state.counters["dT_max_K"] = worst_max;
 }
 
+// Nearly unloaded: 100 N to 1 N in 5 s at 545 rad/s, held to 60 s; the washer lifts off its
+// film at the rate its squeeze allows (h_min/σ from about 6 to 100).
+void BM_LightLoadLift(benchmark::State& state) {
+  const std::string study =
+      "{type: duty_cycle, failure_load_at_worst: false, schedule: [{t: 0 s, load: 100 N}, {t: 5 s, load: 1 N}, "
+      "{t: 60 s}]}";
+  for (auto _ : state) {
+    const twb::StudyOutcome out = run(study);
+    state.counters["ida_steps"] = double(out.timings.ida_steps);
+    if (out.solver_failed) state.SkipWithError(out.message.c_str());
+  }
+}
+
 void BM_BranchByContinuation(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(run(kSweep));
 }
@@ -107,6 +122,7 @@ void BM_BranchByContinuation(benchmark::State& state) {
 
 BENCHMARK(BM_TenMinuteCycle)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_BranchByContinuation)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_LightLoadLift)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_SlowRamp)->Arg(1000)->Arg(100000)->Arg(10000000)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 BENCHMARK_MAIN();

@@ -47,6 +47,10 @@ class ConsistentRates final : public SteadySystem {
   // unknowns, 1e-3 for a rate (as for a field: a step may move it by 1e3 times the cap,
   // 2e4 of its scaled units a second with the default cap of 20).
   std::vector<double> step_weights() const override;
+  // The system's rows in the form it is in (a march's Newton form, steady_system.h), and
+  // the tolerance that form's residual must meet.
+  bool newton_form() const override { return system_.newton_form(); }
+  double newton_form_tolerance_ratio() const override { return system_.newton_form_tolerance_ratio(); }
   std::string block_name(Index k) const override { return system_.block_name(k); }
   std::string describe_row(Index k) const override { return system_.describe_row(k); }
 

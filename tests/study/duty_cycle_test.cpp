@@ -107,6 +107,32 @@ TEST(DutyCycle, HeldAtAPointItEndsAtThePointsSteadyState) {
   for (const CycleEvent& e : out.cycle_events) EXPECT_TRUE(e.event == "end" || e.event == "worst") << e.event;
 }
 
+// Nearly unloaded, the washer lifts off its film: ramped from 100 N to 1 N in 5 s and held,
+// it rises from h_min/σ ≈ 6 to about 100 at the rate film 1's squeeze allows (the squeeze
+// falls as h⁻³, the lift as h⁻²: fast at the end of the ramp) and ends at the point
+// study's steady state at 1 N, within what the held point allows (1e-4 K, 1e-5 of h_min/σ).
+TEST(DutyCycle, UnloadedTo1NTheWasherLiftsToTheLightSteadyState) {
+  const double hold = 600.0;  // s
+  const Scene scene = cycle_scene(fmt::format("[{{t: 0 s, load: 100 N}}, {{t: 5 s, load: 1 N}}, {{t: {} s}}]", hold));
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  const TrajectorySample& end = out.trajectory.back();
+  EXPECT_DOUBLE_EQ(end.time, hold);
+
+  BearingModel point(scene);
+  OperatingSchedule::apply(point, scene.study.schedule.back());
+  std::vector<double> u;
+  ASSERT_TRUE(SteadySolver(point, newton_settings(scene)).solve_cold(u).converged);
+  ASSERT_LT(40.0 * slowest_relaxation_time(point, u, 20), hold - 5.0) << "hold the point longer";
+  const BearingState steady = point.describe(u);
+  EXPECT_GT(steady.hmin_over_sigma, 10.0 * out.trajectory.front().state.hmin_over_sigma);
+  EXPECT_NEAR(end.state.washer_mean_temperature, steady.washer_mean_temperature, 1e-4);
+  EXPECT_NEAR(end.state.max_film_temperature, steady.max_film_temperature, 1e-4);
+  EXPECT_NEAR(end.state.hmin_over_sigma, steady.hmin_over_sigma, 1e-5 * steady.hmin_over_sigma);
+  expect_heat_balance(out);
+}
+
 // The bodies hold heat: an ambient raised by 20 K in 0.05 s, short against the carrier's
 // and gear's time constants (about 6 s through their 10 mm), leaves the washer's mean
 // temperature well short of the new ambient's rise at first (its rise above the ambient
