@@ -78,59 +78,54 @@ TEST(OperatingSchedule, StraightLinesBetweenThePointsHeldOutside) {
   EXPECT_THROW(OperatingSchedule({point(1, 100, 500, 300, 0), point(1, 100, 500, 300, 0)}), std::invalid_argument);
 }
 
-// Held long enough at a point, the cycle ends at the point's steady state: the slowest
-// mode's share of the start's distance is then below e^−40, and what is left is IDA's
-// error, a few times its relative tolerance (1e-6) of the temperatures (a contractive
-// march does not accumulate it): 1e-4 K and 1e-5 of h_min/σ allow a hundred times that.
-TEST(DutyCycle, HeldAtAPointItEndsAtThePointsSteadyState) {
-  const double hold = 600.0;  // s
-  const Scene scene = cycle_scene(fmt::format("[{{t: 0 s, load: 100 N}}, {{t: 5 s, load: 130 N, ambient: 30 degC}}, "
-                                              "{{t: {} s}}]",
-                                              hold));
+// A schedule held at its last point until `hold` seconds: the march, and its end against
+// the point study's steady state there. Held long enough, the cycle ends at the point's
+// steady state: the slowest mode's share of the start's distance is then below e^−40,
+// and what is left is IDA's error, a few times its relative tolerance (1e-6) of the
+// temperatures (a contractive march does not accumulate it): 1e-4 K and 1e-5 of h_min/σ
+// allow a hundred times that.
+struct HeldCycle {
+  StudyOutcome out;
+  BearingState steady;
+};
+HeldCycle held_cycle(const std::string& schedule, double hold) {
+  const Scene scene = cycle_scene(schedule);
   BearingModel model(scene);
-  const StudyOutcome out = run_study(model, {});
-  ASSERT_FALSE(out.solver_failed) << out.message;
-  const TrajectorySample& end = out.trajectory.back();
-  EXPECT_DOUBLE_EQ(end.time, hold);
-
+  HeldCycle held{run_study(model, {}), {}};
+  EXPECT_FALSE(held.out.solver_failed) << held.out.message;
   BearingModel point(scene);
   OperatingSchedule::apply(point, scene.study.schedule.back());
   std::vector<double> u;
-  ASSERT_TRUE(SteadySolver(point, newton_settings(scene)).solve_cold(u).converged);
-  ASSERT_LT(40.0 * slowest_relaxation_time(point, u, 20), hold - 5.0) << "hold the point longer";
-  const BearingState steady = point.describe(u);
-  EXPECT_NEAR(end.state.washer_mean_temperature, steady.washer_mean_temperature, 1e-4);
-  EXPECT_NEAR(end.state.max_film_temperature, steady.max_film_temperature, 1e-4);
-  EXPECT_NEAR(end.state.hmin_over_sigma, steady.hmin_over_sigma, 1e-5 * steady.hmin_over_sigma);
-  EXPECT_NEAR(*end.ambient, 303.15, 1e-12);
+  EXPECT_TRUE(SteadySolver(point, newton_settings(scene)).solve_cold(u).converged);
+  EXPECT_LT(40.0 * slowest_relaxation_time(point, u, 20), hold - 5.0) << "hold the point longer";
+  held.steady = point.describe(u);
+  if (held.out.trajectory.empty()) return held;
+  const TrajectorySample& end = held.out.trajectory.back();
+  EXPECT_DOUBLE_EQ(end.time, hold);
+  EXPECT_NEAR(end.state.washer_mean_temperature, held.steady.washer_mean_temperature, 1e-4);
+  EXPECT_NEAR(end.state.max_film_temperature, held.steady.max_film_temperature, 1e-4);
+  EXPECT_NEAR(end.state.hmin_over_sigma, held.steady.hmin_over_sigma, 1e-5 * held.steady.hmin_over_sigma);
+  return held;
+}
+
+TEST(DutyCycle, HeldAtAPointItEndsAtThePointsSteadyState) {
+  const HeldCycle held =
+      held_cycle("[{t: 0 s, load: 100 N}, {t: 5 s, load: 130 N, ambient: 30 degC}, {t: 600 s}]", 600.0);
+  ASSERT_FALSE(held.out.trajectory.empty());
+  EXPECT_NEAR(*held.out.trajectory.back().ambient, 303.15, 1e-12);
   // No criterion was crossed and the bearing did not run away.
-  for (const CycleEvent& e : out.cycle_events) EXPECT_TRUE(e.event == "end" || e.event == "worst") << e.event;
+  for (const CycleEvent& e : held.out.cycle_events) EXPECT_TRUE(e.event == "end" || e.event == "worst") << e.event;
 }
 
 // Nearly unloaded, the washer lifts off its film: ramped from 100 N to 1 N in 5 s and held,
 // it rises from h_min/σ ≈ 6 to about 100 at the rate film 1's squeeze allows (the squeeze
 // falls as h⁻³, the lift as h⁻²: fast at the end of the ramp) and ends at the point
-// study's steady state at 1 N, within what the held point allows (1e-4 K, 1e-5 of h_min/σ).
+// study's steady state at 1 N, within what the held point allows.
 TEST(DutyCycle, UnloadedTo1NTheWasherLiftsToTheLightSteadyState) {
-  const double hold = 600.0;  // s
-  const Scene scene = cycle_scene(fmt::format("[{{t: 0 s, load: 100 N}}, {{t: 5 s, load: 1 N}}, {{t: {} s}}]", hold));
-  BearingModel model(scene);
-  const StudyOutcome out = run_study(model, {});
-  ASSERT_FALSE(out.solver_failed) << out.message;
-  const TrajectorySample& end = out.trajectory.back();
-  EXPECT_DOUBLE_EQ(end.time, hold);
-
-  BearingModel point(scene);
-  OperatingSchedule::apply(point, scene.study.schedule.back());
-  std::vector<double> u;
-  ASSERT_TRUE(SteadySolver(point, newton_settings(scene)).solve_cold(u).converged);
-  ASSERT_LT(40.0 * slowest_relaxation_time(point, u, 20), hold - 5.0) << "hold the point longer";
-  const BearingState steady = point.describe(u);
-  EXPECT_GT(steady.hmin_over_sigma, 10.0 * out.trajectory.front().state.hmin_over_sigma);
-  EXPECT_NEAR(end.state.washer_mean_temperature, steady.washer_mean_temperature, 1e-4);
-  EXPECT_NEAR(end.state.max_film_temperature, steady.max_film_temperature, 1e-4);
-  EXPECT_NEAR(end.state.hmin_over_sigma, steady.hmin_over_sigma, 1e-5 * steady.hmin_over_sigma);
-  expect_heat_balance(out);
+  const HeldCycle held = held_cycle("[{t: 0 s, load: 100 N}, {t: 5 s, load: 1 N}, {t: 600 s}]", 600.0);
+  ASSERT_FALSE(held.out.trajectory.empty());
+  EXPECT_GT(held.steady.hmin_over_sigma, 10.0 * held.out.trajectory.front().state.hmin_over_sigma);
+  expect_heat_balance(held.out);
 }
 
 // The bodies hold heat: an ambient raised by 20 K in 0.05 s, short against the carrier's
