@@ -261,6 +261,7 @@ TransientStatus IdaTransient::reinitialize(double t0, std::span<const double> u0
   callbacks_->last_error.clear();
   callbacks_->failure.message.clear();
   time_ = t0;
+  stepped_ = false;
   int flag = IDAReInit(ida_.get(), t0, y_.get(), yp_.get());
   if (flag < 0) return status_from(flag, "IDAReInit");
   if (quadrature_) {
@@ -357,7 +358,10 @@ TransientStatus IdaTransient::step(double t_stop) {
   if (flag < 0) return status_from(flag, "IDASetStopTime");
   double reached = time_;
   flag = IDASolve(ida_.get(), t_stop, &reached, y_.get(), yp_.get(), IDA_ONE_STEP);
-  if (flag >= 0) time_ = reached;
+  if (flag >= 0) {
+    time_ = reached;
+    stepped_ = true;
+  }
   return status_from(flag, "IDASolve");
 }
 
@@ -382,6 +386,8 @@ std::span<const double> IdaTransient::rate() const {
 
 bool IdaTransient::state_at(double t, std::span<double> out) const {
   if (Index(out.size()) != system_.size()) throw InternalError("IdaTransient::state_at: state has the wrong size");
+  // IDAGetDky extrapolates past the last step, and after a restart returns the start.
+  if (!stepped_ || !(t <= time_)) return false;
   // A vector over the caller's array (IDA writes into it; destroying it leaves the array).
   const Vector at(N_VMake_Serial(system_.size(), out.data(), ctx_.get()));
   if (!at) throw SolverFailure("could not allocate the transient's interpolation", -1);

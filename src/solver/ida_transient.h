@@ -108,9 +108,11 @@ class IdaTransient {
   std::span<const double> state() const;
   std::span<const double> rate() const;  // u'
   // The state at t within the last step, [time() − its length, time()], on IDA's
-  // interpolating polynomial (IDAGetDky): what the march computed between its steps, to
-  // the step's own accuracy (the algebraic unknowns there are the polynomial's too, not
-  // re-solved). False outside that interval or before the first step.
+  // interpolating polynomial (IDAGetDky): what the march computed between its steps. The
+  // algebraic unknowns there are the polynomial's too, not re-solved, and with the real
+  // time's suppressed algebraic error test nothing bounds their interpolation but the
+  // differential unknowns they follow. False outside that interval or before a step
+  // since the last start.
   bool state_at(double t, std::span<double> out) const;
   const std::vector<double>& capacities() const { return capacities_; }
   // Whether unknown k is differential: a capacity, or a rate the system's terms read.
@@ -143,6 +145,7 @@ class IdaTransient {
   IdaMemory ida_;
   std::unique_ptr<Callbacks> callbacks_;
   double time_ = 0.0;
+  bool stepped_ = false;  // a step since the last start: IDA's polynomial is the step's
 };
 
 }  // namespace twb

@@ -162,6 +162,8 @@ class RunawayWatch {
     if (times_.size() == 2) times_.erase(times_.begin()), hottest_.erase(hottest_.begin());
     times_.push_back(t);
     hottest_.push_back(hottest);
+    // A film cooler than at the last check has come back by another way: its line is spent.
+    if (!stable_checks_.empty() && hottest < stable_checks_.back().first) stable_checks_.clear();
     if (!known || accelerating == running_away_) return Change::none;
     if (!running_away_ && cannot_have_turned(hottest)) return Change::none;
     const std::optional<Stability> slow_mode = stability(u, hottest);
@@ -182,7 +184,10 @@ class RunawayWatch {
   std::optional<Stability> stability(std::span<const double> u, double hottest) {
     const NewtonForm own_rows(model_, false);  // the linearization of the model's own rows
     model_.evaluate(u, residual_, jacobian_);
-    if (!factors_.factor(jacobian_)) return std::nullopt;
+    if (!factors_.factor(jacobian_)) {
+      stable_checks_.clear();
+      return std::nullopt;
+    }
     const StabilityReport report = linear_stability(model_, factors_);
     if (report.verdict == Stability::stable && !report.modes.empty()) {
       if (stable_checks_.size() == 2) stable_checks_.erase(stable_checks_.begin());
@@ -195,20 +200,24 @@ class RunawayWatch {
   // Whether the slow mode, stable at the last two checks, cannot have turned unstable by
   // the time the hottest film reaches `hottest`. Its growth rate is taken on the line
   // through the two checks in that temperature, trusted up to twice the rise between
-  // them past the last: in the fold's normal form (physics §19) the slow mode's rate is
-  // linear in the state along its null vector, and so in the temperature. Where the line
-  // rises towards zero, only half way to where it reaches it: every check then halves the
-  // way left. Between, a check (a Jacobian, its factors and a Krylov space of 24 solves)
-  // is skipped; the trusted rise doubles from check to check while the mode stays clear.
+  // them past the last and never more than kTrustedRise: in the fold's normal form
+  // (physics §19), the other inputs fixed, the slow mode's rate is linear in the state
+  // along its null vector, and so in the temperature; inputs that move as well (a speed,
+  // an ambient) bend the line, which the cap bounds. Where the line rises towards zero,
+  // only half way to where it reaches it: every check then halves the way left. Between,
+  // a check (a Jacobian, its factors and a Krylov space of 24 solves) is skipped.
   bool cannot_have_turned(double hottest) const {
     if (stable_checks_.size() < 2) return false;
     const auto [hot1, g1] = stable_checks_[0];
     const auto [hot2, g2] = stable_checks_[1];
     if (!(hot2 > hot1)) return false;
-    double reach = 2.0 * (hot2 - hot1);
+    double reach = std::min(2.0 * (hot2 - hot1), kTrustedRise);
     if (g2 > g1) reach = std::min(reach, 0.5 * -g2 * (hot2 - hot1) / (g2 - g1));
     return hottest < hot2 + reach;
   }
+  // K: a ramp of the inputs raises the hottest film by some kelvins (the ten-minute
+  // cycle's by up to ten): a check at least every kelvin of it.
+  static constexpr double kTrustedRise = 1.0;
 
   BearingModel& model_;
   SparseLu factors_;
@@ -368,32 +377,43 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   // of the model's complementarity rows (the minimum, piecewise linear, as continuation's
   // correctors do), whose roots are the model's own. Fischer–Burmeister's curvature at the
   // cavitation boundary failed its iterations over and over where a lightly loaded washer
-  // lifts: a ramp from 100 to 1 N and a hold took 6802 steps, 201 in this form.
+  // lifts: a ramp from 100 to 1 N and a hold took 6802 steps, 201 in this form. The
+  // consistent starts (KINSOL from rates of zero, not close) keep the model's own rows.
   std::optional<NewtonForm> march_form;
   march_form.emplace(model);
+  const auto start_in_own_rows = [&](double t, std::span<const double> state) {
+    const NewtonForm own_rows(model, false);
+    return ida.start(t, state);
+  };
   double lowest_ambient = first.ambient;
   for (const SchedulePoint& p : schedule.points()) lowest_ambient = std::min(lowest_ambient, p.ambient);
   // A crossing's time: the root of the margin of the state on IDA's interpolating
   // polynomial over the step (IDAS's own root finding does the same, on every step; this
-  // searches only the steps whose ends differ in sign), to a millionth of a microsecond.
+  // searches only the steps whose ends differ in sign), to 1e-12 of the time (1e-12 s
+  // below a second); a margin that is not a number, or a search that does not close,
+  // leaves the straight line between the step's ends.
   std::vector<double> between(std::size_t(model.size()));
   const OperatingLimits limits = OperatingLimits::of(model.scene());
   const CrossingLocator locate = [&](double a, double b, LimitKind kind) -> std::optional<SchedulePoint> {
     const auto margin_at = [&](double t) -> double {
       if (!ida.state_at(t, between)) throw std::domain_error("outside the step");
       OperatingSchedule::apply(model, schedule.on_segment(segment, t));
-      return failure_margin(kind, LimitValues::of(model.describe(between), model.scene().effects.thermal), limits)
-          .value_or(NAN);
+      const double m =
+          failure_margin(kind, LimitValues::of(model.describe(between), model.scene().effects.thermal), limits)
+              .value_or(NAN);
+      if (!std::isfinite(m)) throw std::domain_error("no margin there");
+      return m;
     };
     std::optional<SchedulePoint> at;
     try {
       const double ma = margin_at(a), mb = margin_at(b);
       if (std::isfinite(ma) && std::isfinite(mb) && (ma >= 0.0) != (mb >= 0.0)) {
-        std::uintmax_t iterations = 60;
+        constexpr std::uintmax_t kMost = 60;
+        std::uintmax_t iterations = kMost;
         const auto [lo, hi] = boost::math::tools::toms748_solve(
             margin_at, a, b, ma, mb, [](double x, double y) { return std::abs(x - y) <= 1e-12 * std::max(1.0, std::abs(x)); },
             iterations);
-        at = schedule.on_segment(segment, 0.5 * (lo + hi));
+        if (iterations < kMost) at = schedule.on_segment(segment, 0.5 * (lo + hi));
       }
     } catch (const InternalError&) {
       throw;
@@ -441,7 +461,7 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
     // the state's (consistent values computed afresh).
     if (segment > 0) bank();
     runaway.restart();
-    TransientStatus status = ida.start(t_start, u);
+    TransientStatus status = start_in_own_rows(t_start, u);
     if (!status.ok) {
       ended = fmt::format("no consistent state at t = {:.6g} s: {}", t_start, status.message);
       break;
@@ -457,7 +477,7 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
         ++restarts;
         const std::vector<double> here(ida.state().begin(), ida.state().end());
         bank();
-        const TransientStatus again = ida.start(ida.time(), here);
+        const TransientStatus again = start_in_own_rows(ida.time(), here);
         if (again.ok) continue;
         restart_failed = "; starting again there: " + again.message;
       }

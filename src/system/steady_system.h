@@ -69,7 +69,9 @@ class SteadySystem {
   // close start, but whose slopes jump where a march (pseudo-time, a transient) or a
   // differentiated system (a fold's) needs them continuous: the bearing's cavitation
   // rows as min(p̂, ŵ) instead of Fischer–Burmeister (CavitationRow). Off unless a
-  // NewtonForm scope is open; a system without such rows ignores it.
+  // NewtonForm scope is open; a system without such rows ignores it. (A duty cycle's IDA
+  // opens one for its Newton, which starts every step close, from its predictor: IDA
+  // needs only the roots, its error test reads the differential unknowns.)
   virtual void set_newton_form(bool) {}
   virtual bool newton_form() const { return false; }
   // Newton's form must meet the tolerance tighter by this ratio for the system's own
