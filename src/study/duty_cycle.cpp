@@ -89,23 +89,21 @@ class CycleWatch {
       for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
         const std::optional<double> a = (*last_margins_)[c], b = margins[c];
         if (!a || !b || (*a >= 0.0) == (*b >= 0.0)) continue;
-        const std::optional<SchedulePoint> at = locate_(before.time, t, kFailureCriteria[c]);
-        if (at) {
-          CycleEvent& e = event(*b < 0.0 ? "crossing" : "recovery", at->time, *at);
-          e.criterion = kFailureCriteria[c];
-          e.margin = 0.0;
-          continue;
+        std::optional<SchedulePoint> at = locate_(before.time, t, kFailureCriteria[c]);
+        if (!at) {
+          // Where the margin's line between the two samples is zero: within IDA's step.
+          const double share = *a / (*a - *b);
+          const auto between = [&](double a0, double a1) { return a0 + share * (a1 - a0); };
+          at = inputs;
+          at->time = between(before.time, t);
+          at->load = between(before.state.load, s.state.load);
+          at->speed = between(before.state.speed, s.state.speed);
+          at->ambient = between(*before.ambient, *s.ambient);
+          at->tilt = between(*before.tilt, *s.tilt);
         }
-        // Where the margin's line between the two samples is zero: within IDA's step.
-        const double share = *a / (*a - *b);
-        const auto between = [&](double a0, double a1) { return a0 + share * (a1 - a0); };
-        CycleEvent& e = event(*b < 0.0 ? "crossing" : "recovery", between(before.time, t), inputs);
+        CycleEvent& e = event(*b < 0.0 ? "crossing" : "recovery", at->time, *at);
         e.criterion = kFailureCriteria[c];
         e.margin = 0.0;
-        e.load = between(before.state.load, s.state.load);
-        e.speed = between(before.state.speed, s.state.speed);
-        e.ambient = between(*before.ambient, *s.ambient);
-        e.tilt = between(*before.tilt, *s.tilt);
       }
     }
     last_margins_ = margins;
@@ -407,7 +405,7 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
     std::optional<SchedulePoint> at;
     try {
       const double ma = margin_at(a), mb = margin_at(b);
-      if (std::isfinite(ma) && std::isfinite(mb) && (ma >= 0.0) != (mb >= 0.0)) {
+      if ((ma >= 0.0) != (mb >= 0.0)) {
         constexpr std::uintmax_t kMost = 60;
         std::uintmax_t iterations = kMost;
         const auto [lo, hi] = boost::math::tools::toms748_solve(
