@@ -13,6 +13,7 @@
 // The discretization itself (control volumes, faces, the face flux and which balances
 // it enters) is ReynoldsOperator's, the face fluxes of the bearing's film with their
 // slopes in the unknowns FilmFaceFlows'; this file assembles them into the balances.
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -151,10 +152,17 @@ void ReynoldsEffect::add_film(std::span<const double> u, const StateRates* rates
   const bool report = a.mode() == Assembler::Mode::values;
   const int outer = m.radial_nodes() - 1;
 
+  // Each free node's outflow slope in its own pressure (w per p̂), for Newton's form below.
+  const bool newton_form = model.cavitation_row() == CavitationRow::minimum && !jfo && !model.flow_balance_rows();
+  std::vector<double> own_slope(newton_form ? std::size_t(op.interior_count()) : 0, 0.0);
   // Each face flux Q (m³/s) from node A to node B leaves A's balance and enters B's;
   // the operator owns the stencil and which control volumes a flux joins.
   flows.for_each([&](const FaceFlow& flow) {
     const ReynoldsFace& f = flow.face;
+    if (newton_form)
+      for (const auto [node, sign] : f.ends())
+        if (node >= 0 && free(node))
+          own_slope[std::size_t(node)] += sign * (node == f.a ? flow.flux.dq_dpa : flow.flux.dq_dpb) * p_ref;
     if (report) {
       if (!flow.circumferential && f.ia == 0) totals.inner_flow -= flow.flux.q;
       if (!flow.circumferential && f.ib == outer) totals.outer_flow += flow.flux.q;
@@ -227,11 +235,20 @@ void ReynoldsEffect::add_film(std::span<const double> u, const StateRates* rates
       a.add_derivative(row, row, 0.0);  // the same entries in the same order: the slot tape holds
       continue;
     }
-    const Complementarity phi = complementarity(model.cavitation_row(), u[row], w_hat);
+    // Newton's form min(λ·p̂, ŵ), λ the node's own slope of ŵ where above 1 (docs/physics.md
+    // section 3): ŵ's scale, from the cold-start gap and the ambient's viscosity, makes that
+    // slope (h/h_ref)³·μ_ref/μ, some 500 where a lightly loaded washer has lifted, and
+    // min(p̂, ŵ) then has its kink within 1/500 of a full node's pressure from the root;
+    // IDA's Newton, its Jacobian from an earlier step, jumped across it step after step.
+    // Same roots; |min(p̂, ŵ)| ≤ |min(λ·p̂, ŵ)| for λ ≥ 1, so the form's tolerance ratio
+    // holds. λ's own slope is left out of the Jacobian: exact at the roots, where the rows
+    // reading λ·p̂ have p̂ = 0.
+    const double lambda = newton_form ? std::max(1.0, own_slope[std::size_t(k)] / scale) : 1.0;
+    const Complementarity phi = complementarity(model.cavitation_row(), lambda * u[row], w_hat);
     a.set_residual(row, phi.value);
     if (!jac) continue;
     a.scale_row(row, phi.db / scale);
-    a.add_derivative(row, row, phi.da);
+    a.add_derivative(row, row, phi.da * lambda);
   }
 }
 

@@ -26,6 +26,8 @@
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "solver/consistent_rates.h"
+#include "solver/natural_continuation.h"
+#include "study/steady_solver.h"
 
 namespace twb {
 namespace {
@@ -166,15 +168,62 @@ void expect_differences_match(const BearingModel& m, const std::vector<double>& 
   EXPECT_GE(resolved, checked * 70 / 100) << what << ": too few entries resolved by differencing";
 }
 
+// The cavitation rows of Newton's form that read λ·p̂ (docs/physics.md section 19) with
+// λ above 1 at u: their one entry is the diagonal, λ. (λ's own slope is left out of the
+// Jacobian, which is therefore exact where λ = 1 and at the roots, where such rows have
+// p̂ = 0.)
+int lifted_pressure_rows(const BearingModel& m, std::span<const double> u) {
+  const SparsePattern& p = m.pattern();
+  std::vector<double> r(std::size_t(m.size())), jac(std::size_t(p.nnz()));
+  m.evaluate(u, r, jac);
+  int lifted = 0;
+  for (const UnknownBlock& b : m.layout().blocks()) {
+    if (b.effect != BlockEffect::hydrodynamics || b.name.find("pressure") == std::string::npos) continue;
+    for (Index i = b.offset; i < b.offset + b.size; ++i) {
+      double off_diagonal = 0.0, diagonal = 0.0;
+      for (Index k = p.row_start[std::size_t(i)]; k < p.row_start[std::size_t(i + 1)]; ++k)
+        (p.column[std::size_t(k)] == i ? diagonal : off_diagonal) += std::abs(jac[std::size_t(k)]);
+      if (off_diagonal == 0.0 && diagonal > 1.0) ++lifted;
+    }
+  }
+  return lifted;
+}
+
 TEST_P(JacobianTest, MatchesCentralDifferences) {
   const EffectSet e = GetParam();
   const std::unique_ptr<BearingModel> m = model_of(e);
   std::mt19937 rng(12345);
-  for (int trial = 0; trial < 3; ++trial)
+  for (int trial = 0; trial < 3; ++trial) {
+    const std::vector<double> u = random_state(*m, rng);
+    // Random states keep the films near their cold-start gap, where Newton's form has
+    // λ = 1 and its Jacobian is exact everywhere (its roots: the test below).
+    ASSERT_EQ(lifted_pressure_rows(*m, u), 0) << e.name << ": a random state where the Jacobian is exact only at roots";
     expect_differences_match(
-        *m, random_state(*m, rng),
-        [&](std::span<const double> x, std::span<double> r, std::span<double> jac) { m->evaluate(x, r, jac); },
+        *m, u, [&](std::span<const double> x, std::span<double> r, std::span<double> jac) { m->evaluate(x, r, jac); },
         std::string(e.name) + " trial " + std::to_string(trial));
+  }
+}
+
+// Newton's form at a root of a nearly unloaded washer (1 N), lifted off its film: the
+// rows λ·p̂ with λ > 1 are there, and the Jacobian is exact (λ's own slope multiplies
+// p̂ = 0).
+TEST(NewtonFormJacobian, IsExactAtTheRootOfALiftedWasher) {
+  Scene s = testing::table1_scene(true, true, true, true, 545.0, 100.0);
+  s.mesh.radial_nodes = 5;
+  s.mesh.circumferential_nodes = 12;
+  BearingModel m(s);
+  SteadySolver solver(m, {});
+  std::vector<double> u;
+  ASSERT_TRUE(solver.solve_cold(u).converged);
+  NaturalSettings down;
+  down.initial_step = down.max_step = 20.0;
+  const NaturalReport rep = continue_in_parameter(m, u, m.parameter(), 1.0, down);
+  ASSERT_TRUE(rep.reached_target) << rep.message;
+  const NewtonForm form(m);
+  EXPECT_GT(lifted_pressure_rows(m, u), 0) << "no row of Newton's form with λ > 1: the test would not test it";
+  expect_differences_match(
+      m, u, [&](std::span<const double> x, std::span<double> r, std::span<double> jac) { m.evaluate(x, r, jac); },
+      "Newton's form at 1 N");
 }
 
 // In real time (docs/physics.md section 19) the film's squeeze reads the rigid body's
