@@ -38,6 +38,9 @@ struct FilmTotals {
 
 struct AssemblyTotals {
   std::vector<FilmTotals> film;
+  // With the gear's stop (gear_stop.cpp): the gear's scaled distance from it ŝ, the scaled
+  // reaction R̂ = (F2 − F)/S, and the stop row's slope in R̂.
+  double stop_gap = 0, stop_reaction = 0, stop_reaction_slope = 0;
 };
 
 }  // namespace twb

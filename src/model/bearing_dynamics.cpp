@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "model/assembly_totals.h"
 #include "model/bearing_model.h"
 #include "twb/error_family.h"
 
@@ -22,11 +23,23 @@ void BearingModel::parameter_derivative(std::span<const double> u, std::span<dou
 // The load enters only the four rigid rows, the force and moment balances divided by W:
 // r_k = δ_k3 − G_k(u)/W (F_ext/W = 1 in the axial force row), so ∂r_k/∂W = G_k/W² =
 // (δ_k3 − r_k)/W from the residual alone.
+//
+// With the gear's stop the rows are divided by a fixed S: the moments and the washer's
+// force do not see the load, and the gear's row −φ(ŝ, R̂), R̂ = (F2 − W)/S, has the slope
+// φ_b/S, φ_b from R̂ (an assembly: the residual holds φ, not R̂).
 void BearingModel::parameter_derivative_given(std::span<const double> u, std::span<const double> r,
                                               std::span<double> derivative) const {
   if (derivative.size() != u.size() || r.size() != u.size())
     throw InternalError("parameter_derivative: size mismatch");
   std::fill(derivative.begin(), derivative.end(), 0.0);
+  if (gear_stop()) {
+    std::vector<double> residual(u.size());
+    Assembler a(&pattern_, residual, {});
+    AssemblyTotals t;
+    assemble(u, a, &t);
+    derivative[std::size_t(rigid_offset_ + 3)] = t.stop_reaction_slope / force_scale();
+    return;
+  }
   for (Index k = 0; k < 4; ++k) {
     const std::size_t row = std::size_t(rigid_offset_ + k);
     derivative[row] = ((k == 3 ? 1.0 : 0.0) - r[row]) / load_;

@@ -109,7 +109,8 @@ const ComponentHeat* BearingModel::component(ComponentId id) const {
 }
 
 void BearingModel::set_load(double load) {
-  if (!(load > 0)) throw std::invalid_argument("load must be positive");
+  if (!(load > 0) && !(gear_stop() && load == 0.0))
+    throw std::invalid_argument(gear_stop() ? "load must be zero or positive" : "load must be positive");
   load_ = load;
 }
 
@@ -356,8 +357,10 @@ void BearingModel::assemble(std::span<const double> u, Assembler& a, AssemblyTot
       effect->add_terms_in_time(u, *rates, a, t);
     else
       effect->add_terms(u, a, t);
-  // The films' loads were added with their signs; only the external load remains: eq [37].
-  a.add_residual(rigid_offset_ + 3, -1.0);
+  // The films' loads were added with their signs; only the external load remains: eq [37]
+  // (−1 exactly where the load is the force scale).
+  a.add_residual(rigid_offset_ + 3, -load_ / force_scale());
+  if (gear_stop()) add_gear_stop(u, a, t);
   orient_rows(a);
 }
 

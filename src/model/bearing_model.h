@@ -131,6 +131,7 @@ class BearingModel final : public SegregatedSystem {
   void set_flow_balance_rows(bool on) override { flow_balance_rows_ = on; }
 
   // Changes the external load; the pattern and every scale except F_ext-based ones are kept.
+  // A load of zero needs the gear's stop.
   void set_load(double load);
   double load() const { return load_; }
   // Changes the sliding speed (rad/s); the pattern and all scales are kept.
@@ -142,6 +143,12 @@ class BearingModel final : public SegregatedSystem {
   // coefficient needs the constant friction law (std::invalid_argument otherwise).
   double curve_parameter(CurveParameter p) const;
   void set_curve_parameter(CurveParameter p, double value);
+
+  // The gear's stop at its axial play (gear_stop.cpp, docs/physics.md section 19).
+  bool gear_stop() const { return scene_.gear.axial_play.has_value(); }
+  // The force the rigid rows are divided by: the load, or with the gear's stop the
+  // scene's load, held as the load moves (it may reach zero).
+  double force_scale() const;
 
   // Scales (physical value = scale · unknown).
   double clearance_scale() const { return sigma_ref_; }
@@ -221,6 +228,7 @@ class BearingModel final : public SegregatedSystem {
   void assemble(std::span<const double> u, Assembler& a, AssemblyTotals* totals,
                 const StateRates* rates = nullptr) const;
   void orient_rows(Assembler& a) const;
+  void add_gear_stop(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const;
 
   // Viscosity temperature (K) at film node (i, j) and its gradient in the unknowns.
   double viscosity_temperature(std::span<const double> u, const Film& film, int i, int j, LinearForm* form) const;

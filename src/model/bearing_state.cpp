@@ -30,14 +30,20 @@ BearingState BearingModel::describe(std::span<const double> u) const {
 
   s.fluid_force = ft.fluid_force;
   s.contact_force = ft.contact_force;
-  s.fluid_share = ft.fluid_force / load_;
-  s.contact_share = ft.contact_force / load_;
+  // What the sliding film carries: the load, and with the gear's stop the stop's reaction
+  // too (the washer pressed between the films when unloaded, docs/physics.md section 19).
+  const double carried = gear_stop() ? ft.fluid_force + ft.contact_force : load_;
+  // Off its stop where the stop's row reads the balance (R̂ below ŝ, as Newton's form
+  // selects): R̂ is then zero to the tolerance, and its rounding is no reaction.
+  if (gear_stop()) s.stop_reaction = t.stop_reaction > t.stop_gap ? t.stop_reaction * force_scale() : 0.0;
+  s.fluid_share = ft.fluid_force / carried;
+  s.contact_share = ft.contact_force / carried;
   s.friction_coefficient = ft.friction_coefficient;
   s.friction_clamped = ft.friction_clamped;
   s.torque = ft.friction_coefficient * ft.contact_torque_per_f + ft.viscous_torque;
   // Eq [43] with the washer's radii.
   const double ri = scene_.washer.inner_radius, ro = scene_.washer.outer_radius;
-  s.f_eff = 1.5 * s.torque * (ro * ro - ri * ri) / (load_ * (ro * ro * ro - ri * ri * ri));
+  s.f_eff = 1.5 * s.torque * (ro * ro - ri * ri) / (carried * (ro * ro * ro - ri * ri * ri));
 
   // Temperatures.
   const double t0 = scene_.operating.ambient;
@@ -79,7 +85,7 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   // Stribeck number Z·N/P: viscosity at the mean film temperature, N in rev/s, P the
   // load over the washer area (docs/physics.md section 9).
   const double washer_area = std::numbers::pi * (ro * ro - ri * ri);
-  s.stribeck = viscosity(mean_visc_t).value * (std::abs(s.speed) / (2 * std::numbers::pi)) / (load_ / washer_area);
+  s.stribeck = viscosity(mean_visc_t).value * (std::abs(s.speed) / (2 * std::numbers::pi)) / (carried / washer_area);
 
   // Balances, from the residual rows (forces already scaled by the load).
   s.force_balance_error = std::max(std::abs(residual[rigid_offset_ + 0]), std::abs(residual[rigid_offset_ + 3]));

@@ -98,7 +98,7 @@ FilmLoadPass::FilmLoadPass(const BearingModel& model, const FilmLoadRules& rules
       force_row(film.sliding ? model.shape_unknowns().contact_force : -1) {
   // The washer sees film 1 from below (+) and film 2 from above (−); the gear sees film 2 (+).
   const Index r0 = film.rigid_offset;
-  const double f_ref = model.load(), m_ref = model.load() * model.scene().washer.outer_radius;
+  const double f_ref = model.force_scale(), m_ref = f_ref * model.scene().washer.outer_radius;
   if (film.number == 1)
     rows = {{r0 + 0, 1.0 / f_ref, 0, 0}, {r0 + 1, 0, 1.0 / m_ref, 0}, {r0 + 2, 0, 0, 1.0 / m_ref}};
   else

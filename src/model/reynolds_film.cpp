@@ -20,28 +20,12 @@
 #include "model/reynolds_effect.h"
 
 #include "model/assembly_totals.h"
+#include "model/complementarity.h"
 #include "model/film_face_flows.h"
 #include "physics/average_gap.h"
 #include "twb/error_family.h"
 
 namespace twb {
-
-namespace {
-
-// φ(a, b) and its partial derivatives: Fischer–Burmeister a + b − √(a² + b²) or
-// min(a, b). At their kinks (FB at (0, 0), min where a = b) any element of the
-// generalized Jacobian serves semismooth Newton.
-struct Complementarity {
-  double value, da, db;
-};
-Complementarity complementarity(CavitationRow row, double a, double b) {
-  if (row == CavitationRow::minimum) return a <= b ? Complementarity{a, 1.0, 0.0} : Complementarity{b, 0.0, 1.0};
-  const double n = std::hypot(a, b);
-  if (n == 0.0) return {0.0, 1.0 - std::sqrt(0.5), 1.0 - std::sqrt(0.5)};
-  return {a + b - n, 1.0 - a / n, 1.0 - b / n};
-}
-
-}  // namespace
 
 ReynoldsEffect::ReynoldsEffect(ModelSetup& setup) : model_(setup.model) {
   const Scene& scene = model_.scene();

@@ -30,10 +30,11 @@ ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const
              fluid = t.number("fluid_share");
   const auto regime = t.text("regime");
   const auto generated = t.number("heat_generated_W"), to_ambient = t.number("heat_to_ambient_W");
-  std::optional<ResultTable::Column> ambient, tilt, margin, criterion;
+  std::optional<ResultTable::Column> ambient, tilt, margin, criterion, stop;
   if (cycle) {
     ambient = t.number("ambient_C"), tilt = t.number("tilt_rad"), margin = t.number("least_margin");
     criterion = t.text("least_margin_criterion");
+    stop = t.number("stop_reaction_N");  // empty without the gear's stop
   }
   const cells::RunColumns run(t, parameter_columns, sliding_column);
   for (const TrajectorySample& p : samples) {
@@ -56,6 +57,7 @@ ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const
       t.put_number(*tilt, p.tilt);
       t.put_number(*margin, p.least_margin);
       t.put_text(*criterion, p.least_criterion ? std::string(limit_name(*p.least_criterion)) : std::string());
+      t.put_number(*stop, s.stop_reaction);
     }
     run.put(t, p.parameters, p.sliding);
   }

@@ -39,6 +39,9 @@ inline constexpr Range tilt{.low = 0.0, .high = 0.05,
                             .reason = "a small imposed tilt of the gear, at most 50 mrad (2.9 degrees), where the "
                                       "model's small-angle gap is within 0.1 % of the tilted plane's"};
 inline constexpr Range diameter{.low = 1e-3, .high = 2.0, .reason = "a thrust washer's diameter, 1 mm to 2 m"};
+// The gear's free axial travel to its stop (docs/physics.md section 19).
+inline constexpr Range axial_play{.low = 0.0, .low_open = true, .high = 1e-2,
+                                  .reason = "the gear's free axial travel to its stop, above 0 and at most 10 mm"};
 inline constexpr Range thickness{.low = 1e-5, .high = 0.2, .reason = "a thickness from 10 um to 200 mm"};
 
 // Solids.

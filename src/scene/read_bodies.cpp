@@ -40,7 +40,7 @@ void read_geometry(const MapReader& scene, Scene& out) {
   const MapReader washer(geometry.get("washer", "a map with inner_diameter, outer_diameter, thickness"),
                          {"inner_diameter", "outer_diameter", "thickness", "grooves"});
   const MapReader gear(geometry.get("gear", "a map with inner_diameter, outer_diameter, thickness, tilt"),
-                       {"inner_diameter", "outer_diameter", "thickness", "tilt"});
+                       {"inner_diameter", "outer_diameter", "thickness", "tilt", "axial_play"});
 
   const Annulus washer_annulus = read_annulus(washer);
   out.washer.inner_radius = washer_annulus.inner_radius;
@@ -57,6 +57,7 @@ void read_geometry(const MapReader& scene, Scene& out) {
   out.gear.outer_radius = gear_annulus.outer_radius;
   out.gear.thickness = gear.quantity("thickness", si::length, bounds::thickness);
   out.gear.tilt = gear.quantity("tilt", si::angle, bounds::tilt, out.gear.tilt);
+  if (gear.has("axial_play")) out.gear.axial_play = gear.quantity("axial_play", si::length, bounds::axial_play);
 
   // Film 2 lives on the overlap of the washer and gear annuli; without one the washer
   // could not carry the gear's load.

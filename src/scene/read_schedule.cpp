@@ -48,16 +48,18 @@ constexpr ResultsName kResultsNames[] = {
     {"tilt_rad", kTilt, "rad"}};
 
 // What each quantity may be. Unloaded, the washer lifts off its film and the gear goes to
-// its stop at its axial play (docs/physics.md section 19), which twb does not solve yet;
-// the force balances are also scaled by the load.
+// its stop at its axial play (docs/physics.md section 19): a load of zero needs one.
 Range range_of(int q, const Scene& scene) {
   switch (q) {
     case kTime: return Range{.low = 0.0, .high = 1e9, .reason = "a time from 0 s, at most 1e9 s"};
     case kLoad:
+      if (scene.gear.axial_play)
+        return Range{.low = 0.0, .high = bounds::load.high,
+                     .reason = "a load up to 1 MN; at zero the gear rests on its stop at geometry.gear.axial_play"};
       return Range{.low = 0.0, .low_open = true, .high = bounds::load.high,
                    .reason = "a positive load up to 1 MN (unloaded to zero, the washer lifts off its film and the "
-                             "gear goes to its stop at its axial play, docs/physics.md section 19, which twb does "
-                             "not solve yet)"};
+                             "gear goes to its stop: give its axial play, geometry.gear.axial_play, "
+                             "docs/physics.md section 19)"};
     case kSpeed:
       return Range{.low = -bounds::speed.high, .high = bounds::speed.high,
                    .reason = "a speed of at most 1e5 rad/s either way (negative: the washer turns back)"};
@@ -106,6 +108,26 @@ std::optional<std::string> past_limits_at_start(const SchedulePoint& first, cons
   return std::nullopt;
 }
 
+// Where the washer is unloaded at rest (none where it never is): the point, or the end of
+// the segment, at which the load and the speed are zero together. Nothing then holds the
+// massless washer and gear anywhere between their films (docs/physics.md section 19).
+std::optional<std::size_t> unloaded_at_rest(const std::vector<SchedulePoint>& points) {
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const SchedulePoint& p = points[k];
+    if (p.load == 0.0 && p.speed == 0.0) return k;
+    if (k == 0) continue;
+    const SchedulePoint& a = points[k - 1];
+    // Unloaded over the segment while the speed passes through zero.
+    if (a.load == 0.0 && p.load == 0.0 && (a.speed > 0.0) != (p.speed > 0.0)) return k;
+  }
+  return std::nullopt;
+}
+
+constexpr const char* kUnloadedAtRest =
+    "the washer is unloaded (load 0) while it stands still (speed 0) here: nothing then holds the washer and the gear "
+    "anywhere between their films (their masses are not in the model, and a film's pressure cannot pull them back: "
+    "docs/physics.md section 19); keep a load or a speed wherever the other is zero";
+
 std::string time_order_message(double time, double before) {
   return fmt::format("the times must increase strictly from point to point: {:.6g} s follows {:.6g} s (the inputs "
                      "are continuous in time; a step is a short ramp, two points a little apart)",
@@ -140,6 +162,8 @@ std::vector<SchedulePoint> schedule_in_scene(const Node& list, const Scene& scen
                           points.size(), points.size() == 1 ? "" : "s"));
   if (const std::optional<std::string> why = past_limits_at_start(points.front(), scene))
     items.front().fail(fmt::format("{}: {}", items.front().path(), *why));
+  if (const std::optional<std::size_t> k = unloaded_at_rest(points))
+    items[*k].fail(fmt::format("{}: {}", items[*k].path(), kUnloadedAtRest));
   return points;
 }
 
@@ -245,6 +269,8 @@ std::vector<SchedulePoint> schedule_in_file(const std::string& path, const Scene
   if (points.size() < 2)
     text.fail(fmt::format("the schedule has {} point{}: a cycle needs at least two, its start and its end",
                           points.size(), points.size() == 1 ? "" : "s"));
+  if (const std::optional<std::size_t> at = unloaded_at_rest(points))
+    text.fail(std::size_t(points[*at].line - 1), 0, kUnloadedAtRest);
   return points;
 }
 

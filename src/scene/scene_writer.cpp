@@ -108,6 +108,7 @@ void write_geometry(Writer& w, const Scene& s) {
   w.entry(2, "outer_diameter", quantity(2 * s.gear.outer_radius, "m"));
   w.entry(2, "thickness", quantity(s.gear.thickness, "m"));
   w.entry(2, "tilt", quantity(s.gear.tilt, "rad"));
+  if (s.gear.axial_play) w.entry(2, "axial_play", quantity(*s.gear.axial_play, "m"));
 }
 
 void write_materials(Writer& w, const Scene& s) {

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 // A field added to a state must be journaled too, or a resumed run would write it as
 // zero: the size fails to compile until fields_of_state is extended (the other structs'
 // sizes are in kMagic, so an entry of another layout is never read).
-static_assert(sizeof(BearingState) == 8 * 30 + sizeof(std::optional<double>) + sizeof(std::optional<FilmFlows>) +
+static_assert(sizeof(BearingState) == 8 * 30 + 2 * sizeof(std::optional<double>) + sizeof(std::optional<FilmFlows>) +
                   sizeof(std::vector<LimitExcess>),
               "journal every BearingState field (search_journal.cpp)");
 
@@ -50,7 +50,7 @@ template <class A, class S>
 void fields_of_state(A& a, S& s) {
   a(s.load), a(s.speed), a(s.washer_mean_temperature), a(s.max_film_temperature), a(s.hmin_over_sigma);
   a(s.carrier_max_temperature), a(s.washer_max_temperature), a(s.gear_max_temperature);
-  a(s.gamma_x_ratio), a(s.gamma_y_ratio), a(s.fluid_force), a(s.contact_force), a(s.fluid_share);
+  a(s.gamma_x_ratio), a(s.gamma_y_ratio), a(s.fluid_force), a(s.contact_force), a(s.fluid_share), a(s.stop_reaction);
   a(s.contact_share), a(s.torque), a(s.f_eff), a(s.stribeck), a(s.friction_coefficient), a(s.friction_clamped);
   a(s.heat_generated), a(s.heat_to_ambient), a(s.energy_error), a(s.heat_carried), a(s.force_balance_error);
   a(s.moment_balance_error), a(s.complementarity_error), a(s.max_contact_pressure);

@@ -204,6 +204,29 @@ TEST_P(JacobianTest, MatchesCentralDifferences) {
   }
 }
 
+// The gear's stop (docs/physics.md section 19): the gear's row φ(ŝ, R̂) of its distance
+// from the stop and the stop's reaction, at random states around a play half a σ beyond
+// the cold start's gaps (the stop engaged at some, free at others), loaded and unloaded.
+TEST(GearStopJacobian, MatchesCentralDifferences) {
+  Scene s = testing::table1_scene(true, true, true, true, 545.0, 700.0);
+  s.mesh.radial_nodes = 5;
+  s.mesh.circumferential_nodes = 12;
+  const BearingModel free_model(s);
+  const std::vector<double> cold = free_model.cold_start();
+  const Index rigid = free_model.layout().blocks().front().offset;
+  s.gear.axial_play = (cold[std::size_t(rigid)] + cold[std::size_t(rigid + 3)] + 0.5) * free_model.clearance_scale();
+  BearingModel m(s);
+  std::mt19937 rng(2468);
+  for (const double load : {700.0, 0.0}) {
+    m.set_load(load);
+    for (int trial = 0; trial < 2; ++trial)
+      expect_differences_match(
+          m, random_state(m, rng),
+          [&](std::span<const double> x, std::span<double> r, std::span<double> jac) { m.evaluate(x, r, jac); },
+          "the gear's stop at " + std::to_string(load) + " N, trial " + std::to_string(trial));
+  }
+}
+
 // Newton's form at a root of a nearly unloaded washer (1 N), lifted off its film: the
 // rows λ·p̂ with λ > 1 are there, and the Jacobian is exact (λ's own slope multiplies
 // p̂ = 0).

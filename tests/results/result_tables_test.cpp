@@ -2,6 +2,8 @@
 // not exist, and no NaN ever written.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include <cmath>
 
 #include "twb/results/distress_table.h"
@@ -77,15 +79,20 @@ TEST(TrajectoryTable, ColumnsInCelsius) {
             "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,torque_Nm,fluid_share,regime,"
             "heat_generated_W,heat_to_ambient_W\n"
             "1.5,30,45,3.2,0.01,0.03,180,545,0.04,0.99,mixed,20,19.5\n");
-  // A duty cycle's columns: the schedule's ambient (in Celsius) and tilt, the least margin.
+  // A duty cycle's columns: the schedule's ambient (in Celsius) and tilt, the least
+  // margin, the gear's stop's reaction (empty without the stop).
   s.ambient = 273.15 + 40.0;
   s.tilt = 0.002;
   s.least_margin = 0.25;
   s.least_criterion = LimitKind::flash_temperature;
+  const std::string header =
+      "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,torque_Nm,fluid_share,regime,"
+      "heat_generated_W,heat_to_ambient_W,ambient_C,tilt_rad,least_margin,least_margin_criterion,stop_reaction_N\n";
   EXPECT_EQ(trajectory_table({s}, {}, false, true).csv(),
-            "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,torque_Nm,fluid_share,regime,"
-            "heat_generated_W,heat_to_ambient_W,ambient_C,tilt_rad,least_margin,least_margin_criterion\n"
-            "1.5,30,45,3.2,0.01,0.03,180,545,0.04,0.99,mixed,20,19.5,40,0.002,0.25,flash_temperature\n");
+            header + "1.5,30,45,3.2,0.01,0.03,180,545,0.04,0.99,mixed,20,19.5,40,0.002,0.25,flash_temperature,\n");
+  s.state.stop_reaction = 0.5;
+  EXPECT_EQ(trajectory_table({s}, {}, false, true).csv(),
+            header + "1.5,30,45,3.2,0.01,0.03,180,545,0.04,0.99,mixed,20,19.5,40,0.002,0.25,flash_temperature,0.5\n");
   s.state.f_eff = INFINITY;
   EXPECT_THROW(trajectory_csv({s}), std::runtime_error);
 }

@@ -178,6 +178,37 @@ TEST(Schedule, FaultsInTheFileAreLocated) {
   }
 }
 
+// A load of zero needs the gear's stop (geometry.gear.axial_play, physics §19), and a
+// washer that turns: unloaded and at rest together nothing holds it between its films,
+// which is refused at the point (in the scene) or the row (in a file) where it happens.
+TEST(Schedule, ALoadOfZeroNeedsTheGearsStopAndATurningWasher) {
+  const std::string play = "geometry: {gear: {axial_play: 100 um}}\n";
+  const TempScene fine(cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N}, {t: 3 s, load: 50 N, speed: -3000 rpm}]") + play);
+  const Scene s = load_scene(fine.path());
+  ASSERT_EQ(s.study.schedule.size(), 3u);
+  EXPECT_EQ(s.study.schedule[1].load, 0.0);
+  ASSERT_TRUE(s.gear.axial_play);
+  EXPECT_NEAR(*s.gear.axial_play, 1e-4, 1e-16);
+  // The resolved scene keeps the play.
+  const TempScene resolved(describe_scene(s), "_resolved");
+  const Scene r = load_scene(resolved.path());
+  ASSERT_TRUE(r.gear.axial_play);
+  EXPECT_EQ(*r.gear.axial_play, *s.gear.axial_play);
+
+  const TempScene at_rest(cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N, speed: 0 rpm}]") + play);
+  const InputError e = testing::load_error(at_rest.path());
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_EQ(e.column(), 24);
+  EXPECT_NE(std::string(e.what()).find("stands still"), std::string::npos) << e.what();
+
+  const TempScene csv("t [s], load [N], speed [rpm]\n0, 100, 3000\n1, 0, 3000\n2, 0, -3000\n", "_data", ".csv");
+  const TempScene through(cycle_scene(csv.path()) + play);
+  const InputError f = testing::load_error(through.path());
+  EXPECT_EQ(f.file(), csv.path());
+  EXPECT_EQ(f.line(), 4);
+  EXPECT_NE(std::string(f.what()).find("stands still"), std::string::npos) << f.what();
+}
+
 // A schedule file that is not there is the scene's fault, at its key.
 TEST(Schedule, AMissingFileIsTheScenesFault) {
   const TempScene file(cycle_scene("no-such-cycle.csv"));

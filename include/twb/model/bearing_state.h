@@ -34,6 +34,9 @@ struct BearingState {
   double gamma_x_ratio = 0, gamma_y_ratio = 0;
   double fluid_force = 0, contact_force = 0;  // sliding film, N
   double fluid_share = 0, contact_share = 0;
+  // With the gear's stop (geometry.gear.axial_play): the stop's reaction on the gear, N,
+  // zero where the gear is off it (docs/physics.md section 19).
+  std::optional<double> stop_reaction;
   double torque = 0, f_eff = 0;
   double stribeck = 0;  // Z N / P: Pa·s · rev/s / Pa
   double friction_coefficient = 0;

@@ -4,7 +4,8 @@
 //   t_s, T_mean_C, T_max_C, hmin_over_sigma, contact_share, f_eff, load_N, speed_rad_s,
 //   torque_Nm, fluid_share, regime, heat_generated_W, heat_to_ambient_W
 // then, for a duty cycle, the schedule's ambient_C and tilt_rad at that time and the
-// least_margin with its least_margin_criterion (TrajectorySample), and for a study of
+// least_margin with its least_margin_criterion (TrajectorySample) and stop_reaction_N
+// (empty without the gear's stop), and for a study of
 // several runs the columns that tell them apart (the parameter, the sliding film); each
 // run's transient starts again at t_s = 0.
 #pragma once

@@ -186,6 +186,9 @@ struct Component {
   double outer_radius = 0.0;  // m
   double thickness = 0.0;     // m
   double tilt = 0.0;          // rad, imposed tilt about y (gear only)
+  // m, the gear's free axial travel to its stop (gear only; docs/physics.md section 19):
+  // the most the two films' mean gaps may add up to at the axis. None: no stop.
+  std::optional<double> axial_play{};
   Material material;
   Roughness roughness;
   std::optional<Grooves> grooves{};  // the washer's face only
