@@ -8,7 +8,8 @@
 
 namespace twb {
 
-// Only the 4 rigid-body rows see the load: after orientation
+// Only the 4 rigid-body rows see the load (without the gear's stop; with it, below, the
+// gear's row alone): after orientation
 //   F_k = −(S_k / ref_k − δ_k3),   ref = W (forces) or W·r_o (moments)   (eqs [34]-[37]),
 // with S_k the film sums, which do not depend on W. Hence
 //   ∂F_k/∂W = S_k / (ref_k · W) = (δ_k3 − F_k) / W,

@@ -121,7 +121,8 @@ class BearingModel final : public SegregatedSystem {
   bool newton_form() const override { return cavitation_row_ == CavitationRow::minimum; }
   bool flow_balance_rows() const { return flow_balance_rows_; }
   // |φ_FB(a, b)| ≤ (2 + √2)|min(a, b)| (Tseng): a minimum row within tol/(2 + √2) is a
-  // Fischer–Burmeister row within tol; the other rows are the same in both forms.
+  // Fischer–Burmeister row within tol (the cavitation rows' min(λ·p̂, ŵ) too, λ ≥ 1, and
+  // the gear's stop's row); the other rows are the same in both forms.
   double newton_form_tolerance_ratio() const override { return 1.0 / (2.0 + std::numbers::sqrt2); }
   CavitationRow cavitation_row() const { return cavitation_row_; }
 

@@ -32,7 +32,7 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   s.contact_force = ft.contact_force;
   // What the sliding film carries: the load, and with the gear's stop the stop's reaction
   // too (the washer pressed between the films when unloaded, docs/physics.md section 19).
-  const double carried = gear_stop() ? ft.fluid_force + ft.contact_force : load_;
+  const double carried = gear_stop() && ft.fluid_force + ft.contact_force > 0.0 ? ft.fluid_force + ft.contact_force : load_;
   // Off its stop where the stop's row reads the balance (R̂ below ŝ, as Newton's form
   // selects): R̂ is then zero to the tolerance, and its rounding is no reaction.
   if (gear_stop()) s.stop_reaction = t.stop_reaction > t.stop_gap ? t.stop_reaction * force_scale() : 0.0;
@@ -87,7 +87,8 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   const double washer_area = std::numbers::pi * (ro * ro - ri * ri);
   s.stribeck = viscosity(mean_visc_t).value * (std::abs(s.speed) / (2 * std::numbers::pi)) / (carried / washer_area);
 
-  // Balances, from the residual rows (forces already scaled by the load).
+  // Balances, from the residual rows (forces scaled by the load, or with the gear's stop by
+  // the scene's load; the gear's row is then the stop's complementarity).
   s.force_balance_error = std::max(std::abs(residual[rigid_offset_ + 0]), std::abs(residual[rigid_offset_ + 3]));
   s.moment_balance_error = std::max(std::abs(residual[rigid_offset_ + 1]), std::abs(residual[rigid_offset_ + 2]));
   if (film.pressure_offset >= 0)

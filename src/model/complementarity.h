@@ -12,10 +12,10 @@ namespace twb {
 // min(a, b). At their kinks (FB at (0, 0), min where a = b) any element of the
 // generalized Jacobian serves semismooth Newton.
 //
-// Where a ≫ b > 0 (a gear far from its stop, a node deep in the cavitated zone) the sum
-// a + b − √(a² + b²) cancels to ≈ b − b²/(2a), losing the rounding of a, and 1 − a/n
-// cancels alike: written 2ab/(a + b + n) and b²/(n·(n + a)) instead (the same numbers,
-// (a + b)² − n² = 2ab), they keep their relative precision.
+// Where a ≫ |b| with a > 0 (a gear far from its stop, a node deep in the cavitated zone)
+// the sum a + b − √(a² + b²) cancels to ≈ b − b²/(2a), losing the rounding of a, and
+// 1 − a/n cancels alike: written 2ab/(a + b + n) and b²/(n·(n + a)) instead (the same
+// numbers, (a + b)² − n² = 2ab), they keep their relative precision.
 struct Complementarity {
   double value, da, db;
 };
@@ -24,8 +24,9 @@ inline Complementarity complementarity(CavitationRow row, double a, double b) {
   const double n = std::hypot(a, b);
   if (n == 0.0) return {0.0, 1.0 - std::sqrt(0.5), 1.0 - std::sqrt(0.5)};
   const double value = a + b > 0.0 ? 2.0 * a * b / (a + b + n) : a + b - n;
-  const double da = a > 0.0 ? b * b / (n * (n + a)) : 1.0 - a / n;
-  const double db = b > 0.0 ? a * a / (n * (n + b)) : 1.0 - b / n;
+  // Each factor at most 1: no under- or overflow where n is tiny or huge.
+  const double da = a > 0.0 ? (b / n) * (b / (n + a)) : 1.0 - a / n;
+  const double db = b > 0.0 ? (a / n) * (a / (n + b)) : 1.0 - b / n;
   return {value, da, db};
 }
 

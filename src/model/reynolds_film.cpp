@@ -227,7 +227,8 @@ void ReynoldsEffect::add_film(std::span<const double> u, const StateRates* rates
     // Same roots; |min(p̂, ŵ)| ≤ |min(λ·p̂, ŵ)| for λ ≥ 1, so the form's tolerance ratio
     // holds. λ's own slope is left out of the Jacobian: exact at the roots, where the rows
     // reading λ·p̂ have p̂ = 0.
-    const double lambda = newton_form ? std::max(1.0, own_slope[std::size_t(k)] / scale) : 1.0;
+    const double slope = newton_form ? own_slope[std::size_t(k)] / scale : 1.0;
+    const double lambda = slope > 1.0 || std::isnan(slope) ? slope : 1.0;  // a NaN shows in the row, not as 1
     const Complementarity phi = complementarity(model.cavitation_row(), lambda * u[row], w_hat);
     a.set_residual(row, phi.value);
     if (!jac) continue;

@@ -32,6 +32,9 @@ std::string BearingModel::describe_row(Index k) const {
     static constexpr const char* rigid[] = {
         "the washer's axial force balance (film 1 against film 2)", "the washer's moment balance about x",
         "the washer's moment balance about y", "the gear's axial force balance (film 2 against the load)"};
+    if (k == rigid_offset_ + 3 && gear_stop())
+      return "the gear's axial balance with its stop (film 2 against the load, or the gear on its stop at its axial "
+             "play)";
     return rigid[k - rigid_offset_];
   }
   for (const Film& f : films_) {

@@ -48,14 +48,21 @@ constexpr ResultsName kResultsNames[] = {
     {"tilt_rad", kTilt, "rad"}};
 
 // What each quantity may be. Unloaded, the washer lifts off its film and the gear goes to
-// its stop at its axial play (docs/physics.md section 19): a load of zero needs one.
+// its stop at its axial play (docs/physics.md section 19): a load of zero needs one, and
+// the film's pressure to lift the washer (with contact alone both films open until their
+// asperities part, and nothing says how far each).
 Range range_of(int q, const Scene& scene) {
   switch (q) {
     case kTime: return Range{.low = 0.0, .high = 1e9, .reason = "a time from 0 s, at most 1e9 s"};
     case kLoad:
-      if (scene.gear.axial_play)
+      if (scene.gear.axial_play && scene.effects.hydrodynamics)
         return Range{.low = 0.0, .high = bounds::load.high,
                      .reason = "a load up to 1 MN; at zero the gear rests on its stop at geometry.gear.axial_play"};
+      if (scene.gear.axial_play)
+        return Range{.low = 0.0, .low_open = true, .high = bounds::load.high,
+                     .reason = "a positive load up to 1 MN (a load of zero needs the hydrodynamics effect: with "
+                               "asperity contact alone nothing holds the unloaded washer between its films, "
+                               "docs/physics.md section 19)"};
       return Range{.low = 0.0, .low_open = true, .high = bounds::load.high,
                    .reason = "a positive load up to 1 MN (unloaded to zero, the washer lifts off its film and the "
                              "gear goes to its stop: give its axial play, geometry.gear.axial_play, "
@@ -88,10 +95,15 @@ SchedulePoint operating_point(const Scene& scene) {
   return p;
 }
 
-// Where a schedule cannot start: the oil or a body already past its limit at the first
-// point's ambient (every failure criterion of temperature is crossed before any heat).
-std::optional<std::string> past_limits_at_start(const SchedulePoint& first, const Scene& scene) {
+// Where a schedule cannot start: unloaded (its steady state is reached from a load), or
+// the oil or a body already past its limit at the first point's ambient (every failure
+// criterion of temperature is crossed before any heat).
+std::optional<std::string> cannot_start_at(const SchedulePoint& first, const Scene& scene) {
   const auto degc = [](double k) { return k - 273.15; };
+  if (first.load == 0.0)
+    return "the schedule starts unloaded: the march starts from the steady state at its first point, which the "
+           "steady solver reaches by raising the load from a fraction of it; start loaded (the scene's load, say) "
+           "and unload within the cycle";
   if (first.ambient >= scene.lubricant.max_temperature)
     return fmt::format("the ambient {:.6g} degC at the schedule's start is past the oil's maximum temperature {:.6g} "
                        "degC (lubricant.max_temperature): the bearing has failed before the cycle begins",
@@ -160,7 +172,7 @@ std::vector<SchedulePoint> schedule_in_scene(const Node& list, const Scene& scen
   if (points.size() < 2)
     list.fail(fmt::format("{}: {} point{}: a cycle needs at least two, its start and its end", list.path(),
                           points.size(), points.size() == 1 ? "" : "s"));
-  if (const std::optional<std::string> why = past_limits_at_start(points.front(), scene))
+  if (const std::optional<std::string> why = cannot_start_at(points.front(), scene))
     items.front().fail(fmt::format("{}: {}", items.front().path(), *why));
   if (const std::optional<std::size_t> k = unloaded_at_rest(points))
     items[*k].fail(fmt::format("{}: {}", items[*k].path(), kUnloadedAtRest));
@@ -262,7 +274,7 @@ std::vector<SchedulePoint> schedule_in_file(const std::string& path, const Scene
       text.fail(k, row[*seen[kTime]].column, time_order_message(p.time, before.time));
     }
     if (points.empty())
-      if (const std::optional<std::string> why = past_limits_at_start(p, scene)) text.fail(k, 0, *why);
+      if (const std::optional<std::string> why = cannot_start_at(p, scene)) text.fail(k, 0, *why);
     points.push_back(p);
     before = p;
   }

@@ -90,6 +90,7 @@ DistressSearchPhases::DistressSearchPhases(BearingModel& model, const DistressSe
   std::erase_if(stops, [&](double w) { return w <= settings.load_start || w > settings.load_end; });
   if (stops.empty() || stops.back() < settings.load_end) stops.push_back(settings.load_end);
   double at = settings.load_start;
+  if (!(at > 0.0)) throw InternalError("DistressSearchPhases: the search must start at a positive load");
   for (double stop : stops) {
     while (at * 1.15 < stop) targets_.push_back(at *= 1.15);
     targets_.push_back(at = stop);

@@ -238,7 +238,9 @@ void failure_at_worst(BearingModel& model, StudyOutcome& out, const TrajectorySa
   p.tilt = *worst.tilt;
   OperatingSchedule::apply(model, p);
   DistressSearchSettings settings;
-  settings.load_start = 0.25 * p.load;
+  // From a quarter of the load there, or of the cycle's largest where the washer was
+  // unloaded (the search climbs from a load the films carry).
+  settings.load_start = 0.25 * (p.load > 0.0 ? p.load : largest_load);
   settings.load_end = 10.0 * largest_load;
   settings.march_past_distress = false;
   try {
@@ -355,6 +357,8 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   } described;
   const auto describe_at = [&](double t, std::span<const double> state) -> const BearingState& {
     if (described.t != t || !std::equal(state.begin(), state.end(), described.u.begin(), described.u.end())) {
+      // The balances' errors a state reports are its own rows' (the march runs in Newton's).
+      const NewtonForm own_rows(model, false);
       described.state = model.describe(state);
       described.t = t;
       described.u.assign(state.begin(), state.end());

@@ -68,7 +68,8 @@ class SteadySystem {
   // Newton's form: rows with the same roots that Newton converges on faster from a
   // close start, but whose slopes jump where a march (pseudo-time, a transient) or a
   // differentiated system (a fold's) needs them continuous: the bearing's cavitation
-  // rows as min(p̂, ŵ) instead of Fischer–Burmeister (CavitationRow). Off unless a
+  // rows as min(λ·p̂, ŵ) and the gear's stop's as min(ŝ, R̂) instead of
+  // Fischer–Burmeister (CavitationRow, docs/physics.md sections 3 and 19). Off unless a
   // NewtonForm scope is open; a system without such rows ignores it. (A duty cycle's IDA
   // opens one for its Newton, which starts every step close, from its predictor: IDA
   // needs only the roots, its error test reads the differential unknowns.)

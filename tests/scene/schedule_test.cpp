@@ -201,6 +201,15 @@ TEST(Schedule, ALoadOfZeroNeedsTheGearsStopAndATurningWasher) {
   EXPECT_EQ(e.column(), 24);
   EXPECT_NE(std::string(e.what()).find("stands still"), std::string::npos) << e.what();
 
+  // A cycle starts loaded (its steady state is reached by raising the load), and a load of
+  // zero needs the film's pressure to lift the washer.
+  const TempScene unloaded_start(cycle_scene("[{t: 0 s, load: 0 N}, {t: 2 s, load: 100 N}]") + play);
+  EXPECT_NE(std::string(testing::load_error(unloaded_start.path()).what()).find("starts unloaded"), std::string::npos);
+  const TempScene contact_only(cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N}]") + play +
+                               "effects: !replace [asperity_contact, thermal]\n");
+  EXPECT_NE(std::string(testing::load_error(contact_only.path()).what()).find("needs the hydrodynamics effect"),
+            std::string::npos);
+
   const TempScene csv("t [s], load [N], speed [rpm]\n0, 100, 3000\n1, 0, 3000\n2, 0, -3000\n", "_data", ".csv");
   const TempScene through(cycle_scene(csv.path()) + play);
   const InputError f = testing::load_error(through.path());
