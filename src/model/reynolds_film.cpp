@@ -13,7 +13,6 @@
 // The discretization itself (control volumes, faces, the face flux and which balances
 // it enters) is ReynoldsOperator's, the face fluxes of the bearing's film with their
 // slopes in the unknowns FilmFaceFlows'; this file assembles them into the balances.
-#include <algorithm>
 #include <array>
 #include <cmath>
 

@@ -85,6 +85,12 @@ TEST(OperatingSchedule, StraightLinesBetweenThePointsHeldOutside) {
 // and what is left is IDA's error, a few times its relative tolerance (1e-6) of the
 // temperatures (a contractive march does not accumulate it): 1e-4 K and 1e-5 of h_min/σ
 // allow a hundred times that.
+void expect_at_steady_state(const BearingState& end, const BearingState& steady) {
+  EXPECT_NEAR(end.washer_mean_temperature, steady.washer_mean_temperature, 1e-4);
+  EXPECT_NEAR(end.max_film_temperature, steady.max_film_temperature, 1e-4);
+  EXPECT_NEAR(end.hmin_over_sigma, steady.hmin_over_sigma, 1e-5 * steady.hmin_over_sigma);
+}
+
 struct HeldCycle {
   StudyOutcome out;
   BearingState steady;
@@ -105,9 +111,7 @@ HeldCycle held_cycle(const std::string& schedule, const std::vector<std::string>
   if (held.out.trajectory.empty()) return held;
   const TrajectorySample& end = held.out.trajectory.back();
   EXPECT_DOUBLE_EQ(end.time, hold);
-  EXPECT_NEAR(end.state.washer_mean_temperature, held.steady.washer_mean_temperature, 1e-4);
-  EXPECT_NEAR(end.state.max_film_temperature, held.steady.max_film_temperature, 1e-4);
-  EXPECT_NEAR(end.state.hmin_over_sigma, held.steady.hmin_over_sigma, 1e-5 * held.steady.hmin_over_sigma);
+  expect_at_steady_state(end.state, held.steady);
   return held;
 }
 
@@ -180,9 +184,7 @@ TEST(DutyCycle, HeldUnloadedItEndsAtTheSteadyStateOnTheStop) {
   ASSERT_TRUE(steady.stop_reaction);
   EXPECT_NEAR(*steady.stop_reaction, steady.fluid_force + steady.contact_force, 1e-9 * scene.operating.load);
   const BearingState& end = out.trajectory.back().state;
-  EXPECT_NEAR(end.washer_mean_temperature, steady.washer_mean_temperature, 1e-4);
-  EXPECT_NEAR(end.max_film_temperature, steady.max_film_temperature, 1e-4);
-  EXPECT_NEAR(end.hmin_over_sigma, steady.hmin_over_sigma, 1e-5 * steady.hmin_over_sigma);
+  expect_at_steady_state(end, steady);
   ASSERT_TRUE(end.stop_reaction);
   EXPECT_NEAR(*end.stop_reaction, *steady.stop_reaction, 1e-4 * *steady.stop_reaction);
   expect_heat_balance(out);
