@@ -362,6 +362,7 @@ void BearingModel::assemble(std::span<const double> u, Assembler& a, AssemblyTot
   a.add_residual(rigid_offset_ + 3, -load_ / force_scale());
   if (gear_stop()) add_gear_stop(u, a, t);
   orient_rows(a);
+  if (held_at_rest()) add_rest_rows(u, a, rates);
 }
 
 // Rows are assembled as "what pushes − what resists" (forces F1 − F2, heat gained −

@@ -151,6 +151,13 @@ class BearingModel final : public SegregatedSystem {
   // scene's load, held as the load moves (it may reach zero).
   double force_scale() const;
 
+  // The washer unloaded at rest (unloaded_rest.cpp, docs/physics.md section 19): while the
+  // load and the speed are both zero nothing holds the massless washer and gear, and the
+  // rigid rows hold them where they came to rest, the rigid unknowns of `u` (in real time
+  // a differential one by a rate of zero). hold_at_rest({}) gives the balances back.
+  void hold_at_rest(std::span<const double> u);
+  bool held_at_rest() const { return !rest_.empty(); }
+
   // Scales (physical value = scale · unknown).
   double clearance_scale() const { return sigma_ref_; }
   double tilt_scale() const { return gamma_ref_; }
@@ -230,6 +237,7 @@ class BearingModel final : public SegregatedSystem {
                 const StateRates* rates = nullptr) const;
   void orient_rows(Assembler& a) const;
   void add_gear_stop(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const;
+  void add_rest_rows(std::span<const double> u, Assembler& a, const StateRates* rates) const;
 
   // Viscosity temperature (K) at film node (i, j) and its gradient in the unknowns.
   double viscosity_temperature(std::span<const double> u, const Film& film, int i, int j, LinearForm* form) const;
@@ -261,6 +269,8 @@ class BearingModel final : public SegregatedSystem {
   // The same for passes in real time, whose squeeze terms add entries of their own.
   mutable SlotTape rate_slot_tape_;
   double imposed_tilt_rate_ = 0.0;
+  std::vector<double> rest_;  // the rigid unknowns held at rest (hold_at_rest); empty: none
+  std::array<char, 4> rest_by_rate_{};  // which of them is held by its rate in real time
   std::vector<std::vector<LinearForm>> viscosity_forms_;  // per film, per node
 
   // Thermal deformation's shapes (film_shape.cpp): δ = form · u per film, per node.

@@ -36,14 +36,17 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   // Off its stop where the stop's row reads the balance (R̂ below ŝ, as Newton's form
   // selects): R̂ is then zero to the tolerance, and its rounding is no reaction.
   if (gear_stop()) s.stop_reaction = t.stop_reaction > t.stop_gap ? t.stop_reaction * force_scale() : 0.0;
-  s.fluid_share = ft.fluid_force / carried;
-  s.contact_share = ft.contact_force / carried;
+  // Unloaded at rest with the films parted (physics §19) nothing is carried: the shares,
+  // f_eff and the Stribeck number over it are written as 0.
+  const auto over_carried = [&](double x) { return carried > 0.0 ? x / carried : 0.0; };
+  s.fluid_share = over_carried(ft.fluid_force);
+  s.contact_share = over_carried(ft.contact_force);
   s.friction_coefficient = ft.friction_coefficient;
   s.friction_clamped = ft.friction_clamped;
   s.torque = ft.friction_coefficient * ft.contact_torque_per_f + ft.viscous_torque;
   // Eq [43] with the washer's radii.
   const double ri = scene_.washer.inner_radius, ro = scene_.washer.outer_radius;
-  s.f_eff = 1.5 * s.torque * (ro * ro - ri * ri) / (carried * (ro * ro * ro - ri * ri * ri));
+  s.f_eff = carried > 0.0 ? 1.5 * s.torque * (ro * ro - ri * ri) / (carried * (ro * ro * ro - ri * ri * ri)) : 0.0;
 
   // Temperatures.
   const double t0 = scene_.operating.ambient;
@@ -85,7 +88,9 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   // Stribeck number Z·N/P: viscosity at the mean film temperature, N in rev/s, P the
   // load over the washer area (docs/physics.md section 9).
   const double washer_area = std::numbers::pi * (ro * ro - ri * ri);
-  s.stribeck = viscosity(mean_visc_t).value * (std::abs(s.speed) / (2 * std::numbers::pi)) / (carried / washer_area);
+  s.stribeck = carried > 0.0 ? viscosity(mean_visc_t).value * (std::abs(s.speed) / (2 * std::numbers::pi)) /
+                                    (carried / washer_area)
+                              : 0.0;
 
   // Balances, from the residual rows (forces scaled by the load, or with the gear's stop by
   // the scene's load; the gear's row is then the stop's complementarity).

@@ -7,6 +7,7 @@ namespace twb {
 using cells::kelvin_offset;
 
 Regime regime_of(const BearingState& state) {
+  if (state.load == 0.0 && state.speed == 0.0) return Regime::at_rest;
   if (state.contact_share < 0.01) return Regime::full_film;
   if (state.fluid_share < 0.1) return Regime::boundary;
   return Regime::mixed;
@@ -17,6 +18,7 @@ std::string_view regime_name(Regime regime) {
     case Regime::full_film: return "full_film";
     case Regime::mixed: return "mixed";
     case Regime::boundary: return "boundary";
+    case Regime::at_rest: return "at_rest";
   }
   return "";
 }

@@ -120,25 +120,26 @@ std::optional<std::string> cannot_start_at(const SchedulePoint& first, const Sce
   return std::nullopt;
 }
 
-// Where the washer is unloaded at rest (none where it never is): the point, or the end of
-// the segment, at which the load and the speed are zero together. Nothing then holds the
-// massless washer and gear anywhere between their films (docs/physics.md section 19).
-std::optional<std::size_t> unloaded_at_rest(const std::vector<SchedulePoint>& points) {
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const SchedulePoint& p = points[k];
-    if (p.load == 0.0 && p.speed == 0.0) return k;
-    if (k == 0) continue;
-    const SchedulePoint& a = points[k - 1];
-    // Unloaded over the segment while the speed passes through zero.
-    if (a.load == 0.0 && p.load == 0.0 && (a.speed > 0.0) != (p.speed > 0.0)) return k;
+// Where a washer that came to rest with its load (the load reaching zero where the speed
+// is zero, or with it) would leave the rest with its speed alone, the load still zero:
+// none where none does. The gear came to rest off its stop, and nothing then bounds how
+// fast the turning film lifts the washer, with nothing pressing it down (docs/physics.md
+// section 19): the load must come back first, or with the speed.
+std::optional<std::size_t> leaves_rest_unloaded(const std::vector<SchedulePoint>& points) {
+  const auto at_rest = [](const SchedulePoint& p) { return p.load == 0.0 && p.speed == 0.0; };
+  for (std::size_t k = 1; k + 1 < points.size(); ++k) {
+    if (!at_rest(points[k]) || at_rest(points[k - 1]) || points[k - 1].load == 0.0) continue;
+    std::size_t leave = k + 1;
+    while (leave < points.size() && at_rest(points[leave])) ++leave;
+    if (leave < points.size() && points[leave].load == 0.0) return leave;
   }
   return std::nullopt;
 }
 
-constexpr const char* kUnloadedAtRest =
-    "the washer is unloaded (load 0) while it stands still (speed 0) here: nothing then holds the washer and the gear "
-    "anywhere between their films (their masses are not in the model, and a film's pressure cannot pull them back: "
-    "docs/physics.md section 19); keep a load or a speed wherever the other is zero";
+constexpr const char* kLeavesRestUnloaded =
+    "the washer leaves a rest with its speed alone, still unloaded, after it came to rest with its load: the gear "
+    "is off its stop there, and nothing then bounds how fast the turning film lifts the washer (docs/physics.md "
+    "section 19); bring the load back first, or with the speed (a small load will do)";
 
 std::string time_order_message(double time, double before) {
   return fmt::format("the times must increase strictly from point to point: {:.6g} s follows {:.6g} s (the inputs "
@@ -174,8 +175,8 @@ std::vector<SchedulePoint> schedule_in_scene(const Node& list, const Scene& scen
                           points.size(), points.size() == 1 ? "" : "s"));
   if (const std::optional<std::string> why = cannot_start_at(points.front(), scene))
     items.front().fail(fmt::format("{}: {}", items.front().path(), *why));
-  if (const std::optional<std::size_t> k = unloaded_at_rest(points))
-    items[*k].fail(fmt::format("{}: {}", items[*k].path(), kUnloadedAtRest));
+  if (const std::optional<std::size_t> k = leaves_rest_unloaded(points))
+    items[*k].fail(fmt::format("{}: {}", items[*k].path(), kLeavesRestUnloaded));
   return points;
 }
 
@@ -281,8 +282,8 @@ std::vector<SchedulePoint> schedule_in_file(const std::string& path, const Scene
   if (points.size() < 2)
     text.fail(fmt::format("the schedule has {} point{}: a cycle needs at least two, its start and its end",
                           points.size(), points.size() == 1 ? "" : "s"));
-  if (const std::optional<std::size_t> at = unloaded_at_rest(points))
-    text.fail(std::size_t(points[*at].line - 1), 0, kUnloadedAtRest);
+  if (const std::optional<std::size_t> at = leaves_rest_unloaded(points))
+    text.fail(std::size_t(points[*at].line - 1), 0, kLeavesRestUnloaded);
   return points;
 }
 

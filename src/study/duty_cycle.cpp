@@ -308,7 +308,8 @@ std::vector<double> continued_state(const BearingModel& model, const CycleState&
 
 void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, const CycleState* start) {
   const auto t0 = std::chrono::steady_clock::now();
-  const OperatingSchedule schedule(model.scene().study.schedule);
+  // The scene's schedule, with a point where an unloaded washer's speed turns back.
+  const OperatingSchedule schedule(OperatingSchedule::with_rests(model.scene().study.schedule));
   const NewtonSettings newton = newton_settings(model.scene());
   const std::string bearing = bearing_of(describe_scene(model.scene()));
 
@@ -383,9 +384,14 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   // consistent starts (KINSOL from rates of zero, not close) keep the model's own rows.
   std::optional<NewtonForm> march_form;
   march_form.emplace(model);
+  // Whether IDA holds heat and work since its last start that bank() has not taken: a
+  // start that fails leaves IDA as it was, already banked.
+  bool unbanked = false;
   const auto start_in_own_rows = [&](double t, std::span<const double> state) {
     const NewtonForm own_rows(model, false);
-    return ida.start(t, state);
+    TransientStatus status = ida.start(t, state);
+    if (status.ok) unbanked = true;
+    return status;
   };
   double lowest_ambient = first.ambient;
   for (const SchedulePoint& p : schedule.points()) lowest_ambient = std::min(lowest_ambient, p.ambient);
@@ -429,6 +435,8 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   RunawayWatch runaway(model);
   std::string ended;  // why the march ended before the schedule did
   auto bank = [&] {
+    if (!unbanked) return;
+    unbanked = false;
     const std::vector<double> q = ida.quadratures();
     heat.generated += q[0];
     heat.to_ambient += q[1];
@@ -454,46 +462,85 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
     }
   };
 
+  // The washer unloaded at rest (load and speed both zero) is held where it came to rest
+  // (BearingModel::hold_at_rest, physics §19), from a millionth of the segment before the
+  // point where it comes to rest to a millionth of the segment after it leaves: the
+  // massless bodies' positions have a limit as the load and the speed go to zero, none at
+  // the zero itself (the free gear's climbs up film 2's asperity tail without end).
+  constexpr double kRestMargin = 1e-6;
+  struct RestGivenBack {
+    BearingModel& model;
+    ~RestGivenBack() { model.hold_at_rest({}); }
+  } rest_given_back{model};
+  bool started = false;
   for (; segment < schedule.segments() && ended.empty(); ++segment) {
-    const double t_start = schedule.points()[segment].time, t_end = schedule.points()[segment + 1].time;
+    const SchedulePoint& a = schedule.points()[segment];
+    const SchedulePoint& b = schedule.points()[segment + 1];
     if (progress)
       progress(fmt::format("duty cycle: segment {} of {}, {:.6g} s to {:.6g} s", segment + 1, schedule.segments(),
-                           t_start, t_end));
-    // Restarted at every point of the schedule: the inputs' rates jump there, and so do
-    // the state's (consistent values computed afresh).
-    if (segment > 0) bank();
-    runaway.restart();
-    TransientStatus status = start_in_own_rows(t_start, u);
-    if (!status.ok) {
-      ended = fmt::format("no consistent state at t = {:.6g} s: {}", t_start, status.message);
-      break;
-    }
-    if (segment == 0) record(ida.time(), ida.state());
-    // Restarts in a row: a kink of the model (contact or cavitation switching on) is passed
-    // by one; a march that fails again and again has ended.
-    int restarts = 0;
-    std::string restart_failed;
-    while (ida.time() < t_end) {
-      status = ida.step(t_end);
-      if (!status.ok && restarts < kRestarts) {
-        ++restarts;
-        const std::vector<double> here(ida.state().begin(), ida.state().end());
-        bank();
-        const TransientStatus again = start_in_own_rows(ida.time(), here);
-        if (again.ok) continue;
-        restart_failed = "; starting again there: " + again.message;
+                           a.time, b.time));
+    // The segment's pieces: where each ends, and whether the washer is held at rest on it.
+    const double margin = kRestMargin * (b.time - a.time);
+    const bool rest_a = OperatingSchedule::unloaded_at_rest(a), rest_b = OperatingSchedule::unloaded_at_rest(b);
+    std::vector<std::pair<double, bool>> pieces;
+    if (rest_a && rest_b) pieces = {{b.time, true}};
+    else if (rest_a) pieces = {{a.time + margin, true}, {b.time, false}};
+    else if (rest_b) pieces = {{b.time - margin, false}, {b.time, true}};
+    else pieces = {{b.time, false}};
+    double from = a.time;
+    for (const auto& [to, held] : pieces) {
+      const bool resumes = !held && model.held_at_rest();
+      if (held != model.held_at_rest()) {
+        model.hold_at_rest(held ? std::span<const double>(u) : std::span<const double>());
+        watch.event(held ? "rest" : "resume", from, schedule.on_segment(segment, from));
+        if (progress)
+          progress(fmt::format("duty cycle: {} at t = {:.6g} s", held ? "unloaded at rest, the washer and gear held"
+                                                                       : "the washer and gear balanced again", from));
       }
+      // Restarted at every point of the schedule (the inputs' rates jump there, and so do
+      // the state's: consistent values computed afresh) and where the rest begins or ends.
+      bank();
+      runaway.restart();
+      TransientStatus status = start_in_own_rows(from, u);
       if (!status.ok) {
-        ended = fmt::format("IDA could not go on at t = {:.6g} s ({}, {} restarts in a row){}", ida.time(),
-                            status.flag_name, restarts, restart_failed);
+        ended = fmt::format("no consistent state at t = {:.6g} s: {}", from, status.message);
+        // Unloaded, a free gear leaves nothing to press the turning washer down (physics §19).
+        if (resumes && b.load == 0.0)
+          ended += "; the washer left its rest with the speed alone, unloaded: bring the load back first, or with the "
+                   "speed";
         break;
       }
-      restarts = 0;
-      record(ida.time(), ida.state());
+      if (!started) record(ida.time(), ida.state());
+      started = true;
+      // Restarts in a row: a kink of the model (contact or cavitation switching on) is
+      // passed by one; a march that fails again and again has ended.
+      int restarts = 0;
+      std::string restart_failed;
+      while (ida.time() < to) {
+        status = ida.step(to);
+        if (!status.ok && restarts < kRestarts) {
+          ++restarts;
+          const std::vector<double> here(ida.state().begin(), ida.state().end());
+          bank();
+          const TransientStatus again = start_in_own_rows(ida.time(), here);
+          if (again.ok) continue;
+          restart_failed = "; starting again there: " + again.message;
+        }
+        if (!status.ok) {
+          ended = fmt::format("IDA could not go on at t = {:.6g} s ({}, {} restarts in a row){}", ida.time(),
+                              status.flag_name, restarts, restart_failed);
+          break;
+        }
+        restarts = 0;
+        record(ida.time(), ida.state());
+      }
+      u.assign(ida.state().begin(), ida.state().end());
+      if (!ended.empty()) break;
+      from = to;
     }
-    u.assign(ida.state().begin(), ida.state().end());
   }
   bank();
+  model.hold_at_rest({});
   model.set_imposed_tilt_rate(0.0);  // quasi-steady from here on (the worst moment's search)
   march_form.reset();
   if (out.trajectory.empty()) {
@@ -541,7 +588,7 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
 
   // The summary: what the cycle did.
   out.summary.push_back(fmt::format("duty cycle: {} segments, {:.6g} s to {:.6g} s, {} steps ({:.1f} s)",
-                                    schedule.segments(), schedule.start(), last.time, out.trajectory.size() - 1,
+                                    model.scene().study.schedule.size() - 1, schedule.start(), last.time, out.trajectory.size() - 1,
                                     elapsed_ms(t0) / 1000.0));
   out.summary.push_back(fmt::format(
       "duty cycle: heat: {:.6g} J generated = {:.6g} J to the ambient + {:.6g} J carried by the oil + {:.6g} J stored in "
@@ -560,6 +607,14 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
       out.summary.push_back(fmt::format("duty cycle: the runaway is over at t = {:.6g} s ({:.6g} N, {:.6g} rad/s): "
                                         "the slow thermal mode is stable again, the hottest film at {:.4g} degC",
                                         e.time, e.load, e.speed, hottest_at(out.trajectory, e.time) - 273.15));
+    else if (e.event == "rest")
+      out.summary.push_back(fmt::format("duty cycle: unloaded at rest from t = {:.6g} s ({:.3g} N, {:.3g} rad/s): the "
+                                        "washer and gear held where they came to rest",
+                                        e.time, e.load, e.speed));
+    else if (e.event == "resume")
+      out.summary.push_back(fmt::format("duty cycle: the washer and gear balanced again from t = {:.6g} s ({:.3g} N, "
+                                        "{:.3g} rad/s)",
+                                        e.time, e.load, e.speed));
     else if (e.event == "worst")
       out.summary.push_back(fmt::format(
           "duty cycle: the worst moment is t = {:.6g} s ({:.6g} N, {:.6g} rad/s): {:.3g} of {}'s allowance left{}",

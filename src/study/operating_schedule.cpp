@@ -47,6 +47,30 @@ double OperatingSchedule::tilt_rate(std::size_t k) const {
   return (b.tilt - a.tilt) / (b.time - a.time);
 }
 
+std::vector<SchedulePoint> OperatingSchedule::with_rests(std::vector<SchedulePoint> points) {
+  std::vector<SchedulePoint> out;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if (k > 0) {
+      const SchedulePoint& a = points[k - 1];
+      const SchedulePoint& b = points[k];
+      if (a.load == 0.0 && b.load == 0.0 && ((a.speed > 0.0 && b.speed < 0.0) || (a.speed < 0.0 && b.speed > 0.0))) {
+        const double s = a.speed / (a.speed - b.speed);
+        SchedulePoint rest = a;
+        rest.time = std::lerp(a.time, b.time, s);
+        rest.speed = 0.0;
+        rest.ambient = std::lerp(a.ambient, b.ambient, s);
+        rest.tilt = std::lerp(a.tilt, b.tilt, s);
+        // A zero a rounding away from an end is that end's: the washer rests there.
+        if (rest.time <= a.time) out.back().speed = 0.0;
+        else if (rest.time >= b.time) points[k].speed = 0.0;
+        else out.push_back(rest);
+      }
+    }
+    out.push_back(std::move(points[k]));
+  }
+  return out;
+}
+
 void OperatingSchedule::apply(BearingModel& model, const SchedulePoint& p) {
   model.set_load(p.load);
   model.set_speed(p.speed);

@@ -36,6 +36,14 @@ class OperatingSchedule {
   // Sets the point's load, speed, ambient and gear tilt on the bearing.
   static void apply(BearingModel& model, const SchedulePoint& p);
 
+  // Whether the washer is unloaded at rest at p: load and speed both zero (docs/physics.md
+  // section 19, the rigid body held).
+  static bool unloaded_at_rest(const SchedulePoint& p) { return p.load == 0.0 && p.speed == 0.0; }
+  // The points with one more where a segment unloaded at both ends turns its speed back:
+  // the washer is unloaded at rest there, at a point of its own (the march holds the rigid
+  // body from there, and gives the balances back after it, at points).
+  static std::vector<SchedulePoint> with_rests(std::vector<SchedulePoint> points);
+
  private:
   std::vector<SchedulePoint> points_;
 };

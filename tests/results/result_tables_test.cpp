@@ -177,6 +177,7 @@ namespace {
 // 1 % on the asperities, the asperities almost alone below 10 % on the film.
 TEST(TrajectoryTable, TheRegimeIsWhoCarriesTheLoad) {
   BearingState s;
+  s.load = 100.0, s.speed = 545.0;
   s.contact_share = 0.009, s.fluid_share = 0.991;
   EXPECT_EQ(regime_of(s), Regime::full_film);
   s.contact_share = 0.011, s.fluid_share = 0.989;
@@ -186,6 +187,14 @@ TEST(TrajectoryTable, TheRegimeIsWhoCarriesTheLoad) {
   s.contact_share = 0.91, s.fluid_share = 0.09;
   EXPECT_EQ(regime_of(s), Regime::boundary);
   EXPECT_EQ(regime_name(Regime::boundary), "boundary");
+  // Unloaded and standing still, whatever the shares (physics §19); either alone is not.
+  s.load = 0.0;
+  EXPECT_EQ(regime_of(s), Regime::boundary);
+  s.speed = 0.0;
+  EXPECT_EQ(regime_of(s), Regime::at_rest);
+  EXPECT_EQ(regime_name(Regime::at_rest), "at_rest");
+  s.load = 100.0;
+  EXPECT_EQ(regime_of(s), Regime::boundary);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // and gear tilt), units converted, the resolved scene self-contained, and every fault
 // located: in the scene at its key, in the file at its line and column.
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -178,10 +179,11 @@ TEST(Schedule, FaultsInTheFileAreLocated) {
   }
 }
 
-// A load of zero needs the gear's stop (geometry.gear.axial_play, physics §19), and a
-// washer that turns: unloaded and at rest together nothing holds it between its films,
-// which is refused at the point (in the scene) or the row (in a file) where it happens.
-TEST(Schedule, ALoadOfZeroNeedsTheGearsStopAndATurningWasher) {
+// A load of zero needs the gear's stop (geometry.gear.axial_play, physics §19) and the
+// film's pressure; unloaded and at rest together (the washer and gear held where they came
+// to rest, physics §19) is a schedule like any other, at a point or where an unloaded
+// washer's speed turns back.
+TEST(Schedule, ALoadOfZeroNeedsTheGearsStopAndTheFilm) {
   const std::string play = "geometry: {gear: {axial_play: 100 um}}\n";
   const TempScene fine(cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N}, {t: 3 s, load: 50 N, speed: -3000 rpm}]") + play);
   const Scene s = load_scene(fine.path());
@@ -196,10 +198,10 @@ TEST(Schedule, ALoadOfZeroNeedsTheGearsStopAndATurningWasher) {
   EXPECT_EQ(*r.gear.axial_play, *s.gear.axial_play);
 
   const TempScene at_rest(cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N, speed: 0 rpm}]") + play);
-  const InputError e = testing::load_error(at_rest.path());
-  EXPECT_EQ(e.line(), 4);
-  EXPECT_EQ(e.column(), 24);
-  EXPECT_NE(std::string(e.what()).find("stands still"), std::string::npos) << e.what();
+  const Scene rest = load_scene(at_rest.path());
+  ASSERT_EQ(rest.study.schedule.size(), 2u);
+  EXPECT_EQ(rest.study.schedule[1].load, 0.0);
+  EXPECT_EQ(rest.study.schedule[1].speed, 0.0);
 
   // A cycle starts loaded (its steady state is reached by raising the load), and a load of
   // zero needs the film's pressure to lift the washer.
@@ -209,13 +211,33 @@ TEST(Schedule, ALoadOfZeroNeedsTheGearsStopAndATurningWasher) {
                                "effects: !replace [asperity_contact, thermal]\n");
   EXPECT_NE(std::string(testing::load_error(contact_only.path()).what()).find("needs the hydrodynamics effect"),
             std::string::npos);
+  // Come to rest with its load, the washer may not leave the rest with its speed alone
+  // (the gear is off its stop: physics §19); it may where it came to rest unloaded.
+  const TempScene speed_alone(
+      cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N, speed: 0 rpm}, {t: 3 s, speed: 3000 rpm}]") + play);
+  const InputError e = testing::load_error(speed_alone.path());
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_EQ(e.column(), 59);  // the third point, where the speed alone leaves the rest
+  EXPECT_NE(std::string(e.what()).find("leaves a rest with its speed alone"), std::string::npos) << e.what();
+  const TempScene stopped_unloaded(cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N}, {t: 3 s, speed: 0 rpm}, "
+                                               "{t: 4 s, speed: 3000 rpm}, {t: 5 s, load: 100 N}]") +
+                                   play);
+  EXPECT_EQ(load_scene(stopped_unloaded.path()).study.schedule.size(), 5u);
+  const TempScene no_play(cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N, speed: 0 rpm}]"));
+  EXPECT_NE(std::string(testing::load_error(no_play.path()).what()).find("axial_play"), std::string::npos);
 
   const TempScene csv("t [s], load [N], speed [rpm]\n0, 100, 3000\n1, 0, 3000\n2, 0, -3000\n", "_data", ".csv");
   const TempScene through(cycle_scene(csv.path()) + play);
-  const InputError f = testing::load_error(through.path());
-  EXPECT_EQ(f.file(), csv.path());
-  EXPECT_EQ(f.line(), 4);
-  EXPECT_NE(std::string(f.what()).find("stands still"), std::string::npos) << f.what();
+  const Scene turned = load_scene(through.path());
+  ASSERT_EQ(turned.study.schedule.size(), 3u);
+  const TempScene csv_alone("t [s], load [N], speed [rpm]\n0, 100, 3000\n1, 0, 0\n2, 0, 0\n3, 0, 3000\n", "_alone",
+                            ".csv");
+  const InputError f = testing::load_error(TempScene(cycle_scene(csv_alone.path()) + play, "_alone_scene").path());
+  EXPECT_EQ(f.file(), csv_alone.path());
+  EXPECT_EQ(f.line(), 5);
+  EXPECT_NE(std::string(f.what()).find("leaves a rest with its speed alone"), std::string::npos) << f.what();
+  // (udunits2's rpm in rad/s, to its rounding.)
+  EXPECT_NEAR(turned.study.schedule[2].speed, -100.0 * std::numbers::pi, 1e-12 * 100.0 * std::numbers::pi);
 }
 
 // A schedule file that is not there is the scene's fault, at its key.

@@ -79,6 +79,30 @@ TEST(OperatingSchedule, StraightLinesBetweenThePointsHeldOutside) {
   EXPECT_THROW(OperatingSchedule({point(1, 100, 500, 300, 0), point(1, 100, 500, 300, 0)}), std::invalid_argument);
 }
 
+// Where an unloaded washer's speed turns back the march adds a point of rest (physics
+// §19), on the schedule's line: the speed exactly zero there, the ambient and tilt the
+// line's; nowhere else, and at an end where the zero rounds onto it.
+TEST(OperatingSchedule, AnUnloadedWasherTurningBackRestsAtTheZero) {
+  const std::vector<SchedulePoint> rests = OperatingSchedule::with_rests(
+      {point(0, 100, 500, 300, 0), point(2, 0, 500, 300, 0), point(6, 0, -300, 340, 4e-3), point(8, 50, 100, 340, 0)});
+  ASSERT_EQ(rests.size(), 5u);
+  const SchedulePoint& rest = rests[2];
+  EXPECT_DOUBLE_EQ(rest.time, 4.5);  // 500 of the 800 rad/s in 4 s
+  EXPECT_EQ(rest.load, 0.0);
+  EXPECT_EQ(rest.speed, 0.0);
+  EXPECT_DOUBLE_EQ(rest.ambient, 325.0);
+  EXPECT_DOUBLE_EQ(rest.tilt, 2.5e-3);
+  EXPECT_TRUE(OperatingSchedule::unloaded_at_rest(rest));
+  // Loaded where it turns back (the last segment), or unloaded at one end only: no rest.
+  EXPECT_EQ(OperatingSchedule::with_rests({point(0, 100, 500, 300, 0), point(2, 100, -500, 300, 0)}).size(), 2u);
+  EXPECT_EQ(OperatingSchedule::with_rests({point(0, 100, 500, 300, 0), point(2, 0, -500, 300, 0)}).size(), 2u);
+  // A zero a rounding from the segment's start: the start is the rest.
+  const std::vector<SchedulePoint> at_start =
+      OperatingSchedule::with_rests({point(0, 100, 500, 300, 0), point(1000, 0, 1e-300, 300, 0), point(2000, 0, -545, 300, 0)});
+  ASSERT_EQ(at_start.size(), 3u);
+  EXPECT_TRUE(OperatingSchedule::unloaded_at_rest(at_start[1]));
+}
+
 // A schedule held at its last point (from the point before to its end): the march, and
 // its end against the point study's steady state there. Held long enough, the cycle ends at the point's
 // steady state: the slowest mode's share of the start's distance is then below e^−40,
@@ -188,6 +212,76 @@ TEST(DutyCycle, HeldUnloadedItEndsAtTheSteadyStateOnTheStop) {
   ASSERT_TRUE(end.stop_reaction);
   EXPECT_NEAR(*end.stop_reaction, *steady.stop_reaction, 1e-4 * *steady.stop_reaction);
   expect_heat_balance(out);
+}
+
+// Unloaded and at rest together (physics §19, "Unloaded at rest"): nothing holds the
+// massless washer and gear, and the march holds them where they came to rest, from a
+// millionth of the segment before the point to a millionth after the inputs leave it.
+// Checked over a cycle: the events at those times; the rigid body held (its rows leave
+// the differential unknowns at their predictor, constant over a held march, so h_min/σ
+// is the rest's to rounding); no heat generated without speed, so the bearing cools at
+// rest; and loaded and turning again, the cycle ends at the point study's steady state.
+// `samples_at_rest`: how many samples at least have load and speed zero exactly.
+void expect_rest_between(const StudyOutcome& out, double rest, double resume, int samples_at_rest) {
+  std::vector<const CycleEvent*> events;
+  for (const CycleEvent& e : out.cycle_events)
+    if (e.event == "rest" || e.event == "resume") events.push_back(&e);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0]->event, "rest");
+  EXPECT_NEAR(events[0]->time, rest, 1e-12 * rest);
+  EXPECT_EQ(events[1]->event, "resume");
+  EXPECT_NEAR(events[1]->time, resume, 1e-12 * resume);
+  const auto at_rest_start = std::find_if(out.trajectory.begin(), out.trajectory.end(),
+                                          [&](const TrajectorySample& p) { return p.time >= events[0]->time; });
+  ASSERT_NE(at_rest_start, out.trajectory.end());
+  EXPECT_DOUBLE_EQ(at_rest_start->time, events[0]->time) << "a sample where the rest begins";
+  const BearingState& held = at_rest_start->state;
+  int at_rest = 0;
+  double mean_before = held.washer_mean_temperature;
+  for (auto p = at_rest_start; p != out.trajectory.end() && p->time <= events[1]->time; ++p) {
+    EXPECT_NEAR(p->state.hmin_over_sigma, held.hmin_over_sigma, 1e-12 * held.hmin_over_sigma) << "t = " << p->time;
+    EXPECT_NEAR(p->state.gamma_x_ratio, held.gamma_x_ratio, 1e-12) << "t = " << p->time;
+    EXPECT_TRUE(std::isfinite(p->state.f_eff) && std::isfinite(p->state.torque)) << "t = " << p->time;
+    if (p->state.load != 0.0 || p->state.speed != 0.0) continue;
+    ++at_rest;
+    EXPECT_EQ(regime_of(p->state), Regime::at_rest);
+    EXPECT_EQ(p->state.heat_generated, 0.0) << "t = " << p->time << ": heat without sliding";
+    EXPECT_LE(p->state.washer_mean_temperature, mean_before) << "t = " << p->time << ": at rest the washer cools";
+    mean_before = p->state.washer_mean_temperature;
+  }
+  EXPECT_GE(at_rest, samples_at_rest) << "the march did not hold the washer at rest";
+}
+
+TEST(DutyCycle, UnloadedAtRestTheBearingIsHeldCoolsAndStartsAgain) {
+  const HeldCycle held = held_cycle("[{t: 0 s, load: 100 N}, {t: 5 s, load: 0 N, speed: 0 rad/s}, {t: 35 s}, "
+                                    "{t: 40 s, load: 100 N, speed: 545 rad/s}, {t: 600 s}]",
+                                    {"geometry.gear.axial_play=100 um"});
+  ASSERT_FALSE(held.out.trajectory.empty());
+  expect_rest_between(held.out, 5.0 - 5e-6, 35.0 + 5e-6, 3);
+  // Cooled at rest: thirty seconds are five of the carrier's and gear's time constants
+  // through their thickness (6.1 s, physics §19), e^−5 = 0.7 % of the washer's rise above
+  // the ambient in that mode; slower paths in the bodies' planes leave more, and a tenth
+  // allows them. (With heat generated at rest, or the temperatures held, it stays high.)
+  const auto rise_at = [&](double t) {
+    const auto p = std::find_if(held.out.trajectory.begin(), held.out.trajectory.end(),
+                                [&](const TrajectorySample& s) { return s.time >= t; });
+    return p->state.washer_mean_temperature - *p->ambient;
+  };
+  EXPECT_LT(rise_at(35.0), 0.1 * rise_at(5.0 - 5e-6));
+  expect_heat_balance(held.out);
+}
+
+// Unloaded while its speed turns back, the washer is at rest where the speed is zero: a
+// point of the march's own (the schedule's line there), held about it as at any rest.
+TEST(DutyCycle, UnloadedWhileItsSpeedTurnsBackTheWasherRestsAtTheZero) {
+  const HeldCycle held = held_cycle("[{t: 0 s, load: 100 N}, {t: 5 s, load: 0 N}, {t: 10 s, speed: -545 rad/s}, "
+                                    "{t: 15 s, load: 100 N}, {t: 600 s}]",
+                                    {"geometry.gear.axial_play=100 um"});
+  ASSERT_FALSE(held.out.trajectory.empty());
+  // The zero halfway along the segment from 5 to 10 s, a sample of its own; the margins
+  // are a millionth of the halves, 2.5 s each.
+  expect_rest_between(held.out, 7.5 - 2.5e-6, 7.5 + 2.5e-6, 1);
+  expect_heat_balance(held.out);
 }
 
 // The bodies hold heat: an ambient raised by 20 K in 0.05 s, short against the carrier's

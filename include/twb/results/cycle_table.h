@@ -22,7 +22,8 @@ struct CycleEvent {
   // (back within it), "runaway" (the thermo-viscous runaway), "settled" (the runaway is
   // over: the slow thermal mode stable again, on the hot branch or back on the cool one),
   // "worst" (the least margin of the cycle, with the failure load at that moment's speed,
-  // ambient and tilt), "end".
+  // ambient and tilt), "rest" and "resume" (the washer unloaded at rest held, and balanced
+  // again: docs/physics.md section 19), "end".
   std::string event;
   std::optional<LimitKind> criterion;
   double load = 0.0, speed = 0.0, ambient = 0.0, tilt = 0.0;

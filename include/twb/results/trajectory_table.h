@@ -24,7 +24,9 @@ namespace twb {
 
 // Who carries the load (docs/physics.md section 19): the oil film alone (the asperities
 // carry less than 1 %), the asperities almost alone (the film less than 10 %), or both.
-enum class Regime { full_film, mixed, boundary };
+// at_rest: unloaded and standing still (load and speed zero), the washer and gear held
+// where they came to rest (docs/physics.md section 19): no film carries anything.
+enum class Regime { full_film, mixed, boundary, at_rest };
 Regime regime_of(const BearingState& state);
 std::string_view regime_name(Regime regime);
 

@@ -15,6 +15,8 @@ EVENT_MARKS = {
     "recovery": ("tab:green", ":", "back within a limit"),
     "runaway": ("black", "-", "thermo-viscous runaway"),
     "settled": ("gray", "--", "the runaway over"),
+    "rest": ("tab:blue", "-.", "unloaded at rest (held)"),
+    "resume": ("tab:cyan", "-.", "balanced again"),
 }
 
 
