@@ -9,8 +9,8 @@
 #   --build DIR   the sanitizer build tree (default: build-asan)
 #   GTEST_OPTION  passed to twb_tests, e.g. --gtest_filter='Scene*'
 #
-# About 20 minutes on a 2-core machine from scratch (the build about 11, the tests in
-# shards two at a time about 8), and the Python module's tests under the sanitizers
+# About 20 minutes on a 2-core machine from scratch (the build about 10, the tests in
+# shards two at a time about 9), and the Python module's tests under the sanitizers
 # after them. Exit status: 0 all passed; 1 the build failed, a test failed or a sanitizer
 # reported.
 set -eu
