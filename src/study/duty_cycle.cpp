@@ -466,78 +466,126 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   // (BearingModel::hold_at_rest, physics §19), from a millionth of the segment before the
   // point where it comes to rest to a millionth of the segment after it leaves: the
   // massless bodies' positions have a limit as the load and the speed go to zero, none at
-  // the zero itself (the free gear's climbs up film 2's asperity tail without end).
-  constexpr double kRestMargin = 1e-6;
+  // the zero itself (the free gear climbs up film 2's asperity tail without end). Where
+  // the march cannot follow them that close to the zero (IDA's Newton fails on the film
+  // of a load and a speed a millionth of their ramps), the rest begins where it stopped
+  // and ends where the balances find a consistent state, within a thousandth.
+  constexpr double kRestMargin = 1e-6, kRestReach = 1e-3;
   struct RestGivenBack {
     BearingModel& model;
     ~RestGivenBack() { model.hold_at_rest({}); }
   } rest_given_back{model};
   bool started = false;
+  const auto rest_event = [&](bool held, double t) {
+    watch.event(held ? "rest" : "resume", t, schedule.on_segment(segment, t));
+    if (progress)
+      progress(fmt::format("duty cycle: {} at t = {:.6g} s",
+                           held ? "unloaded at rest, the washer and gear held" : "the washer and gear balanced again", t));
+  };
+  // IDA started at (t, u), consistent values computed afresh: at every point of the
+  // schedule (the inputs' rates jump there, and so do the state's) and where the rest
+  // begins or ends.
+  // (`kink`: a restart inside a segment, after IDA failed at a kink of the model, where
+  // the inputs' rates do not jump: the runaway watch keeps its trend.)
+  const auto start_at = [&](double t, bool kink = false) {
+    bank();
+    if (!kink) runaway.restart();
+    const TransientStatus status = start_in_own_rows(t, u);
+    if (status.ok && !started) record(ida.time(), ida.state());
+    started = started || status.ok;
+    return status;
+  };
+  // IDA's steps from its time to `to`, each recorded, u the state reached: why it stopped
+  // short, empty where it did not. A kink of the model (contact or cavitation switching
+  // on) is passed by one restart; a march that fails again and again has ended.
+  const auto step_to = [&](double to) -> std::string {
+    int restarts = 0;
+    std::string why, restart_failed;
+    while (ida.time() < to) {
+      const TransientStatus status = ida.step(to);
+      if (!status.ok && restarts < kRestarts) {
+        ++restarts;
+        u.assign(ida.state().begin(), ida.state().end());
+        const TransientStatus again = start_at(ida.time(), true);
+        if (again.ok) continue;
+        restart_failed = "; starting again there: " + again.message;
+      }
+      if (!status.ok) {
+        why = fmt::format("IDA could not go on at t = {:.6g} s ({}, {} restarts in a row){}", ida.time(),
+                          status.flag_name, restarts, restart_failed);
+        break;
+      }
+      restarts = 0;
+      record(ida.time(), ida.state());
+    }
+    u.assign(ida.state().begin(), ida.state().end());
+    return why;
+  };
+  const auto no_start = [](double t, const TransientStatus& status) {
+    return fmt::format("no consistent state at t = {:.6g} s: {}", t, status.message);
+  };
   for (; segment < schedule.segments() && ended.empty(); ++segment) {
     const SchedulePoint& a = schedule.points()[segment];
     const SchedulePoint& b = schedule.points()[segment + 1];
     if (progress)
       progress(fmt::format("duty cycle: segment {} of {}, {:.6g} s to {:.6g} s", segment + 1, schedule.segments(),
                            a.time, b.time));
-    // The segment's pieces: where each ends, and whether the washer is held at rest on it.
-    const double margin = kRestMargin * (b.time - a.time);
+    const double span = b.time - a.time;
     const bool rest_a = OperatingSchedule::unloaded_at_rest(a), rest_b = OperatingSchedule::unloaded_at_rest(b);
-    std::vector<std::pair<double, bool>> pieces;
-    if (rest_a && rest_b) pieces = {{b.time, true}};
-    else if (rest_a) pieces = {{a.time + margin, true}, {b.time, false}};
-    else if (rest_b) pieces = {{b.time - margin, false}, {b.time, true}};
-    else pieces = {{b.time, false}};
     double from = a.time;
-    for (const auto& [to, held] : pieces) {
-      const bool resumes = !held && model.held_at_rest();
-      if (held != model.held_at_rest()) {
-        model.hold_at_rest(held ? std::span<const double>(u) : std::span<const double>());
-        watch.event(held ? "rest" : "resume", from, schedule.on_segment(segment, from));
-        if (progress)
-          progress(fmt::format("duty cycle: {} at t = {:.6g} s", held ? "unloaded at rest, the washer and gear held"
-                                                                       : "the washer and gear balanced again", from));
-      }
-      // Restarted at every point of the schedule (the inputs' rates jump there, and so do
-      // the state's: consistent values computed afresh) and where the rest begins or ends.
-      bank();
-      runaway.restart();
-      TransientStatus status = start_in_own_rows(from, u);
-      if (!status.ok) {
-        ended = fmt::format("no consistent state at t = {:.6g} s: {}", from, status.message);
-        // Unloaded, a free gear leaves nothing to press the turning washer down (physics §19).
-        if (resumes && b.load == 0.0)
-          ended += "; the washer left its rest with the speed alone, unloaded: bring the load back first, or with the "
-                   "speed";
-        break;
-      }
-      if (!started) record(ida.time(), ida.state());
-      started = true;
-      // Restarts in a row: a kink of the model (contact or cavitation switching on) is
-      // passed by one; a march that fails again and again has ended.
-      int restarts = 0;
-      std::string restart_failed;
-      while (ida.time() < to) {
-        status = ida.step(to);
-        if (!status.ok && restarts < kRestarts) {
-          ++restarts;
-          const std::vector<double> here(ida.state().begin(), ida.state().end());
-          bank();
-          const TransientStatus again = start_in_own_rows(ida.time(), here);
-          if (again.ok) continue;
-          restart_failed = "; starting again there: " + again.message;
-        }
-        if (!status.ok) {
-          ended = fmt::format("IDA could not go on at t = {:.6g} s ({}, {} restarts in a row){}", ida.time(),
-                              status.flag_name, restarts, restart_failed);
+    if (rest_a) {
+      // Held a millionth of the segment, then balanced again; where the balances find no
+      // consistent state that close to the zero, held a decade longer, up to a thousandth.
+      std::string why;
+      for (double reach = kRestMargin; why.empty(); reach *= 10.0) {
+        const TransientStatus held = start_at(from);
+        if (!held.ok) {
+          ended = no_start(from, held);
           break;
         }
-        restarts = 0;
-        record(ida.time(), ida.state());
+        const double until = rest_b ? b.time : a.time + reach * span;
+        if (const std::string stopped = step_to(until); !stopped.empty()) {
+          ended = stopped;
+          break;
+        }
+        from = until;
+        if (rest_b) break;
+        model.hold_at_rest({});
+        const TransientStatus balanced = start_at(from);
+        if (balanced.ok) {
+          rest_event(false, from);
+          break;
+        }
+        model.hold_at_rest(u);  // the rigid unknowns held are the rest's still
+        if (reach * 10.0 > kRestReach * (1.0 + 1e-9)) {
+          why = no_start(from, balanced);
+          // Unloaded, a free gear leaves nothing to press the turning washer down (physics §19).
+          if (b.load == 0.0)
+            why += "; the washer left its rest with the speed alone, unloaded: bring the load back first, or with the "
+                   "speed";
+        }
       }
-      u.assign(ida.state().begin(), ida.state().end());
-      if (!ended.empty()) break;
-      from = to;
+      if (!why.empty()) ended = why;
+      if (!ended.empty() || rest_b) continue;
+    } else if (const TransientStatus status = start_at(from); !status.ok) {
+      ended = no_start(from, status);
+      continue;
     }
+    const std::string stopped = step_to(rest_b ? b.time - kRestMargin * span : b.time);
+    // Coming to rest, within the last thousandth of the segment: the rest begins there.
+    if (!stopped.empty() && !(rest_b && ida.time() >= b.time - kRestReach * span)) {
+      ended = stopped;
+      continue;
+    }
+    if (!rest_b) continue;
+    from = ida.time();
+    model.hold_at_rest(u);
+    rest_event(true, from);
+    if (const TransientStatus held = start_at(from); !held.ok) {
+      ended = no_start(from, held);
+      continue;
+    }
+    if (const std::string held_short = step_to(b.time); !held_short.empty()) ended = held_short;
   }
   bank();
   model.hold_at_rest({});

@@ -271,6 +271,36 @@ TEST(DutyCycle, UnloadedAtRestTheBearingIsHeldCoolsAndStartsAgain) {
   expect_heat_balance(held.out);
 }
 
+// On the bronze washer (configs/washers/bronze_cusn8.yaml, 5 × 24) the march cannot
+// follow the washer to a millionth of its ramp from the zero: IDA's Newton fails on the
+// film there, and the consistent start finds no balance a millionth after it. The rest
+// then begins where the march stopped and ends where the balances find a state, each
+// within a thousandth of its segment (physics §19), and the cycle goes on.
+TEST(DutyCycle, WhereTheMarchCannotFollowToTheZeroTheRestBeginsWhereItStops) {
+  const Scene scene =
+      load_scene(std::string(TWB_SOURCE_DIR) + "/configs/washers/bronze_cusn8.yaml",
+                 {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24", "geometry.gear.axial_play=100 um",
+                  "study={type: duty_cycle, failure_load_at_worst: false, schedule: [{t: 0 s}, {t: 5 s, load: 0 N, "
+                  "speed: 0 rad/s}, {t: 20 s}, {t: 25 s, load: 300 N, speed: 300 rad/s}, {t: 40 s}]}"});
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  ASSERT_FALSE(out.trajectory.empty());
+  EXPECT_DOUBLE_EQ(out.trajectory.back().time, 40.0);
+  double rest = NAN, resume = NAN;
+  for (const CycleEvent& e : out.cycle_events) {
+    if (e.event == "rest") rest = e.time;
+    if (e.event == "resume") resume = e.time;
+  }
+  // The segments are 5 s: a thousandth is 5e-3 s, a millionth 5e-6 s.
+  EXPECT_GE(rest, 5.0 - 5e-3);
+  EXPECT_LT(rest, 5.0 - 5e-6) << "the march followed the washer to the millionth: no test of the rest's reach";
+  EXPECT_GT(resume, 20.0 + 5e-6) << "balanced a millionth after the zero: no test of the rest's reach";
+  EXPECT_LE(resume, 20.0 + 5e-3 * (1.0 + 1e-12));
+  expect_rest_between(out, rest, resume, 3);
+  expect_heat_balance(out);
+}
+
 // Unloaded while its speed turns back, the washer is at rest where the speed is zero: a
 // point of the march's own (the schedule's line there), held about it as at any rest.
 TEST(DutyCycle, UnloadedWhileItsSpeedTurnsBackTheWasherRestsAtTheZero) {
