@@ -536,6 +536,11 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
     if (rest_a) {
       // Held a millionth of the segment, then balanced again; where the balances find no
       // consistent state that close to the zero, held a decade longer, up to a thousandth.
+      // (Held since the segment before came to rest: a schedule does not start at rest.)
+      if (!model.held_at_rest()) {
+        model.hold_at_rest(u);
+        rest_event(true, from);
+      }
       std::string why;
       for (double reach = kRestMargin; why.empty(); reach *= 10.0) {
         const TransientStatus held = start_at(from);
