@@ -348,8 +348,8 @@ def read_cycle(path):
 
 
 def read_cycle_events(path):
-    """cycle_events.csv: one dict per event (crossing, recovery, runaway, settled, worst, end); a
-    value an event does not have (a crossing's failure load) None."""
+    """cycle_events.csv: one dict per event (crossing, recovery, runaway, settled, rest, resume,
+    worst, end); a value an event does not have (a crossing's failure load) None."""
     return _read_rows(path, CYCLE_EVENT_COLUMNS, CYCLE_EVENT_TEXTS, "cycle_events.csv",
                       lambda c: c in ("margin", "failure_load_N"))
 
