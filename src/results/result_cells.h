@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "twb/results/distress_table.h"
 #include "twb/results/result_table.h"
 #include "twb/scene/scene.h"
 #include "twb/scene/scene_loader.h"
@@ -33,6 +34,23 @@ struct RunColumns {
     for (std::size_t k = 0; k < parameters.size(); ++k)
       table.put_number(parameters[k], k < values.size() ? std::optional<double>(values[k]) : std::nullopt);
     if (sliding) table.put_text(*sliding, film_name(film));
+  }
+};
+
+// How a mesh-converged load was reached (LoadConvergence): <prefix>_meshes, <prefix>_order
+// and, with `met`, <prefix>_tolerance_met ("yes", "no"; empty without a tolerance).
+struct ConvergenceColumns {
+  ResultTable::Column meshes, order;
+  std::optional<ResultTable::Column> met;
+
+  ConvergenceColumns(ResultTable& table, const std::string& prefix, bool with_met)
+      : meshes(table.text(prefix + "_meshes")), order(table.number(prefix + "_order")) {
+    if (with_met) met = table.text(prefix + "_tolerance_met");
+  }
+  void put(ResultTable& table, const LoadConvergence& c) const {
+    table.put_text(meshes, c.meshes);
+    table.put_number(order, c.order);
+    if (met) table.put_text(*met, c.tolerance_met ? (*c.tolerance_met ? "yes" : "no") : "");
   }
 };
 

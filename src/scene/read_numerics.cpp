@@ -13,7 +13,8 @@ namespace {
 
 void read_mesh(const MapReader& scene, Scene& out) {
   const MapReader mesh =
-      scene.map("mesh", {"radial_nodes", "circumferential_nodes", "contact_quadrature", "flat_contact_quadrature"});
+      scene.map("mesh", {"radial_nodes", "circumferential_nodes", "contact_quadrature", "flat_contact_quadrature",
+                         "max_refinements"});
   MeshSettings& m = out.mesh;
   m.radial_nodes = mesh.integer("radial_nodes", 3, bounds::kMostRadialNodes, m.radial_nodes,
                                 "both edges plus at least one interior node; finer exceeds any machine's memory");
@@ -24,6 +25,10 @@ void read_mesh(const MapReader& scene, Scene& out) {
                                       m.contact_quadrature, "Gauss points per direction");
   m.flat_contact_quadrature = mesh.integer("flat_contact_quadrature", 1, bounds::kMostQuadraturePoints,
                                            m.flat_contact_quadrature, "Gauss points per direction");
+  // Each refinement multiplies the unknowns by about four and the cost by about six; five
+  // take the paper's 9 x 66 to 289 x 2112, past any machine's memory for a fold.
+  m.max_refinements = mesh.integer("max_refinements", 1, 5, m.max_refinements,
+                                   "how many times a study's tolerance may refine the scene's mesh by two");
 }
 
 void read_solver(const MapReader& scene, Scene& out) {
@@ -80,6 +85,26 @@ void read_load_range(const MapReader& study, Study& s, std::string_view end_rela
     node.fail(fmt::format("{}: '{}' must be greater than load_start '{}'{}", node.path(), node.yaml().Scalar(),
                           study.get("load_start", "").yaml().Scalar(), end_relation));
   }
+}
+
+// study.tolerance: a relative accuracy ("1 %", 0.01) or none; refused beside
+// error_estimate: none, which asks for no refined mesh at all.
+void read_tolerance(const MapReader& study, Study& s) {
+  if (!study.has("tolerance")) return;
+  const Node node = study.get("tolerance", "");
+  if (s.error_estimate == ErrorEstimate::none)
+    node.fail(fmt::format("{}: a tolerance refines the mesh until each failure load's error bar meets it, and "
+                          "error_estimate: none asks for no error bar; leave one of them out",
+                          node.path()));
+  if (node.yaml().IsScalar() && node.yaml().Scalar() == "none") {
+    s.tolerance = 0.0;
+    return;
+  }
+  s.tolerance = study.quantity("tolerance", si::dimensionless,
+                               Range{.low = 0.0, .low_open = true, .high = 0.5,
+                                     .reason = "the relative accuracy wanted of each failure load, e.g. '1 %' "
+                                               "or 0.01, or none"},
+                               s.tolerance);
 }
 
 double read_bracket_width(const MapReader& study, double fallback) {
@@ -351,10 +376,11 @@ void read_study(const MapReader& scene, Scene& out) {
       break;
     case StudyType::load_sweep:
       study.restrict_to({"type", "load_start", "load_end", "load_steps", "speeds", "parameter", "bracket_width",
-                         "error_estimate"},
+                         "error_estimate", "tolerance"},
                         "with type: load_sweep");
       read_load_grid(study, out);
       s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
+      read_tolerance(study, s);
       read_map_axes(study, s, out);
       break;
     case StudyType::sliding_choice:
@@ -446,12 +472,13 @@ void read_study(const MapReader& scene, Scene& out) {
       break;
     case StudyType::distress_map: {
       study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate",
-                         "method"},
+                         "method", "tolerance"},
                         "with type: distress_map");
       s.map_method = read_choice(study, "method", kMapMethods, s.map_method);
       // Followed failure loads have no refined meshes' searches: no error bars by default.
       if (s.map_method == MapMethod::follow) s.error_estimate = ErrorEstimate::none;
       s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
+      read_tolerance(study, s);
       read_speeds(study, s);
       read_load_range(study, s, " (distress is searched between them)");
       read_map_axes(study, s, out);

@@ -41,7 +41,8 @@ inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start",
                                                    "error_estimate", "from",       "to",       "family",
                                                    "parameters", "inputs", "probabilities", "monte_carlo",
                                                    "data", "fit", "sd", "max_iterations", "method",
-                                                   "schedule", "failure_load_at_worst", "relative_tolerance"};
+                                                   "schedule", "failure_load_at_worst", "relative_tolerance",
+                                                   "tolerance"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{

@@ -197,6 +197,7 @@ void write_numerics(Writer& w, const Scene& s) {
           s.washer.grooves ? fmt::format("a multiple of the {} grooves", s.washer.grooves->count) : std::string());
   w.entry(1, "contact_quadrature", fmt::format("{}", s.mesh.contact_quadrature));
   w.entry(1, "flat_contact_quadrature", fmt::format("{}", s.mesh.flat_contact_quadrature));
+  w.entry(1, "max_refinements", fmt::format("{}", s.mesh.max_refinements));
 
   w.line(0, "solver:");
   w.entry(1, "method", std::string(kSolverMethods.name(s.solver.method)));
@@ -255,6 +256,9 @@ void write_numerics(Writer& w, const Scene& s) {
   if (st.type == StudyType::distress_map && st.map_method == MapMethod::follow) w.entry(1, "method", "follow");
   if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map || st.type == StudyType::distress_curve)
     w.entry(1, "error_estimate", std::string(kErrorEstimates.name(st.error_estimate)));
+  if ((st.type == StudyType::load_sweep || st.type == StudyType::distress_map) &&
+      st.error_estimate != ErrorEstimate::none)
+    w.entry(1, "tolerance", st.tolerance > 0.0 ? quantity(st.tolerance, "1") : std::string("none"));
   if (st.type == StudyType::transient) w.entry(1, "duration", quantity(st.duration, "s"));
   if (st.type == StudyType::sensitivity) {
     w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));

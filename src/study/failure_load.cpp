@@ -263,4 +263,27 @@ std::string failure_sentence(const DistressRow& row, double load_end) {
                                        : fmt::format("no thermo-viscous distress up to {:.6g} N", load_end));
 }
 
+std::string converged_failure_sentence(const DistressRow& row, double load_end) {
+  if (!row.failure_load || !row.failure_extrapolated || !row.failure_error) return failure_sentence(row, load_end);
+  const LoadConvergence& c = row.failure_convergence;
+  const std::string how =
+      c.meshes.empty() ? std::string("Richardson on the mesh refined by two")
+                       : fmt::format("on {}{}", c.meshes,
+                                     c.order ? fmt::format(", observed order {:.2f}", *c.order) : std::string());
+  std::string s = fmt::format("fails at {:.1f} ± {:.1f} N by {} (mesh-converged {}; {:.2f} N on the scene's mesh)",
+                              *row.failure_extrapolated, *row.failure_error,
+                              row.criterion->distress ? std::string("thermo-viscous distress")
+                                                      : std::string(criterion_phrase(row.criterion->limit)),
+                              how, *row.failure_load);
+  if (!row.criterion->distress)
+    s += row.distress_load
+             ? (row.extrapolated_load && row.discretization_error
+                    ? fmt::format("; thermo-viscous distress at {:.1f} ± {:.1f} N", *row.extrapolated_load,
+                                  *row.discretization_error)
+                    : fmt::format("; thermo-viscous distress at {:.2f} N on the scene's mesh", *row.distress_load))
+             : fmt::format("; no thermo-viscous distress up to {:.6g} N", load_end);
+  if (c.tolerance_met && !*c.tolerance_met) s += "; NOT to the tolerance";
+  return s;
+}
+
 }  // namespace twb

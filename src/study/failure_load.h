@@ -62,5 +62,9 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
 // "fails at 307.6 N by the flash temperature (no thermo-viscous distress up to 4000 N)":
 // the sentence of a row whose failure fields are set.
 std::string failure_sentence(const DistressRow& row, double load_end);
+// The same with the mesh-converged W_fail first, where the row has it: "fails at 202.8 ±
+// 1.5 N by thermo-viscous distress (mesh-converged on 9x66 17x132 33x264, observed order
+// 1.78; 188.38 N on the scene's mesh)".
+std::string converged_failure_sentence(const DistressRow& row, double load_end);
 
 }  // namespace twb

@@ -108,50 +108,59 @@ std::optional<FoldPoint> checked_fold(BearingModel& fine, std::span<const double
   return fold;
 }
 
-// The refined fold from the coarse one; empty with the reason in `why` when Newton fails
-// or finds another kind of fold, or one too far away to be the same.
-std::optional<double> fold_from_coarse(BearingModel& fine, const CoarseFold& coarse, std::string& why) {
-  const FoldPoint& c = *coarse.point;
-  const auto fold = checked_fold(fine, fine.interpolated_from(*coarse.model, c.u), coarse.load,
-                                 moved_direction(fine, *coarse.model, c.u, c.null_vector), coarse.load, +1, why);
-  if (!fold) return std::nullopt;
-  return fold->lambda;
-}
-
 }  // namespace
 
-std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double speed, const CoarseFold& coarse,
-                                                     DistressSearchSettings settings, std::string& why,
-                                                     const SearchProgress& progress) {
+
+std::optional<FoldPoint> fold_on_finer_mesh(const BearingModel& coarse, const FoldPoint& at, BearingModel& fine,
+                                            double load_accuracy, std::string& why) {
+  return checked_fold(fine, fine.interpolated_from(coarse, at.u), at.lambda,
+                      moved_direction(fine, coarse, at.u, at.null_vector), at.lambda, +1, why, load_accuracy);
+}
+
+std::optional<RefinedFold> refined_fold(const Scene& scene, double speed, const CoarseFold& coarse,
+                                        DistressSearchSettings settings, std::string& why,
+                                        const SearchProgress& progress) {
   const Scene fine_scene = refined_mesh(scene);
-  BearingModel fine(fine_scene);
+  RefinedFold refined;
+  refined.model = std::make_unique<BearingModel>(fine_scene);
+  BearingModel& fine = *refined.model;
   fine.set_speed(speed);
   const std::string mesh = mesh_name(fine_scene);
   const auto say = [&](const std::string& s) {
     if (progress) progress("  [" + mesh + "]" + s);
   };
-  std::optional<double> fine_fold;
   if (coarse.model && coarse.point) {
     std::string direct_why;
-    fine_fold = fold_from_coarse(fine, coarse, direct_why);
-    if (fine_fold)
-      say(fmt::format("  the fold from the coarse mesh's: {:.2f} N", *fine_fold));
-    else
-      say("  the fold from the coarse mesh's failed (" + direct_why + "); continuing the branch instead");
-  }
-  if (!fine_fold) {
-    settings.fold_only = true;
-    settings.grid.clear();
-    settings.continue_past_distress = false;
-    const DistressSearch found = search_distress(fine, settings, progress ? SearchProgress(say) : SearchProgress{});
-    if (!found.row.fold_load) {
-      why = fmt::format("no fold on the refined mesh ({}): {}", mesh,
-                        found.message.empty() ? found.row.method : found.message);
-      return std::nullopt;
+    FoldPoint from = *coarse.point;
+    from.lambda = coarse.load;
+    refined.point = fold_on_finer_mesh(*coarse.model, from, fine, 0.0, direct_why);
+    if (refined.point) {
+      refined.load = refined.point->lambda;
+      say(fmt::format("  the fold from the coarse mesh's: {:.2f} N", refined.load));
+      return refined;
     }
-    fine_fold = *found.row.fold_load;
+    say("  the fold from the coarse mesh's failed (" + direct_why + "); continuing the branch instead");
   }
-  return extrapolated(coarse.load, *fine_fold, mesh);
+  settings.fold_only = true;
+  settings.grid.clear();
+  settings.continue_past_distress = false;
+  DistressSearch found = search_distress(fine, settings, progress ? SearchProgress(say) : SearchProgress{});
+  if (!found.row.fold_load) {
+    why = fmt::format("no fold on the refined mesh ({}): {}", mesh,
+                      found.message.empty() ? found.row.method : found.message);
+    return std::nullopt;
+  }
+  refined.load = *found.row.fold_load;
+  if (found.fold) refined.point = std::move(found.fold);
+  return refined;
+}
+
+std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double speed, const CoarseFold& coarse,
+                                                     DistressSearchSettings settings, std::string& why,
+                                                     const SearchProgress& progress) {
+  const auto fine = refined_fold(scene, speed, coarse, std::move(settings), why, progress);
+  if (!fine) return std::nullopt;
+  return extrapolated(coarse.load, fine->load, mesh_name(fine->model->scene()));
 }
 
 RefinedFoldCurve::RefinedFoldCurve(const BearingModel& coarse, CurveParameter which, const FoldPoint& first)
@@ -203,10 +212,11 @@ std::optional<MeshErrorEstimate> RefinedFoldCurve::at(double p, double load, std
   return extrapolated(load, fold->lambda, mesh_);
 }
 
-std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, BearingModel& fine, LimitKind kind,
-                                                   double load, std::span<const double> u, double width,
-                                                   double load_end, std::string& why) {
-  std::vector<double> v = fine.interpolated_from(coarse, u);
+std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, BearingModel& fine, LimitKind kind,
+                                             std::pair<double, std::vector<double>>& state, double width,
+                                             double load_end, std::string& why) {
+  const double load = state.first;
+  std::vector<double> v = fine.interpolated_from(coarse, state.second);
   fine.set_load(load);
   NewtonSettings newton = newton_settings(fine.scene());
   newton.max_iterations = 20;
@@ -246,12 +256,18 @@ std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, B
     })[0];
     fine.set_load(load);
   }
-  std::pair<double, std::vector<double>> state{load, std::move(v)};
+  state = {load, std::move(v)};
   long solves = 0;
   // The secant's solves refactor the polish's Jacobian pattern: its symbolic analysis
   // (nested dissection on refined meshes, about 80 ms) is done once.
-  const std::optional<double> w = crossing_near(fine, kind, state, slope, width, load_end, solves, why, &polish,
-                                                  nullptr, true);
+  return crossing_near(fine, kind, state, slope, width, load_end, solves, why, &polish, nullptr, true);
+}
+
+std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, BearingModel& fine, LimitKind kind,
+                                                   double load, std::span<const double> u, double width,
+                                                   double load_end, std::string& why) {
+  std::pair<double, std::vector<double>> state{load, std::vector<double>(u.begin(), u.end())};
+  const std::optional<double> w = crossing_on_finer_mesh(coarse, fine, kind, state, width, load_end, why);
   if (!w) return std::nullopt;
   return extrapolated(load, *w, mesh_name(fine.scene()));
 }

@@ -32,10 +32,18 @@
 namespace twb {
 
 struct MeshErrorEstimate {
-  double fine_fold = 0.0;     // N, the fold on the refined mesh
+  double fine_fold = 0.0;     // N, the fold on the refined mesh (the finest of a sequence)
   double extrapolated = 0.0;  // N
   double error = 0.0;         // N, the error bar of the extrapolated value
   std::string fine_mesh;      // e.g. "17 x 132"
+  // A sequence to a tolerance (mesh_convergence.h): the loads on the scene's mesh and
+  // each refined one, the meshes' names, the order they show, and whether the bar meets
+  // the tolerance (with why not where it does not).
+  std::vector<double> loads;
+  std::vector<std::string> meshes;
+  std::optional<double> order;
+  bool tolerance_met = true;
+  std::string unmet;
 };
 
 // The scene with its mesh refined by two in each direction, its grooves placed on it at
@@ -75,6 +83,33 @@ struct CoarseFold {
 std::optional<MeshErrorEstimate> richardson_estimate(const Scene& scene, double speed, const CoarseFold& coarse,
                                                      DistressSearchSettings settings, std::string& why,
                                                      const SearchProgress& progress = {});
+
+// The fold on the mesh refined by two from the fold on the scene's mesh, as
+// richardson_estimate finds it, with the refined model and its located fold (empty where
+// a search of the refined branch found it without one) for the next mesh of a sequence.
+struct RefinedFold {
+  double load = 0.0;  // N
+  std::unique_ptr<BearingModel> model;
+  std::optional<FoldPoint> point;
+};
+std::optional<RefinedFold> refined_fold(const Scene& scene, double speed, const CoarseFold& coarse,
+                                        DistressSearchSettings settings, std::string& why,
+                                        const SearchProgress& progress = {});
+
+// One step further along a mesh sequence: the fold on `fine` (the bearing on the next
+// finer mesh) from the fold `at` on `coarse`, interpolated, then Newton on the minimally
+// augmented system until a step moves the load by less than load_accuracy (N); checked
+// as the first step is (a largest load within 30 % of the coarse one). Empty, with `why`.
+std::optional<FoldPoint> fold_on_finer_mesh(const BearingModel& coarse, const FoldPoint& at, BearingModel& fine,
+                                            double load_accuracy, std::string& why);
+
+// A crossing one step further along a mesh sequence: `state` holds the crossing's load
+// and state on `coarse`, and comes back with the crossing on `fine` as crossing_near
+// leaves it (the last solve's load and state: a start for the next mesh). The refined
+// crossing's load, or empty with `why`; as crossing_estimate below.
+std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, BearingModel& fine, LimitKind kind,
+                                             std::pair<double, std::vector<double>>& state, double width,
+                                             double load_end, std::string& why);
 
 // A failure criterion's crossing (failure_load.h) again on the refined mesh: the coarse
 // crossing's state interpolated onto the refined mesh, Newton there at the coarse load,

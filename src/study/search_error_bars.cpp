@@ -19,6 +19,8 @@
 #include "study/search_scheduler.h"
 #include "study/spare_threads.h"
 #include "richardson.h"
+#include "study/mesh_convergence.h"
+#include "study/failure_load.h"
 #include "state_error.h"
 #include "study_support.h"
 #include "twb/scene/scene_loader.h"
@@ -84,16 +86,83 @@ bool searches_failure(const Study& st) {
          st.error_estimate != ErrorEstimate::none;
 }
 
+// The estimate of a piece's sequence: today's two-mesh bar of the formal order where no
+// tolerance is asked (richardson.h), else mesh_converged's with how it was reached.
+MeshErrorEstimate sequence_estimate(const MeshSequence& sequence, double tolerance, const std::string& finest) {
+  const std::vector<double>& loads = sequence.loads();
+  MeshErrorEstimate e;
+  if (tolerance <= 0.0) {
+    e = richardson_extrapolation(loads[0], loads[1]);
+  } else {
+    const MeshConvergence c = sequence.estimate();
+    e.fine_fold = loads.back();
+    e.extrapolated = c.value;
+    e.error = c.error;
+    e.order = c.order;
+    e.tolerance_met = within_tolerance(c, tolerance);
+    if (!e.tolerance_met) e.unmet = sequence.why_unmet(tolerance);
+  }
+  e.fine_mesh = finest;
+  e.loads = loads;
+  e.meshes = {sequence.solved_meshes()};
+  return e;
+}
+
+// How closely a finer mesh's load is needed: a thousandth of the step the order two
+// predicts from the last one (at least a thousandth of a percent of the load), which
+// moves the estimate and its bar by about 0.1 % of that step.
+double load_accuracy(const MeshSequence& sequence) {
+  const std::vector<double>& w = sequence.loads();
+  return 1e-3 * std::max(std::abs(w.back() - w[w.size() - 2]) / 4.0, 1e-3 * std::abs(w.back()));
+}
+
 // W_d again on the refined mesh: from the coarse fold by Newton on the fold system, else
-// by a search there from where the coarse one began (a light load past distress).
+// by a search there from where the coarse one began (a light load past distress); then,
+// with a tolerance, on each finer mesh from the last one's fold until its bar meets it.
 RefinedBar refined_fold(const BearingModel& model, const DistressSearchSettings& settings, const DistressSearch& found,
                         const ProgressReport& progress) {
   RefinedBar bar;
   DistressSearchSettings from = settings;
   from.load_start = found.states.front().state.load;
+  const double tolerance = model.scene().study.tolerance;
   try {
     const CoarseFold coarse{*found.row.fold_load, &model, found.fold ? &*found.fold : nullptr};
-    bar.estimate = richardson_estimate(model.scene(), model.speed(), coarse, from, bar.why, progress);
+    std::optional<RefinedFold> fine = refined_fold(model.scene(), model.speed(), coarse, from, bar.why, progress);
+    if (!fine) return bar;
+    MeshSequence sequence(model.scene(), coarse.load);
+    sequence.add(fine->load);
+    std::unique_ptr<BearingModel> at = std::move(fine->model);
+    std::optional<FoldPoint> point = std::move(fine->point);
+    std::string finest = mesh_name(at->scene());
+    while (tolerance > 0.0 && sequence.wants_more(tolerance)) {
+      const Scene* next = sequence.next_mesh();
+      if (!next) break;
+      if (!point) {
+        sequence.stop(fmt::format("the fold on {} was found by a search without a located fold to go on from",
+                                  finest));
+        break;
+      }
+      const auto t0 = Clock::now();
+      std::unique_ptr<BearingModel> finer = at->on_mesh(next->mesh.radial_nodes, next->mesh.circumferential_nodes);
+      std::string why;
+      std::optional<FoldPoint> located = fold_on_finer_mesh(*at, *point, *finer, load_accuracy(sequence), why);
+      if (!located) {
+        sequence.stop(fmt::format("the fold on {} from the one on {} failed: {}", mesh_name(*next), finest, why));
+        break;
+      }
+      sequence.add(located->lambda);
+      at = std::move(finer);
+      point = std::move(located);
+      finest = mesh_name(*next);
+      if (progress) {
+        const MeshConvergence c = sequence.estimate();
+        progress(fmt::format("  error bar: the fold on {}: {:.2f} N; mesh-converged {:.2f} ± {:.2f} N{} [{:.1f} s]",
+                             finest, point->lambda, c.value, c.error,
+                             c.order ? fmt::format(" (observed order {:.2f})", *c.order) : std::string(),
+                             elapsed_ms(t0) / 1000.0));
+      }
+    }
+    bar.estimate = sequence_estimate(sequence, tolerance, finest);
   } catch (const InternalError&) {
     throw;  // a bug: no fallback may hide it
   } catch (const std::exception& failure) {
@@ -102,17 +171,42 @@ RefinedBar refined_fold(const BearingModel& model, const DistressSearchSettings&
   return bar;
 }
 
-// Criterion c's crossing again on the refined mesh, on a refined model of its own.
+// Criterion c's crossing again on the refined mesh, on a refined model of its own, and
+// with a tolerance on each finer mesh from the last one's crossing until its bar meets it.
+// The crossing is located to a fifth of the tolerance where that is finer than the
+// search's bracket width, so that its location moves the bar by little.
 RefinedBar refined_crossing(const BearingModel& model, const DistressSearchSettings& settings,
                             const DistressSearch& found, std::size_t c) {
   RefinedBar bar;
+  const double tolerance = model.scene().study.tolerance;
+  const double width = tolerance > 0.0 ? std::min(settings.bracket_width, tolerance / 5.0) : settings.bracket_width;
   try {
-    const Scene refined = refined_mesh(model.scene());
-    const std::unique_ptr<BearingModel> fine =
-        model.on_mesh(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
-    bar.estimate = crossing_estimate(model, *fine, kFailureCriteria[c], found.crossing_states[c].first,
-                                     found.crossing_states[c].second, settings.bracket_width, settings.load_end,
-                                     bar.why);
+    MeshSequence sequence(model.scene(), found.crossing_states[c].first);
+    std::pair<double, std::vector<double>> state = found.crossing_states[c];
+    const BearingModel* at = &model;
+    std::unique_ptr<BearingModel> held;
+    std::string finest;
+    do {
+      const Scene* next = sequence.next_mesh();
+      if (!next) break;
+      std::unique_ptr<BearingModel> finer = model.on_mesh(next->mesh.radial_nodes, next->mesh.circumferential_nodes);
+      std::string why;
+      const std::optional<double> w =
+          crossing_on_finer_mesh(*at, *finer, kFailureCriteria[c], state, width, settings.load_end, why);
+      if (!w) {
+        if (sequence.loads().size() < 2) {
+          bar.why = why;
+          return bar;
+        }
+        sequence.stop(fmt::format("the crossing on {} from the one on {} failed: {}", mesh_name(*next), finest, why));
+        break;
+      }
+      sequence.add(*w);
+      held = std::move(finer);
+      at = held.get();
+      finest = mesh_name(*next);
+    } while (tolerance > 0.0 && sequence.wants_more(tolerance));
+    bar.estimate = sequence_estimate(sequence, tolerance, finest);
   } catch (const InternalError&) {
     throw;  // a bug: no fallback may hide it
   } catch (const std::exception& failure) {
@@ -162,6 +256,15 @@ long estimate_failure_errors(const BearingModel& model, const DistressSearchSett
   // The pieces' results in their fixed order, whichever thread ran them.
   long factorizations = 0;
   for (const RefinedBar& b : bars) factorizations += b.klu_factorizations;
+  const auto convergence = [](const MeshErrorEstimate& e, double tolerance) {
+    LoadConvergence c;
+    if (!e.meshes.empty()) c.meshes = e.meshes.front();
+    c.order = e.order;
+    if (tolerance > 0.0) c.tolerance_met = e.tolerance_met;
+    c.why_unmet = e.unmet;
+    return c;
+  };
+  const double tolerance = model.scene().study.tolerance;
   if (fold) {
     const RefinedBar& b = bars.front();
     if (!b.estimate) {
@@ -170,6 +273,8 @@ long estimate_failure_errors(const BearingModel& model, const DistressSearchSett
       row.fine_fold_load = b.estimate->fine_fold;
       row.extrapolated_load = b.estimate->extrapolated;
       row.discretization_error = b.estimate->error;
+      row.fold_convergence = convergence(*b.estimate, tolerance);
+      if (!b.estimate->tolerance_met) row.method += "; W_d not to the tolerance: " + b.estimate->unmet;
       if (progress)
         progress(fmt::format("  error bar: fold {:.2f} N on {}; extrapolated W_d = {:.2f} ± {:.2f} N [{:.1f} s]",
                              b.estimate->fine_fold, b.estimate->fine_mesh, b.estimate->extrapolated,
@@ -184,9 +289,13 @@ long estimate_failure_errors(const BearingModel& model, const DistressSearchSett
       continue;
     }
     row.criterion_errors[c] = b.estimate->error;
+    row.criterion_extrapolated[c] = b.estimate->extrapolated;
+    if (!b.estimate->tolerance_met)
+      row.method += fmt::format("; {} not to the tolerance: {}", limit_name(kFailureCriteria[c]), b.estimate->unmet);
     if (row.criterion == FailureCriterion::crossing(kFailureCriteria[c])) {
       row.failure_extrapolated = b.estimate->extrapolated;
       row.failure_error = b.estimate->error;
+      row.failure_convergence = convergence(*b.estimate, tolerance);
     }
     if (progress)
       progress(fmt::format("  error bar: {} crossed at {:.2f} N on {}; extrapolated {:.2f} ± {:.2f} N [{:.1f} s]",
@@ -196,9 +305,14 @@ long estimate_failure_errors(const BearingModel& model, const DistressSearchSett
   if (row.criterion && row.criterion->distress) {
     row.failure_extrapolated = row.extrapolated_load;
     row.failure_error = row.discretization_error;
+    row.failure_convergence = row.fold_convergence;
   }
-  if (row.failure_load && row.failure_error)
-    row.failure += fmt::format("; mesh-converged {:.1f} ± {:.1f} N", *row.failure_extrapolated, *row.failure_error);
+  if (row.failure_load && row.failure_error) {
+    // The already-past note of locate_failure stays; the rest is said again converged first.
+    const std::size_t past = row.failure.find(" (already past it at the start");
+    row.failure = converged_failure_sentence(row, settings.load_end) +
+                  (past == std::string::npos ? std::string() : row.failure.substr(past));
+  }
   return factorizations;
 }
 

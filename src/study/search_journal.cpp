@@ -26,7 +26,7 @@ static_assert(sizeof(BearingState) == 8 * 30 + 2 * sizeof(std::optional<double>)
 
 // The format, the program's version and the journaled structs' layout: an entry written
 // by another build is not read (its search runs again) rather than misread.
-const std::string kMagic = fmt::format("twb-search-journal 8 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
+const std::string kMagic = fmt::format("twb-search-journal 9 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
                                        sizeof(SolvedState), sizeof(DistressRow), sizeof(TrajectorySample),
                                        sizeof(SearchCounts));
 
@@ -83,6 +83,12 @@ void fields_of_row(A& a, S& r) {
   for (auto& load : r.criterion_loads) a(load);
   for (auto& error : r.criterion_errors) a(error);
   a(r.failure_extrapolated), a(r.failure_error), a(r.verdict);
+  for (auto& load : r.criterion_extrapolated) a(load);
+  a(r.fold_convergence), a(r.failure_convergence);
+}
+template <class A, class S>
+void fields_of_convergence(A& a, S& c) {
+  a(c.meshes), a(c.order), a(c.tolerance_met), a(c.why_unmet);
 }
 template <class A, class S>
 void fields_of_search(A& a, S& j) {
@@ -122,6 +128,7 @@ class Out {
   void operator()(const SolvedState& s) { fields_of_solved(*this, s); }
   void operator()(const TrajectorySample& t) { fields_of_sample(*this, t); }
   void operator()(const DistressRow& r) { fields_of_row(*this, r); }
+  void operator()(const LoadConvergence& c) { fields_of_convergence(*this, c); }
   const std::string& bytes() const { return bytes_; }
 
  private:
@@ -184,6 +191,7 @@ class In {
   void operator()(SolvedState& s) { fields_of_solved(*this, s); }
   void operator()(TrajectorySample& t) { fields_of_sample(*this, t); }
   void operator()(DistressRow& r) { fields_of_row(*this, r); }
+  void operator()(LoadConvergence& c) { fields_of_convergence(*this, c); }
   bool done() const { return at_ == bytes_.size(); }
 
  private:

@@ -47,15 +47,30 @@ std::vector<std::string> summary_lines(const StudyOutcome& outcome) {
     const std::string where =
         fmt::format("{:.6g} rad/s{}{}", d.speed, run_axes_text(outcome.parameter_columns, d.parameters),
                     d.sliding ? ", sliding " + std::string(scene_name(*d.sliding)) : "");
-    lines.push_back(fmt::format(
-        "distress at {}: {}{} ({})", where, d.distress_load ? fmt::format("W_d = {:.2f} N", *d.distress_load) : "none",
-        d.extrapolated_load && d.discretization_error
-            ? fmt::format(" on the scene's mesh; mesh-converged {:.1f} ± {:.1f} N (Richardson, {:.2f} N on the "
-                          "mesh refined by two)",
-                          *d.extrapolated_load, *d.discretization_error, *d.fine_fold_load)
-            : "",
-        d.method));
+    std::string distress = "none";
+    if (d.distress_load && d.extrapolated_load && d.discretization_error) {
+      const LoadConvergence& c = d.fold_convergence;
+      distress = fmt::format("W_d = {:.1f} ± {:.1f} N mesh-converged ({}); {:.2f} N on the scene's mesh",
+                             *d.extrapolated_load, *d.discretization_error,
+                             c.meshes.empty()
+                                 ? fmt::format("Richardson, {:.2f} N on the mesh refined by two", *d.fine_fold_load)
+                                 : fmt::format("on {}{}", c.meshes,
+                                               c.order ? fmt::format(", observed order {:.2f}", *c.order)
+                                                       : std::string()),
+                             *d.distress_load);
+    } else if (d.distress_load) {
+      distress = fmt::format("W_d = {:.2f} N on the scene's mesh", *d.distress_load);
+    }
+    lines.push_back(fmt::format("distress at {}: {} ({})", where, distress, d.method));
     if (!d.failure.empty()) lines.push_back(fmt::format("failure at {}: {}", where, d.failure));
+    // A load whose bar the mesh sequence could not bring within the tolerance: said, not
+    // hidden behind a coarse number (the reasons are in the row's method).
+    for (const auto& [what, c] : {std::pair<const char*, const LoadConvergence*>{"W_fail", &d.failure_convergence},
+                                   {"W_d", &d.fold_convergence}}) {
+      if (!c->tolerance_met || *c->tolerance_met) continue;
+      if (what == std::string("W_d") && d.criterion && d.criterion->distress) continue;  // said as W_fail
+      lines.push_back(fmt::format("warning: at {}, {} is not within the tolerance: {}", where, what, c->why_unmet));
+    }
   }
   lines.insert(lines.end(), outcome.summary.begin(), outcome.summary.end());
   return lines;

@@ -44,12 +44,16 @@ TEST(StudyOutputs, DistressMapWritesOneRowPerSpeed) {
   const auto rows = lines_of(dir / "distress.csv");
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0],
-            "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,bracket_high_N,"
-            "fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,W_oil_temperature_N,W_flash_temperature_N,"
+            "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_fail_meshes,W_fail_order,"
+            "W_fail_tolerance_met,W_d_N,bracket_low_N,bracket_high_N,"
+            "fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,W_d_meshes,W_d_order,W_oil_temperature_N,W_flash_temperature_N,"
             "W_material_temperature_carrier_N,W_material_temperature_washer_N,W_material_temperature_gear_N,"
             "W_film_ratio_N,W_oil_temperature_error_N,W_flash_temperature_error_N,"
             "W_material_temperature_carrier_error_N,W_material_temperature_washer_error_N,"
-            "W_material_temperature_gear_error_N,W_film_ratio_error_N,failure,method");
+            "W_material_temperature_gear_error_N,W_film_ratio_error_N,W_oil_temperature_extrapolated_N,"
+            "W_flash_temperature_extrapolated_N,W_material_temperature_carrier_extrapolated_N,"
+            "W_material_temperature_washer_extrapolated_N,W_material_temperature_gear_extrapolated_N,"
+            "W_film_ratio_extrapolated_N,failure,method");
   EXPECT_EQ(rows[1].rfind("136,", 0), 0u);
   EXPECT_EQ(rows[2].rfind("545,", 0), 0u);
   EXPECT_EQ(rows[2].find("nan"), std::string::npos);
@@ -159,7 +163,7 @@ TEST(StudyOutputs, FrictionCoefficientSweepNamesTheCoefficient) {
   EXPECT_EQ(header(dir / "states.csv").rfind("load_N,speed_rad_s,friction_coefficient,T_mean_C,", 0), 0u);
   const auto distress = lines_of(dir / "distress.csv");
   ASSERT_EQ(distress.size(), 4u);  // three coefficients
-  EXPECT_EQ(distress[0].rfind("speed_rad_s,friction_coefficient,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,", 0), 0u);
+  EXPECT_EQ(distress[0].rfind("speed_rad_s,friction_coefficient,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_fail_meshes,", 0), 0u);
   EXPECT_EQ(distress[1].rfind("136,0.05,", 0), 0u);
   EXPECT_EQ(distress[3].rfind("136,0.2,", 0), 0u);
   for (const std::string& row : lines_of(dir / "states.csv")) EXPECT_EQ(row.find("nan"), std::string::npos);

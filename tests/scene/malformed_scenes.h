@@ -108,7 +108,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"map_where_scalar_expected", 8, 9, {"operating.load: expected a force", "got a map"}},
     {"list_where_map_expected", 5, 11, {"'geometry.washer' must be a map (allowed keys: inner_diameter, outer_diameter, thickness, grooves); got a list"}},
     {"scalar_where_list_expected", 2, 10, {"effects: expected a list of effects (hydrodynamics, flow_factors, asperity_contact, thermal, thermal_deformation, convection); got the value 'hydrodynamics'"}},
-    {"scalar_where_map_expected", 12, 7, {"'mesh' must be a map (allowed keys: radial_nodes, circumferential_nodes, contact_quadrature, flat_contact_quadrature); got the value '17'"}},
+    {"scalar_where_map_expected", 12, 7, {"'mesh' must be a map (allowed keys: radial_nodes, circumferential_nodes, contact_quadrature, flat_contact_quadrature, max_refinements); got the value '17'"}},
     {"not_a_whole_number", 12, 22, {"mesh.radial_nodes: '9.5' is not a whole number", "expected a whole number in [3, 1025]"}},
     {"not_a_boolean", 12, 18, {"output.fields: 'yes' is not a boolean; allowed: true, false"}},
     {"empty_output_directory", 13, 14, {"output.directory: must not be empty"}},

@@ -104,6 +104,8 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.study.speeds, b.study.speeds);
   EXPECT_EQ(a.study.axes, b.study.axes);
   EXPECT_EQ(a.study.bracket_width, b.study.bracket_width);
+  EXPECT_EQ(a.study.tolerance, b.study.tolerance);
+  EXPECT_EQ(a.mesh.max_refinements, b.mesh.max_refinements);
   EXPECT_EQ(a.study.duration, b.study.duration);
   EXPECT_EQ(a.study.parameters, b.study.parameters);
   ASSERT_EQ(a.study.uncertain_inputs.size(), b.study.uncertain_inputs.size());
@@ -281,6 +283,14 @@ INSTANTIATE_TEST_SUITE_P(
                           "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
                           "        parameter: [{name: friction_coefficient, values: [0.05, 0.2]},\n"
                           "                    {name: geometry.gear.tilt, values: [1 mrad, 2 mrad, 3 mrad]}]}\n"},
+        RoundTripCase{"load_sweep_to_a_tolerance",
+                      std::string(kMinimalScene) +
+                          "mesh: {max_refinements: 3}\n"
+                          "study: {type: load_sweep, load_start: 100 N, load_end: 400 N, load_steps: 4, tolerance: 0.5 %}\n"},
+        RoundTripCase{"distress_map_without_a_tolerance",
+                      std::string(kMinimalScene) +
+                          "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
+                          "        tolerance: none}\n"},
         RoundTripCase{"sliding_choice",
                       std::string(kMinimalScene) +
                           "study: {type: sliding_choice, speeds: [545 rad/s, 953 rad/s], load_start: 100 N,\n"
@@ -479,6 +489,30 @@ TEST(InputErrorFormat, QuotesTheLineWithACaretUnderTheColumn) {
   EXPECT_EQ(error.line(), 12);
   EXPECT_EQ(error.column(), 11);
   EXPECT_EQ(error.message(), "unknown key 'thicknes'");
+}
+
+// study.tolerance: a relative number with its unit or none; refused where no error bar is
+// asked for, and outside (0, 0.5], each at its place.
+TEST(SceneLoader, ATolerancesValueAndWhereItIsRefused) {
+  const std::string sweep = std::string(kMinimalScene) + "study: {type: load_sweep, load_start: 100 N, load_end: 400 N, load_steps: 4";
+  EXPECT_EQ(load_scene_text(sweep + "}\n", "t.yaml").study.tolerance, 0.01);  // the default
+  EXPECT_DOUBLE_EQ(load_scene_text(sweep + ", tolerance: 2 %}\n", "t.yaml").study.tolerance, 0.02);
+  EXPECT_EQ(load_scene_text(sweep + ", tolerance: none}\n", "t.yaml").study.tolerance, 0.0);
+  const auto refused = [&](const std::string& text, const std::string& needle) {
+    try {
+      load_scene_text(text, "t.yaml");
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("t.yaml:"), std::string::npos) << e.what();
+    }
+  };
+  refused(sweep + ", error_estimate: none, tolerance: 1 %}\n", "error_estimate: none asks for no error bar");
+  refused(sweep + ", tolerance: 0}\n", "study.tolerance");
+  refused(sweep + ", tolerance: 60 %}\n", "study.tolerance");
+  refused(sweep + ", tolerance: 1 N}\n", "study.tolerance");
+  refused(std::string(kMinimalScene) + "study: {type: point, tolerance: 1 %}\n", "tolerance");
+  refused(std::string(kMinimalScene) + "mesh: {max_refinements: 6}\n", "mesh.max_refinements");
 }
 
 }  // namespace

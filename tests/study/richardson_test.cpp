@@ -8,6 +8,7 @@
 
 #include "../../src/study/richardson.h"
 #include "study/failure_load.h"
+#include "study/search_error_bars.h"
 #include "study/study_support.h"
 #include "../support/table1_scene.h"
 
@@ -173,6 +174,49 @@ TEST(RichardsonEstimate, TheRefinedCrossingIsSolvedAsFarAsItsLoadNeeds) {
   const double exact_error = richardson_extrapolation(coarse_load, *own).error;
   EXPECT_NEAR(bar->error, exact_error, richardson_extrapolation(0.0, load_tolerance).error)
       << "coarse " << coarse_load << ", refined " << *own;
+}
+
+// The tolerance's controller (study.tolerance) on W_d, where the limit is known from a
+// finer mesh: the coarse test mesh (5 x 24) with two refinements allowed shows an order
+// from three meshes, and its bar does not reach 1 %: the row says so. With three allowed,
+// the fourth mesh's estimate (its bar narrower) is the reference: the three meshes' bar
+// must cover it. The first three meshes' loads are the same in both runs (the same
+// meshes, the same starts).
+TEST(ToleranceController, TheBarOfThreeMeshesCoversTheFourthsEstimateAndSaysWhenItFallsShort) {
+  Scene coarse = testing::table1_scene(true, true, true, true, 545.0, 100.0);
+  testing::use_coarse_mesh(coarse);
+  coarse.study.type = StudyType::load_sweep;
+  coarse.study.tolerance = 0.01;
+  const auto run = [&](int refinements) {
+    Scene s = coarse;
+    s.mesh.max_refinements = refinements;
+    BearingModel model(s);
+    DistressSearchSettings settings = fold_range();
+    settings.march_past_distress = false;
+    DistressSearch found = search_distress(model, settings, {});
+    if (!found.row.fold_load || !found.row.distress_load) throw std::runtime_error("no W_d: " + found.row.method);
+    estimate_failure_errors(model, settings, found, {}, nullptr);
+    return found.row;
+  };
+  const DistressRow three = run(2);
+  ASSERT_TRUE(three.extrapolated_load && three.discretization_error) << three.method;
+  EXPECT_EQ(three.fold_convergence.meshes, "5x24 9x48 17x96");
+  ASSERT_TRUE(three.fold_convergence.order.has_value()) << three.method;
+  ASSERT_TRUE(three.fold_convergence.tolerance_met.has_value());
+  EXPECT_FALSE(*three.fold_convergence.tolerance_met) << *three.extrapolated_load << " ± " << *three.discretization_error;
+  EXPECT_NE(three.method.find("W_d not to the tolerance"), std::string::npos) << three.method;
+  EXPECT_NE(three.failure.find("NOT to the tolerance"), std::string::npos) << three.failure;
+  // W_fail is W_d here, with the same bar.
+  EXPECT_EQ(three.failure_extrapolated, three.extrapolated_load);
+  EXPECT_EQ(three.failure_convergence, three.fold_convergence);
+
+  const DistressRow four = run(3);
+  ASSERT_TRUE(four.extrapolated_load && four.discretization_error) << four.method;
+  EXPECT_EQ(four.fold_convergence.meshes, "5x24 9x48 17x96 33x192");
+  EXPECT_LT(*four.discretization_error, *three.discretization_error);
+  EXPECT_LE(std::abs(*three.extrapolated_load - *four.extrapolated_load), *three.discretization_error)
+      << "three meshes " << *three.extrapolated_load << " ± " << *three.discretization_error << ", four "
+      << *four.extrapolated_load << " ± " << *four.discretization_error;
 }
 
 }  // namespace

@@ -18,9 +18,19 @@ inline Scene table1_scene(bool hydrodynamics, bool flow_factors, bool contact, b
   s.effects.flow_factors = flow_factors;
   s.effects.asperity_contact = contact;
   s.effects.thermal = thermal;
-  s.washer = {11.1e-3 / 2, 22.7e-3 / 2, 0.635e-3, 0.0, {}, {}};
-  s.gear = {15.6e-3 / 2, 22.7e-3 / 2, 10e-3, 2e-3, {}, {}};
-  s.carrier = {11.1e-3 / 2, 22.7e-3 / 2, 10e-3, 0.0, {}, {}};
+  // Each body's dimensions alone; its material, roughness and play are set below or kept
+  // at their defaults.
+  const auto body = [](double inner_radius, double outer_radius, double thickness, double tilt) {
+    Component c;
+    c.inner_radius = inner_radius;
+    c.outer_radius = outer_radius;
+    c.thickness = thickness;
+    c.tilt = tilt;
+    return c;
+  };
+  s.washer = body(11.1e-3 / 2, 22.7e-3 / 2, 0.635e-3, 0.0);
+  s.gear = body(15.6e-3 / 2, 22.7e-3 / 2, 10e-3, 2e-3);
+  s.carrier = body(11.1e-3 / 2, 22.7e-3 / 2, 10e-3, 0.0);
   const double sigma = std::hypot(0.515e-6, 0.515e-6);
   s.asperities.summit_radius = 20e-6;
   s.asperities.summit_sigma = sigma;

@@ -52,6 +52,17 @@ std::string criterion_column(LimitKind kind, const char* suffix = "");
 // "distress", or the criterion's limit_name: distress.csv's criterion column.
 std::string criterion_name(const FailureCriterion& criterion);
 
+// How a mesh-converged load was reached (study.tolerance; docs/physics.md section 8, "To a
+// requested accuracy"): the meshes it was solved on, the order they show where three do,
+// and whether its bar meets the tolerance (none without a tolerance).
+struct LoadConvergence {
+  std::string meshes;  // "9x66 17x132 33x264", the scene's first
+  std::optional<double> order;
+  std::optional<bool> tolerance_met;
+  std::string why_unmet;  // where not met: the bar reached and what ended the sequence
+  bool operator==(const LoadConvergence&) const = default;
+};
+
 struct DistressRow {
   double speed = 0.0;                     // rad/s
   std::vector<double> parameters;         // the study's axes' values (SI, run_axes.h), if any
@@ -80,6 +91,10 @@ struct DistressRow {
   // or its criterion's), N.
   std::array<std::optional<double>, std::size(kFailureCriteria)> criterion_errors;
   std::optional<double> failure_extrapolated, failure_error;
+  // study.tolerance: each crossing's mesh-converged load (W_fail's is failure_extrapolated,
+  // W_d's extrapolated_load), and how W_d's and W_fail's were reached.
+  std::array<std::optional<double>, std::size(kFailureCriteria)> criterion_extrapolated;
+  LoadConvergence fold_convergence, failure_convergence;
   // The verdict `method` words (with its numbers): what studies and tests read.
   DistressVerdict verdict = DistressVerdict::undecided;
 };
