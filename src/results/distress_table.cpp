@@ -2,12 +2,19 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 #include "result_cells.h"
 
 namespace twb {
 
 std::string criterion_name(const FailureCriterion& criterion) {
   return criterion.distress ? "distress" : std::string(limit_name(criterion.limit));
+}
+
+std::string convergence_phrase(const LoadConvergence& c) {
+  if (c.meshes.empty()) return {};
+  return fmt::format("on {}{}", c.meshes, c.order ? fmt::format(", observed order {:.2f}", *c.order) : std::string());
 }
 
 std::string criterion_column(LimitKind kind, const char* suffix) {

@@ -266,10 +266,7 @@ std::string failure_sentence(const DistressRow& row, double load_end) {
 std::string converged_failure_sentence(const DistressRow& row, double load_end) {
   if (!row.failure_load || !row.failure_extrapolated || !row.failure_error) return failure_sentence(row, load_end);
   const LoadConvergence& c = row.failure_convergence;
-  const std::string how =
-      c.meshes.empty() ? std::string("Richardson on the mesh refined by two")
-                       : fmt::format("on {}{}", c.meshes,
-                                     c.order ? fmt::format(", observed order {:.2f}", *c.order) : std::string());
+  const std::string how = c.meshes.empty() ? std::string("Richardson on the mesh refined by two") : convergence_phrase(c);
   std::string s = fmt::format("fails at {:.1f} ± {:.1f} N by {} (mesh-converged {}; {:.2f} N on the scene's mesh)",
                               *row.failure_extrapolated, *row.failure_error,
                               row.criterion->distress ? std::string("thermo-viscous distress")

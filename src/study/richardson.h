@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "twb/results/distress_table.h"
 #include "twb/scene/scene.h"
 #include "solver/fold_location.h"
 #include "study/distress_search.h"
@@ -36,14 +37,9 @@ struct MeshErrorEstimate {
   double extrapolated = 0.0;  // N
   double error = 0.0;         // N, the error bar of the extrapolated value
   std::string fine_mesh;      // e.g. "17 x 132"
-  // A sequence to a tolerance (mesh_convergence.h): the loads on the scene's mesh and
-  // each refined one, the meshes' names, the order they show, and whether the bar meets
-  // the tolerance (with why not where it does not).
-  std::vector<double> loads;
-  std::vector<std::string> meshes;
-  std::optional<double> order;
-  bool tolerance_met = true;
-  std::string unmet;
+  // A sequence to a tolerance (mesh_convergence.h): the meshes solved on, the order they
+  // show, and whether the bar meets the tolerance (and why not); empty without one.
+  LoadConvergence convergence;
 };
 
 // The scene with its mesh refined by two in each direction, its grooves placed on it at

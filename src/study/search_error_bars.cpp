@@ -98,13 +98,12 @@ MeshErrorEstimate sequence_estimate(const MeshSequence& sequence, double toleran
     e.fine_fold = loads.back();
     e.extrapolated = c.value;
     e.error = c.error;
-    e.order = c.order;
-    e.tolerance_met = within_tolerance(c, tolerance);
-    if (!e.tolerance_met) e.unmet = sequence.why_unmet(tolerance);
+    e.convergence.order = c.order;
+    e.convergence.tolerance_met = within_tolerance(c, tolerance);
+    if (!*e.convergence.tolerance_met) e.convergence.why_unmet = sequence.why_unmet(tolerance);
   }
   e.fine_mesh = finest;
-  e.loads = loads;
-  e.meshes = {sequence.solved_meshes()};
+  e.convergence.meshes = sequence.solved_meshes();
   return e;
 }
 
@@ -256,15 +255,9 @@ long estimate_failure_errors(const BearingModel& model, const DistressSearchSett
   // The pieces' results in their fixed order, whichever thread ran them.
   long factorizations = 0;
   for (const RefinedBar& b : bars) factorizations += b.klu_factorizations;
-  const auto convergence = [](const MeshErrorEstimate& e, double tolerance) {
-    LoadConvergence c;
-    if (!e.meshes.empty()) c.meshes = e.meshes.front();
-    c.order = e.order;
-    if (tolerance > 0.0) c.tolerance_met = e.tolerance_met;
-    c.why_unmet = e.unmet;
-    return c;
+  const auto unmet = [](const MeshErrorEstimate& e) {
+    return e.convergence.tolerance_met && !*e.convergence.tolerance_met;
   };
-  const double tolerance = model.scene().study.tolerance;
   if (fold) {
     const RefinedBar& b = bars.front();
     if (!b.estimate) {
@@ -273,8 +266,8 @@ long estimate_failure_errors(const BearingModel& model, const DistressSearchSett
       row.fine_fold_load = b.estimate->fine_fold;
       row.extrapolated_load = b.estimate->extrapolated;
       row.discretization_error = b.estimate->error;
-      row.fold_convergence = convergence(*b.estimate, tolerance);
-      if (!b.estimate->tolerance_met) row.method += "; W_d not to the tolerance: " + b.estimate->unmet;
+      row.fold_convergence = b.estimate->convergence;
+      if (unmet(*b.estimate)) row.method += "; W_d not to the tolerance: " + b.estimate->convergence.why_unmet;
       if (progress)
         progress(fmt::format("  error bar: fold {:.2f} N on {}; extrapolated W_d = {:.2f} ± {:.2f} N [{:.1f} s]",
                              b.estimate->fine_fold, b.estimate->fine_mesh, b.estimate->extrapolated,
@@ -290,12 +283,13 @@ long estimate_failure_errors(const BearingModel& model, const DistressSearchSett
     }
     row.criterion_errors[c] = b.estimate->error;
     row.criterion_extrapolated[c] = b.estimate->extrapolated;
-    if (!b.estimate->tolerance_met)
-      row.method += fmt::format("; {} not to the tolerance: {}", limit_name(kFailureCriteria[c]), b.estimate->unmet);
+    if (unmet(*b.estimate))
+      row.method += fmt::format("; {} not to the tolerance: {}", limit_name(kFailureCriteria[c]),
+                                b.estimate->convergence.why_unmet);
     if (row.criterion == FailureCriterion::crossing(kFailureCriteria[c])) {
       row.failure_extrapolated = b.estimate->extrapolated;
       row.failure_error = b.estimate->error;
-      row.failure_convergence = convergence(*b.estimate, tolerance);
+      row.failure_convergence = b.estimate->convergence;
     }
     if (progress)
       progress(fmt::format("  error bar: {} crossed at {:.2f} N on {}; extrapolated {:.2f} ± {:.2f} N [{:.1f} s]",

@@ -54,9 +54,7 @@ std::vector<std::string> summary_lines(const StudyOutcome& outcome) {
                              *d.extrapolated_load, *d.discretization_error,
                              c.meshes.empty()
                                  ? fmt::format("Richardson, {:.2f} N on the mesh refined by two", *d.fine_fold_load)
-                                 : fmt::format("on {}{}", c.meshes,
-                                               c.order ? fmt::format(", observed order {:.2f}", *c.order)
-                                                       : std::string()),
+                                 : convergence_phrase(c),
                              *d.distress_load);
     } else if (d.distress_load) {
       distress = fmt::format("W_d = {:.2f} N on the scene's mesh", *d.distress_load);
@@ -64,13 +62,13 @@ std::vector<std::string> summary_lines(const StudyOutcome& outcome) {
     lines.push_back(fmt::format("distress at {}: {} ({})", where, distress, d.method));
     if (!d.failure.empty()) lines.push_back(fmt::format("failure at {}: {}", where, d.failure));
     // A load whose bar the mesh sequence could not bring within the tolerance: said, not
-    // hidden behind a coarse number (the reasons are in the row's method).
-    for (const auto& [what, c] : {std::pair<const char*, const LoadConvergence*>{"W_fail", &d.failure_convergence},
-                                   {"W_d", &d.fold_convergence}}) {
-      if (!c->tolerance_met || *c->tolerance_met) continue;
-      if (what == std::string("W_d") && d.criterion && d.criterion->distress) continue;  // said as W_fail
-      lines.push_back(fmt::format("warning: at {}, {} is not within the tolerance: {}", where, what, c->why_unmet));
-    }
+    // hidden behind a coarse number.
+    const auto warn = [&](const char* what, const LoadConvergence& c) {
+      if (c.tolerance_met && !*c.tolerance_met)
+        lines.push_back(fmt::format("warning: at {}, {} is not within the tolerance: {}", where, what, c.why_unmet));
+    };
+    warn("W_fail", d.failure_convergence);
+    if (!d.criterion || !d.criterion->distress) warn("W_d", d.fold_convergence);  // else said as W_fail
   }
   lines.insert(lines.end(), outcome.summary.begin(), outcome.summary.end());
   return lines;

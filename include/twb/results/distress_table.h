@@ -63,6 +63,10 @@ struct LoadConvergence {
   bool operator==(const LoadConvergence&) const = default;
 };
 
+// "on 9x66 17x132 33x264, observed order 1.78" (without the order where none is seen);
+// empty where the load had no mesh sequence.
+std::string convergence_phrase(const LoadConvergence& c);
+
 struct DistressRow {
   double speed = 0.0;                     // rad/s
   std::vector<double> parameters;         // the study's axes' values (SI, run_axes.h), if any
