@@ -7,7 +7,6 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -19,6 +18,7 @@
 #include "solver/ida_transient.h"
 #include "solver/linear_stability.h"
 #include "solver/sparse_lu.h"
+#include "study/cycle_start.h"
 #include "study/distress_search.h"
 #include "study/operating_point.h"
 #include "study/operating_schedule.h"
@@ -275,35 +275,6 @@ double heat_content(const BearingModel& model, std::span<const double> u, double
   return e;
 }
 
-// The unknowns of an earlier cycle's end, checked to be this bearing's and to end where
-// this schedule starts (std::invalid_argument saying what differs).
-std::vector<double> continued_state(const BearingModel& model, const CycleState& end, const SchedulePoint& first,
-                                    const std::string& bearing) {
-  if (end.bearing != bearing) {
-    std::istringstream a(end.bearing), b(bearing);
-    std::string la, lb;
-    while (std::getline(a, la) && std::getline(b, lb) && la == lb) {
-    }
-    throw std::invalid_argument(fmt::format("the cycle continued from belongs to another bearing: it has '{}' where "
-                                            "this scene has '{}'",
-                                            la, lb));
-  }
-  if (end.unknowns.size() != std::size_t(model.size()))
-    throw std::invalid_argument(fmt::format("the cycle continued from has {} unknowns, this bearing {}",
-                                            end.unknowns.size(), model.size()));
-  // Within a millionth: a schedule's values written to ten digits (cycle_events.csv's) are the end's.
-  const auto same = [](double a, double b) { return std::abs(a - b) <= 1e-6 * std::max(std::abs(a), std::abs(b)); };
-  if (!same(end.time, first.time) || !same(end.load, first.load) || !same(end.speed, first.speed) ||
-      !same(end.ambient, first.ambient) || !same(end.tilt, first.tilt))
-    throw std::invalid_argument(fmt::format(
-        "the cycle continued from ended at t = {:.10g} s, {:.10g} N, {:.10g} rad/s, ambient {:.10g} K, tilt {:.10g} rad; "
-        "this schedule's first point is t = {:.10g} s, {:.10g} N, {:.10g} rad/s, {:.10g} K, {:.10g} rad: a continued "
-        "cycle starts where the last one ended (its inputs are continuous in time)",
-        end.time, end.load, end.speed, end.ambient, end.tilt, first.time, first.load, first.speed, first.ambient,
-        first.tilt));
-  return end.unknowns;
-}
-
 }  // namespace
 
 void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, const CycleState* start) {
@@ -315,26 +286,9 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
 
   // The steady state at the schedule's start, or where the cycle continued from ended.
   const SchedulePoint first = schedule.points().front();
-  OperatingSchedule::apply(model, first);
-  std::vector<double> u;
-  if (start) {
-    u = continued_state(model, *start, first, bearing);
-    SolvedState row = solved_state(model, u);
-    row.converged = false;  // a point of a trajectory, not a steady state
-    out.states.push_back(std::move(row));
-  } else {
-    SteadySolver steady(model, newton);
-    const SteadyReport rep = steady.solve_cold(u);
-    if (!rep.converged) {
-      out.solver_failed = true;
-      out.message = fmt::format("duty cycle: no steady state at the schedule's start ({:.6g} N, {:.6g} rad/s): {}",
-                                first.load, first.speed, rep.message);
-      return;
-    }
-    out.states.push_back(recorded_state(model, u, rep));
-    out.timings.newton_iterations += rep.iterations;
-    out.timings.jacobian_evaluations += rep.jacobian_evaluations;
-  }
+  std::optional<std::vector<double>> begun = cycle_start(model, schedule, newton, start, bearing, out, progress);
+  if (!begun) return;
+  std::vector<double> u = std::move(*begun);
 
   // The inputs on the segment being marched, set at every evaluation's time.
   std::size_t segment = 0;

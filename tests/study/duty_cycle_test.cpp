@@ -148,6 +148,22 @@ TEST(DutyCycle, HeldAtAPointItEndsAtThePointsSteadyState) {
   for (const CycleEvent& e : held.out.cycle_events) EXPECT_TRUE(e.event == "end" || e.event == "worst") << e.event;
 }
 
+// A washer starting from rest under load, the most common start there is: 100 N at rest,
+// run up to 545 rad/s in 5 s and held. The steady state at rest has no film pressure
+// (every cavitation row at its kink), where the march once failed a few microseconds in;
+// it starts from the film turning a millionth of the ramp on (cycle_start.h) and runs
+// through to the point study's steady state at the end, the heat balance closed. The
+// first sample is the rest: speed 0, no heat.
+TEST(DutyCycle, AWasherStartsTurningFromRestUnderLoad) {
+  const HeldCycle held = held_cycle("[{t: 0 s, load: 100 N, speed: 0 rad/s}, {t: 5 s, speed: 545 rad/s}, {t: 600 s}]");
+  ASSERT_FALSE(held.out.trajectory.empty());
+  const TrajectorySample& first = held.out.trajectory.front();
+  EXPECT_EQ(first.time, 0.0);
+  EXPECT_EQ(first.state.speed, 0.0);
+  EXPECT_EQ(first.state.heat_generated, 0.0);
+  expect_heat_balance(held.out);
+}
+
 // Nearly unloaded, the washer lifts off its film: ramped from 100 N to 1 N in 5 s and held,
 // it rises from h_min/σ ≈ 6 to about 100 at the rate film 1's squeeze allows (the squeeze
 // falls as h⁻³, the lift as h⁻²: fast at the end of the ramp) and ends at the point
