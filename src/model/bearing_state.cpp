@@ -43,7 +43,10 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   s.contact_share = over_carried(ft.contact_force);
   s.friction_coefficient = ft.friction_coefficient;
   s.friction_clamped = ft.friction_clamped;
-  s.torque = ft.friction_coefficient * ft.contact_torque_per_f + ft.viscous_torque;
+  // At rest nothing slides (physics §9): the contacts' friction is then static, the torque
+  // that would start the washer turning, which dissipates nothing; the running torque
+  // twb reports, and f_eff with it, is nought.
+  s.torque = s.speed == 0.0 ? 0.0 : ft.friction_coefficient * ft.contact_torque_per_f + ft.viscous_torque;
   // Eq [43] with the washer's radii.
   const double ri = scene_.washer.inner_radius, ro = scene_.washer.outer_radius;
   s.f_eff = carried > 0.0 ? 1.5 * s.torque * (ro * ro - ri * ri) / (carried * (ro * ro * ro - ri * ri * ri)) : 0.0;

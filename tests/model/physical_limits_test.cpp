@@ -360,6 +360,32 @@ TEST(ThermalDecoupledAtRest, NoSpeedNoHeatAmbientEverywhere) {
   EXPECT_NEAR(sb.position.gamma_y, sa.position.gamma_y, 1e-8 * a.scene().gear.tilt);
 }
 
+// At rest nothing slides (docs/physics.md section 9): the contacts carry the load, but
+// their friction is static and dissipates nothing, so the running torque and f_eff are
+// nought, not μ times the contact torque. Turning the washer at all (a thousandth of a
+// rad/s, where the film carries nothing yet) gives that torque back: the nought is the
+// rest's, not a torque left uncomputed. Eq [43] divides the torque by the mean radius of a
+// uniform pressure, so with every contact between the washer's radii f_eff/μ lies
+// between r_i and r_o times 1.5(r_o² − r_i²)/(r_o³ − r_i³): 0.632 and 1.292 here.
+TEST(ThermalDecoupledAtRest, AtRestTheRunningTorqueAndFEffAreNought) {
+  BearingModel still(testing::table1_scene(false, false, true, true, 0.0, 500.0));
+  BearingModel turning(testing::table1_scene(false, false, true, true, 1e-3, 500.0));
+  std::vector<double> us, ut;
+  ASSERT_TRUE(SteadySolver(still, settings()).solve_cold(us).converged);
+  ASSERT_TRUE(SteadySolver(turning, settings()).solve_cold(ut).converged);
+  const BearingState s = still.describe(us), t = turning.describe(ut);
+  EXPECT_GT(s.contact_force, 0.99 * 500.0);
+  EXPECT_EQ(s.torque, 0.0);
+  EXPECT_EQ(s.f_eff, 0.0);
+  EXPECT_EQ(s.heat_generated, 0.0);
+  const Scene& sc = turning.scene();
+  const double ri = sc.washer.inner_radius, ro = sc.washer.outer_radius;
+  const double per_radius = 1.5 * (ro * ro - ri * ri) / (ro * ro * ro - ri * ri * ri);
+  EXPECT_GT(t.torque, 0.0);
+  EXPECT_GE(t.f_eff, ri * per_radius * t.friction_coefficient);
+  EXPECT_LE(t.f_eff, ro * per_radius * t.friction_coefficient);
+}
+
 // ---------------------------------------------------------------------------------
 // d. Flow factors → classic Reynolds as σ → 0.
 //
