@@ -39,6 +39,13 @@ std::unique_ptr<BearingModel> refined_model(const BearingModel& model, std::stri
 
 bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const double> u, SolvedState& state,
                   std::string& why, SparseLu::Ordering ordering, long* newton_iterations, long* jacobians) {
+  // A state whose contact pressure no summits could carry is outside the contact model:
+  // a finer mesh would resolve a state with no meaning, at a cost far above its own.
+  for (const LimitExcess& e : state.state.limits)
+    if (e.kind == LimitKind::contact_pressure) {
+      why = fmt::format("the state is past the contact model's validity ({})", describe_limit(e));
+      return false;
+    }
   fine.set_load(model.load());
   std::vector<double> v = fine.interpolated_from(model, u);
   const std::vector<double> coarse = mesh_error_quantities(state.state);
@@ -62,8 +69,11 @@ bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const
     return settled_by_contraction(
         reads, [&](std::size_t k, double value) { return kRefinedSettling * std::abs(value - coarse[k]); });
   };
+  // From the interpolated state alone (Newton, then pseudo-time from it): the ramps from
+  // the cold start would cost many times the point and reach a state that owes nothing
+  // to the coarse one.
   SteadySolver solver(fine, newton, ordering);
-  const SteadyReport rep = solver.solve(v);
+  const SteadyReport rep = solver.solve_near(v);
   if (newton_iterations) *newton_iterations += rep.iterations;
   if (jacobians) *jacobians += rep.jacobian_evaluations;
   if (!rep.converged) {

@@ -24,7 +24,10 @@ namespace twb {
 std::unique_ptr<BearingModel> refined_model(const BearingModel& model, std::string& why);
 
 // `state` (solved at u on `model`, at the model's load and speed) again on `fine` at the
-// same load: its mesh_errors filled, or false with the reason in `why`. Newton iterations
+// same load: its mesh_errors filled, or false with the reason in `why`: at once for a
+// state past the contact model's validity (limit contact_pressure), else where Newton and
+// pseudo-time from the interpolated state fail (no ramps from the cold start: their cost
+// is many times the point's, for a state that owes nothing to this one). Newton iterations
 // and Jacobians are added to the counters given. `ordering`: the refined solver's
 // (sparse_lu.h): minimum_degree for a state refined alone (a point), by_size where a run
 // refines many on one mesh (nested dissection's order is found once for them all).

@@ -65,6 +65,26 @@ TEST(PointError, NoneLeavesTheColumnsOut) {
   EXPECT_EQ(states_csv(out.states).find("_extrapolated"), std::string::npos);
 }
 
+// A point far outside the model's validity (the paper's washer at 30 kN: a contact
+// pressure no summits could carry) gets no error bar, at once and with the reason: a
+// new user once waited 166 s for a refinement that then failed.
+TEST(PointError, AStatePastTheContactModelGetsNoBarAndSaysWhy) {
+  const Scene scene = load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
+                                 {"study={type: point}", "operating.load=30 kN"});  // the scene's 9 x 66
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_EQ(out.states.size(), 1u);
+  ASSERT_TRUE(out.states[0].converged);
+  const auto& limits = out.states[0].state.limits;
+  ASSERT_TRUE(std::any_of(limits.begin(), limits.end(),
+                          [](const LimitExcess& e) { return e.kind == LimitKind::contact_pressure; }));
+  EXPECT_TRUE(out.states[0].mesh_errors.empty());
+  const bool said = std::any_of(out.summary.begin(), out.summary.end(), [](const std::string& line) {
+    return line.rfind("no error bar: the state is past the contact model's validity", 0) == 0;
+  });
+  EXPECT_TRUE(said);
+}
+
 // A sweep with error_estimate: every_state: every state of the cool branch carries the
 // bars a point study at its load gives (the same refined solve from the same coarse
 // state: equal to the solver's tolerance, far below the bars), and the run's warning
