@@ -169,6 +169,12 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
   });
 
   const double ambient = scene.operating.ambient;
+  // A temperature input's relative change is taken per the washer's mean rise above the
+  // ambient at the point (physics §16): in kelvin, the ambient's 350 K would make a
+  // derivative of a few newtons per kelvin the largest elasticity of all.
+  const double rise = at_point.washer_mean_temperature - ambient;
+  // (None where the washer does not rise: the elasticity is then absent, as for p = 0.)
+  const auto input_scale = [&](const SceneInput& in) { return in.unit == "K" ? std::max(rise, 0.0) : in.value; };
   auto row = [&](const std::string& name, double value, double reference, const SceneInput& in, double derivative,
                  double step) {
     SensitivityRow& r = out.sensitivity.emplace_back();
@@ -178,7 +184,8 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
     r.parameter_value = in.value;
     r.parameter_unit = in.unit;
     r.derivative = derivative == 0.0 ? 0.0 : derivative;  // no "-0" in the file
-    if (reference != 0.0 && in.value != 0.0) r.elasticity = r.derivative * in.value / reference;
+    if (const double scale = input_scale(in); reference != 0.0 && scale != 0.0)
+      r.elasticity = r.derivative * scale / reference;
     r.step = step;
   };
   const std::vector<StateQuantity> quantities = state_quantities(at_point);
@@ -225,9 +232,16 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
   for (std::size_t k = 0; k < std::min<std::size_t>(5, ranked.size()); ++k)
     top += fmt::format("{}{} {:+.3g}", k ? ", " : "", ranked[k]->parameter, *ranked[k]->elasticity);
   if (progress) progress(fmt::format("sensitivities to {} inputs", inputs.size()));
+  const bool temperatures = std::any_of(inputs.begin(), inputs.end(), [](const SceneInput& in) { return in.unit == "K"; });
   out.summary.push_back(fmt::format("sensitivity of {} to {} inputs; largest elasticities (relative change per relative "
-                                    "change): {}",
-                                    headline, inputs.size(), top.empty() ? "none" : top));
+                                    "change{}): {}",
+                                    headline, inputs.size(),
+                                    temperatures && rise > 0.0
+                                        ? fmt::format("; a temperature input's per the washer's rise above the ambient, "
+                                                      "{:.3g} K",
+                                                      rise)
+                                        : std::string(),
+                                    top.empty() ? "none" : top));
 }
 
 }  // namespace twb

@@ -103,6 +103,30 @@ TEST(Sensitivity, StateDerivativesMatchWholeSolves) {
   }
 }
 
+// The elasticity's input scale: an input's own value, but a temperature input's the
+// washer's mean rise above the ambient (physics §16), since 350 K in kelvin would rank the
+// ambient first by a derivative of a few newtons per kelvin. The torque's elasticities
+// are the derivative times that scale over the torque, to rounding; and the summary says
+// which scale its temperatures use.
+TEST(Sensitivity, ATemperatureInputIsScaledByTheWashersRise) {
+  const Scene scene = paper_scene("{type: sensitivity, parameters: [operating.ambient, geometry.gear.tilt]}");
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.solver_failed) << out.message;
+  const BearingState& at = out.states.back().state;
+  const double rise = at.washer_mean_temperature - scene.operating.ambient;
+  ASSERT_GT(rise, 0.0);
+  const SensitivityRow* ambient = find_row(out, "torque_Nm", "operating.ambient");
+  const SensitivityRow* tilt = find_row(out, "torque_Nm", "geometry.gear.tilt");
+  ASSERT_TRUE(ambient && ambient->elasticity && tilt && tilt->elasticity);
+  EXPECT_NEAR(*ambient->elasticity, ambient->derivative * rise / at.torque, 1e-12 * std::abs(*ambient->elasticity));
+  EXPECT_NEAR(*tilt->elasticity, tilt->derivative * scene.gear.tilt / at.torque, 1e-12 * std::abs(*tilt->elasticity));
+  const bool said = std::any_of(out.summary.begin(), out.summary.end(), [](const std::string& line) {
+    return line.find("a temperature input's per the washer's rise above the ambient") != std::string::npos;
+  });
+  EXPECT_TRUE(said);
+}
+
 const std::vector<std::string> kFoldPaths = {"geometry.washer.outer_diameter", "geometry.gear.tilt",
                                              "surfaces.washer.Rq", "lubricant.viscosity.G0", "operating.speed",
                                              "operating.ambient"};

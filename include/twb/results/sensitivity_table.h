@@ -9,7 +9,8 @@
 // parameter_value its SI value in parameter_unit; derivative is d quantity / d parameter in
 // their SI units (a temperature's per kelvin); elasticity the relative change of the
 // quantity per relative change of the input, (p/q)·dq/dp, a temperature's relative to its
-// rise above the ambient; step the input's difference step δ (SI).
+// rise above the ambient, and a temperature input's p the washer's mean rise above the
+// ambient (docs/physics.md section 16); step the input's difference step δ (SI).
 #pragma once
 
 #include <optional>
