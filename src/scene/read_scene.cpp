@@ -48,8 +48,10 @@ std::string written_tree(const Node& root) {
 // Why the scene refuses an input at `value`, if it does: the scene read again with it,
 // as a point study (a trial must not check a study's parameters or axis again).
 std::optional<InputError> refused(const Scene& out, const SceneInput& input, double value) {
+  // As a study will set it (with_inputs: a face's Ra carried along with its Rq).
   try {
-    load_scene_text(out.written, out.source, {input_override(input.path, value, input.unit), "study={type: point}"});
+    const std::pair<std::string, double> set[] = {{input.path, value}};
+    with_inputs(out, set, true);
   } catch (const InputError& e) {
     return e;
   }

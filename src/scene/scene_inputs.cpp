@@ -75,9 +75,33 @@ std::string input_override(const std::string& path, double value, std::string_vi
   return unit == "1" ? fmt::format("{}={:.17g}", path, value) : fmt::format("{}={:.17g} {}", path, value, unit);
 }
 
+namespace {
+
+// A face's roughness changed by one of its two numbers (surfaces.<face>.Rq or .Ra): the
+// other, scaled by the same factor, where it is not set too. Ra enters no equation (σ is
+// Rq), but it may not exceed Rq, so an uncertain or differenced Rq carries the face's Ra
+// along at the face's own Ra/Rq, the texture the scene gives it (docs/physics.md section
+// 16). Empty for every other input.
+std::optional<std::string> roughness_companion(const Scene& scene, const std::string& path, double value,
+                                               std::span<const std::pair<std::string, double>> values) {
+  if (!path.starts_with("surfaces.") || !(path.ends_with(".Rq") || path.ends_with(".Ra"))) return std::nullopt;
+  const std::string face = path.substr(0, path.size() - 2);  // "surfaces.washer."
+  const std::string other = face + (path.ends_with(".Rq") ? "Ra" : "Rq");
+  if (std::any_of(values.begin(), values.end(), [&](const auto& v) { return v.first == other; })) return std::nullopt;
+  const SceneInput now = scene_input(scene, path), companion = scene_input(scene, other);
+  if (now.value <= 0.0) return std::nullopt;
+  return input_override(other, companion.value * value / now.value, companion.unit);
+}
+
+}  // namespace
+
 Scene with_inputs(const Scene& scene, std::span<const std::pair<std::string, double>> values, bool keep_study) {
   std::vector<std::string> overrides;
-  for (const auto& [path, value] : values) overrides.push_back(input_override(path, value, scene_input(scene, path).unit));
+  for (const auto& [path, value] : values) {
+    overrides.push_back(input_override(path, value, scene_input(scene, path).unit));
+    if (std::optional<std::string> companion = roughness_companion(scene, path, value, values))
+      overrides.push_back(std::move(*companion));
+  }
   if (!keep_study) return load_scene_text(scene.written, scene.source, overrides);
   overrides.push_back("study={type: point}");
   Scene out = load_scene_text(scene.written, scene.source, overrides);

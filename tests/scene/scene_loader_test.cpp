@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "scene_test_support.h"
+#include "twb/scene/scene_inputs.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {
@@ -513,6 +514,31 @@ TEST(SceneLoader, ATolerancesValueAndWhereItIsRefused) {
   refused(sweep + ", tolerance: 1 N}\n", "study.tolerance");
   refused(std::string(kMinimalScene) + "study: {type: point, tolerance: 1 %}\n", "tolerance");
   refused(std::string(kMinimalScene) + "mesh: {max_refinements: 6}\n", "mesh.max_refinements");
+}
+
+// A face's Ra rides along with its Rq (physics §16): Ra enters no equation but may not
+// exceed Rq, so the bronze washer's Ra 0.35 um would refuse any Rq below it. Setting Rq
+// scales Ra by the same factor (the face's texture kept), unless Ra is set too; and a
+// lognormal Rq reaching below the scene's Ra within its four standard deviations is
+// accepted.
+TEST(SceneLoader, AnUncertainRqCarriesItsFacesRaAlong) {
+  const std::string bronze = std::string(TWB_SOURCE_DIR) + "/configs/washers/bronze_cusn8.yaml";
+  const Scene scene = load_scene(bronze);
+  const double ra = scene.washer.roughness.ra, rq = scene.washer.roughness.rq;
+  const std::pair<std::string, double> lower[] = {{"surfaces.washer.Rq", 0.6 * ra}};
+  const Scene rougher = with_inputs(scene, lower);
+  EXPECT_DOUBLE_EQ(rougher.washer.roughness.rq, 0.6 * ra);
+  EXPECT_NEAR(rougher.washer.roughness.ra, ra * (0.6 * ra / rq), 1e-15 * ra);
+  const std::pair<std::string, double> both[] = {{"surfaces.washer.Rq", 0.6 * ra}, {"surfaces.washer.Ra", 0.5 * ra}};
+  EXPECT_DOUBLE_EQ(with_inputs(scene, both).washer.roughness.ra, 0.5 * ra);
+  // Both set, Ra above Rq: still refused, at the override.
+  const std::pair<std::string, double> wrong[] = {{"surfaces.washer.Rq", 0.6 * ra}, {"surfaces.washer.Ra", ra}};
+  EXPECT_THROW(with_inputs(scene, wrong), InputError);
+  const Scene reliability = load_scene(
+      bronze, {"study={type: reliability, load_start: 100 N, load_end: 1500 N, "
+               "inputs: {surfaces.washer.Rq: {distribution: lognormal, sd: 0.05 um}}, probabilities: [0.01]}"});
+  ASSERT_EQ(reliability.study.uncertain_inputs.size(), 1u);
+  EXPECT_EQ(reliability.study.uncertain_inputs.front().path, "surfaces.washer.Rq");
 }
 
 }  // namespace
