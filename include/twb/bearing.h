@@ -57,6 +57,12 @@ class Bearing {
   // The study the scene names, as `twb run` runs it (the same numbers to the last bit),
   // without writing anything, at the scene's load and speed whatever solve() was asked.
   StudyOutcome run_study(const ProgressReport& progress = {}, const RunOptions& options = {});
+  // A study's results written into `directory` as `twb run` writes them there: the
+  // directory made and locked against another run writing into it, an earlier run's files
+  // removed, every table as CSV with `digits` significant digits, the states' fields,
+  // a duty cycle's end, and run.json last (each file atomically). std::runtime_error,
+  // saying which directory and why, where it cannot be used.
+  void write_results(const std::string& directory, const StudyOutcome& outcome, int digits = 10) const;
 
   // A moved-from Bearing may only be assigned to or destroyed.
 

@@ -190,9 +190,13 @@ class Scene:
     def study_type(self):
         return self._scene.study_type
 
-    def run(self, progress=None, threads=0, continue_from=None):
+    def run(self, progress=None, threads=0, continue_from=None, out=None):
         """Runs the scene's study (see twb.run)."""
-        return Results(_core().run(self._scene, progress, threads, _cycle_end_text(continue_from)), self)
+        directory = _results_directory(self, out)
+        results = Results(_core().run(self._scene, progress, threads, _cycle_end_text(continue_from), directory),
+                          self)
+        results.directory = directory
+        return results
 
     def __repr__(self):
         extra = f", overrides={self.overrides!r}" if self.overrides else ""
@@ -221,10 +225,12 @@ class Results:
     states, distress, trajectory, sliding, fold_curve, sensitivity, reliability, design_point,
     calibration, calibration_correlation, calibration_points, cycle_events; fields: per state, its fields
     table (output.fields) or None; summary and limit_notes: the lines twb run prints at
-    the end; message, solver_failed; timings: run.json's counts."""
+    the end; message, solver_failed; timings: run.json's counts; directory: where twb.run
+    wrote them (None where it wrote nothing)."""
 
     def __init__(self, raw, scene):
         self.scene = scene
+        self.directory = None
         self.tables = {name: Table(columns, raw["formats"][name]) for name, columns in raw["tables"].items()}
         self.fields = [None if f is None else Table(f, {}) for f in raw["fields"]]
         self.summary = list(raw["summary"])
@@ -289,7 +295,7 @@ class Bearing:
         self._bearing.forget_state()
 
 
-def run(scene, overrides=None, progress=None, threads=0, continue_from=None):
+def run(scene, overrides=None, progress=None, threads=0, continue_from=None, out=None):
     """Runs the study a scene names and returns its Results.
 
     scene: a path or a twb.Scene; overrides: as for twb.Scene (applied after the
@@ -297,7 +303,10 @@ def run(scene, overrides=None, progress=None, threads=0, continue_from=None):
     the solving threads, one at a time); threads: for the study's independent searches,
     0 = one per core (the results do not depend on it); continue_from: a duty cycle goes
     on from where an earlier one ended, its Results or its results directory (as twb run
-    --continue-from; the schedule's first point must be that end's time and inputs). The
+    --continue-from; the schedule's first point must be that end's time and inputs); out:
+    the results directory, written as twb run writes it (the tables, fields, run.json;
+    twb.plot draws from it): None for the scene's output.directory, as twb run, a path
+    for another, False for none (Results.directory says which, or None). The
     GIL is released while solving. An exception from the callback, or Ctrl-C, stops the
     study: the searches under way finish, no new one begins, and the exception is raised
     then."""
@@ -306,7 +315,17 @@ def run(scene, overrides=None, progress=None, threads=0, continue_from=None):
             scene = scene.override(overrides)
     else:
         scene = Scene(scene, overrides)
-    return scene.run(progress=progress, threads=threads, continue_from=continue_from)
+    return scene.run(progress=progress, threads=threads, continue_from=continue_from, out=out)
+
+
+def _results_directory(scene, out):
+    """Where twb.run writes: the scene's output.directory for None (as twb run), nothing
+    for False, else the path given."""
+    if out is False:
+        return None
+    if out is None:
+        return scene.resolved_text()["output"]["directory"]
+    return os.fspath(out)
 
 
 def _cycle_end_text(continue_from):

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include "model/bearing_model.h"
+#include "results/results_directory.h"
+#include "study/results_files.h"
 #include "study/steady_solver.h"
 #include "study/study_runner.h"
 #include "study/study_support.h"
@@ -71,8 +73,11 @@ SolvedState Bearing::solve(double load, double speed) {
 void Bearing::forget_state() { state_.clear(); }
 
 std::vector<std::pair<std::string, double>> Bearing::sensitivity(const std::string& path) {
-  if (state_.empty()) throw std::logic_error("Bearing::sensitivity: no state solved yet (call solve first)");
+  // The path first: a misspelt one is the caller's first mistake whatever the state.
   const SceneInput input = scene_input(model_->scene(), path);
+  if (state_.empty())
+    throw std::logic_error("Bearing::sensitivity: no state solved yet (call solve first; a solve that fails leaves "
+                           "none)");
   const OperatingPoint at(*model_, state_load_, state_speed_, scene_load_, scene_speed_);
   const std::unique_ptr<SparseLu> factors = jacobian_factors(*model_, state_);
   if (!factors)
@@ -91,6 +96,11 @@ std::vector<std::pair<std::string, double>> Bearing::sensitivity(const std::stri
 
 StudyOutcome Bearing::run_study(const ProgressReport& progress, const RunOptions& options) {
   return twb::run_study(*model_, progress, options);
+}
+
+void Bearing::write_results(const std::string& directory, const StudyOutcome& outcome, int digits) const {
+  const ResultsDirectory ready(directory);
+  write_study_results(directory, model_->scene().source, model_->scene(), model_->layout(), outcome, digits);
 }
 
 }  // namespace twb

@@ -18,11 +18,8 @@
 
 #include "interruption.h"
 #include "mpi_searches.h"
-#include "results_directory.h"
+#include "results/results_directory.h"
 #include "model/bearing_model.h"
-#include "results/atomic_file.h"
-#include "twb/results/fields_table.h"
-#include "results/run_record.h"
 #include "twb/results/limit_notes.h"
 #include "twb/results/states_table.h"
 #include "study/search_journal.h"
@@ -33,6 +30,7 @@
 #include "twb/scene/scene_loader.h"
 #include "solver/sundials_context.h"
 #include "study/study_runner.h"
+#include "study/results_files.h"
 #include "study/study_support.h"
 #include "twb/version.h"
 
@@ -135,19 +133,7 @@ std::pair<int, int> parse_slice(const std::string& text) {
 int write_results(const std::filesystem::path& dir, const std::string& scene_path, const twb::Scene& scene,
                   const twb::BearingModel& model, const twb::StudyOutcome& outcome, const twb::SearchJournal& journal,
                   bool verbose, int digits) {
-  for (const twb::NamedTable& table : twb::study_tables(outcome, scene.study.type))
-    twb::write_file_atomically(dir / (table.name + ".csv"), table.table.csv(digits));
-  twb::write_state_fields(dir, outcome.states, digits);
-  // A completed duty cycle's end, for the next part of a long cycle (--continue-from).
-  // (None from an unfinished one: no earlier run's end may be left to look like this one's.)
-  if (outcome.cycle_end)
-    twb::write_file_atomically(dir / "cycle_end_state.json", twb::cycle_state_json(*outcome.cycle_end));
-  else
-    std::filesystem::remove(dir / "cycle_end_state.json");
-  const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message
-                                                    : (outcome.message.empty() ? "ok" : outcome.message);
-  twb::write_file_atomically(dir / "run.json", twb::run_json(scene_path, twb::describe_scene(scene), model.layout(),
-                                                             outcome.timings, verdict));
+  twb::write_study_results(dir, scene_path, scene, model.layout(), outcome, digits);
   journal.finish();
   twb::cli::run_is_complete();
   std::cout << twb::states_summary(outcome.states);
@@ -213,7 +199,7 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   }
   // Before any work: a directory this run cannot write into, or one another run is
   // writing into, is the user's to fix now, not after the study.
-  const twb::cli::ResultsDirectory results(r.out_dir);
+  const twb::ResultsDirectory results(r.out_dir);
   twb::cli::end_cleanly_on_interruption(r.out_dir.c_str());
   // Each finished search of the study is kept at once: a killed run resumes from them.
   const twb::SearchJournal journal(r.out_dir, twb::describe_scene(scene), r.resume);
@@ -269,7 +255,7 @@ int merge(const std::vector<std::string>& slices, const std::string& out_dir, bo
   }
   const std::string scene_name = (std::filesystem::path(slices.front()) / ".twb-journal" / "scene.yaml").string();
   const twb::Scene scene = twb::load_scene_text(*scene_text, scene_name);
-  const twb::cli::ResultsDirectory results(out_dir);
+  const twb::ResultsDirectory results(out_dir);
   twb::cli::end_cleanly_on_interruption(out_dir.c_str());
   const twb::SearchJournal journal(out_dir, twb::describe_scene(scene), false);
   for (const std::string& dir : slices) {
@@ -361,7 +347,7 @@ int main(int argc, char** argv) {
     }
     if (*merge_cmd) return merge(slice_dirs, merge_out, merge_quiet, merge_verbose, merge_full_precision);
     return run(request, job);
-  } catch (const twb::cli::ResultsDirectoryError& e) {
+  } catch (const twb::ResultsDirectoryError& e) {
     return fail(exit_invalid_input, std::string("twb: error: ") + e.what());
   } catch (...) {
     // The error family (twb/error_family.h): input 2, solver 3, internal 4.

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "model/assembly_totals.h"
 #include "physics/asperity_contact.h"
 #include "physics/contact_table_cache.h"
@@ -109,6 +111,8 @@ const ComponentHeat* BearingModel::component(ComponentId id) const {
 }
 
 void BearingModel::set_load(double load) {
+  if (!std::isfinite(load))
+    throw std::invalid_argument(fmt::format("load must be a finite number of newtons, not {}", load));
   if (!(load > 0) && !(gear_stop() && load == 0.0))
     throw std::invalid_argument(gear_stop() ? "load must be zero or positive" : "load must be positive");
   load_ = load;
@@ -117,7 +121,8 @@ void BearingModel::set_load(double load) {
 void BearingModel::set_speed(double speed) {
   // The sign is the sense of rotation (scenes give a non-negative speed; the model's
   // symmetry under reversal is a property test).
-  if (!std::isfinite(speed)) throw std::invalid_argument("speed must be finite");
+  if (!std::isfinite(speed))
+    throw std::invalid_argument(fmt::format("speed must be a finite number of rad/s, not {}", speed));
   scene_.operating.speed = speed;
 }
 

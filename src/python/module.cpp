@@ -127,6 +127,7 @@ class ProgressRelay {
     };
   }
   const std::atomic<bool>* stop() const { return &stop_; }
+  bool failed() const { return stop_.load(); }
   void raise_if_failed() {
     if (error_) std::rethrow_exception(error_);
   }
@@ -138,8 +139,11 @@ class ProgressRelay {
   std::atomic<bool> stop_{false};
 };
 
-// continue_from: a duty cycle's end state (cycle_end_state.json's text) to go on from.
-py::dict run_scene(const twb::Scene& scene, py::object progress, int threads, std::optional<std::string> continue_from) {
+// continue_from: a duty cycle's end state (cycle_end_state.json's text) to go on from;
+// directory: the results directory to write as `twb run` does (none: nothing written; not
+// written where the progress callback raised or Ctrl-C stopped the study).
+py::dict run_scene(const twb::Scene& scene, py::object progress, int threads, std::optional<std::string> continue_from,
+                   std::optional<std::string> directory) {
   std::optional<twb::CycleState> cycle_start;
   if (continue_from) {
     if (scene.study.type != twb::StudyType::duty_cycle)
@@ -158,6 +162,7 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads, st
                                                         .cycle_start = cycle_start ? &*cycle_start : nullptr});
     outcome.timings.setup_ms = setup_ms;
     outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (directory && !relay.failed()) bearing.write_results(*directory, outcome);
   }
   relay.raise_if_failed();
 
@@ -255,7 +260,7 @@ PYBIND11_MODULE(_twb, m) {
       },
       py::arg("path"), py::arg("overrides") = std::vector<std::string>{});
   m.def("run", &run_scene, py::arg("scene"), py::arg("progress") = py::none(), py::arg("threads") = 0,
-        py::arg("continue_from") = py::none());
+        py::arg("continue_from") = py::none(), py::arg("out") = py::none());
 
   // One bearing for point after point (twb::Bearing): each state a mapping of states.csv's
   // columns to their values, unrounded.

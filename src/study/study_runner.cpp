@@ -245,6 +245,10 @@ void run_transient(BearingModel& model, StudyOutcome& out, const ProgressReport&
 
 StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, const RunOptions& options,
                        const StudyPlumbing& plumbing) {
+  // The public API's own check (the command line's option checks the same).
+  if (options.threads < 0)
+    throw std::invalid_argument(
+        fmt::format("threads must be 0 (one per core) or a positive count, not {}", options.threads));
   const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   const Running how{threads, plumbing.journal, plumbing.scheduler, options.stop};
   StudyOutcome out;

@@ -1,4 +1,4 @@
-// The results directory's promises (src/cli/results_directory.h, interruption.h),
+// The results directory's promises (src/results/results_directory.h, interruption.h),
 // checked on the real binary: an earlier run's files are gone before a run writes, a
 // second run into a locked directory is refused, an unusable directory is an error
 // before any work, and SIGTERM ends a run with a message and no partial run.
@@ -57,11 +57,13 @@ TEST(ResultsDirectory, AnEarlierRunsFilesAreGoneBeforeTheRunWrites) {
   const fs::path dir = fresh_dir("stale");
   fs::create_directories(dir / "figures");
   std::ofstream(dir / "distress.csv") << "an earlier sweep's distress\n";
+  std::ofstream(dir / "cycle_events.csv") << "an earlier duty cycle's events\n";
   std::ofstream(dir / "figures" / "fig06_temperature.png") << "an earlier figure";
   std::ofstream(dir / "notes.txt") << "the user's own file";
   const Finished f = run_twb(dir, "--set 'study={type: point}'");
   ASSERT_EQ(f.status, 0) << f.err;
   EXPECT_FALSE(fs::exists(dir / "distress.csv")) << "a point study writes no distress table";
+  EXPECT_FALSE(fs::exists(dir / "cycle_events.csv")) << "nor a duty cycle's events";
   EXPECT_FALSE(fs::exists(dir / "figures" / "fig06_temperature.png"));
   EXPECT_TRUE(fs::exists(dir / "notes.txt")) << "files twb does not write are left alone";
   EXPECT_TRUE(fs::exists(dir / "states.csv") && fs::exists(dir / "run.json"));

@@ -71,6 +71,8 @@ assert twb.__file__.startswith('$site'), twb.__file__
 r = twb.run('$scene', overrides={'operating.load': '150 N', 'study': {'type': 'point'}})
 print('%.10g' % r.states['f_eff'][0])")
   if [ "$py_feff" != "$cli_feff" ]; then echo "f_eff differs: module $py_feff, twb run $cli_feff"; exit 1; fi
+  # twb.run writes the scene's output.directory, relative to where it runs, as twb run does.
+  [ -f "$work/results/jackson_green_2006/run.json" ] || { echo "twb.run wrote no results directory"; exit 1; }
   ldd "$module" | grep -q "$work/prefix" || { echo "the module does not load the installed libtwb:"; ldd "$module"; exit 1; }
   echo "installed Python module: f_eff = $py_feff at 150 N, as twb run"
 fi

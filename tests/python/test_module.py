@@ -25,6 +25,20 @@ COARSE = {"mesh.radial_nodes": 5, "mesh.circumferential_nodes": 24}
 POINT = {"operating.load": "150 N", "study": {"type": "point"}}
 
 
+_WORKING = tempfile.TemporaryDirectory(prefix="twb_python_cwd_")
+
+
+def setUpModule():
+    """twb.run writes into the scene's output.directory (relative: under the working
+    directory), as twb run does: into a directory of the tests' own, not the source tree."""
+    os.chdir(_WORKING.name)
+
+
+def tearDownModule():
+    os.chdir(ROOT)
+    _WORKING.cleanup()
+
+
 def read_csv(path):
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
@@ -330,6 +344,57 @@ class Points(unittest.TestCase):
         self.assertAlmostEqual(d["f_eff"], (up - down) / 1.09, delta=1e-3 * abs(d["f_eff"]))
         with self.assertRaises(ValueError):
             bearing.sensitivity("geometry.gear.tilted")
+
+
+class ResultsDirectory(unittest.TestCase):
+    """twb.run writes the results directory as twb run does, so that twb.plot can draw it."""
+
+    def test_written_where_the_scene_says_or_where_asked_or_not_at_all(self):
+        overrides = dict(COARSE, **POINT)
+        r = twb.run(SCENE, overrides=overrides)
+        self.assertEqual(r.directory, "results/jackson_green_2006")
+        for name in ("states.csv", "run.json"):
+            self.assertTrue(os.path.isfile(os.path.join(r.directory, name)), name)
+        with tempfile.TemporaryDirectory(prefix="twb_python_out_") as out:
+            cli = os.path.join(out, "cli")
+            args = [TWB, "run", SCENE, "--out", cli, "--quiet"]
+            for o in twb.override_texts(overrides):
+                args += ["--set", o]
+            subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
+            mine = twb.run(SCENE, overrides=overrides, out=os.path.join(out, "module"))
+            self.assertEqual(mine.directory, os.path.join(out, "module"))
+            # The same files, and the same cells but the time each solve took.
+            self.assertEqual(sorted(os.listdir(cli)), sorted(os.listdir(mine.directory)))
+            header, rows = read_csv(os.path.join(cli, "states.csv"))
+            header_m, rows_m = read_csv(os.path.join(mine.directory, "states.csv"))
+            self.assertEqual(header, header_m)
+            wall = header.index("wall_ms")
+            self.assertEqual([r[:wall] + r[wall + 1:] for r in rows], [r[:wall] + r[wall + 1:] for r in rows_m])
+            nothing = twb.run(SCENE, overrides=overrides, out=False)
+            self.assertIsNone(nothing.directory)
+
+
+class BadArguments(unittest.TestCase):
+    """What a new user passed by mistake is named for what it is."""
+
+    def test_a_load_that_is_not_a_number_says_so(self):
+        with self.assertRaises(ValueError) as caught:
+            twb.Bearing(SCENE, COARSE).solve(float("nan"), 545)
+        self.assertIn("finite", str(caught.exception))
+        with self.assertRaises(ValueError) as caught:
+            twb.Bearing(SCENE, COARSE).solve(120, float("inf"))
+        self.assertIn("speed must be a finite number", str(caught.exception))
+
+    def test_a_misspelt_input_is_named_before_the_missing_state(self):
+        bearing = twb.Bearing(SCENE, COARSE)
+        with self.assertRaises(ValueError) as caught:
+            bearing.sensitivity("geometry.gear.tilted")  # nothing solved yet, and a path that names nothing
+        self.assertIn("geometry.gear.tilted", str(caught.exception))
+
+    def test_negative_threads_are_refused(self):
+        with self.assertRaises(ValueError) as caught:
+            twb.run(SCENE, overrides=POINT, threads=-1)
+        self.assertIn("threads must be 0", str(caught.exception))
 
 
 class Example(unittest.TestCase):

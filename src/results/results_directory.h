@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-namespace twb::cli {
+namespace twb {
 
 // A directory that cannot be used; the message says which and why.
 struct ResultsDirectoryError : std::runtime_error {
@@ -26,4 +26,4 @@ class ResultsDirectory {
   int lock_fd_ = -1;
 };
 
-}  // namespace twb::cli
+}  // namespace twb

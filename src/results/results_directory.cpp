@@ -1,4 +1,4 @@
-#include "results_directory.h"
+#include "results/results_directory.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-namespace twb::cli {
+namespace twb {
 
 namespace {
 
@@ -23,7 +23,8 @@ namespace fs = std::filesystem;
 void remove_earlier_run(const fs::path& dir) {
   for (const char* name : {"run.json", "states.csv", "distress.csv", "sliding.csv", "fold_curve.csv", "trajectory.csv",
                            "sensitivity.csv", "reliability.csv", "design_point.csv", "calibration.csv",
-                           "calibration_correlation.csv", "calibration_points.csv"})
+                           "calibration_correlation.csv", "calibration_points.csv", "cycle_events.csv",
+                           "cycle_end_state.json"})
     fs::remove(dir / name);
   static const std::regex field_file(R"(state_[0-9]{4,}\.csv)");
   static const std::regex figure_file(R"(.+\.(png|svg|pdf))");
@@ -77,4 +78,4 @@ ResultsDirectory::~ResultsDirectory() {
   if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the flock
 }
 
-}  // namespace twb::cli
+}  // namespace twb
