@@ -37,6 +37,15 @@ void CsvText::fail(std::size_t line, std::size_t column, const std::string& mess
 
 void CsvText::fail(const std::string& message) const { throw InputError(path_, 0, 0, message, ""); }
 
+std::vector<CsvField> CsvText::row(std::size_t line, std::size_t columns) const {
+  std::vector<CsvField> fields = csv_fields(lines_[line]);
+  if (fields.size() != columns)
+    fail(line, 0, fmt::format("this row has {} field{} and the header {} column{}: every row needs one field for each "
+                              "column",
+                              fields.size(), fields.size() == 1 ? "" : "s", columns, columns == 1 ? "" : "s"));
+  return fields;
+}
+
 std::size_t CsvText::next_row(std::size_t line) const {
   for (; line < lines_.size(); ++line) {
     const std::size_t first = lines_[line].find_first_not_of(" \t\r");

@@ -33,6 +33,9 @@ class CsvText {
   // The first line at or after `line` that is neither blank nor a comment (lines().size()
   // where there is none).
   std::size_t next_row(std::size_t line) const;
+  // The fields of a data row under a header of `columns` fields; a fault at the row where
+  // it has another count.
+  std::vector<CsvField> row(std::size_t line, std::size_t columns) const;
   // A field as a finite number; else a fault at it, naming it `column`.
   double number(std::size_t line, const CsvField& field, std::string_view column) const;
 

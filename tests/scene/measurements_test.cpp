@@ -84,7 +84,7 @@ TEST(Measurements, FaultsAreLocated) {
       {"load [N], speed [rpm], torque [N m], torque [N mm]\n1, 2, 3, 4\n", 1, 38, "a second torque column"},
       {"speed [rpm], torque [N m]\n2, 3\n", 1, 1, "no load column"},
       {"load [N], speed [rpm]\n1, 2\n", 1, 1, "no measured quantity"},
-      {"load [N], speed [rpm], torque [N m]\n1, 2\n", 2, 1, "a row has one field a column (3); this one has 2"},
+      {"load [N], speed [rpm], torque [N m]\n1, 2\n", 2, 1, "this row has 2 fields and the header 3 columns: every row needs one field for each column"},
       {"load [N], speed [rpm], torque [N m]\n1, 2, 0.1o\n", 2, 7, "the torque '0.1o' is not a finite number"},
       {"load [N], speed [rpm], torque [N m]\n-1, 2, 0.1\n", 2, 1, "the load '-1' must be positive"},
       {"load [N], speed [rpm], torque [N m]\n1, 2, \n", 2, 1, "the row measures nothing"},

@@ -131,6 +131,18 @@ struct SceneFault {
   const char* says;
 };
 
+// The message's last line is its caret, under the column it names (a fault located at a
+// line alone has none): a user reading a backwards schedule's error once met a blank one.
+void expect_caret_at_column(const InputError& e) {
+  if (e.column() <= 0) return;
+  const std::string what = e.what();
+  const std::string caret = what.substr(what.rfind('\n') + 1);
+  const std::size_t bar = caret.find(" | ");
+  ASSERT_NE(bar, std::string::npos) << what;
+  EXPECT_EQ(caret.find('^'), bar + 3 + std::size_t(e.column() - 1)) << what;
+  EXPECT_EQ(caret.back(), '^') << what;
+}
+
 TEST(Schedule, FaultsInTheSceneAreLocated) {
   const SceneFault faults[] = {
       {"[{t: 0 s}, {t: 0 s, load: 120 N}]", 4, 28, "the times must increase strictly"},
@@ -151,6 +163,7 @@ TEST(Schedule, FaultsInTheSceneAreLocated) {
     EXPECT_EQ(e.line(), f.line);
     EXPECT_EQ(e.column(), f.column);
     EXPECT_NE(std::string(e.what()).find(f.says), std::string::npos) << e.what();
+    expect_caret_at_column(e);
   }
 }
 
@@ -163,7 +176,7 @@ TEST(Schedule, FaultsInTheFileAreLocated) {
       {"t [s], wear [um]\n0, 1\n1, 2\n", 1, 8, "the column 'wear' is none a schedule reads"},
       {"load [N]\n100\n120\n", 1, 1, "no time column"},
       {"t [s], load [N]\n0, 100\n", 0, 0, "at least two"},
-      {"t [s], load [N]\n0, 100\n1\n", 3, 1, "a row has one field a column"},
+      {"t [s], load [N]\n0, 100\n1\n", 3, 1, "this row has 1 field and the header 2 columns"},
       {"t [s], load [N]\n0, 100\n, 120\n", 3, 1, "the time is empty"},
       {"t [s], ambient [degC]\n0, 200\n1, 30\n", 2, 1, "past the oil's maximum temperature"},
   };
@@ -176,6 +189,7 @@ TEST(Schedule, FaultsInTheFileAreLocated) {
     EXPECT_EQ(e.line(), f.line);
     EXPECT_EQ(e.column(), f.column);
     EXPECT_NE(std::string(e.what()).find(f.says), std::string::npos) << e.what();
+    expect_caret_at_column(e);
   }
 }
 
