@@ -637,6 +637,50 @@ class TwbPlotTest(unittest.TestCase):
         self.assertLessEqual(legend.x1, whole.x1 + 0.5, "the legend leaves the figure")
         plt.close(fig)
 
+    def test_a_search_without_w_d_far_above_leaves_the_load_axis_to_the_loads_found(self):
+        """A speed with no W_d up to a load_end far above the map's loads (8000 N against
+        300-350 N) is marked at the axis's top, its load in its label: the axis is the loads
+        found, not squashed under the search's range."""
+        header = f"speed_rad_s,{DISTRESS_FAIL_TAIL}"
+        d = self.results_dir("far_load_end", speeds=(136, 545, 953), distress=[header] + [
+            distress_fail_row(header, {"speed_rad_s": 136, "method": "no fold up to 8000 N (gradual heating)"}),
+            distress_fail_row(header, {"speed_rad_s": 545, "W_fail_N": 300, "criterion": "distress", "W_d_N": 300,
+                                       "method": "runaway"}),
+            distress_fail_row(header, {"speed_rad_s": 953, "W_fail_N": 350, "criterion": "distress", "W_d_N": 350,
+                                       "method": "runaway"})])
+        fig = tp.distress.figure_distress_map(tp.merge([tp.read_run(d)]))
+        ax = fig.axes[0]
+        self.assertAlmostEqual(ax.get_ylim()[1], 1.25 * 350)
+        triangles = [line for line in ax.get_lines() if line.get_marker() == "^"]
+        self.assertEqual([list(line.get_ydata()) for line in triangles], [[1.25 * 350]])
+        self.assertIn("> 8000 N", [t.get_text() for t in ax.texts])
+        plt.close(fig)
+
+    def test_states_past_the_failure_load_are_faded(self):
+        """States past W_fail (here a limit at 600 N at 545 rad/s) are drawn faded, from the
+        last operating state on, with their own legend entry; the operating curve ends at
+        or below W_fail; a speed without a failure load is drawn whole."""
+        header = f"speed_rad_s,{DISTRESS_FAIL_TAIL}"
+        d = self.results_dir("past_failure", distress=[header] + [
+            distress_fail_row(header, {"speed_rad_s": 545, "W_fail_N": 600, "criterion": "flash_temperature",
+                                       "W_flash_temperature_N": 600,
+                                       "method": "no fold up to 1300 N (gradual heating)"}),
+            distress_fail_row(header, {"speed_rad_s": 136, "method": "no fold up to 1300 N (gradual heating)"})])
+        data = tp.merge([tp.read_run(d)])
+        fig = tp.states.figure_vs_load(data, "T_mean_C", "T", "t", None)
+        ax = fig.axes[0]
+        faded = [line for line in ax.get_lines() if line.get_alpha() == 0.3]
+        self.assertEqual(len(faded), 1)
+        loads = [x for x, y in zip(faded[0].get_xdata(), faded[0].get_ydata()) if not math.isnan(y)]
+        self.assertEqual(min(loads), 500)  # the last operating state, joined to the first past one
+        self.assertGreater(min(x for x in loads if x > 500), 600)
+        solid = [line for line in ax.get_lines() if line.get_alpha() is None and line.get_label().startswith("545")]
+        self.assertEqual(len(solid), 1)
+        kept = [x for x, y in zip(solid[0].get_xdata(), solid[0].get_ydata()) if not math.isnan(y)]
+        self.assertLessEqual(max(kept), 600)
+        self.assertIn("past $W_{fail}$: the washer has failed", [t.get_text() for t in ax.get_legend().get_texts()])
+        plt.close(fig)
+
     def test_distress_grid_small_multiples(self):
         """A grid's failure loads: a panel per speed with a shared load axis, W_fail against
         the first axis (its label the package's), a line per value of the other, a marker

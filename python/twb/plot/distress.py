@@ -177,6 +177,17 @@ def figure_fold_curve(data, name, column, rows):
 RUNS_INSIDE_LEGEND = 3
 
 
+def found_top(rows):
+    """The highest load a map's rows found (W_d and its bracket, the fold, the failure
+    load, the mesh-converged W_d with its bar), or None where they found none."""
+    loads = []
+    for r in rows:
+        loads += [v for v in (r.w_d, r.high, r.fold, r.failure) if v is not None]
+        if r.extrapolated is not None:
+            loads.append(r.extrapolated + (r.error or 0.0))
+    return max(loads) if loads else None
+
+
 def limit_rows(rows):
     """The rows where a limit, not distress, sets the failure load."""
     return [r for r in rows if r.failure is not None and r.criterion not in (None, "distress")]
@@ -217,6 +228,11 @@ def figure_distress_map(data):
                          else r"Where the washer fails: $W_{fail}$ (first criterion) and $W_d$ vs speed", size=size)
     scale, xlabel = speed_axis(data)
     any_fold = any_estimate = any_beyond = False
+    # The loads the map found set the load axis; a search that found nothing up to a far
+    # higher load_end is marked at the axis's top, its load in its label, not drawn there
+    # (it would squash every curve to the bottom of the figure).
+    top = found_top([r for key in plottable for r in series[key]])
+    ceiling = None if top is None else 1.25 * top
     # One entry per run, in the runs' order, whatever the run draws.
     handles, labels = [], []
     for i, key in enumerate(plottable):
@@ -229,12 +245,13 @@ def figure_distress_map(data):
                   if r.w_d is None and (load := searched_up_to(r.method)) is not None]
         if beyond:
             any_beyond = True
-            ax.plot([scale * b[0] for b in beyond], [b[1] for b in beyond], linestyle="none", marker="^",
-                    markersize=9, markerfacecolor="none", markeredgecolor=color)
+            shown = [min(load, ceiling) if ceiling is not None else load for _, load in beyond]
+            ax.plot([scale * b[0] for b in beyond], shown, linestyle="none", marker="^",
+                    markersize=9, markerfacecolor="none", markeredgecolor=color, clip_on=False)
             # Neighbouring speeds' labels alternate above and below their markers, and each
             # series' a little further down, so that labels at one load do not overprint.
-            for j, (speed, load) in enumerate(beyond):
-                ax.annotate(f"> {load:g} N", (scale * speed, load), textcoords="offset points",
+            for j, ((speed, load), y) in enumerate(zip(beyond, shown)):
+                ax.annotate(f"> {load:g} N", (scale * speed, y), textcoords="offset points",
                             xytext=(7, (6 if j % 2 else -12) - 9 * i), fontsize="x-small", color=color)
         if found:
             x = [scale * r.speed for r in found]
@@ -275,7 +292,10 @@ def figure_distress_map(data):
         ax.set_xlim(lo, hi + 0.12 * (hi - lo))
     ax.set_xlabel(xlabel)
     ax.set_ylabel("load (N)")
-    ax.set_ylim(bottom=0)
+    if ceiling is not None:
+        ax.set_ylim(0, ceiling)
+    else:
+        ax.set_ylim(bottom=0)
     handles.append(Line2D([], [], color="black", marker="|", linestyle="none", markersize=10))
     labels.append("bracket: settled / ran away")
     if any_beyond:

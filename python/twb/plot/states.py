@@ -59,14 +59,18 @@ def draw_error_bars(ax, data, xcol, ycol, idx, color):
 def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
     """One curve per speed (and per run of a study's axes, one value or a grid's
     combination, in its own line style), points joined in order of load, and the states'
-    error bars where they have them; returns (whether any point had not converged,
-    whether any bar was drawn)."""
+    error bars where they have them; the states past the run's failure load W_fail (the
+    washer has failed there: a hot branch at hundreds of degrees) faded, so that they do
+    not read as operating states. Returns (whether any point had not converged, whether
+    any bar was drawn, whether any state was past W_fail)."""
     s = data.states
     speeds = np.array([speed_key(v) for v in s["speed_rad_s"]])
     runs = parameter_order(data.parameters)
     styles = {p: LINESTYLES[i % len(LINESTYLES)] for i, p in enumerate(runs)}
     jumps = {(speed, parameter): w_d for speed, parameter, w_d in distress_lines(data)}
-    any_unconverged = any_bar = False
+    failures = {(speed_key(d.speed), d.parameter): d.failure for d in data.distress
+                if d.sliding is None and d.failure is not None}
+    any_unconverged = any_bar = any_past = False
     for key in data.speed_style.keys:
         for run in [None] + runs:
             idx = np.flatnonzero((speeds == key) & np.array([p == run for p in data.parameters],
@@ -90,15 +94,24 @@ def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
             loads = s["load_N"][idx]
             cut = np.flatnonzero((loads[:-1] <= w_d) & (loads[1:] > w_d)) if w_d is not None else []
             xs, ys = x[ok].astype(float), y[ok].astype(float)
+            at = loads[ok].astype(float)
             if len(cut) and ok[cut[0]] and ok[cut[0] + 1]:
                 k = int(np.count_nonzero(ok[:cut[0] + 1]))
                 # (an end off a log axis, a zero share, gets the break without the arrow)
                 if np.isfinite([xs[k], ys[k], xs[k - 1], ys[k - 1]]).all():
                     ax.annotate("", xy=(xs[k], ys[k]), xytext=(xs[k - 1], ys[k - 1]),
                                 arrowprops=dict(arrowstyle="->", color=color, linestyle=":", linewidth=1.0))
-                xs, ys = np.insert(xs, k, np.nan), np.insert(ys, k, np.nan)
-            ax.plot(xs, ys, color=color, marker=marker, markersize=4, linewidth=1.2,
+                xs, ys, at = np.insert(xs, k, np.nan), np.insert(ys, k, np.nan), np.insert(at, k, np.nan)
+            w_fail = failures.get((key, run))
+            past = at > w_fail if w_fail is not None else np.zeros(len(at), dtype=bool)
+            ax.plot(xs, np.where(past, np.nan, ys), color=color, marker=marker, markersize=4, linewidth=1.2,
                     linestyle=styles.get(run, "-"), label=label)
+            if past.any():
+                any_past = True
+                # From the last operating state on, so that the curve stays one line.
+                joined = past | np.append(past[1:], False)
+                ax.plot(xs, np.where(joined, ys, np.nan), color=color, marker=marker, markersize=4, linewidth=1.0,
+                        linestyle=styles.get(run, "-"), alpha=0.3, markerfacecolor="none")
             if not logx and not logy:
                 any_bar = draw_error_bars(ax, data, xcol, ycol, idx, color) or any_bar
             if not ok.all():
@@ -109,7 +122,7 @@ def draw_by_speed(ax, data, xcol, ycol, logx=False, logy=False):
         ax.set_xscale("log")
     if logy:
         ax.set_yscale("log")
-    return any_unconverged, any_bar
+    return any_unconverged, any_bar, any_past
 
 
 def distress_lines(data):
@@ -130,7 +143,7 @@ def failure_lines(data):
 
 def figure_vs_load(data, column, ylabel, title, paper_figure, logy=False):
     fig, ax = new_figure(title, paper_figure)
-    unconverged, bars = draw_by_speed(ax, data, "load_N", column, logy=logy)
+    unconverged, bars, past = draw_by_speed(ax, data, "load_N", column, logy=logy)
     marks = distress_lines(data)
     for key, _, w_d in marks:
         ax.axvline(w_d, color=data.speed_style.colors[key], linestyle=":", linewidth=1.2)
@@ -139,18 +152,18 @@ def figure_vs_load(data, column, ylabel, title, paper_figure, logy=False):
         ax.axvline(w_fail, color=data.speed_style.colors[key], linestyle="-.", linewidth=1.2)
     ax.set_xlabel(LOAD_LABEL)
     ax.set_ylabel(ylabel)
-    finish_legend(ax, unconverged, distress=bool(marks), failure=bool(fails), error_bars=bars)
+    finish_legend(ax, unconverged, distress=bool(marks), failure=bool(fails), error_bars=bars, past=past)
     return fig
 
 
 def figure_contact_vs_hmin(data):
     fig, ax = new_figure("Contact share vs minimum film thickness", 13)
-    unconverged, _ = draw_by_speed(ax, data, "hmin_over_sigma", "contact_share")
+    unconverged, _, past = draw_by_speed(ax, data, "hmin_over_sigma", "contact_share")
     # The paper reads its figure against this customary threshold of significant contact.
     ax.axvline(3.0, color="grey", linestyle="--", linewidth=0.8)
     ax.set_xlabel(HMIN_LABEL)
     ax.set_ylabel(CONTACT_LABEL)
-    finish_legend(ax, unconverged)
+    finish_legend(ax, unconverged, past=past)
     return fig
 
 
@@ -162,12 +175,12 @@ PAPER_STRIBECK_OPTIMA = ((2.0e-6, "paper, numerical: optimum near 2.0e-6", "--")
 
 def figure_stribeck(data):
     fig, ax = new_figure("Stribeck curve", 14)
-    unconverged, _ = draw_by_speed(ax, data, "stribeck", "f_eff", logx=True)
+    unconverged, _, past = draw_by_speed(ax, data, "stribeck", "f_eff", logx=True)
     for x, label, style in PAPER_STRIBECK_OPTIMA:
         ax.axvline(x, color="0.4", linestyle=style, linewidth=1.0, label=label)
     ax.set_xlabel(STRIBECK_LABEL)
     ax.set_ylabel(FEFF_LABEL)
-    finish_legend(ax, unconverged)
+    finish_legend(ax, unconverged, past=past)
     return fig
 
 

@@ -87,7 +87,7 @@ def parameter_label(parameter):
     return ", ".join(axis_label(name, value) for name, value in run_axes(parameter))
 
 
-def finish_legend(ax, unconverged=False, distress=False, failure=False, error_bars=False):
+def finish_legend(ax, unconverged=False, distress=False, failure=False, error_bars=False, past=False):
     handles, labels = ax.get_legend_handles_labels()
     if error_bars:
         handles.append(Line2D([], [], color="black", linestyle="none", marker="|", markersize=8))
@@ -102,6 +102,9 @@ def finish_legend(ax, unconverged=False, distress=False, failure=False, error_ba
         handles.append(Line2D([], [], color="black", linestyle="none", marker="o",
                               markerfacecolor="none"))
         labels.append("not converged")
+    if past:
+        handles.append(Line2D([], [], color="black", marker="o", markersize=4, markerfacecolor="none", alpha=0.3))
+        labels.append(r"past $W_{fail}$: the washer has failed")
     if handles:
         ax.legend(handles, labels, fontsize="small", framealpha=0.85)
 
