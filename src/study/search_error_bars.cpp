@@ -107,6 +107,18 @@ MeshErrorEstimate sequence_estimate(const MeshSequence& sequence, double toleran
   return e;
 }
 
+// What the meshes of a sequence hold of the washer's grooves: each refinement doubles the
+// cells, so every mesh holds the grooves the scene's mesh resolved (whole cells), which
+// is the geometry the mesh-converged load belongs to, beside the width asked.
+std::string grooves_held(const Scene& scene) {
+  const Grooves& g = *scene.washer.grooves;
+  const double mean_radius = 0.5 * (scene.washer.inner_radius + scene.washer.outer_radius);
+  return fmt::format("every mesh holds the grooves as the scene's does: {} cells of {} ({:.4g} mm at the mean "
+                     "radius; {:.4g} mm asked)",
+                     g.cells, scene.mesh.circumferential_nodes, 1e3 * g.width * mean_radius,
+                     1e3 * g.written_width * mean_radius);
+}
+
 // How closely a finer mesh's load is needed: a thousandth of the step the order two
 // predicts from the last one (at least a thousandth of a percent of the load), which
 // moves the estimate and its bar by about 0.1 % of that step.
@@ -306,6 +318,8 @@ long estimate_failure_errors(const BearingModel& model, const DistressSearchSett
     const std::size_t past = row.failure.find(" (already past it at the start");
     row.failure = converged_failure_sentence(row, settings.load_end) +
                   (past == std::string::npos ? std::string() : row.failure.substr(past));
+    if (model.scene().washer.grooves && !row.failure_convergence.meshes.empty())
+      row.failure += "; " + grooves_held(model.scene());
   }
   return factorizations;
 }
