@@ -22,6 +22,10 @@ struct OperatingLimits {
   // gear) and the least h_min/σ.
   std::array<std::optional<double>, 3> material_temperature;
   std::optional<double> min_film_ratio;
+  // The washer's PV limit (Pa m/s), and what turns a state's contact force (N) and speed
+  // (rad/s) into its PV: the washer's area and mean radius.
+  std::optional<double> pv_limit;
+  double washer_area = 0.0, mean_radius = 0.0;  // m², m
   static OperatingLimits of(const Scene& scene);
 };
 
@@ -32,7 +36,11 @@ struct LimitValues {
   double hmin_over_sigma = 0.0;
   bool thermal = false;
   std::array<double, 3> body_temperature{};  // K: carrier, washer, gear hottest faces
+  double contact_force = 0.0, speed = 0.0;   // N, the sliding film's; rad/s
   static LimitValues of(const BearingState& state, bool thermal);
+  // The sliding face's PV: the contact force over the washer's area times the sliding
+  // speed at its mean radius (docs/physics.md section 8).
+  double pv(const OperatingLimits& limits) const;
 };
 std::vector<LimitExcess> exceeded_limits(const LimitValues& values, const OperatingLimits& limits);
 

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -31,7 +33,15 @@ OperatingLimits OperatingLimits::of(const Scene& scene) {
   l.material_temperature = {scene.carrier.material.max_temperature, scene.washer.material.max_temperature,
                             scene.gear.material.max_temperature};
   l.min_film_ratio = scene.limits.min_film_ratio;
+  l.pv_limit = scene.washer.material.pv_limit;
+  const double ri = scene.washer.inner_radius, ro = scene.washer.outer_radius;
+  l.washer_area = std::numbers::pi * (ro * ro - ri * ri);
+  l.mean_radius = 0.5 * (ri + ro);
   return l;
+}
+
+double LimitValues::pv(const OperatingLimits& limits) const {
+  return contact_force / limits.washer_area * std::abs(speed) * limits.mean_radius;
 }
 
 LimitValues LimitValues::of(const BearingState& s, bool thermal) {
@@ -40,7 +50,9 @@ LimitValues LimitValues::of(const BearingState& s, bool thermal) {
           s.max_contact_pressure,
           s.hmin_over_sigma,
           thermal,
-          {s.carrier_max_temperature, s.washer_max_temperature, s.gear_max_temperature}};
+          {s.carrier_max_temperature, s.washer_max_temperature, s.gear_max_temperature},
+          s.contact_force,
+          s.speed};
 }
 
 namespace {
@@ -74,6 +86,9 @@ std::optional<double> failure_margin(LimitKind kind, const LimitValues& v, const
     case LimitKind::film_ratio:
       if (!l.min_film_ratio) return std::nullopt;
       return v.hmin_over_sigma - *l.min_film_ratio;
+    case LimitKind::pv:
+      if (!l.pv_limit) return std::nullopt;
+      return *l.pv_limit - v.pv(l);
     default:
       return std::nullopt;
   }
@@ -96,6 +111,7 @@ std::vector<LimitExcess> exceeded_limits(const LimitValues& v, const OperatingLi
                      v.body_temperature[b], *l.material_temperature[b]});
   if (l.min_film_ratio && v.hmin_over_sigma < *l.min_film_ratio)
     out.push_back({LimitKind::film_ratio, v.hmin_over_sigma, *l.min_film_ratio});
+  if (l.pv_limit && v.pv(l) > *l.pv_limit) out.push_back({LimitKind::pv, v.pv(l), *l.pv_limit});
   return out;
 }
 
@@ -109,6 +125,7 @@ std::string_view limit_name(LimitKind kind) {
     case LimitKind::washer_temperature: return "material_temperature:washer";
     case LimitKind::gear_temperature: return "material_temperature:gear";
     case LimitKind::film_ratio: return "film_ratio";
+    case LimitKind::pv: return "pv";
   }
   return "?";
 }
@@ -123,6 +140,7 @@ std::string_view criterion_phrase(LimitKind kind) {
     case LimitKind::washer_temperature: return "the washer's material temperature";
     case LimitKind::gear_temperature: return "the gear's material temperature";
     case LimitKind::film_ratio: return "the least film ratio";
+    case LimitKind::pv: return "the washer's PV limit";
   }
   return "?";
 }
@@ -155,6 +173,10 @@ std::string describe_limit(const LimitExcess& e) {
     case LimitKind::film_ratio:
       return fmt::format("h_min/sigma = {:.3g} is below the least film ratio {:.3g} (limits.min_film_ratio)",
                          e.value, e.limit);
+    case LimitKind::pv:
+      return fmt::format("the sliding face's PV {:.3g} MPa m/s (mean contact pressure times sliding speed) is above "
+                         "the washer's limit {:.3g} MPa m/s (materials.washer.pv_limit)",
+                         1e-6 * e.value, 1e-6 * e.limit);
   }
   return {};
 }

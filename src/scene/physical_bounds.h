@@ -21,6 +21,9 @@ inline constexpr Range roelands_temperature{.low = kRoelandsLowestTemperature, .
                                             .reason = "Roelands' law needs T > -135 degC; no oil works above 300 degC"};
 inline constexpr Range absolute_temperature{.low = 0.0, .low_open = true, .high = kHighestTemperature,
                                             .reason = "an absolute temperature up to 300 degC, where oils decompose"};
+// A washer's PV limit: data sheets give 0.1 (unfilled polymers) to about 10 MPa m/s
+// (sintered bronzes, filled PTFE); a thousand times either way is no material.
+inline constexpr Range pv_limit{.low = 1e2, .high = 1e10, .reason = "a data sheet's PV limit, e.g. 1.8 MPa m/s"};
 inline constexpr Range material_temperature{.low = 0.0, .low_open = true, .high = 2000.0,
                                             .reason = "a material's working limit, an absolute temperature up to "
                                                       "2000 K"};

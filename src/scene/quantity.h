@@ -34,11 +34,12 @@ inline constexpr SiUnit kinematic_viscosity{"m^2/s", "a kinematic viscosity", "2
 inline constexpr SiUnit areal_density{"1/m^2", "a number per unit area", "1e11 1/m^2"};
 inline constexpr SiUnit expansion{"1/K", "a thermal expansion coefficient", "1.2e-5 1/K"};
 inline constexpr SiUnit dimensionless{"1", "a dimensionless number", "0.296"};
+inline constexpr SiUnit pv{"Pa m/s", "a PV value (a pressure times a sliding speed)", "1.8 MPa m/s"};
 // Every unit above, the angle before the pure number (udunits2 takes both for "rad").
 inline constexpr const SiUnit* all[] = {&length,        &angle,         &angular_speed, &force,         &torque,
                                         &time,          &temperature,   &stress,        &conductivity,
                                         &density,       &specific_heat, &viscosity,     &kinematic_viscosity,
-                                        &areal_density, &expansion,     &dimensionless};
+                                        &areal_density, &expansion,     &dimensionless, &pv};
 // The unit of a symbol above ("rad/s"); the pure number for any other.
 inline const SiUnit& of_symbol(std::string_view symbol) {
   for (const SiUnit* u : all)

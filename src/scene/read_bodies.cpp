@@ -77,7 +77,7 @@ void read_geometry(const MapReader& scene, Scene& out) {
 Material read_material(const MapReader& materials, std::string_view component) {
   const MapReader steel = materials.map(component, {"youngs_modulus", "poisson_ratio", "yield_strength",
                                                     "conductivity", "density", "specific_heat", "thermal_expansion",
-                                                    "max_temperature"});
+                                                    "max_temperature", "pv_limit"});
   Material m;
   m.youngs_modulus = steel.quantity("youngs_modulus", si::stress, bounds::youngs_modulus, m.youngs_modulus);
   m.poisson_ratio = steel.quantity("poisson_ratio", si::dimensionless,
@@ -91,6 +91,17 @@ Material read_material(const MapReader& materials, std::string_view component) {
       steel.quantity("thermal_expansion", si::expansion, bounds::thermal_expansion, m.thermal_expansion);
   if (steel.has("max_temperature"))
     m.max_temperature = steel.quantity("max_temperature", si::temperature, bounds::material_temperature);
+  if (steel.has("pv_limit")) {
+    // Only the washer's face rubs against both its neighbours: the carrier and gear are
+    // steel, whose data sheets give no PV limit.
+    if (component != "washer") {
+      const Node node = steel.get("pv_limit", "");
+      node.fail(fmt::format("{}: a PV limit is the washer's (materials.washer.pv_limit): the washer is the bearing's "
+                            "bronze or polymer face",
+                            node.path()));
+    }
+    m.pv_limit = steel.quantity("pv_limit", si::pv, bounds::pv_limit);
+  }
   return m;
 }
 

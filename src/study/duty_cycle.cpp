@@ -46,7 +46,7 @@ std::optional<double> allowance(LimitKind kind, const OperatingLimits& limits, d
   LimitValues rest;
   rest.thermal = true;
   rest.washer_mean_temperature = rest.max_film_temperature = ambient;
-  rest.body_temperature.fill(ambient);
+  rest.body_temperature.fill(ambient);  // (and no contact force at no speed: no PV)
   return failure_margin(kind, rest, limits);
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numbers>
 
 #include "model/limit_thresholds.h"
 #include "../support/table1_scene.h"
@@ -39,6 +40,32 @@ TEST(OperatingLimits, EachIsExceededOnlyAboveItsThreshold) {
   // Classic Reynolds (no contact, no flow factors) has no statistical range to leave.
   l.statistical = false;
   EXPECT_TRUE(exceeded_limits(past, l).empty());
+}
+
+// PV (physics §8): the sliding film's contact force over the washer's area times the
+// sliding speed at its mean radius, against the washer's limit; a failure criterion whose
+// margin is the limit less the PV, none without a limit; nothing at rest.
+TEST(OperatingLimits, ThePVOfTheSlidingFaceAgainstTheWashersLimit) {
+  Scene scene = testing::table1_scene(true, true, true, true, 545.0, 100.0);
+  scene.washer.material.pv_limit = 1.5e6;
+  const OperatingLimits l = OperatingLimits::of(scene);
+  const double ri = scene.washer.inner_radius, ro = scene.washer.outer_radius;
+  const double area = std::numbers::pi * (ro * ro - ri * ri), speed = 545.0 * 0.5 * (ri + ro);
+  LimitValues v;
+  v.contact_force = 1.5e6 * area / speed;  // on the limit
+  v.speed = -545.0;                         // either sense of rotation
+  EXPECT_NEAR(v.pv(l), 1.5e6, 1e-9 * 1.5e6);
+  EXPECT_NEAR(*failure_margin(LimitKind::pv, v, l), 0.0, 1e-9 * 1.5e6);
+  EXPECT_FALSE(has(exceeded_limits(v, l), LimitKind::pv)) << "a value at its limit is within it";
+  v.contact_force *= 1.001;
+  const std::vector<LimitExcess> past = exceeded_limits(v, l);
+  ASSERT_TRUE(has(past, LimitKind::pv));
+  EXPECT_NE(describe_limit(past.back()).find("materials.washer.pv_limit"), std::string::npos);
+  EXPECT_TRUE(is_failure_criterion(LimitKind::pv));
+  v.speed = 0.0;
+  EXPECT_DOUBLE_EQ(*failure_margin(LimitKind::pv, v, l), 1.5e6);
+  scene.washer.material.pv_limit.reset();
+  EXPECT_FALSE(failure_margin(LimitKind::pv, v, OperatingLimits::of(scene)));
 }
 
 TEST(OperatingLimits, HardnessIsThatOfTheSoftestFace) {

@@ -26,6 +26,8 @@ void expect_same_material(const Material& a, const Material& b) {
   EXPECT_EQ(a.density, b.density);
   EXPECT_EQ(a.specific_heat, b.specific_heat);
   EXPECT_EQ(a.thermal_expansion, b.thermal_expansion);
+  EXPECT_EQ(a.max_temperature, b.max_temperature);
+  EXPECT_EQ(a.pv_limit, b.pv_limit);
 }
 
 void expect_same_component(const Component& a, const Component& b) {
@@ -304,6 +306,8 @@ INSTANTIATE_TEST_SUITE_P(
                       std::string(kMinimalScene) + "surfaces: {washer: {Rq: 0.257 um}}\n"},
         RoundTripCase{"output_directory_with_control_characters",
                       std::string(kMinimalScene) + "output: {directory: \"line\\nbreak\\ttab\\x01\\x7f end\"}\n"},
+        RoundTripCase{"washer_pv_limit",
+                      std::string(kMinimalScene) + "materials: {washer: {pv_limit: 1.8 MPa m/s}}\n"},
         RoundTripCase{"thermal_options",
                       with_thermal(kMinimalScene, "{thermal: {viscosity_temperature: film_node, "
                                                   "carrier_temperature: axisymmetric}}")},
@@ -514,6 +518,25 @@ TEST(SceneLoader, ATolerancesValueAndWhereItIsRefused) {
   refused(sweep + ", tolerance: 1 N}\n", "study.tolerance");
   refused(std::string(kMinimalScene) + "study: {type: point, tolerance: 1 %}\n", "tolerance");
   refused(std::string(kMinimalScene) + "mesh: {max_refinements: 6}\n", "mesh.max_refinements");
+}
+
+// materials.washer.pv_limit: a PV in its unit, the washer's only, refused elsewhere and
+// in another unit, at its place.
+TEST(SceneLoader, APVLimitIsTheWashersInItsUnit) {
+  EXPECT_DOUBLE_EQ(*load_scene_text(std::string(kMinimalScene) + "materials: {washer: {pv_limit: 1.8 MPa m/s}}\n",
+                                    "pv.yaml")
+                        .washer.material.pv_limit,
+                   1.8e6);
+  for (const char* bad : {"materials: {carrier: {pv_limit: 1.8 MPa m/s}}\n",
+                          "materials: {washer: {pv_limit: 1.8 MPa}}\n", "materials: {washer: {pv_limit: 0}}\n"}) {
+    try {
+      load_scene_text(std::string(kMinimalScene) + bad, "pv.yaml");
+      ADD_FAILURE() << "accepted: " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("pv_limit"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("pv.yaml:"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // A face's Ra rides along with its Rq (physics §16): Ra enters no equation but may not

@@ -1,8 +1,9 @@
 // Where the bearing fails (docs/physics.md section 8, "Failure load"): every failure
 // criterion's crossing located on the branch, the failure load the least of them and of
 // W_d. On the bronze washer (configs/washers/bronze_cusn8.yaml) at 3000 rpm on a coarse
-// mesh, where the flash point, the bronze's temperature limit, the oil's maximum and the
-// least film ratio are all crossed below any thermo-viscous distress.
+// mesh, where the flash point, the bronze's temperature limit, the oil's maximum, the
+// least film ratio and a PV limit of 2.5 MPa m/s (near 560 N there) are all crossed below
+// any thermo-viscous distress.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,7 +37,7 @@ DistressSearchSettings range(double end) {
 }
 
 struct Shared {
-  BearingModel model{bronze()};
+  BearingModel model{bronze({"materials.washer.pv_limit=2.5 MPa m/s"})};
   DistressSearch found;
   Shared() {
     model.set_speed(model.scene().study.speeds.front());
@@ -102,8 +103,8 @@ TEST(FailureLoad, EveryCriterionIsCrossedWhereTheFineSweepCrossesIt) {
     ASSERT_TRUE(crossing) << limit_name(kind) << " is not crossed within 0.24 % above the reported " << w << " N";
     EXPECT_NEAR(*crossing, w, 0.002 * w) << limit_name(kind);
   }
-  // The scene's flash point, bronze limit, oil maximum and film ratio are all reached.
-  EXPECT_EQ(located, 4) << row.failure;
+  // The scene's flash point, bronze limit, oil maximum, film ratio and PV are all reached.
+  EXPECT_EQ(located, 5) << row.failure;
 }
 
 TEST(FailureLoad, TheFailureLoadIsTheLeastCriterion) {

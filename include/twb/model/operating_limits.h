@@ -16,8 +16,11 @@
 //  - material_temperature:<body>: the body's hottest face above its material's limit
 //    (materials.<body>.max_temperature; none by default);
 //  - film_ratio: h_min/σ below the scene's least film parameter (limits.min_film_ratio;
-//    none by default).
-// oil_temperature, flash_temperature, material_temperature and film_ratio are failure
+//    none by default);
+//  - pv: the sliding film's mean contact pressure times the sliding speed at the washer's
+//    mean radius above the washer material's PV limit (materials.washer.pv_limit; none by
+//    default).
+// oil_temperature, flash_temperature, material_temperature, film_ratio and pv are failure
 // criteria (docs/physics.md section 8): the first load where one is crossed on the branch
 // is a failure load beside thermo-viscous distress. contact_pressure and
 // film_below_statistics say where the model stops holding.
@@ -38,6 +41,7 @@ enum class LimitKind {
   washer_temperature,   // material_temperature:washer
   gear_temperature,     // material_temperature:gear
   film_ratio,
+  pv,
 };
 
 // The limits whose crossing is a failure of the bearing (a failure criterion).
@@ -45,11 +49,11 @@ bool is_failure_criterion(LimitKind kind);
 // The failure criteria in the order distress.csv lists their loads.
 inline constexpr LimitKind kFailureCriteria[] = {LimitKind::oil_temperature, LimitKind::flash_temperature,
                                                  LimitKind::carrier_temperature, LimitKind::washer_temperature,
-                                                 LimitKind::gear_temperature, LimitKind::film_ratio};
+                                                 LimitKind::gear_temperature, LimitKind::film_ratio, LimitKind::pv};
 
 struct LimitExcess {
   LimitKind kind;
-  double value = 0.0;  // SI: K, Pa, or h_min/σ
+  double value = 0.0;  // SI: K, Pa, h_min/σ, or Pa m/s
   double limit = 0.0;
 };
 

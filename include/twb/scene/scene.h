@@ -138,6 +138,10 @@ struct Material {
   // The hottest the material may run (bronze, polymer, a coating): a failure criterion
   // of the body's hottest face (docs/physics.md section 8). None by default (steel).
   std::optional<double> max_temperature;  // K
+  // The washer's PV limit (a bronze's or a polymer's data sheet): the most mean contact
+  // pressure times sliding speed its face may run at, a failure criterion (docs/physics.md
+  // section 8). The washer's material only; none by default.
+  std::optional<double> pv_limit;  // Pa m/s
 };
 
 // Roughness of one component's face(s) touching a film.

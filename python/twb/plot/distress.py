@@ -43,10 +43,12 @@ LIMIT_LABELS = {
     "material_temperature:washer": "washer's material temperature",
     "material_temperature:gear": "gear's material temperature",
     "film_ratio": "least film ratio",
+    "pv": "washer's PV limit",
 }
 LIMIT_STYLES = {"oil_temperature": "tab:purple", "flash_temperature": "tab:orange",
                 "material_temperature:carrier": "tab:brown", "material_temperature:washer": "tab:olive",
-                "material_temperature:gear": "tab:cyan", "film_ratio": "tab:pink"}
+                "material_temperature:gear": "tab:cyan", "film_ratio": "tab:pink",
+                "pv": "tab:gray"}
 
 
 def draw_limit_curves(ax, rows, scale, distress, single, color, tag, ends):
