@@ -77,16 +77,16 @@ std::string input_override(const std::string& path, double value, std::string_vi
 
 namespace {
 
-// A face's roughness changed by one of its two numbers (surfaces.<face>.Rq or .Ra): the
-// other, scaled by the same factor, where it is not set too. Ra enters no equation (σ is
-// Rq), but it may not exceed Rq, so an uncertain or differenced Rq carries the face's Ra
-// along at the face's own Ra/Rq, the texture the scene gives it (docs/physics.md section
-// 16). Empty for every other input.
+// A face's Rq changed (surfaces.<face>.Rq): its Ra, scaled by the same factor, where Ra
+// is not set too. Ra enters no equation (σ is Rq), but it may not exceed Rq, so an
+// uncertain or differenced Rq carries the face's Ra along at the face's own Ra/Rq, the
+// texture the scene gives it (docs/physics.md section 4). Not the other way round: Ra set
+// alone changes nothing the model reads (its derivatives are nought), and above Rq it is
+// refused. Empty for every other input.
 std::optional<std::string> roughness_companion(const Scene& scene, const std::string& path, double value,
                                                std::span<const std::pair<std::string, double>> values) {
-  if (!path.starts_with("surfaces.") || !(path.ends_with(".Rq") || path.ends_with(".Ra"))) return std::nullopt;
-  const std::string face = path.substr(0, path.size() - 2);  // "surfaces.washer."
-  const std::string other = face + (path.ends_with(".Rq") ? "Ra" : "Rq");
+  if (!path.starts_with("surfaces.") || !path.ends_with(".Rq")) return std::nullopt;
+  const std::string other = path.substr(0, path.size() - 2) + "Ra";  // "surfaces.washer.Ra"
   if (std::any_of(values.begin(), values.end(), [&](const auto& v) { return v.first == other; })) return std::nullopt;
   const SceneInput now = scene_input(scene, path), companion = scene_input(scene, other);
   if (now.value <= 0.0) return std::nullopt;

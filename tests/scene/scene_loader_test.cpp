@@ -123,8 +123,9 @@ void expect_same_scene(const Scene& a, const Scene& b) {
     EXPECT_EQ(x.upper, y.upper);
   }
   EXPECT_EQ(a.study.probabilities, b.study.probabilities);
-  if (!a.study.data.empty() || !b.study.data.empty())
+  if (!a.study.data.empty() || !b.study.data.empty()) {
     EXPECT_EQ(std::filesystem::absolute(a.study.data), std::filesystem::absolute(b.study.data));
+  }
   ASSERT_EQ(a.study.measurements.size(), b.study.measurements.size());
   for (std::size_t i = 0; i < a.study.measurements.size(); ++i) {
     EXPECT_EQ(a.study.measurements[i].load, b.study.measurements[i].load);
@@ -552,6 +553,9 @@ TEST(SceneLoader, AnUncertainRqCarriesItsFacesRaAlong) {
   const Scene rougher = with_inputs(scene, lower);
   EXPECT_DOUBLE_EQ(rougher.washer.roughness.rq, 0.6 * ra);
   EXPECT_NEAR(rougher.washer.roughness.ra, ra * (0.6 * ra / rq), 1e-15 * ra);
+  // Ra set alone moves nothing the model reads (a sensitivity to it is nought).
+  const std::pair<std::string, double> ra_only[] = {{"surfaces.washer.Ra", 0.9 * ra}};
+  EXPECT_EQ(with_inputs(scene, ra_only).washer.roughness.rq, rq);
   const std::pair<std::string, double> both[] = {{"surfaces.washer.Rq", 0.6 * ra}, {"surfaces.washer.Ra", 0.5 * ra}};
   EXPECT_DOUBLE_EQ(with_inputs(scene, both).washer.roughness.ra, 0.5 * ra);
   // Both set, Ra above Rq: still refused, at the override.
