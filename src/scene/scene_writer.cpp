@@ -127,7 +127,8 @@ void write_materials(Writer& w, const Scene& s) {
     if (m.max_temperature)
       w.entry(2, "max_temperature", quantity(*m.max_temperature, "K"),
               fmt::format("{:.2f} degC", *m.max_temperature - 273.15));
-    if (m.pv_limit) w.entry(2, "pv_limit", quantity(*m.pv_limit, "Pa m/s"), fmt::format("{:.3g} MPa m/s", 1e-6 * *m.pv_limit));
+    if (m.pv_limit)
+      w.entry(2, "pv_limit", quantity(*m.pv_limit, "Pa m/s"), fmt::format("{:.3g} MPa m/s", 1e-6 * *m.pv_limit));
   }
 }
 

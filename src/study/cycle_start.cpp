@@ -43,7 +43,6 @@ std::vector<double> continued_state(const BearingModel& model, const CycleState&
   return end.unknowns;
 }
 
-
 // How far into the first segment the march of a washer starting from rest under load
 // begins its film: a millionth, as the rests of physics section 19.
 constexpr double kTurning = 1e-6;

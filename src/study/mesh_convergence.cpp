@@ -78,7 +78,7 @@ std::string MeshSequence::solved_meshes() const {
 
 std::string MeshSequence::why_unmet(double tolerance) const {
   const MeshConvergence e = estimate();
-  const std::string bar = fmt::format("{:.2g} %", 100.0 * e.error / std::abs(e.value));
+  const std::string bar = fmt::format("{:.3g} %", 100.0 * e.error / std::abs(e.value));
   if (!stopped_.empty()) return fmt::format("its bar is {} (tolerance {:.2g} %): {}", bar, 100.0 * tolerance, stopped_);
   const Scene finer = refined_mesh(meshes_[loads_.size() - 2]);
   return fmt::format("its bar is {} (tolerance {:.2g} %) after mesh.max_refinements: {}; the next mesh, {} x {}, "

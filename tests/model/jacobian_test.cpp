@@ -286,8 +286,11 @@ TEST(RestJacobian, TheHeldRowsMatchCentralDifferences) {
   m.evaluate_in_time(u, rate, cj, r, {});
   const std::vector<char> differential = m.rate_unknowns();
   const Index rigid = m.layout().blocks().front().offset;
-  for (Index k = rigid; k < rigid + 4; ++k)
-    if (differential[std::size_t(k)]) EXPECT_EQ(r[std::size_t(k)], rate[std::size_t(k)]) << "row " << k;
+  for (Index k = rigid; k < rigid + 4; ++k) {
+    if (differential[std::size_t(k)]) {
+      EXPECT_EQ(r[std::size_t(k)], rate[std::size_t(k)]) << "row " << k;
+    }
+  }
   m.hold_at_rest({});
   EXPECT_FALSE(m.held_at_rest());
 }
