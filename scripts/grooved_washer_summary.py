@@ -65,7 +65,7 @@ def summarize(root, load):
                 "criterion": row["criterion"],
                 "W_d_N": row["W_d_N"],
                 "W_oil_temperature_N": row["W_oil_temperature_N"],
-                "W_flash_temperature_N": row["W_flash_temperature_N"],
+                "W_oil_peak_temperature_N": row["W_oil_peak_temperature_N"],
                 f"T_mean_C_at_{load:g}N": at_load(states, speed, load, "T_mean_C"),
                 f"T_max_C_at_{load:g}N": at_load(states, speed, load, "T_max_C"),
                 f"heat_carried_W_at_{load:g}N": at_load(states, speed, load, "heat_carried_W"),
@@ -82,7 +82,7 @@ def figure(table, load, path):
             continue
         line = left.plot(rows["speed_rad_s"], rows["W_fail_N"], "o-", label=label)[0]
         # The failure's criterion: a square where the oil's flash point sets it.
-        flash = rows[rows["criterion"] == "flash_temperature"]
+        flash = rows[rows["criterion"] == "oil_peak_temperature"]
         left.plot(flash["speed_rad_s"], flash["W_fail_N"], "s", color=line.get_color(), markersize=9, fillstyle="none")
         right.plot(rows["speed_rad_s"], rows[f"T_mean_C_at_{load:g}N"], "o-", color=line.get_color(), label=label)
     left.set_xlabel("speed (rad/s)")
@@ -109,7 +109,7 @@ GROOVE_PARAMETERS = [
 CRITERIA = [
     ("W_d_N", "thermo-viscous distress (W_d; none: no fold up to load_end)", "k^-"),
     ("W_oil_temperature_N", "oil's maximum temperature", "C1s--"),
-    ("W_flash_temperature_N", "oil's flash point", "C3v:"),
+    ("W_oil_peak_temperature_N", "oil's peak temperature at its flash point", "C3v:"),
 ]
 
 

@@ -21,6 +21,8 @@ struct FilmTotals {
   double contact_torque_per_f = 0;              // ∫ p_c r dA: friction torque divided by f
   double viscous_torque = 0;
   double viscous_heat = 0;
+  // ∫ μ V²/h̄T N_a dA per node (W): the viscous heat each node of the sliding film receives.
+  std::vector<double> viscous_power;
   // ∫ p_c V N_a dA per node and its gradient in (ĉ, γ̂x, γ̂y): friction heat is f times it.
   std::vector<double> contact_power;
   std::vector<std::array<double, 3>> contact_power_rigid;

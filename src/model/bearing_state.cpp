@@ -5,6 +5,8 @@
 
 #include "model/limit_thresholds.h"
 #include "model/assembly_totals.h"
+#include "model/film_point.h"
+#include "model/located_maximum.h"
 
 namespace twb {
 
@@ -55,6 +57,7 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   const double t0 = scene_.operating.ambient;
   s.washer_mean_temperature = t0;
   s.max_film_temperature = t0;
+  s.oil_peak_temperature = t0;
   double mean_visc_t = 0.0, area_sum = 0.0;
   const FilmMesh& m = film.mesh;
   for (int i = 0; i < m.radial_nodes(); ++i)
@@ -63,10 +66,26 @@ BearingState BearingModel::describe(std::span<const double> u) const {
       area_sum += m.node_area(i);
     }
   mean_visc_t /= area_sum;
+  // The oil's peak and the asperities' hottest contact, located between the nodes
+  // (docs/physics.md section 8).
+  const FilmPointReader points(*this, u, t.film);
   if (scene_.effects.thermal) {
     for (const Film& f : films_)
       for (int n = 0; n < f.mesh.node_count(); ++n)
         s.max_film_temperature = std::max(s.max_film_temperature, temperature_of(u, f.temperature_row(n)));
+    s.oil_peak_temperature =
+        locate_maximum(
+            films_, [&](const Film& f, double r, double theta) { return points.at(f, r, theta).film_temperature; },
+            [](const Film&) { return true; })
+            .value;
+  }
+  if (contact_)
+    s.contact_temperature =
+        locate_maximum(
+            films_, [&](const Film& f, double r, double theta) { return points.at(f, r, theta).contact_temperature; },
+            [](const Film& f) { return f.sliding; })
+            .value;
+  if (scene_.effects.thermal) {
     for (const ComponentHeat& comp : components_) {
       double sum = 0, area = 0, loss = 0;
       const int nt = comp.axisymmetric ? 1 : comp.grid.circumferential_nodes();

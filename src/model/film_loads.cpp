@@ -248,6 +248,7 @@ void FilmLoadsEffect::add_film(std::span<const double> u, const Film& film, Asse
   if (film.sliding) {
     tot.contact_power.assign(m.node_count(), 0.0);
     tot.contact_power_rigid.assign(m.node_count(), {0.0, 0.0, 0.0});
+    tot.viscous_power.assign(m.node_count(), 0.0);
   }
   for (int i = 0; i < m.radial_nodes() - 1; ++i) {
     for (int j = 0; j < m.circumferential_nodes(); ++j) {
@@ -261,6 +262,8 @@ void FilmLoadsEffect::add_film(std::span<const double> u, const Film& film, Asse
           for (int l = 0; l < 4; ++l) tot.contact_power_shape.push_back({cell.node[n], cell.node[l], loads.power_shape[n][l]});
       pass.fluid_on_cell(cell, loads, tot);
       pass.scatter(cell, loads, a);
+      if (film.sliding)
+        for (int k = 0; k < 4; ++k) tot.viscous_power[std::size_t(cell.node[k])] += loads.vheat[k];
     }
   }
   if (film.sliding) pass.friction(tot, a);

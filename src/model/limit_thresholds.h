@@ -14,7 +14,7 @@ namespace twb {
 
 struct OperatingLimits {
   double max_oil_temperature = 0.0;  // K
-  double flash_temperature = 0.0;    // K
+  double flash_point = 0.0;          // K, the oil's (lubricant.flash_temperature)
   double hardness = 0.0;             // Pa, the softer face's; 0: no contact model
   double least_film = 0.5;           // h_min/σ
   bool statistical = true;           // a statistical model (contact, flow factors) is on
@@ -26,17 +26,20 @@ struct OperatingLimits {
   // (rad/s) into its PV: the washer's area and mean radius.
   std::optional<double> pv_limit;
   double washer_area = 0.0, mean_radius = 0.0;  // m², m
+  // The critical scuffing temperature (K), where the contact model is on.
+  std::optional<double> scuffing_temperature;
   static OperatingLimits of(const Scene& scene);
 };
 
 
 // The state's values against the limits (SI), in LimitKind order; empty when none.
 struct LimitValues {
-  double washer_mean_temperature = 0.0, max_film_temperature = 0.0, max_contact_pressure = 0.0;
+  double washer_mean_temperature = 0.0, oil_peak_temperature = 0.0, max_contact_pressure = 0.0;
   double hmin_over_sigma = 0.0;
   bool thermal = false;
   std::array<double, 3> body_temperature{};  // K: carrier, washer, gear hottest faces
   double contact_force = 0.0, speed = 0.0;   // N, the sliding film's; rad/s
+  std::optional<double> contact_temperature;  // K, the asperities' hottest contact
   static LimitValues of(const BearingState& state, bool thermal);
   // The sliding face's PV: the contact force over the washer's area times the sliding
   // speed at its mean radius (docs/physics.md section 8).
@@ -48,5 +51,7 @@ std::vector<LimitExcess> exceeded_limits(const LimitValues& values, const Operat
 // or h_min/σ): positive within it, zero on it, negative past it; none where the scene does
 // not apply the criterion (no thermal effect, no material limit, no least film).
 std::optional<double> failure_margin(LimitKind kind, const LimitValues& values, const OperatingLimits& limits);
+// Whether the scene applies a criterion at all: its margin exists for some state.
+bool criterion_applies(LimitKind kind, const OperatingLimits& limits, bool thermal);
 
 }  // namespace twb

@@ -22,7 +22,7 @@ constexpr double kHardnessOverYield = 2.84;
 OperatingLimits OperatingLimits::of(const Scene& scene) {
   OperatingLimits l;
   l.max_oil_temperature = scene.lubricant.max_temperature;
-  l.flash_temperature = scene.lubricant.flash_temperature;
+  l.flash_point = scene.lubricant.flash_temperature;
   if (scene.effects.asperity_contact) {
     // Every face takes contact somewhere: the softest one yields first.
     const double softest = std::min({scene.carrier.material.yield_strength, scene.washer.material.yield_strength,
@@ -34,6 +34,7 @@ OperatingLimits OperatingLimits::of(const Scene& scene) {
                             scene.gear.material.max_temperature};
   l.min_film_ratio = scene.limits.min_film_ratio;
   l.pv_limit = scene.washer.material.pv_limit;
+  if (scene.effects.asperity_contact) l.scuffing_temperature = scene.limits.scuffing_temperature;
   const double ri = scene.washer.inner_radius, ro = scene.washer.outer_radius;
   l.washer_area = std::numbers::pi * (ro * ro - ri * ri);
   l.mean_radius = 0.5 * (ri + ro);
@@ -46,13 +47,14 @@ double LimitValues::pv(const OperatingLimits& limits) const {
 
 LimitValues LimitValues::of(const BearingState& s, bool thermal) {
   return {s.washer_mean_temperature,
-          s.max_film_temperature,
+          s.oil_peak_temperature,
           s.max_contact_pressure,
           s.hmin_over_sigma,
           thermal,
           {s.carrier_max_temperature, s.washer_max_temperature, s.gear_max_temperature},
           s.contact_force,
-          s.speed};
+          s.speed,
+          s.contact_temperature};
 }
 
 namespace {
@@ -80,26 +82,36 @@ std::optional<double> failure_margin(LimitKind kind, const LimitValues& v, const
     case LimitKind::oil_temperature:
       if (!v.thermal) return std::nullopt;
       return l.max_oil_temperature - v.washer_mean_temperature;
-    case LimitKind::flash_temperature:
+    case LimitKind::oil_peak_temperature:
       if (!v.thermal) return std::nullopt;
-      return l.flash_temperature - v.max_film_temperature;
+      return l.flash_point - v.oil_peak_temperature;
     case LimitKind::film_ratio:
       if (!l.min_film_ratio) return std::nullopt;
       return v.hmin_over_sigma - *l.min_film_ratio;
     case LimitKind::pv:
       if (!l.pv_limit) return std::nullopt;
       return *l.pv_limit - v.pv(l);
+    case LimitKind::scuffing:
+      if (!l.scuffing_temperature || !v.contact_temperature) return std::nullopt;
+      return *l.scuffing_temperature - *v.contact_temperature;
     default:
       return std::nullopt;
   }
+}
+
+bool criterion_applies(LimitKind kind, const OperatingLimits& limits, bool thermal) {
+  LimitValues any;
+  any.thermal = thermal;
+  any.contact_temperature = 0.0;  // every state has one where the contact model is on
+  return failure_margin(kind, any, limits).has_value();
 }
 
 std::vector<LimitExcess> exceeded_limits(const LimitValues& v, const OperatingLimits& l) {
   std::vector<LimitExcess> out;
   if (v.thermal && v.washer_mean_temperature > l.max_oil_temperature)
     out.push_back({LimitKind::oil_temperature, v.washer_mean_temperature, l.max_oil_temperature});
-  if (v.thermal && v.max_film_temperature > l.flash_temperature)
-    out.push_back({LimitKind::flash_temperature, v.max_film_temperature, l.flash_temperature});
+  if (v.thermal && v.oil_peak_temperature > l.flash_point)
+    out.push_back({LimitKind::oil_peak_temperature, v.oil_peak_temperature, l.flash_point});
   if (l.hardness > 0 && v.max_contact_pressure > l.hardness)
     out.push_back({LimitKind::contact_pressure, v.max_contact_pressure, l.hardness});
   if (l.statistical && v.hmin_over_sigma < l.least_film)
@@ -112,13 +124,15 @@ std::vector<LimitExcess> exceeded_limits(const LimitValues& v, const OperatingLi
   if (l.min_film_ratio && v.hmin_over_sigma < *l.min_film_ratio)
     out.push_back({LimitKind::film_ratio, v.hmin_over_sigma, *l.min_film_ratio});
   if (l.pv_limit && v.pv(l) > *l.pv_limit) out.push_back({LimitKind::pv, v.pv(l), *l.pv_limit});
+  if (l.scuffing_temperature && v.contact_temperature && *v.contact_temperature > *l.scuffing_temperature)
+    out.push_back({LimitKind::scuffing, *v.contact_temperature, *l.scuffing_temperature});
   return out;
 }
 
 std::string_view limit_name(LimitKind kind) {
   switch (kind) {
     case LimitKind::oil_temperature: return "oil_temperature";
-    case LimitKind::flash_temperature: return "flash_temperature";
+    case LimitKind::oil_peak_temperature: return "oil_peak_temperature";
     case LimitKind::contact_pressure: return "contact_pressure";
     case LimitKind::film_below_statistics: return "film_below_statistics";
     case LimitKind::carrier_temperature: return "material_temperature:carrier";
@@ -126,6 +140,7 @@ std::string_view limit_name(LimitKind kind) {
     case LimitKind::gear_temperature: return "material_temperature:gear";
     case LimitKind::film_ratio: return "film_ratio";
     case LimitKind::pv: return "pv";
+    case LimitKind::scuffing: return "scuffing";
   }
   return "?";
 }
@@ -133,7 +148,7 @@ std::string_view limit_name(LimitKind kind) {
 std::string_view criterion_phrase(LimitKind kind) {
   switch (kind) {
     case LimitKind::oil_temperature: return "the oil's maximum temperature";
-    case LimitKind::flash_temperature: return "the flash temperature";
+    case LimitKind::oil_peak_temperature: return "the oil's peak temperature";
     case LimitKind::contact_pressure: return "the contact pressure";
     case LimitKind::film_below_statistics: return "the statistical models' least film";
     case LimitKind::carrier_temperature: return "the carrier's material temperature";
@@ -141,6 +156,7 @@ std::string_view criterion_phrase(LimitKind kind) {
     case LimitKind::gear_temperature: return "the gear's material temperature";
     case LimitKind::film_ratio: return "the least film ratio";
     case LimitKind::pv: return "the washer's PV limit";
+    case LimitKind::scuffing: return "scuffing";
   }
   return "?";
 }
@@ -151,8 +167,8 @@ std::string describe_limit(const LimitExcess& e) {
       return fmt::format("the washer's mean temperature {:.0f} degC is above the oil's maximum {:.0f} degC "
                          "(lubricant.max_temperature)",
                          e.value - kCelsius, e.limit - kCelsius);
-    case LimitKind::flash_temperature:
-      return fmt::format("the film (flash) temperature {:.0f} degC is above the oil's flash point {:.0f} degC "
+    case LimitKind::oil_peak_temperature:
+      return fmt::format("the oil's peak temperature {:.0f} degC is above its flash point {:.0f} degC "
                          "(lubricant.flash_temperature)",
                          e.value - kCelsius, e.limit - kCelsius);
     case LimitKind::contact_pressure:
@@ -177,6 +193,10 @@ std::string describe_limit(const LimitExcess& e) {
       return fmt::format("the sliding face's PV {:.3g} MPa m/s (mean contact pressure times sliding speed) is above "
                          "the washer's limit {:.3g} MPa m/s (materials.washer.pv_limit)",
                          1e-6 * e.value, 1e-6 * e.limit);
+    case LimitKind::scuffing:
+      return fmt::format("the asperities' contact temperature {:.0f} degC (the faces' plus Blok's flash temperature) "
+                         "is above the pair's scuffing temperature {:.0f} degC (limits.scuffing_temperature)",
+                         e.value - kCelsius, e.limit - kCelsius);
   }
   return {};
 }

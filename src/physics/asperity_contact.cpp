@@ -55,4 +55,12 @@ double JacksonGreenAsperity::force(double interference) const {
   return critical_force_ * ratio;
 }
 
+double JacksonGreenAsperity::contact_area(double interference) const {
+  if (interference <= 0.0) return 0.0;
+  const double w = interference / critical_interference_;
+  const double hertz = std::numbers::pi * summit_radius_ * interference;
+  if (w <= transition_interference_ratio) return hertz;
+  return hertz * std::exp(hardness_exponent_ * (std::log(w) - log_transition_ratio_));
+}
+
 }  // namespace twb

@@ -25,6 +25,11 @@ class JacksonGreenAsperity {
   // for steel. Statistical integrals split there.
   double force(double interference) const;
 
+  // Contact area (m²) at interference omega (m), Jackson and Green (2005): Hertz's π R ω
+  // while elastic (omega* <= 1.9), π R ω (omega*/1.9)^B beyond, the B of eq [10] (the
+  // contact radius of eq [10] is its root over π); 0 for omega <= 0.
+  double contact_area(double interference) const;
+
   double critical_interference() const { return critical_interference_; }  // omega_c, m
   double critical_force() const { return critical_force_; }                // P_c, N
   double c_factor() const { return c_factor_; }            // C = 1.295 exp(0.736 nu)

@@ -67,6 +67,19 @@ class StatisticalContact {
   // JG transition w = 1.9 omega_c and at the Gaussian peak. For tests and table building.
   ValueSlope pressure_by_quadrature(double h) const;
 
+  // The summits in contact at gap h, per unit of nominal area (docs/physics.md section 8,
+  // scuffing): their number n = η·Q(d/σs) (Q the normal tail) and their real area
+  // A_r = η ∫ A(z − d) φ(z) dz, a fraction of the nominal area, A the JG contact area
+  // (asperity_contact.h). A_r from a table of ln A_r as ln p's (8 nodes per σs: relative
+  // error below 1e-7), continued outside it as ln p is.
+  struct SummitContacts {
+    double count = 0.0;          // 1/m²
+    double area_fraction = 0.0;  // A_r/A
+  };
+  SummitContacts contacts(double h) const;
+  // A_r and dA_r/dh by direct adaptive quadrature: for tests and the table.
+  ValueSlope real_area_by_quadrature(double h) const;
+
   // Max relative error |p_table - p_quad|/p_quad over the checked intervals (every 7th
   // by default, see StatisticalContactTableOptions), measured at construction at each
   // interval's midpoint, where the cubic-Hermite value error peaks. The slope bound is
@@ -92,12 +105,18 @@ class StatisticalContact {
   double summit_sigma_;
   double mean_summit_offset_;
   UniformHermiteTable table_;
+  UniformHermiteTable area_table_;  // ln A_r(h)
   double table_error_bound_ = 0.0;
   double table_slope_error_bound_ = 0.0;
   double cutoff_gap_ = 0.0;
 
   ValueSlope pressure_off_table(double h) const;  // the continuations of ln p
   void build_table(const StatisticalContactTableOptions& options);
+  void build_area_table(const StatisticalContactTableOptions& options);
+  // η ∫ law(w) φ(w + d) dw and its slope in h, for a summit law (force or area) that is 0
+  // at w = 0, grows as w^1.5 or w there, and changes its form at the JG transition.
+  template <class Law>
+  ValueSlope summit_integral(Law law, double h) const;
   double find_cutoff_gap(double relative_level) const;
 };
 

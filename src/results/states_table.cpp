@@ -21,7 +21,9 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::vector
   using Style = ResultColumn::Style;
   const auto load = t.number("load_N"), speed = t.number("speed_rad_s");
   const cells::RunColumns run(t, parameter_columns, sliding_column);
-  const auto t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"), t_carrier = t.number("T_carrier_max_C"),
+  const auto t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"), t_peak = t.number("T_oil_peak_C"),
+             t_contact = t.number("T_contact_max_C"),
+             t_carrier = t.number("T_carrier_max_C"),
              t_washer = t.number("T_washer_max_C"), t_gear = t.number("T_gear_max_C"), hmin = t.number("hmin_over_sigma"),
              gx = t.number("gamma_x_ratio"), gy = t.number("gamma_y_ratio"), fluid = t.number("fluid_share"),
              contact = t.number("contact_share"), torque = t.number("torque_Nm"), f_eff = t.number("f_eff"),
@@ -54,6 +56,9 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::vector
     run.put(t, r.parameters, r.sliding);
     t.put_number(t_mean, s.washer_mean_temperature - kelvin_offset);
     t.put_number(t_max, s.max_film_temperature - kelvin_offset);
+    t.put_number(t_peak, s.oil_peak_temperature - kelvin_offset);
+    t.put_number(t_contact, s.contact_temperature ? std::optional<double>(*s.contact_temperature - kelvin_offset)
+                                                  : std::nullopt);
     t.put_number(t_carrier, s.carrier_max_temperature - kelvin_offset);
     t.put_number(t_washer, s.washer_max_temperature - kelvin_offset);
     t.put_number(t_gear, s.gear_max_temperature - kelvin_offset);
@@ -92,8 +97,8 @@ ResultTable states_table(const std::vector<SolvedState>& rows, const std::vector
 }
 
 std::vector<double> mesh_error_quantities(const BearingState& s) {
-  return {s.washer_mean_temperature - kelvin_offset, s.max_film_temperature - kelvin_offset, s.hmin_over_sigma,
-          s.torque, s.f_eff};
+  return {s.washer_mean_temperature - kelvin_offset, s.max_film_temperature - kelvin_offset,
+          s.oil_peak_temperature - kelvin_offset, s.hmin_over_sigma, s.torque, s.f_eff};
 }
 
 std::string states_csv(const std::vector<SolvedState>& rows, const std::vector<std::string>& parameter_columns,

@@ -183,9 +183,11 @@ void read_operating(const MapReader& scene, Scene& out) {
 
 // limits: failure criteria besides the temperatures of the oil and the materials.
 void read_limits(const MapReader& scene, Scene& out) {
-  const MapReader limits = scene.map("limits", {"min_film_ratio"});
+  const MapReader limits = scene.map("limits", {"min_film_ratio", "scuffing_temperature"});
   if (limits.has("min_film_ratio"))
     out.limits.min_film_ratio = limits.quantity("min_film_ratio", si::dimensionless, bounds::film_ratio);
+  out.limits.scuffing_temperature = limits.quantity("scuffing_temperature", si::temperature,
+                                                    bounds::absolute_temperature, out.limits.scuffing_temperature);
 }
 
 void read_friction(const MapReader& scene, Scene& out) {

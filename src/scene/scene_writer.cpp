@@ -174,10 +174,9 @@ void write_operation(Writer& w, const Scene& s) {
     w.entry(2, "value", quantity(l.constant_viscosity, "Pa s"));
   }
 
-  if (s.limits.min_film_ratio) {
-    w.line(0, "limits:");
-    w.entry(1, "min_film_ratio", quantity(*s.limits.min_film_ratio, "1"));
-  }
+  w.line(0, "limits:");
+  if (s.limits.min_film_ratio) w.entry(1, "min_film_ratio", quantity(*s.limits.min_film_ratio, "1"));
+  w.entry(1, "scuffing_temperature", quantity(s.limits.scuffing_temperature, "K"));
 
   const Operating& o = s.operating;
   w.line(0, "operating:");

@@ -107,9 +107,8 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   const OperatingLimits limits = OperatingLimits::of(model.scene());
   auto needs_other_end = [&](const DistressSearch& found) {
     if (!(found.fold && found.row.distress_load)) return true;
-    const LimitValues values{.thermal = model.scene().effects.thermal};
     for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
-      if (failure_margin(kFailureCriteria[c], values, limits) &&
+      if (criterion_applies(kFailureCriteria[c], limits, model.scene().effects.thermal) &&
           (c >= found.crossing_states.size() || found.crossing_states[c].second.empty()))
         return true;
     return false;

@@ -45,7 +45,8 @@ std::optional<double> allowance(LimitKind kind, const OperatingLimits& limits, d
   if (kind == LimitKind::film_ratio) return limits.min_film_ratio;
   LimitValues rest;
   rest.thermal = true;
-  rest.washer_mean_temperature = rest.max_film_temperature = ambient;
+  rest.washer_mean_temperature = rest.oil_peak_temperature = ambient;
+  rest.contact_temperature = ambient;  // nothing slides: no flash
   rest.body_temperature.fill(ambient);  // (and no contact force at no speed: no PV)
   return failure_margin(kind, rest, limits);
 }

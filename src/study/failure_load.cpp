@@ -205,7 +205,7 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
   };
   for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
     const LimitKind kind = kFailureCriteria[c];
-    if (!failure_margin(kind, LimitValues{.thermal = thermal}, limits)) continue;  // not applied
+    if (!criterion_applies(kind, limits, thermal)) continue;
     std::optional<double> previous;
     for (std::size_t k = 0; k < branch.size(); ++k) {
       const std::optional<double> m = failure_margin(kind, values_at(k), limits);

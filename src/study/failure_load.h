@@ -59,7 +59,7 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
                                     KinsolNewton* corrector = nullptr, BearingState* described = nullptr,
                                     bool load_only = false);
 
-// "fails at 307.6 N by the flash temperature (no thermo-viscous distress up to 4000 N)":
+// "fails at 307.6 N by the oil's peak temperature (no thermo-viscous distress up to 4000 N)":
 // the sentence of a row whose failure fields are set.
 std::string failure_sentence(const DistressRow& row, double load_end);
 // The same with the mesh-converged W_fail first, where the row has it: "fails at 202.8 ±

@@ -20,13 +20,13 @@ namespace fs = std::filesystem;
 // A field added to a state must be journaled too, or a resumed run would write it as
 // zero: the size fails to compile until fields_of_state is extended (the other structs'
 // sizes are in kMagic, so an entry of another layout is never read).
-static_assert(sizeof(BearingState) == 8 * 30 + 2 * sizeof(std::optional<double>) + sizeof(std::optional<FilmFlows>) +
+static_assert(sizeof(BearingState) == 8 * 31 + 3 * sizeof(std::optional<double>) + sizeof(std::optional<FilmFlows>) +
                   sizeof(std::vector<LimitExcess>),
               "journal every BearingState field (search_journal.cpp)");
 
 // The format, the program's version and the journaled structs' layout: an entry written
 // by another build is not read (its search runs again) rather than misread.
-const std::string kMagic = fmt::format("twb-search-journal 9 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
+const std::string kMagic = fmt::format("twb-search-journal 10 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
                                        sizeof(SolvedState), sizeof(DistressRow), sizeof(TrajectorySample),
                                        sizeof(SearchCounts));
 
@@ -48,12 +48,13 @@ void fields_of_limit(A& a, S& e) {
 }
 template <class A, class S>
 void fields_of_state(A& a, S& s) {
-  a(s.load), a(s.speed), a(s.washer_mean_temperature), a(s.max_film_temperature), a(s.hmin_over_sigma);
+  a(s.load), a(s.speed), a(s.washer_mean_temperature), a(s.max_film_temperature), a(s.oil_peak_temperature);
+  a(s.hmin_over_sigma);
   a(s.carrier_max_temperature), a(s.washer_max_temperature), a(s.gear_max_temperature);
   a(s.gamma_x_ratio), a(s.gamma_y_ratio), a(s.fluid_force), a(s.contact_force), a(s.fluid_share), a(s.stop_reaction);
   a(s.contact_share), a(s.torque), a(s.f_eff), a(s.stribeck), a(s.friction_coefficient), a(s.friction_clamped);
   a(s.heat_generated), a(s.heat_to_ambient), a(s.energy_error), a(s.heat_carried), a(s.force_balance_error);
-  a(s.moment_balance_error), a(s.complementarity_error), a(s.max_contact_pressure);
+  a(s.moment_balance_error), a(s.complementarity_error), a(s.max_contact_pressure), a(s.contact_temperature);
   a(s.position.c1), a(s.position.gamma_x), a(s.position.gamma_y), a(s.position.c2), a(s.flows), a(s.limits);
 }
 template <class A, class S>

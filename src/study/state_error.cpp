@@ -20,7 +20,7 @@ constexpr double kRefinedSettling = 1e-3;
 // How far a state's quantity k is from its extrapolation, relative: temperatures count
 // from the ambient (their error relative to the rise).
 double relative_offset(const Scene& scene, std::size_t k, double coarse, double extrapolated) {
-  const double zero = k < 2 ? scene.operating.ambient - 273.15 : 0.0;
+  const double zero = k < kMeshErrorTemperatures ? scene.operating.ambient - 273.15 : 0.0;
   return std::abs(coarse - extrapolated) / std::max(std::abs(extrapolated - zero), 1e-300);
 }
 

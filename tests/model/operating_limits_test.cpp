@@ -22,14 +22,20 @@ bool has(const std::vector<LimitExcess>& limits, LimitKind kind) {
 TEST(OperatingLimits, EachIsExceededOnlyAboveItsThreshold) {
   OperatingLimits l;
   l.max_oil_temperature = 423.15;
-  l.flash_temperature = 453.15;
+  l.flash_point = 453.15;
   l.hardness = 1e9;
-  LimitValues at{423.15, 453.15, 1e9, 0.5, true};
+  const auto values = [](double mean, double peak, double pressure, double film) {
+    LimitValues v;
+    v.washer_mean_temperature = mean, v.oil_peak_temperature = peak, v.max_contact_pressure = pressure;
+    v.hmin_over_sigma = film, v.thermal = true;
+    return v;
+  };
+  LimitValues at = values(423.15, 453.15, 1e9, 0.5);
   EXPECT_TRUE(exceeded_limits(at, l).empty()) << "a value at its limit is within it";
-  LimitValues past{423.16, 453.16, 1.0001e9, 0.4999, true};
+  LimitValues past = values(423.16, 453.16, 1.0001e9, 0.4999);
   const std::vector<LimitExcess> all = exceeded_limits(past, l);
   ASSERT_EQ(all.size(), 4u);
-  EXPECT_EQ(limit_names(all), "oil_temperature;flash_temperature;contact_pressure;film_below_statistics");
+  EXPECT_EQ(limit_names(all), "oil_temperature;oil_peak_temperature;contact_pressure;film_below_statistics");
   EXPECT_DOUBLE_EQ(all[2].value, 1.0001e9);
   EXPECT_DOUBLE_EQ(all[2].limit, 1e9);
   // Without the thermal effect every temperature is the ambient by construction, and
@@ -68,6 +74,30 @@ TEST(OperatingLimits, ThePVOfTheSlidingFaceAgainstTheWashersLimit) {
   EXPECT_FALSE(failure_margin(LimitKind::pv, v, OperatingLimits::of(scene)));
 }
 
+// Scuffing (physics §8): the asperities' hottest contact against the pair's scuffing
+// temperature, applied wherever the contact model is on (its default 224 degC), and not
+// without it; a state without contacts has no contact temperature and no margin.
+TEST(OperatingLimits, ScuffingIsTheContactTemperatureAgainstThePairs) {
+  Scene scene = testing::table1_scene(true, true, true, true, 545.0, 100.0);
+  const OperatingLimits l = OperatingLimits::of(scene);
+  ASSERT_TRUE(l.scuffing_temperature);
+  EXPECT_DOUBLE_EQ(*l.scuffing_temperature, 497.15);
+  EXPECT_TRUE(criterion_applies(LimitKind::scuffing, l, true));
+  LimitValues v;
+  v.contact_temperature = 497.15;
+  EXPECT_DOUBLE_EQ(*failure_margin(LimitKind::scuffing, v, l), 0.0);
+  EXPECT_FALSE(has(exceeded_limits(v, l), LimitKind::scuffing)) << "a value at its limit is within it";
+  v.contact_temperature = 500.0;
+  const std::vector<LimitExcess> past = exceeded_limits(v, l);
+  ASSERT_TRUE(has(past, LimitKind::scuffing));
+  EXPECT_NE(describe_limit(past.back()).find("limits.scuffing_temperature"), std::string::npos);
+  EXPECT_EQ(failure_names(past), "scuffing");
+  v.contact_temperature.reset();
+  EXPECT_FALSE(failure_margin(LimitKind::scuffing, v, l));
+  scene.effects.asperity_contact = false;
+  EXPECT_FALSE(criterion_applies(LimitKind::scuffing, OperatingLimits::of(scene), true));
+}
+
 TEST(OperatingLimits, HardnessIsThatOfTheSoftestFace) {
   Scene s = testing::table1_scene(true, true, true, true);
   s.washer.material.yield_strength = 400e6;
@@ -96,7 +126,7 @@ TEST(OperatingLimits, ThePapersBearingExceedsTheOilsLimitsOnlyOnItsHotBranch) {
   EXPECT_TRUE(cool.limits.empty()) << limit_names(cool.limits);
   const BearingState hot = solved(testing::table1_scene(true, true, true, true, 545.0, 500.0));
   EXPECT_TRUE(has(hot.limits, LimitKind::oil_temperature)) << limit_names(hot.limits);
-  EXPECT_TRUE(has(hot.limits, LimitKind::flash_temperature)) << limit_names(hot.limits);
+  EXPECT_TRUE(has(hot.limits, LimitKind::oil_peak_temperature)) << limit_names(hot.limits);
 }
 
 // At rest under a heavy load the washer sits on its summits: the film closes below the

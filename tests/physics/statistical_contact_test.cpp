@@ -234,3 +234,40 @@ TEST(StatisticalContact, BatchPressureEqualsScalarOnAndOffTheTable) {
 }
 
 }  // namespace
+
+// The summits in contact (scuffing, docs/physics.md section 8): the real area from its
+// table against the direct quadrature (the table's Hermite error at 8 nodes per σs is
+// below 1e-7 of A_r; 1e-6 allows for where the two differ most, far above the table),
+// and the count the Gaussian tail of the summit heights above the separation.
+TEST(StatisticalContact, SummitContactsFromTheirTableAndTheirTail) {
+  const twb::StatisticalContact& c = contact();
+  for (double h_sigmas : {-2.0, -0.5, 0.0, 0.7, 1.5, 3.0, 5.0}) {
+    const double h = h_sigmas * summit_sigma;
+    const auto summits = c.contacts(h);
+    const double exact = c.real_area_by_quadrature(h).value;
+    EXPECT_NEAR(summits.area_fraction, exact, 1e-6 * exact) << h_sigmas;
+    const double d = (h - c.mean_summit_offset()) / summit_sigma;
+    EXPECT_NEAR(summits.count, default_density() * 0.5 * std::erfc(d / std::numbers::sqrt2),
+                1e-12 * summits.count);
+    // The mean contact: area over count, a radius below the summit's own.
+    const double radius = std::sqrt(summits.area_fraction / (std::numbers::pi * summits.count));
+    EXPECT_GT(radius, 0.0);
+    EXPECT_LT(radius, summit_radius) << h_sigmas;
+  }
+}
+
+// The JG contact area: Hertz's π R ω while elastic; beyond, the radius eq [10] gives,
+// a/R = (π C e_y/2)·sqrt(ω*)·(ω*/1.9)^(B/2), written here from the paper's symbols.
+TEST(JacksonGreenAsperity, ContactAreaIsHertzsThenEquationTen) {
+  const twb::JacksonGreenAsperity a = table1_asperity();
+  const double wc = a.critical_interference();
+  EXPECT_NEAR(a.contact_area(1.2 * wc), std::numbers::pi * summit_radius * 1.2 * wc, 1e-12 * summit_radius * wc);
+  const double e_y = a.yield_strength() / a.effective_modulus();
+  const double b = 0.14 * std::exp(23.0 * e_y);
+  for (double w : {1.9, 3.0, 10.0, 60.0}) {
+    const double a_over_r = std::numbers::pi * a.c_factor() * e_y / 2.0 * std::sqrt(w) * std::pow(w / 1.9, b / 2.0);
+    const double radius = std::sqrt(a.contact_area(w * wc) / std::numbers::pi);
+    EXPECT_NEAR(radius / summit_radius, a_over_r, 1e-12 * a_over_r) << w;
+  }
+  EXPECT_EQ(a.contact_area(0.0), 0.0);
+}

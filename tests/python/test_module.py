@@ -224,8 +224,8 @@ class Scenes(unittest.TestCase):
         self.assertTrue(any(line.startswith("distress at ") for line in r.summary), r.summary)
         failure = [line for line in r.summary if line.startswith("failure at ")]
         self.assertEqual(len(failure), 1, r.summary)
-        self.assertIn("by the flash temperature", failure[0])
-        self.assertEqual(list(r.distress["criterion"]), ["flash_temperature"])
+        self.assertIn("by the oil's peak temperature", failure[0])
+        self.assertEqual(list(r.distress["criterion"]), ["oil_peak_temperature"])
 
     def test_reliability_tables(self):
         """A reliability study's answers reach Python as its tables: FORM's probability and

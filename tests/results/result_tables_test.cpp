@@ -16,13 +16,15 @@ namespace {
 
 // Every failure criterion's load, in kFailureCriteria order.
 #define kCriteria                                                                                         \
-  "W_oil_temperature_N,W_flash_temperature_N,W_material_temperature_carrier_N,W_material_temperature_washer_N," \
-  "W_material_temperature_gear_N,W_film_ratio_N,W_pv_N,W_oil_temperature_error_N,W_flash_temperature_error_N," \
+  "W_oil_temperature_N,W_oil_peak_temperature_N,W_material_temperature_carrier_N,W_material_temperature_washer_N," \
+  "W_material_temperature_gear_N,W_film_ratio_N,W_pv_N,W_scuffing_N,W_oil_temperature_error_N,"                \
+  "W_oil_peak_temperature_error_N," \
   "W_material_temperature_carrier_error_N,W_material_temperature_washer_error_N,"                               \
-  "W_material_temperature_gear_error_N,W_film_ratio_error_N,W_pv_error_N,W_oil_temperature_extrapolated_N,"    \
-  "W_flash_temperature_extrapolated_N,W_material_temperature_carrier_extrapolated_N,"                          \
+  "W_material_temperature_gear_error_N,W_film_ratio_error_N,W_pv_error_N,W_scuffing_error_N,"                     \
+  "W_oil_temperature_extrapolated_N," \
+  "W_oil_peak_temperature_extrapolated_N,W_material_temperature_carrier_extrapolated_N,"                          \
   "W_material_temperature_washer_extrapolated_N,W_material_temperature_gear_extrapolated_N,"                   \
-  "W_film_ratio_extrapolated_N,W_pv_extrapolated_N,"
+  "W_film_ratio_extrapolated_N,W_pv_extrapolated_N,W_scuffing_extrapolated_N,"
 
 // How W_fail's and W_d's mesh-converged values were reached (study.tolerance).
 #define kFailConvergence "W_fail_meshes,W_fail_order,W_fail_tolerance_met,"
@@ -34,24 +36,24 @@ TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
   EXPECT_EQ(distress_csv({found, none}, {"friction_coefficient"}),
             "speed_rad_s,friction_coefficient,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N," kFailConvergence "W_d_N,bracket_low_N,bracket_high_N,fold_N,"
             "W_d_fine_N,W_d_extrapolated_N,W_d_error_N," kFoldConvergence kCriteria "failure,method\n"
-            "545,0.1,,,,,,,,185.25,185,185.5,185.3,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway; fold\n"
-            "136,0.2,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,not reached below 2000 N\n");
+            "545,0.1,,,,,,,,185.25,185,185.5,185.3,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway; fold\n"
+            "136,0.2,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,not reached below 2000 N\n");
   found.parameters.clear();
   EXPECT_EQ(distress_csv({found}, {}),
             "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N," kFailConvergence "W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
             "W_d_error_N," kFoldConvergence kCriteria "failure,method\n"
-            "545,,,,,,,,185.25,185,185.5,185.3,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway; fold\n");
+            "545,,,,,,,,185.25,185,185.5,185.3,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway; fold\n");
   found.fine_fold_load = 195.0;
   found.extrapolated_load = 198.25;
   found.discretization_error = 4.0625;
   found.failure_load = 185.25;
   found.criterion = FailureCriterion::thermo_viscous_distress();
-  found.criterion_loads[1] = 300.5;  // flash_temperature
+  found.criterion_loads[1] = 300.5;  // oil_peak_temperature
   found.failure = "fails at 185.25 N by thermo-viscous distress";
   EXPECT_EQ(distress_csv({found}, {}),
             "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N," kFailConvergence "W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
             "W_d_error_N," kFoldConvergence kCriteria "failure,method\n"
-            "545,185.25,distress,,,,,,185.25,185,185.5,185.3,195,198.25,4.0625,,,,300.5,,,,,,,,,,,,,,,,,,,,"
+            "545,185.25,distress,,,,,,185.25,185,185.5,185.3,195,198.25,4.0625,,,,300.5,,,,,,,,,,,,,,,,,,,,,,,"
             "fails at 185.25 N by thermo-viscous distress,runaway; fold\n");
 }
 
@@ -60,7 +62,7 @@ TEST(DistressTable, QuotesAMethodWithCommas) {
   EXPECT_EQ(distress_csv({row}, {}),
             "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N," kFailConvergence "W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
             "W_d_error_N," kFoldConvergence kCriteria "failure,method\n"
-            "545,,,,,,,,1,1,1,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"a, \"\"b\"\"\"\n");
+            "545,,,,,,,,1,1,1,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"a, \"\"b\"\"\"\n");
 }
 
 TEST(DistressTable, RefusesNaN) {
@@ -91,15 +93,15 @@ TEST(TrajectoryTable, ColumnsInCelsius) {
   s.ambient = 273.15 + 40.0;
   s.tilt = 0.002;
   s.least_margin = 0.25;
-  s.least_criterion = LimitKind::flash_temperature;
+  s.least_criterion = LimitKind::oil_peak_temperature;
   const std::string header =
       "t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,torque_Nm,fluid_share,regime,"
       "heat_generated_W,heat_to_ambient_W,ambient_C,tilt_rad,least_margin,least_margin_criterion,stop_reaction_N\n";
   EXPECT_EQ(trajectory_table({s}, {}, false, true).csv(),
-            header + "1.5,30,45,3.2,0.01,0.03,180,545,0.04,0.99,mixed,20,19.5,40,0.002,0.25,flash_temperature,\n");
+            header + "1.5,30,45,3.2,0.01,0.03,180,545,0.04,0.99,mixed,20,19.5,40,0.002,0.25,oil_peak_temperature,\n");
   s.state.stop_reaction = 0.5;
   EXPECT_EQ(trajectory_table({s}, {}, false, true).csv(),
-            header + "1.5,30,45,3.2,0.01,0.03,180,545,0.04,0.99,mixed,20,19.5,40,0.002,0.25,flash_temperature,0.5\n");
+            header + "1.5,30,45,3.2,0.01,0.03,180,545,0.04,0.99,mixed,20,19.5,40,0.002,0.25,oil_peak_temperature,0.5\n");
   s.state.f_eff = INFINITY;
   EXPECT_THROW(trajectory_csv({s}), std::runtime_error);
 }
@@ -124,13 +126,13 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   EXPECT_EQ(states.back(), '\n');
   EXPECT_EQ(states.substr(states.size() - 4), ",,,\n") << "empty branch, fails_by and limits cells";
   a.branch = Branch::hot;
-  a.state.limits = {{LimitKind::oil_temperature, 500.0, 423.15}, {LimitKind::flash_temperature, 900.0, 453.15}};
+  a.state.limits = {{LimitKind::oil_temperature, 500.0, 423.15}, {LimitKind::oil_peak_temperature, 900.0, 453.15}};
   const std::string hot = states_csv({a});
-  EXPECT_TRUE(hot.ends_with(",hot,oil_temperature;flash_temperature,oil_temperature;flash_temperature\n")) << hot;
+  EXPECT_TRUE(hot.ends_with(",hot,oil_temperature;oil_peak_temperature,oil_temperature;oil_peak_temperature\n")) << hot;
   // fails_by keeps the failure criteria only; limits has every limit.
   a.state.limits.push_back({LimitKind::contact_pressure, 3e9, 2.8e9});
-  EXPECT_TRUE(states_csv({a}).ends_with(",hot,oil_temperature;flash_temperature,"
-                                        "oil_temperature;flash_temperature;contact_pressure\n"));
+  EXPECT_TRUE(states_csv({a}).ends_with(",hot,oil_temperature;oil_peak_temperature,"
+                                        "oil_temperature;oil_peak_temperature;contact_pressure\n"));
   // A run without its parameter's value is a bug upstream: an empty cell, never NaN.
   a.parameters.clear();
   EXPECT_NE(states_csv({a}, {"friction_coefficient"}).find("\n150,545,,24,"), std::string::npos);
@@ -149,7 +151,7 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   EXPECT_EQ(distress_csv({row}, {}, true),
             "speed_rad_s,sliding,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N," kFailConvergence "W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,"
             "W_d_extrapolated_N,W_d_error_N," kFoldConvergence kCriteria "failure,method\n"
-            "953,washer_gear,,,,,,,,400,399,401,400.5,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway\n");
+            "953,washer_gear,,,,,,,,400,399,401,400.5,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway\n");
 }
 
 TEST(SlidingTable, OneRowPerConfigurationWithTheChoiceMarked) {

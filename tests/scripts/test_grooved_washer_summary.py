@@ -14,7 +14,7 @@ from result_files import write
 
 SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "grooved_washer_summary.py")
 
-DISTRESS_HEADER = "speed_rad_s,{}W_fail_N,criterion,W_d_N,W_oil_temperature_N,W_flash_temperature_N\n"
+DISTRESS_HEADER = "speed_rad_s,{}W_fail_N,criterion,W_d_N,W_oil_temperature_N,W_oil_peak_temperature_N\n"
 STATES = ("speed_rad_s,load_N,branch,T_mean_C,T_max_C,heat_carried_W,Q_supply_l_min\n"
           "545,50,cool,26,60,2,0.05\n"
           "545,150,cool,30,100,6,0.07\n"
@@ -40,17 +40,17 @@ class GroovedWasherSummary(unittest.TestCase):
 
     def test_variants_and_groove_maps_become_tables_and_figures(self):
         write(os.path.join(self.root, "fed_convection", "distress.csv"),
-              DISTRESS_HEADER.format("") + "545,122.5,flash_temperature,,802,122.5\n")
+              DISTRESS_HEADER.format("") + "545,122.5,oil_peak_temperature,,802,122.5\n")
         write(os.path.join(self.root, "fed_convection", "states.csv"), STATES)
         write(os.path.join(self.root, "groove_count", "distress.csv"),
               DISTRESS_HEADER.format("groove_count,") +
-              "545,3,131,flash_temperature,,900,131\n"
-              "545,12,73.2,flash_temperature,2981,1431,73.2\n")
+              "545,3,131,oil_peak_temperature,,900,131\n"
+              "545,12,73.2,oil_peak_temperature,2981,1431,73.2\n")
         run = self.run_script(self.root)
         self.assertEqual(run.returncode, 0, run.stderr)
         summary = rows(os.path.join(self.root, "summary.csv"))
         self.assertEqual(len(summary), 1)
-        self.assertEqual(summary[0]["criterion"], "flash_temperature")
+        self.assertEqual(summary[0]["criterion"], "oil_peak_temperature")
         # The washer's temperature at 100 N, between the cool states at 50 and 150 N.
         self.assertAlmostEqual(float(summary[0]["T_mean_C_at_100N"]), 28.0)
         grooves = rows(os.path.join(self.root, "groove_parameters.csv"))
@@ -63,7 +63,7 @@ class GroovedWasherSummary(unittest.TestCase):
 
     def test_without_groove_maps_there_is_no_groove_table(self):
         write(os.path.join(self.root, "flat", "distress.csv"),
-              DISTRESS_HEADER.format("") + "545,113,flash_temperature,,374,113\n")
+              DISTRESS_HEADER.format("") + "545,113,oil_peak_temperature,,374,113\n")
         write(os.path.join(self.root, "flat", "states.csv"), STATES)
         run = self.run_script(self.root)
         self.assertEqual(run.returncode, 0, run.stderr)

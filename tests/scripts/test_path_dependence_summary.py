@@ -35,8 +35,8 @@ class PathDependenceSummary(unittest.TestCase):
         runaway and its end where hot."""
         end = "76,318,1.37,0.61,0.165" if hot else "32.4,42.6,3.04,0.007,0.027"
         write(os.path.join(self.root, name, "trajectory.csv"),
-              TRAJECTORY + "0,31,34,6.2,0,0.04,100,400,0.03,1,full_film,18,18,24,0.002,0.93,flash_temperature\n"
-              f"240,{end},175,545,0.2,0.4,mixed,60,60,24,0.002,0.5,flash_temperature\n")
+              TRAJECTORY + "0,31,34,6.2,0,0.04,100,400,0.03,1,full_film,18,18,24,0.002,0.93,oil_peak_temperature\n"
+              f"240,{end},175,545,0.2,0.4,mixed,60,60,24,0.002,0.5,oil_peak_temperature\n")
         write(os.path.join(self.root, name, "cycle_events.csv"),
               EVENTS + ("26.5,runaway,,175,400,24,0.002,0.6,,\n54.6,settled,,175,400,24,0.002,-0.8,,\n" if hot else "")
               + "240,end,,175,545,24,0.002,0.5,,\n")

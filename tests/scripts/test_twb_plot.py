@@ -65,9 +65,9 @@ def trajectory_rows(tail=""):
 # distress.csv as twb writes it since every failure criterion is located, after the run's columns.
 DISTRESS_FAIL_TAIL = (
     "W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,bracket_high_N,fold_N,"
-    "W_d_fine_N,W_d_extrapolated_N,W_d_error_N,W_oil_temperature_N,W_flash_temperature_N,"
+    "W_d_fine_N,W_d_extrapolated_N,W_d_error_N,W_oil_temperature_N,W_oil_peak_temperature_N,"
     "W_material_temperature_carrier_N,W_material_temperature_washer_N,W_material_temperature_gear_N,"
-    "W_film_ratio_N,W_oil_temperature_error_N,W_flash_temperature_error_N,"
+    "W_film_ratio_N,W_oil_temperature_error_N,W_oil_peak_temperature_error_N,"
     "W_material_temperature_carrier_error_N,W_material_temperature_washer_error_N,"
     "W_material_temperature_gear_error_N,W_film_ratio_error_N,failure,method")
 
@@ -86,7 +86,7 @@ GRID_SPEEDS = (136, 545)
 def grid_distress(limited=(), unreached=()):
     """distress.csv of the grid: (header, rows, W_d by (speed, f, t)). W_d falls with the
     coefficient and the tilt and rises with the speed, each combination its own; a
-    combination in `limited` fails first by the flash temperature, 100 N below, with no
+    combination in `limited` fails first by the oil's peak temperature, 100 N below, with no
     W_d, one in `unreached` finds no failure up to 2000 N (both left out of W_d)."""
     header = f"speed_rad_s,{GRID_AXES},{DISTRESS_FAIL_TAIL}"
     w_d, rows = {}, []
@@ -97,9 +97,9 @@ def grid_distress(limited=(), unreached=()):
             if (f, t) in unreached:
                 cells["method"] = "no fold up to 2000 N (gradual heating)"
             elif (f, t) in limited:
-                cells.update({"W_fail_N": w - 100, "criterion": "flash_temperature",
-                              "W_flash_temperature_N": w - 100,
-                              "failure": f"fails at {w - 100} N by the flash temperature",
+                cells.update({"W_fail_N": w - 100, "criterion": "oil_peak_temperature",
+                              "W_oil_peak_temperature_N": w - 100,
+                              "failure": f"fails at {w - 100} N by the oil's peak temperature",
                               "method": "no fold up to 2000 N (gradual heating)"})
             else:
                 w_d[(speed, f, t)] = w
@@ -376,26 +376,26 @@ class TwbPlotTest(unittest.TestCase):
         gives the legends' speeds in rpm too."""
         fail = ("speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N,W_d_N,bracket_low_N,"
                 "bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,W_oil_temperature_N,"
-                "W_flash_temperature_N,W_material_temperature_carrier_N,W_material_temperature_washer_N,"
+                "W_oil_peak_temperature_N,W_material_temperature_carrier_N,W_material_temperature_washer_N,"
                 "W_material_temperature_gear_N,W_film_ratio_N,W_oil_temperature_error_N,"
-                "W_flash_temperature_error_N,W_material_temperature_carrier_error_N,"
+                "W_oil_peak_temperature_error_N,W_material_temperature_carrier_error_N,"
                 "W_material_temperature_washer_error_N,W_material_temperature_gear_error_N,W_film_ratio_error_N,"
                 "failure,method")
         d = self.results_dir(
             "failure",
             distress=[fail,
-                      "136,650,flash_temperature,655,3,,,,,,,,,650,,,,,,3,,,,,"
-                      "\"fails at 650.00 N by the flash temperature (no thermo-viscous distress up to 1300 N)\","
+                      "136,650,oil_peak_temperature,655,3,,,,,,,,,650,,,,,,3,,,,,"
+                      "\"fails at 650.00 N by the oil's peak temperature (no thermo-viscous distress up to 1300 N)\","
                       "no fold up to 1300 N (gradual heating)",
                       "545,188.4,distress,202,4.3,188.4,188.2,188.6,188.4,198.6,202,4.3,,,,,,,,,,,,,"
                       "fails at 188.40 N by thermo-viscous distress,runaway; fold at 188.4 N"])
         rows = tp.read_distress(os.path.join(d, "distress.csv"))
-        self.assertEqual([(r.failure, r.criterion) for r in rows], [(650.0, "flash_temperature"), (188.4, "distress")])
+        self.assertEqual([(r.failure, r.criterion) for r in rows], [(650.0, "oil_peak_temperature"), (188.4, "distress")])
         out_dir = os.path.join(self.tmp, "figs_failure")
         result = plot(d, "--out", out_dir, "--rpm")
         self.assertEqual(result.returncode, 0, result.stderr)
         text = self.svg_text(os.path.join(out_dir, "distress_map.svg"))
-        self.assertIn("flash temperature", text)
+        self.assertIn("oil's peak temperature", text)
         self.assertIn("a limit crossed first", text)
         text = self.svg_text(os.path.join(out_dir, "fig07_mean_temperature_vs_load.svg"))
         self.assertIn("failure load", text)
@@ -437,8 +437,8 @@ class TwbPlotTest(unittest.TestCase):
         curve = [f"speed_rad_s,W_fold_N,fold,{tail}",
                  "600,424.3,distress,90,180,2.7,0.014,0.028",
                  "433,348.5,cusp,95,190,2.5,0.02,0.03",
-                 "100,296.8,flash_temperature,85,180,4.2,0.0,0.02",
-                 "430,346.5,flash_temperature,95,180,2.6,0.02,0.03",
+                 "100,296.8,oil_peak_temperature,85,180,4.2,0.0,0.02",
+                 "430,346.5,oil_peak_temperature,95,180,2.6,0.02,0.03",
                  "100,683.9,material_temperature:washer,110,300,1.5,0.1,0.05",
                  "430,348.7,material_temperature:washer,96,195,2.5,0.02,0.03"]
         with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
@@ -447,12 +447,12 @@ class TwbPlotTest(unittest.TestCase):
         result = plot(d, "--out", out_dir)
         self.assertEqual(result.returncode, 0, result.stderr)
         text = self.svg_text(os.path.join(out_dir, "fold_curve.svg"))
-        for label in ("flash temperature crossed", "washer's material temperature crossed",
+        for label in ("oil's peak temperature crossed", "washer's material temperature crossed",
                       "safe: below every criterion", "fails: past the lowest curve"):
             self.assertIn(label, text)
         column, rows = tp.read_fold_curve(os.path.join(d, "fold_curve.csv"))
         self.assertEqual(sorted({r["fold"] for r in rows}),
-                         ["cusp", "distress", "flash_temperature", "material_temperature:washer"])
+                         ["cusp", "distress", "material_temperature:washer", "oil_peak_temperature"])
 
     def test_fold_curve_as_safe_operating_region(self):
         """fold_curve.csv of a distress_curve study: the figure shades the safe region,
@@ -618,7 +618,7 @@ class TwbPlotTest(unittest.TestCase):
             distress_fail_row(header, {"speed_rad_s": 545, "friction_coefficient": 0.1, "W_fail_N": 900,
                                        "criterion": "distress", "W_d_N": 900, "method": "runaway"}),
             distress_fail_row(header, {"speed_rad_s": 545, "friction_coefficient": 0.3, "W_fail_N": 700,
-                                       "criterion": "flash_temperature", "W_flash_temperature_N": 700,
+                                       "criterion": "oil_peak_temperature", "W_oil_peak_temperature_N": 700,
                                        "method": "no fold up to 2000 N (gradual heating)"})])
         fig = tp.distress.figure_distress_map(tp.merge([tp.read_run(d)]))
         texts = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
@@ -662,8 +662,8 @@ class TwbPlotTest(unittest.TestCase):
         or below W_fail; a speed without a failure load is drawn whole."""
         header = f"speed_rad_s,{DISTRESS_FAIL_TAIL}"
         d = self.results_dir("past_failure", distress=[header] + [
-            distress_fail_row(header, {"speed_rad_s": 545, "W_fail_N": 600, "criterion": "flash_temperature",
-                                       "W_flash_temperature_N": 600,
+            distress_fail_row(header, {"speed_rad_s": 545, "W_fail_N": 600, "criterion": "oil_peak_temperature",
+                                       "W_oil_peak_temperature_N": 600,
                                        "method": "no fold up to 1300 N (gradual heating)"}),
             distress_fail_row(header, {"speed_rad_s": 136, "method": "no fold up to 1300 N (gradual heating)"})])
         data = tp.merge([tp.read_run(d)])
@@ -708,7 +708,7 @@ class TwbPlotTest(unittest.TestCase):
         legends = self.legends(panels[-1])
         texts = [[t.get_text() for t in legend.get_texts()] for legend in legends]
         self.assertIn(["geometry.gear.tilt_rad = 0.001", "geometry.gear.tilt_rad = 0.002"], texts)
-        self.assertIn(["thermo-viscous distress (fold)", "flash temperature",
+        self.assertIn(["thermo-viscous distress (fold)", "oil's peak temperature",
                        "not reached: no failure up to load_end"], texts)
         boxes = self.extents(fig, legends + panels)
         for i, box in enumerate(boxes):
@@ -817,12 +817,12 @@ class TwbPlotTest(unittest.TestCase):
         for k in range(21):
             t = 3.0 * k
             rows.append(f"{t},{30 + k},{34 + 8 * k},{6 - 0.2 * k},{0.01 * k},0.04,{100 + 5 * k},545,0.03,"
-                        f"{1 - 0.01 * k},mixed,18,17,24,0.002,{0.9 - 0.09 * k},flash_temperature")
+                        f"{1 - 0.01 * k},mixed,18,17,24,0.002,{0.9 - 0.09 * k},oil_peak_temperature")
         events = ["t_s,event,criterion,load_N,speed_rad_s,ambient_C,tilt_rad,margin,failure_load_N,failure_criterion",
                   "40.3,runaway,,200.8,545,24,0.002,0.68,,",
-                  "47.5,crossing,flash_temperature,218.7,545,24,0.002,0,,",
+                  "47.5,crossing,oil_peak_temperature,218.7,545,24,0.002,0,,",
                   "60,end,,200,545,24,0.002,-0.9,,",
-                  "60,worst,flash_temperature,200,545,24,0.002,-0.9,188.38,distress"]
+                  "60,worst,oil_peak_temperature,200,545,24,0.002,-0.9,188.38,distress"]
         write(os.path.join(d, "trajectory.csv"), rows)
         write(os.path.join(d, "cycle_events.csv"), events)
         result = plot(d, "--format", "svg")
@@ -837,7 +837,7 @@ class TwbPlotTest(unittest.TestCase):
         read = tp.read_cycle_events(os.path.join(d, "cycle_events.csv"))
         self.assertEqual([e["event"] for e in read], ["runaway", "crossing", "end", "worst"])
         self.assertIsNone(read[0]["failure_load_N"])
-        write(os.path.join(d, "cycle_events.csv"), events[:2] + ["47.5,crossing,flash_temperature,oops,545,24,0.002,0,,"])
+        write(os.path.join(d, "cycle_events.csv"), events[:2] + ["47.5,crossing,oil_peak_temperature,oops,545,24,0.002,0,,"])
         broken = plot(d, "--format", "svg")
         self.assertEqual(broken.returncode, 2)
         self.assertIn("cycle_events.csv: line 3", broken.stderr)

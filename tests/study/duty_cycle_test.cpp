@@ -559,7 +559,7 @@ TEST(DutyCycle, ALimitIsCrossedWhereTheStatesMarginIsZero) {
   ASSERT_GE(free.trajectory.size(), 2u);
   const BearingState& a = free.trajectory.front().state;
   const BearingState& b = free.trajectory.back().state;
-  const double flash = 0.5 * (a.max_film_temperature + b.max_film_temperature);
+  const double flash = 0.5 * (a.oil_peak_temperature + b.oil_peak_temperature);
   const double ambient = *free.trajectory.front().ambient;
   const double ratio = 0.5 * (a.hmin_over_sigma + b.hmin_over_sigma);
   const std::vector<std::string> limits{fmt::format("lubricant.flash_temperature={:.17g} K", flash),
@@ -576,8 +576,8 @@ TEST(DutyCycle, ALimitIsCrossedWhereTheStatesMarginIsZero) {
     const StudyOutcome short_of = run(cut, limits);
     ASSERT_FALSE(short_of.trajectory.empty());
     const BearingState& end = short_of.trajectory.back().state;
-    if (*e.criterion == LimitKind::flash_temperature)
-      EXPECT_NEAR(end.max_film_temperature, flash, 10.0 * 1e-6 * (flash - ambient));
+    if (*e.criterion == LimitKind::oil_peak_temperature)
+      EXPECT_NEAR(end.oil_peak_temperature, flash, 10.0 * 1e-6 * (flash - ambient));
     else if (*e.criterion == LimitKind::film_ratio)
       EXPECT_NEAR(end.hmin_over_sigma, ratio, 10.0 * 1e-6 * ratio);
     else

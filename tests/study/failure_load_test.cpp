@@ -103,8 +103,9 @@ TEST(FailureLoad, EveryCriterionIsCrossedWhereTheFineSweepCrossesIt) {
     ASSERT_TRUE(crossing) << limit_name(kind) << " is not crossed within 0.24 % above the reported " << w << " N";
     EXPECT_NEAR(*crossing, w, 0.002 * w) << limit_name(kind);
   }
-  // The scene's flash point, bronze limit, oil maximum, film ratio and PV are all reached.
-  EXPECT_EQ(located, 5) << row.failure;
+  // The scene's flash point, bronze limit, oil maximum, film ratio, PV and scuffing
+  // temperature are all reached.
+  EXPECT_EQ(located, 6) << row.failure;
 }
 
 TEST(FailureLoad, TheFailureLoadIsTheLeastCriterion) {
@@ -133,23 +134,24 @@ TEST(FailureLoad, StatesPastACriterionNameIt) {
   const OperatingLimits limits = OperatingLimits::of(shared().model.scene());
   int past = 0;
   for (const SolvedState& s : found.states) {
-    const bool hot = s.state.max_film_temperature > limits.flash_temperature;
+    const bool hot = s.state.oil_peak_temperature > limits.flash_point;
     const std::string names = failure_names(s.state.limits);
-    EXPECT_EQ(names.find("flash_temperature") != std::string::npos, hot) << s.state.load << " N: " << names;
+    EXPECT_EQ(names.find("oil_peak_temperature") != std::string::npos, hot) << s.state.load << " N: " << names;
     past += hot;
   }
   EXPECT_GT(past, 0);
 }
 
-// Raising the flash point above every temperature reached leaves the other criteria: the
-// least of them is then the failure load, whichever order they come in.
+// Raising the flash point and the scuffing temperature above every temperature reached
+// leaves the other criteria: the least of them is then the failure load, whichever order
+// they come in.
 TEST(FailureLoad, AnotherOrderReportsTheLowerCriterion) {
-  BearingModel model(bronze({"lubricant.flash_temperature=295 degC"}));
+  BearingModel model(bronze({"lubricant.flash_temperature=295 degC", "limits.scuffing_temperature=300 degC"}));
   model.set_speed(model.scene().study.speeds.front());
   const DistressSearch found = search_distress(model, range(2000.0), {});
   const DistressRow& row = found.row;
   ASSERT_TRUE(row.failure_load) << row.failure;
-  const auto flash = criterion_load(row, LimitKind::flash_temperature);
+  const auto flash = criterion_load(row, LimitKind::oil_peak_temperature);
   const auto washer = criterion_load(row, LimitKind::washer_temperature);
   const auto oil = criterion_load(row, LimitKind::oil_temperature);
   ASSERT_TRUE(washer && oil) << row.failure;
@@ -158,9 +160,11 @@ TEST(FailureLoad, AnotherOrderReportsTheLowerCriterion) {
   const double expected = std::min({*washer, *oil, flash ? *flash : INFINITY});
   EXPECT_EQ(*row.failure_load, expected);
   ASSERT_TRUE(row.criterion);
-  EXPECT_EQ(*row.criterion,
-            FailureCriterion::crossing(*washer < *oil ? LimitKind::washer_temperature : LimitKind::oil_temperature));
-  EXPECT_EQ(criterion_name(*row.criterion), *washer < *oil ? "material_temperature:washer" : "oil_temperature");
+  const LimitKind least = flash && *flash < std::min(*washer, *oil) ? LimitKind::oil_peak_temperature
+                          : *washer < *oil                          ? LimitKind::washer_temperature
+                                                                    : LimitKind::oil_temperature;
+  EXPECT_EQ(*row.criterion, FailureCriterion::crossing(least));
+  EXPECT_EQ(criterion_name(*row.criterion), limit_name(least));
 }
 
 // Below every criterion up to load_end: no failure load, and the row says so.

@@ -146,7 +146,7 @@ TEST(RichardsonEstimate, TheRefinedCrossingIsSolvedAsFarAsItsLoadNeeds) {
   DistressSearchSettings settings = fold_range();
   const DistressSearch found = search_distress(model, settings, {});
   const std::size_t flash =
-      std::size_t(std::find(std::begin(kFailureCriteria), std::end(kFailureCriteria), LimitKind::flash_temperature) -
+      std::size_t(std::find(std::begin(kFailureCriteria), std::end(kFailureCriteria), LimitKind::oil_peak_temperature) -
                   std::begin(kFailureCriteria));
   ASSERT_GT(found.crossing_states.size(), flash);
   const auto& [coarse_load, coarse_state] = found.crossing_states[flash];
@@ -154,7 +154,7 @@ TEST(RichardsonEstimate, TheRefinedCrossingIsSolvedAsFarAsItsLoadNeeds) {
   const Scene refined = refined_mesh(coarse);
   const auto fine = model.on_mesh(refined.mesh.radial_nodes, refined.mesh.circumferential_nodes);
   std::string why;
-  const auto bar = crossing_estimate(model, *fine, LimitKind::flash_temperature, coarse_load, coarse_state,
+  const auto bar = crossing_estimate(model, *fine, LimitKind::oil_peak_temperature, coarse_load, coarse_state,
                                      settings.bracket_width, settings.load_end, why);
   ASSERT_TRUE(bar) << why;
 
@@ -166,7 +166,7 @@ TEST(RichardsonEstimate, TheRefinedCrossingIsSolvedAsFarAsItsLoadNeeds) {
   double slope = 0.0;
   long solves = 0;
   const double tight = 1e-3 * settings.bracket_width;
-  const auto own = crossing_near(*fine, LimitKind::flash_temperature, exact, slope, tight, settings.load_end, solves,
+  const auto own = crossing_near(*fine, LimitKind::oil_peak_temperature, exact, slope, tight, settings.load_end, solves,
                                  why);
   ASSERT_TRUE(own) << why;
   const double load_tolerance = (0.1 + 0.02) * settings.bracket_width * *own + 0.1 * tight * *own;

@@ -179,12 +179,12 @@ TEST(Sensitivity, CrossingLoadDerivativesMatchTheCrossingSettledAgain) {
   const DistressSearch found = search_of(scene, 1000.0);
   BearingModel base(scene);
   const std::size_t flash = 1;  // kFailureCriteria's order
-  ASSERT_EQ(kFailureCriteria[flash], LimitKind::flash_temperature);
+  ASSERT_EQ(kFailureCriteria[flash], LimitKind::oil_peak_temperature);
   ASSERT_GT(found.crossing_states.size(), flash);
   ASSERT_FALSE(found.crossing_states[flash].second.empty());
   std::string why;
   const std::optional<SettledCrossing> crossing = settle_crossing(
-      base, LimitKind::flash_temperature, found.crossing_states[flash].first, found.crossing_states[flash].second, why);
+      base, LimitKind::oil_peak_temperature, found.crossing_states[flash].first, found.crossing_states[flash].second, why);
   ASSERT_TRUE(crossing) << why;
   for (const std::string& path : kCrossingPaths) {
     const double p = scene_input(scene, path).value, delta = kRelativeStep * std::abs(p);
@@ -193,11 +193,11 @@ TEST(Sensitivity, CrossingLoadDerivativesMatchTheCrossingSettledAgain) {
       const std::pair<std::string, double> set[] = {{path, p + k * delta}};
       BearingModel m(with_inputs(scene, set));
       const std::optional<SettledCrossing> again =
-          settle_crossing(m, LimitKind::flash_temperature, crossing->load, crossing->u, why);
+          settle_crossing(m, LimitKind::oil_peak_temperature, crossing->load, crossing->u, why);
       ASSERT_TRUE(again) << path << ": " << why;
       w.push_back(again->load);
     }
-    const SensitivityRow* row = find_row(out, criterion_column(LimitKind::flash_temperature), path);
+    const SensitivityRow* row = find_row(out, criterion_column(LimitKind::oil_peak_temperature), path);
     ASSERT_NE(row, nullptr) << path;
     const double fd1 = (w[2] - w[1]) / (2.0 * delta), fd2 = (w[3] - w[0]) / (4.0 * delta);
     const double tolerance = 2.0 * std::abs(fd2 - fd1) + 1e-6 * std::abs(crossing->load / p);

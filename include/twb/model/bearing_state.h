@@ -27,6 +27,12 @@ struct BearingState {
   double load = 0, speed = 0;
   double washer_mean_temperature = 0;  // K, area-weighted
   double max_film_temperature = 0;     // K, hottest film node
+  // K, the oil's peak: the film temperature's maximum located between the nodes
+  // (docs/physics.md section 8); the ambient without the thermal effect.
+  double oil_peak_temperature = 0;
+  // K, the asperities' hottest contact: the faces' temperature plus Blok's flash temperature,
+  // located on the sliding film (docs/physics.md section 8); none without the contact model.
+  std::optional<double> contact_temperature;
   double hmin_over_sigma = 0;          // sliding film, exact minimum of its plane
   // Each body's hottest face (K), its material's temperature (docs/physics.md section 8);
   // the ambient without the thermal effect.

@@ -3,8 +3,8 @@
 // converged state says what a user should not trust it for (docs/model.md, "Limits").
 //  - oil_temperature: the washer's mean temperature, what the oil between the faces
 //    settles to, above the oil's maximum working temperature (lubricant.max_temperature);
-//  - flash_temperature: the hottest film node, the film (flash) temperature of docs/physics.md
-//    section 7, above the oil's flash point (lubricant.flash_temperature);
+//  - oil_peak_temperature: the film temperature's peak (docs/physics.md section 7), located
+//    between the nodes (section 8), above the oil's flash point (lubricant.flash_temperature);
 //  - contact_pressure: the nominal asperity contact pressure where a film is tightest
 //    above the softest face's hardness, 2.84·S_y (Tabor's, the largest H_G of docs/physics.md
 //    section 4, eq [10]): the real contact area would exceed the nominal one, which the
@@ -19,8 +19,11 @@
 //    none by default);
 //  - pv: the sliding film's mean contact pressure times the sliding speed at the washer's
 //    mean radius above the washer material's PV limit (materials.washer.pv_limit; none by
-//    default).
-// oil_temperature, flash_temperature, material_temperature, film_ratio and pv are failure
+//    default);
+//  - scuffing: the asperities' hottest contact temperature, the faces' plus Blok's flash
+//    temperature, above the pair's critical scuffing temperature (limits.scuffing_temperature;
+//    only with the contact model).
+// oil_temperature, oil_peak_temperature, material_temperature, film_ratio, pv and scuffing are failure
 // criteria (docs/physics.md section 8): the first load where one is crossed on the branch
 // is a failure load beside thermo-viscous distress. contact_pressure and
 // film_below_statistics say where the model stops holding.
@@ -34,7 +37,7 @@ namespace twb {
 
 enum class LimitKind {
   oil_temperature,
-  flash_temperature,
+  oil_peak_temperature,
   contact_pressure,
   film_below_statistics,
   carrier_temperature,  // material_temperature:carrier
@@ -42,14 +45,16 @@ enum class LimitKind {
   gear_temperature,     // material_temperature:gear
   film_ratio,
   pv,
+  scuffing,
 };
 
 // The limits whose crossing is a failure of the bearing (a failure criterion).
 bool is_failure_criterion(LimitKind kind);
 // The failure criteria in the order distress.csv lists their loads.
-inline constexpr LimitKind kFailureCriteria[] = {LimitKind::oil_temperature, LimitKind::flash_temperature,
+inline constexpr LimitKind kFailureCriteria[] = {LimitKind::oil_temperature, LimitKind::oil_peak_temperature,
                                                  LimitKind::carrier_temperature, LimitKind::washer_temperature,
-                                                 LimitKind::gear_temperature, LimitKind::film_ratio, LimitKind::pv};
+                                                 LimitKind::gear_temperature, LimitKind::film_ratio, LimitKind::pv,
+                                                 LimitKind::scuffing};
 
 struct LimitExcess {
   LimitKind kind;
@@ -65,7 +70,7 @@ std::string describe_limit(const LimitExcess& excess);
 std::string limit_names(const std::vector<LimitExcess>& limits);
 // The same for the failure criteria among them only: states.csv's fails_by column.
 std::string failure_names(const std::vector<LimitExcess>& limits);
-// "the flash temperature", "the washer's material temperature": for sentences.
+// "the oil's peak temperature", "the washer's material temperature": for sentences.
 std::string_view criterion_phrase(LimitKind kind);
 
 }  // namespace twb

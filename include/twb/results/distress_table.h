@@ -1,7 +1,7 @@
 // distress.csv: one row per distress search :
 //   speed_rad_s, <param>, sliding, W_fail_N, criterion, W_d_N, bracket_low_N, bracket_high_N,
 //   fold_N, W_d_fine_N, W_d_extrapolated_N, W_d_error_N, W_oil_temperature_N,
-//   W_flash_temperature_N, W_material_temperature_carrier_N, ..._washer_N, ..._gear_N,
+//   W_oil_peak_temperature_N, W_material_temperature_carrier_N, ..._washer_N, ..._gear_N,
 //   W_film_ratio_N, the same six as W_<criterion>_error_N, failure, method
 // W_fail is where the bearing fails: the least of W_d and the loads where the branch
 // continued from the start first crosses a failure criterion (docs/physics.md section 8);
@@ -46,7 +46,7 @@ struct FailureCriterion {
   bool operator==(const FailureCriterion&) const = default;
 };
 // A criterion's own load column: W_<criterion>{suffix}_N, the body's colon an underscore
-// (W_material_temperature_washer_N, W_flash_temperature_error_N).
+// (W_material_temperature_washer_N, W_oil_peak_temperature_error_N).
 std::string criterion_column(LimitKind kind, const char* suffix = "");
 
 // "distress", or the criterion's limit_name: distress.csv's criterion column.
@@ -88,7 +88,7 @@ struct DistressRow {
   // Each failure criterion's first crossing on the branch (kFailureCriteria order), N;
   // empty where it is not crossed up to the branch's end or does not apply.
   std::array<std::optional<double>, std::size(kFailureCriteria)> criterion_loads;
-  // "fails at 307.6 N by the flash temperature (no thermo-viscous distress up to 4000 N)".
+  // "fails at 307.6 N by the oil's peak temperature (no thermo-viscous distress up to 4000 N)".
   std::string failure;
   // study.error_estimate: richardson: each crossing's error bar (the crossing again on the
   // mesh refined by two, as W_d's), and W_fail's mesh-converged value and error bar (W_d's

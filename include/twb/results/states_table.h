@@ -43,8 +43,10 @@ struct SolvedState {
 
 // The quantities a state's error bar covers, as states.csv names them (their columns
 // <name>_extrapolated and <name>_error follow the state's own where a state has them).
-inline constexpr const char* kMeshErrorQuantities[] = {"T_mean_C", "T_max_C", "hmin_over_sigma", "torque_Nm",
-                                                       "f_eff"};
+inline constexpr const char* kMeshErrorQuantities[] = {"T_mean_C", "T_max_C", "T_oil_peak_C", "hmin_over_sigma",
+                                                       "torque_Nm", "f_eff"};
+// How many of them, from the first, are temperatures (their offsets counted from the ambient).
+inline constexpr std::size_t kMeshErrorTemperatures = 3;
 // Those quantities of a state, in that order (temperatures in degC).
 std::vector<double> mesh_error_quantities(const BearingState& state);
 

@@ -272,6 +272,11 @@ struct Lubricant {
 // (docs/physics.md section 8).
 struct Limits {
   std::optional<double> min_film_ratio;  // the least h_min/σ the bearing may run at
+  // The pair's critical scuffing temperature (K): the asperities' contact temperature, the
+  // faces' plus Blok's flash temperature, it may reach (docs/physics.md section 8). By
+  // default ISO/TR 13989-1's θ_S = 80 + (0.85 + 1.4 X_W)·X_L·S_FZG² degC for a mineral
+  // oil (X_L = 1) on through-hardened steel (X_W = 1) of FZG failure load stage 8: 224 degC.
+  double scuffing_temperature = 497.15;
 };
 
 struct Operating {

@@ -38,14 +38,14 @@ def searched_up_to(method):
 
 LIMIT_LABELS = {
     "oil_temperature": "oil's maximum temperature",
-    "flash_temperature": "flash temperature",
+    "oil_peak_temperature": "oil's peak temperature",
     "material_temperature:carrier": "carrier's material temperature",
     "material_temperature:washer": "washer's material temperature",
     "material_temperature:gear": "gear's material temperature",
     "film_ratio": "least film ratio",
     "pv": "washer's PV limit",
 }
-LIMIT_STYLES = {"oil_temperature": "tab:purple", "flash_temperature": "tab:orange",
+LIMIT_STYLES = {"oil_temperature": "tab:purple", "oil_peak_temperature": "tab:orange",
                 "material_temperature:carrier": "tab:brown", "material_temperature:washer": "tab:olive",
                 "material_temperature:gear": "tab:cyan", "film_ratio": "tab:pink",
                 "pv": "tab:gray"}

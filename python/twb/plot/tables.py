@@ -403,7 +403,7 @@ class DistressRow:
     extrapolated: object = None  # mesh-converged W_d (Richardson), N
     error: object = None  # its error bar, N
     failure: object = None  # W_fail: where the bearing fails by its first criterion, N
-    criterion: object = None  # the criterion that sets it ("distress", "flash_temperature", ...)
+    criterion: object = None  # the criterion that sets it ("distress", "oil_peak_temperature", ...)
 
 
 # Written since every failure criterion is located (W_fail_N after the run's columns,
