@@ -63,8 +63,10 @@ struct FailureLoadAtInputs::Settled {
   }
   // What a failure search on `model` found, each criterion settled to the solver's
   // tolerance. A failure it located that cannot be settled (distress by bisection): its
-  // load, without a way to follow or differentiate it.
-  void take(const DistressSearch& found, std::string& why) {
+  // load, without a way to follow or differentiate it. The search locates each load to
+  // its bracket width only, so a settled load above the search's by less than that is the
+  // same failure, settled; one the search puts lower by more is another, unsettled.
+  void take(const DistressSearch& found, double bracket_width, std::string& why) {
     if (found.fold && found.fold_proven) fold = settle_fold(*model, *found.fold, why);
     for (std::size_t c = 0; c < found.crossing_states.size(); ++c) {
       const auto& [at_load, u] = found.crossing_states[c];
@@ -73,7 +75,7 @@ struct FailureLoadAtInputs::Settled {
         crossings.push_back(std::move(*settled));
     }
     set_failure();
-    if (found.row.failure_load && *found.row.failure_load < load) {
+    if (found.row.failure_load && *found.row.failure_load < load * (1.0 - bracket_width)) {
       load = *found.row.failure_load;
       criterion = found.row.criterion ? criterion_name(*found.row.criterion) : "distress";
       fold.reset();
@@ -134,7 +136,7 @@ const DistressSearch* FailureLoadAtInputs::search_at(std::span<const double> x, 
   settings.keep_state_vectors = true;
   first_search_ = search_distress(*s->model, settings, progress);
   ++searches_;
-  s->take(first_search_, why);
+  s->take(first_search_, search_.bracket_width, why);
   remember(std::move(s));
   return &first_search_;
 }
@@ -228,7 +230,7 @@ std::unique_ptr<FailureLoadAtInputs::Settled> FailureLoadAtInputs::searched_at(s
     s->criterion = "no steady state at " + std::to_string(search_.load_start) + " N";
     return s;
   }
-  s->take(found, why);
+  s->take(found, search_.bracket_width, why);
   return s;
 }
 
