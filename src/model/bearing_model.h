@@ -223,6 +223,11 @@ class BearingModel final : public SegregatedSystem {
   // Half the washer's thickness lies on the path from a film node to its mid-plane
   // (eqs [26], [27]); carrier and gear faces are their surfaces.
   double body_resistance(ComponentId id) const;
+  // The heat path (m² K/W) from a film node to a body across the film of average gap
+  // h̄T: half the oil's, then the body's own part (eqs [26], [27]).
+  double heat_path(double mean_gap, ComponentId id) const {
+    return mean_gap / (2.0 * scene_.lubricant.conductivity) + body_resistance(id);
+  }
   const ComponentHeat* component(ComponentId id) const;
   const Film& sliding_film() const;
   // The summit population of both films (docs/physics.md section 4), null without

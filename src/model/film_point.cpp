@@ -92,7 +92,7 @@ FilmPoint FilmPointReader::at(const Film& film, double r, double theta) const {
     const double after = model_.face_temperature(u_, sides[k], r, c.j + 1, nullptr);
     paths.body[k] = (1 - c.t) * before + c.t * after;
     paths.own[k] = model_.body_resistance(sides[k]);
-    paths.resistance[k] = p.mean_gap / (2.0 * scene.lubricant.conductivity) + paths.own[k];
+    paths.resistance[k] = model_.heat_path(p.mean_gap, sides[k]);
   }
   p.body_temperature = paths.body;
   const double conductance = 1.0 / paths.resistance[0] + 1.0 / paths.resistance[1];
@@ -152,7 +152,6 @@ std::vector<double> FilmPointReader::node_advection(const Film& film, const Film
   const FilmMesh& m = film.mesh;
   std::vector<double> out(std::size_t(m.node_count()), 0.0);
   if (!film.sliding) return out;
-  const double k_oil = model_.scene().lubricant.conductivity;
   const std::array<ComponentId, 2> sides{film.lower, film.upper};
   for (int i = 0; i < m.radial_nodes(); ++i)
     for (int j = 0; j < m.circumferential_nodes(); ++j) {
@@ -170,8 +169,7 @@ std::vector<double> FilmPointReader::node_advection(const Film& film, const Film
         const double body = model_.face_temperature(u_, sides[k], m.radius(i), j, nullptr);
         for (int part = 0; part < parts.count; ++part) {
           const double gap = average_gap(smooth + parts.relief[std::size_t(part)], film.sigma).value;
-          conducted += area * parts.share[std::size_t(part)] * (tf - body) /
-                       (gap / (2.0 * k_oil) + model_.body_resistance(sides[k]));
+          conducted += area * parts.share[std::size_t(part)] * (tf - body) / model_.heat_path(gap, sides[k]);
         }
       }
       out[std::size_t(n)] = (generated - conducted) / area;

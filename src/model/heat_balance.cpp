@@ -83,13 +83,12 @@ HeatEffect::HeatEffect(ModelSetup& setup) : model_(setup.model) {
 // plus the films attached to it and its loss to ambient.
 void HeatEffect::set_row_scales(ModelSetup& setup) const {
   const Scene& scene = model_.scene();
-  const double k_oil = scene.lubricant.conductivity;
   const double h_ref = scene.solver.cold_start_film * model_.sliding_film().sigma;
   const std::vector<ComponentHeat>& components = setup.components;
   std::vector<double> attached_conductance(components.size(), 0.0);  // W/K/m² from films, reference
   for (const Film& film : setup.films) {
-    const double g_lo = 1.0 / (h_ref / (2 * k_oil) + model_.body_resistance(film.lower));
-    const double g_up = 1.0 / (h_ref / (2 * k_oil) + model_.body_resistance(film.upper));
+    const double g_lo = 1.0 / model_.heat_path(h_ref, film.lower);
+    const double g_up = 1.0 / model_.heat_path(h_ref, film.upper);
     for (int i = 0; i < film.mesh.radial_nodes(); ++i)
       for (int j = 0; j < film.mesh.circumferential_nodes(); ++j)
         setup.layout.set_row_scale(film.temperature_row(film.mesh.node(i, j)),
@@ -156,8 +155,7 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
           const FaceLink& face = node.face[side];
           double ts = ambient;
           for (int t = 0; t < face.terms; ++t) ts += face.weight[std::size_t(t)] * u[face.column[std::size_t(t)]];
-          const double body = model.body_resistance(sides[side]);
-          const double res = gap.value / (2.0 * k_oil) + body;
+          const double res = model.heat_path(gap.value, sides[side]);
           double flow = area * (tf - ts) / res;  // W from the film node into the component
           double dflow_dh = -flow / res * gap.slope / (2.0 * k_oil);
           double conductance = area / res;
@@ -165,7 +163,7 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
             double per_area = 0.0, slope = 0.0;  // Σ share/R and Σ share·(dh̄T/dh)/R²
             for (int p = 0; p < relief.count; ++p) {
               const ValueSlope& part = part_gap[std::size_t(p)];
-              const double r = part.value / (2.0 * k_oil) + body, share = relief.share[std::size_t(p)];
+              const double r = model.heat_path(part.value, sides[side]), share = relief.share[std::size_t(p)];
               per_area += share / r;
               slope += share * (part.slope / (r * r));
             }
@@ -263,7 +261,6 @@ double BearingModel::hottest_face_temperature(std::span<const double> u, Compone
   const double own = body_resistance(id);
   if (own <= 0.0) return hottest;
   const RigidPosition q = position(u);
-  const double k_oil = scene_.lubricant.conductivity;
   for (const Film& film : films_) {
     if (film.lower != id && film.upper != id) continue;
     const FilmMesh& m = film.mesh;
@@ -280,7 +277,7 @@ double BearingModel::hottest_face_temperature(std::span<const double> u, Compone
           const FaceRelief::NodeParts parts = film.relief.node_parts(i, j);
           relief = *std::min_element(parts.relief.begin(), parts.relief.begin() + parts.count);
         }
-        const double path = average_gap(h + relief, film.sigma).value / (2.0 * k_oil) + own;
+        const double path = heat_path(average_gap(h + relief, film.sigma).value, id);
         hottest = std::max(hottest, body + (tf - body) * own / path);
       }
   }
