@@ -128,6 +128,120 @@ SpreadBatch spread_over(SearchScheduler& scheduler, int threads, FailureLoadAtIn
   };
 }
 
+// The inputs at standard-normal coordinates u.
+std::vector<double> inputs_at_coordinates(const std::vector<UncertainInput>& inputs, std::span<const double> u) {
+  std::vector<double> x(inputs.size());
+  for (std::size_t i = 0; i < inputs.size(); ++i) x[i] = input_at(inputs[i], u[i]);
+  return x;
+}
+
+// The Monte Carlo check round FORM's design point, its row and summary; false on the
+// ranks of an MPI job that leave the rest to the one that takes the results.
+bool importance_sampling_check(FailureLoadAtInputs& failure, const DesignPoint& form,
+                               const std::vector<UncertainInput>& inputs, double load, double speed, const Study& st,
+                               int threads, SearchScheduler* scheduler, const ProgressReport& progress,
+                               StudyOutcome& out) {
+  const auto inputs_at = [&](std::span<const double> u) { return inputs_at_coordinates(inputs, u); };
+  if (progress) progress(fmt::format("reliability: importance sampling to a coefficient of variation of {:.3g}", st.sampling_cov));
+  // Why each sample that could not be told was not (the first, by number, is reported).
+  std::mutex why_lock;
+  std::map<std::uint64_t, std::string> unresolved_why;
+  // A sample asks only whether the bearing fails at the operating load: a search it
+  // needs ends just above that load (FailureLoadAtInputs::fails_at).
+  // Most samples are told by their state at the load, moved from the states held at the
+  // load (OperatingStates): the first search's, the way to the design point, and the
+  // samples of the batches before.
+  failure.operate_at(load, inputs_at(form.u));
+  const FailureIndicator fails = [&](std::uint64_t sample, std::span<const double> u) -> std::optional<bool> {
+    std::string why;
+    std::optional<bool> failed;
+    try {
+      // FORM's safe side: u·u* < β².
+      const bool safe_side = std::inner_product(u.begin(), u.end(), form.u.begin(), 0.0) < form.beta * form.beta;
+      failed = failure.fails_at(inputs_at(u), load, why, FailureLoadAtInputs::Sample{sample, safe_side});
+    } catch (const InternalError&) {
+      throw;  // a bug: no sample may hide it
+    } catch (const std::exception& e) {
+      why = e.what();  // one sample's, not the study's
+    }
+    if (!failed) {
+      const std::lock_guard<std::mutex> hold(why_lock);
+      unresolved_why[sample] = why;
+    }
+    return failed;
+  };
+  SamplingSettings sampling;
+  sampling.cov = st.sampling_cov;
+  sampling.max_samples = st.max_samples;
+  sampling.min_samples = std::min(100, st.max_samples);
+  sampling.seed = std::uint64_t(st.seed);
+  sampling.threads = threads;
+  const SpreadBatch spread = scheduler ? spread_over(*scheduler, threads, failure, why_lock, unresolved_why)
+                                       : batch_on_threads(threads, [&] { failure.hold_samples(); });
+  // Every rank of an MPI job holds the same states after each batch (spread_over): its
+  // progress lines say so.
+  const SamplingEstimate e = importance_sampling(fails, form.u, sampling, spread, [&](const SamplingEstimate& now) {
+    if (progress)
+      progress(fmt::format("reliability: {} samples, P_f = {:.4g}, coefficient of variation {:.3g}; {} states held",
+                           now.samples, now.probability, now.cov, failure.states_held()));
+  });
+  // The other ranks of an MPI job leave the rest to the one that takes the results.
+  if (scheduler && !scheduler->takes_results()) return false;
+  const std::string first_why = unresolved_why.empty() ? std::string() : unresolved_why.begin()->second;
+  ReliabilityRow& mc = out.reliability.emplace_back();
+  mc.method = "monte_carlo";
+  mc.load = load;
+  mc.speed = speed;
+  mc.probability = e.probability;
+  if (e.failures > 0) mc.cov = e.cov;
+  mc.low = e.low;
+  mc.high = e.high;
+  mc.samples = e.samples;
+  mc.failures = e.failures;
+  mc.unresolved = e.unresolved;
+  mc.evaluations = e.samples;  // one each, wherever judged
+  // Unresolved samples are left out, and they need not be like the others.
+  mc.converged = e.reached && e.unresolved == 0;
+  out.summary.push_back(fmt::format(
+      "reliability: Monte Carlo (importance sampling round the design point): P_f = {:.3g}, 95 % interval [{:.3g}, "
+      "{:.3g}], coefficient of variation {:.3g} from {} samples ({} failed; {} told by their state at the load, the "
+      "others by their failure load{}){}",
+      e.probability, e.low, e.high, e.cov, e.samples, e.failures, failure.judged_by_state(),
+      e.unresolved ? fmt::format(", {} unresolved: {}", e.unresolved, first_why) : "",
+      e.reached ? "" : fmt::format("; the coefficient of variation {:.3g} was not reached in {} samples", st.sampling_cov,
+                                   st.max_samples)));
+  if (e.failures > 0 && (form.probability < e.low || form.probability > e.high))
+    out.summary.push_back("reliability: FORM's probability lies outside the Monte Carlo interval: W_fail bends between "
+                          "the mean inputs and the design point; trust the Monte Carlo estimate");
+  return true;
+}
+
+// The loads at the failure probabilities asked for, by inverse FORM.
+void loads_at_probabilities(const FailureLoadFunction& h, const std::vector<UncertainInput>& inputs, double speed,
+                            const Study& st, const ProgressReport& progress, StudyOutcome& out) {
+  const std::size_t n = inputs.size();
+  for (const double p : st.probabilities) {
+    if (progress) progress(fmt::format("reliability: the load at P_f = {:.3g}", p));
+    const DesignPoint inverse = inverse_design_point(h, n, p);
+    if (!inverse.converged) {
+      out.summary.push_back(fmt::format("reliability: no load found at P_f = {:.3g}: {}", p, inverse.why));
+      continue;
+    }
+    ReliabilityRow& r = out.reliability.emplace_back();
+    r.method = "inverse_form";
+    r.load = inverse.load;
+    r.speed = speed;
+    r.probability = p;
+    r.beta = inverse.beta;
+    r.evaluations = inverse.evaluations;
+    r.converged = true;
+    add_design_point(out, "inverse_form", inverse, inputs);
+    out.summary.push_back(fmt::format("reliability: the load at P_f = {:.3g} is {:.6g} N (inverse FORM, β = {:.3f}); "
+                                      "design point: {}",
+                                      p, inverse.load, inverse.beta, design_point_words(inverse, inputs)));
+  }
+}
+
 }  // namespace
 
 void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads,
@@ -172,12 +286,7 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
 
   // W_fail at the inputs x(u), and its gradient in u.
   std::atomic<long> evaluations{0};
-  // The inputs at standard-normal coordinates u.
-  const auto inputs_at = [&](std::span<const double> u) {
-    std::vector<double> x(n);
-    for (std::size_t i = 0; i < n; ++i) x[i] = input_at(inputs[i], u[i]);
-    return x;
-  };
+  const auto inputs_at = [&](std::span<const double> u) { return inputs_at_coordinates(inputs, u); };
   const FailureLoadFunction h = [&](std::span<const double> u, bool gradient,
                                     std::string& why) -> std::optional<FailureLoadValue> {
     ++evaluations;
@@ -217,102 +326,12 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
   // The Monte Carlo check round the design point: its samples start from the points
   // FORM settled, none from each other's.
   failure.keep_every_point(false);
-  if (st.max_samples > 0) {
-    if (progress) progress(fmt::format("reliability: importance sampling to a coefficient of variation of {:.3g}", st.sampling_cov));
-    // Why each sample that could not be told was not (the first, by number, is reported).
-    std::mutex why_lock;
-    std::map<std::uint64_t, std::string> unresolved_why;
-    // A sample asks only whether the bearing fails at the operating load: a search it
-    // needs ends just above that load (FailureLoadAtInputs::fails_at).
-    // Most samples are told by their state at the load, moved from the states held at the
-    // load (OperatingStates): the first search's, the way to the design point, and the
-    // samples of the batches before.
-    failure.operate_at(load, inputs_at(form.u));
-    const FailureIndicator fails = [&](std::uint64_t sample, std::span<const double> u) -> std::optional<bool> {
-      std::string why;
-      std::optional<bool> failed;
-      try {
-        // FORM's safe side: u·u* < β².
-        const bool safe_side = std::inner_product(u.begin(), u.end(), form.u.begin(), 0.0) < form.beta * form.beta;
-        failed = failure.fails_at(inputs_at(u), load, why, FailureLoadAtInputs::Sample{sample, safe_side});
-      } catch (const InternalError&) {
-        throw;  // a bug: no sample may hide it
-      } catch (const std::exception& e) {
-        why = e.what();  // one sample's, not the study's
-      }
-      if (!failed) {
-        const std::lock_guard<std::mutex> hold(why_lock);
-        unresolved_why[sample] = why;
-      }
-      return failed;
-    };
-    SamplingSettings sampling;
-    sampling.cov = st.sampling_cov;
-    sampling.max_samples = st.max_samples;
-    sampling.min_samples = std::min(100, st.max_samples);
-    sampling.seed = std::uint64_t(st.seed);
-    sampling.threads = threads;
-    const SpreadBatch spread = scheduler ? spread_over(*scheduler, threads, failure, why_lock, unresolved_why)
-                                         : batch_on_threads(threads, [&] { failure.hold_samples(); });
-    // Every rank of an MPI job holds the same states after each batch (spread_over): its
-    // progress lines say so.
-    const SamplingEstimate e = importance_sampling(fails, form.u, sampling, spread, [&](const SamplingEstimate& now) {
-      if (progress)
-        progress(fmt::format("reliability: {} samples, P_f = {:.4g}, coefficient of variation {:.3g}; {} states held",
-                             now.samples, now.probability, now.cov, failure.states_held()));
-    });
-    // The other ranks of an MPI job leave the rest to the one that takes the results.
-    if (scheduler && !scheduler->takes_results()) return;
-    const std::string first_why = unresolved_why.empty() ? std::string() : unresolved_why.begin()->second;
-    ReliabilityRow& mc = out.reliability.emplace_back();
-    mc.method = "monte_carlo";
-    mc.load = load;
-    mc.speed = speed;
-    mc.probability = e.probability;
-    if (e.failures > 0) mc.cov = e.cov;
-    mc.low = e.low;
-    mc.high = e.high;
-    mc.samples = e.samples;
-    mc.failures = e.failures;
-    mc.unresolved = e.unresolved;
-    mc.evaluations = e.samples;  // one each, wherever judged
-    // Unresolved samples are left out, and they need not be like the others.
-    mc.converged = e.reached && e.unresolved == 0;
-    out.summary.push_back(fmt::format(
-        "reliability: Monte Carlo (importance sampling round the design point): P_f = {:.3g}, 95 % interval [{:.3g}, "
-        "{:.3g}], coefficient of variation {:.3g} from {} samples ({} failed; {} told by their state at the load, the "
-        "others by their failure load{}){}",
-        e.probability, e.low, e.high, e.cov, e.samples, e.failures, failure.judged_by_state(),
-        e.unresolved ? fmt::format(", {} unresolved: {}", e.unresolved, first_why) : "",
-        e.reached ? "" : fmt::format("; the coefficient of variation {:.3g} was not reached in {} samples", st.sampling_cov,
-                                     st.max_samples)));
-    if (e.failures > 0 && (form.probability < e.low || form.probability > e.high))
-      out.summary.push_back("reliability: FORM's probability lies outside the Monte Carlo interval: W_fail bends between "
-                            "the mean inputs and the design point; trust the Monte Carlo estimate");
-  }
+  if (st.max_samples > 0 &&
+      !importance_sampling_check(failure, form, inputs, load, speed, st, threads, scheduler, progress, out))
+    return;
 
-  // The loads at the failure probabilities asked for.
   failure.keep_every_point(true);
-  for (const double p : st.probabilities) {
-    if (progress) progress(fmt::format("reliability: the load at P_f = {:.3g}", p));
-    const DesignPoint inverse = inverse_design_point(h, n, p);
-    if (!inverse.converged) {
-      out.summary.push_back(fmt::format("reliability: no load found at P_f = {:.3g}: {}", p, inverse.why));
-      continue;
-    }
-    ReliabilityRow& r = out.reliability.emplace_back();
-    r.method = "inverse_form";
-    r.load = inverse.load;
-    r.speed = speed;
-    r.probability = p;
-    r.beta = inverse.beta;
-    r.evaluations = inverse.evaluations;
-    r.converged = true;
-    add_design_point(out, "inverse_form", inverse, inputs);
-    out.summary.push_back(fmt::format("reliability: the load at P_f = {:.3g} is {:.6g} N (inverse FORM, β = {:.3f}); "
-                                      "design point: {}",
-                                      p, inverse.load, inverse.beta, design_point_words(inverse, inputs)));
-  }
+  loads_at_probabilities(h, inputs, speed, st, progress, out);
   if (failure.searches() > 1)
     out.summary.push_back(fmt::format("reliability: {} of the failure loads needed a failure search of their own (Newton "
                                       "could not follow one from a settled point)",

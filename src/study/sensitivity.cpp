@@ -76,74 +76,75 @@ std::vector<double> state_derivatives(InputNeighbours& n, std::span<const double
   });
 }
 
-void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads) {
-  const Scene& scene = model.scene();
-  const Study& st = scene.study;
+namespace {
+
+// The inputs to differentiate: the study's, or every input the file writes that moves the
+// bearing smoothly (stepwise_input), the others named in the summary.
+std::vector<SceneInput> differentiated_inputs(const Scene& scene, StudyOutcome& out) {
   std::vector<SceneInput> inputs;
-  if (st.parameters.empty()) {
-    // Every input the file writes that moves the bearing smoothly (stepwise_input).
-    std::string left_out;
-    for (const SceneInput& in : scene.inputs)
-      if (stepwise_input(in.path).empty())
-        inputs.push_back(in);
-      else
-        left_out += (left_out.empty() ? "" : ", ") + in.path;
-    if (!left_out.empty())
-      out.summary.push_back("sensitivity: left out, placed on the grid (their steps have no derivative): " + left_out);
-  } else
-    for (const std::string& path : st.parameters) inputs.push_back(scene_input(scene, path));
-
-  // The state at the operating point, and J's factors there.
-  std::vector<double> u;
-  if (!solve_operating_point(model, out, u)) return;
-  const BearingState at_point = out.states.back().state;
-  const double load = model.load();
-  const std::unique_ptr<SparseLu> factors = jacobian_factors(model, u);
-  if (!factors) {
-    out.solver_failed = true;
-    out.message = fmt::format("the state at {:.6g} N has a singular Jacobian (a fold at the operating point): "
-                              "it does not move smoothly with the inputs",
-                              load);
-    return;
+  if (!scene.study.parameters.empty()) {
+    for (const std::string& path : scene.study.parameters) inputs.push_back(scene_input(scene, path));
+    return inputs;
   }
+  std::string left_out;
+  for (const SceneInput& in : scene.inputs)
+    if (stepwise_input(in.path).empty())
+      inputs.push_back(in);
+    else
+      left_out += (left_out.empty() ? "" : ", ") + in.path;
+  if (!left_out.empty())
+    out.summary.push_back("sensitivity: left out, placed on the grid (their steps have no derivative): " + left_out);
+  return inputs;
+}
 
-  // With a load range: the failure search, its fold and every criterion's crossing, each
-  // settled to the solver's tolerance.
+// With a load range: the failure search, its fold and every criterion's crossing, each
+// settled to the solver's tolerance, and the rows W_fail's are (W_d_N or a crossing's
+// column; empty without a failure).
+struct SettledFailures {
   std::optional<SettledFold> fold;
   std::vector<SettledCrossing> crossings;
-  std::string setting;  // the rows W_fail's are: W_d_N or a crossing's column
-  if (st.load_end > 0.0) {
-    DistressSearchSettings settings;
-    settings.load_start = st.load_start;
-    settings.load_end = st.load_end;
-    settings.bracket_width = st.bracket_width;
-    settings.march_past_distress = false;
-    DistressSearch found = search_distress(model, settings, progress);
-    add_search_work(out.timings, found.counts);
-    out.distress.push_back(found.row);
-    std::string why;
-    if (found.fold && found.fold_proven) {
-      fold = settle_fold(model, *found.fold, why);
-      if (!fold) out.summary.push_back("sensitivity: no derivatives of W_d: " + why);
-    } else {
-      out.summary.push_back("sensitivity: no proven fold in the load range, so no derivatives of W_d (" +
-                            found.row.method + ")");
-    }
-    for (std::size_t c = 0; c < found.crossing_states.size(); ++c) {
-      if (found.crossing_states[c].second.empty()) continue;
-      std::optional<SettledCrossing> settled = settle_crossing(model, kFailureCriteria[c], found.crossing_states[c].first,
-                                                               found.crossing_states[c].second, why);
-      if (settled)
-        crossings.push_back(std::move(*settled));
-      else
-        out.summary.push_back(fmt::format("sensitivity: no derivatives of {}: {}", criterion_column(kFailureCriteria[c]), why));
-    }
-    if (const std::optional<FailureCriterion>& c = found.row.criterion)
-      setting = c->distress ? "W_d_N" : criterion_column(c->limit);
-  }
+  std::string setting;
+};
 
-  // Each input on its own models; J's back-substitutions one at a time (KLU's solve
-  // writes into its factors' workspace).
+SettledFailures settled_failures(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
+  const Study& st = model.scene().study;
+  SettledFailures f;
+  if (!(st.load_end > 0.0)) return f;
+  DistressSearchSettings settings;
+  settings.load_start = st.load_start;
+  settings.load_end = st.load_end;
+  settings.bracket_width = st.bracket_width;
+  settings.march_past_distress = false;
+  DistressSearch found = search_distress(model, settings, progress);
+  add_search_work(out.timings, found.counts);
+  out.distress.push_back(found.row);
+  std::string why;
+  if (found.fold && found.fold_proven) {
+    f.fold = settle_fold(model, *found.fold, why);
+    if (!f.fold) out.summary.push_back("sensitivity: no derivatives of W_d: " + why);
+  } else {
+    out.summary.push_back("sensitivity: no proven fold in the load range, so no derivatives of W_d (" +
+                          found.row.method + ")");
+  }
+  for (std::size_t c = 0; c < found.crossing_states.size(); ++c) {
+    if (found.crossing_states[c].second.empty()) continue;
+    std::optional<SettledCrossing> settled = settle_crossing(model, kFailureCriteria[c], found.crossing_states[c].first,
+                                                             found.crossing_states[c].second, why);
+    if (settled)
+      f.crossings.push_back(std::move(*settled));
+    else
+      out.summary.push_back(fmt::format("sensitivity: no derivatives of {}: {}", criterion_column(kFailureCriteria[c]), why));
+  }
+  if (const std::optional<FailureCriterion>& c = found.row.criterion)
+    f.setting = c->distress ? "W_d_N" : criterion_column(c->limit);
+  return f;
+}
+
+// Each input on its own models; J's back-substitutions one at a time (KLU's solve writes
+// into its factors' workspace).
+std::vector<InputResponse> input_responses(BearingModel& model, const std::vector<SceneInput>& inputs,
+                                           std::span<const double> u, double load, const SparseLu& factors,
+                                           const SettledFailures& failures, int threads) {
   std::vector<InputResponse> response(inputs.size());
   std::mutex solve_lock;
   run_in_parallel(inputs.size(), threads, [&](std::size_t i) {
@@ -151,14 +152,14 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
     try {
       InputNeighbours nb = input_neighbours(model, inputs[i]);
       r.step = nb.step;
-      std::vector<double> state = state_derivatives(nb, u, load, *factors, solve_lock);
+      std::vector<double> state = state_derivatives(nb, u, load, factors, solve_lock);
       for (double d : state)
         if (!finite(d, "a state quantity", r.why)) return;
       r.state = std::move(state);
       // The failure loads do not depend on the operating load.
       if (inputs[i].path == kLoadInput) return;
-      if (fold) r.fold_load = finite(fold_load_derivative(nb, *fold), "W_d", r.why);
-      for (const SettledCrossing& c : crossings)
+      if (failures.fold) r.fold_load = finite(fold_load_derivative(nb, *failures.fold), "W_d", r.why);
+      for (const SettledCrossing& c : failures.crossings)
         r.crossing_loads.push_back(
             finite(crossing_load_derivative(nb, c, solve_lock), criterion_column(c.kind).c_str(), r.why));
     } catch (const InternalError&) {
@@ -167,13 +168,20 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
       r.why += (r.why.empty() ? "" : "; ") + std::string(e.what());
     }
   });
+  return response;
+}
 
+// The rows of sensitivity.csv: each state quantity's, each failure load's, then W_fail's
+// (those of the criterion that sets it), and a summary line per input not (fully)
+// differentiated. A temperature input's relative change is taken per the washer's mean
+// rise above the ambient at the point (physics §16): in kelvin, the ambient's 350 K would
+// make a derivative of a few newtons per kelvin the largest elasticity of all (none where
+// the washer does not rise: the elasticity is then absent, as for p = 0).
+void sensitivity_rows(const Scene& scene, const BearingState& at_point, const std::vector<SceneInput>& inputs,
+                      const std::vector<InputResponse>& response, const SettledFailures& failures,
+                      StudyOutcome& out) {
   const double ambient = scene.operating.ambient;
-  // A temperature input's relative change is taken per the washer's mean rise above the
-  // ambient at the point (physics §16): in kelvin, the ambient's 350 K would make a
-  // derivative of a few newtons per kelvin the largest elasticity of all.
   const double rise = at_point.washer_mean_temperature - ambient;
-  // (None where the washer does not rise: the elasticity is then absent, as for p = 0.)
   const auto input_scale = [&](const SceneInput& in) { return in.unit == "K" ? std::max(rise, 0.0) : in.value; };
   auto row = [&](const std::string& name, double value, double reference, const SceneInput& in, double derivative,
                  double step) {
@@ -196,18 +204,17 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
       row(q.name, q.temperature ? q.value - cells::kelvin_offset : q.value, q.temperature ? q.value - ambient : q.value, inputs[i],
           response[i].state[k], response[i].step);
     }
-  // Each failure load's rows, then W_fail's: those of the criterion that sets it.
   auto failure_rows = [&](const std::string& name, double w, auto derivative_of) {
     for (std::size_t i = 0; i < inputs.size(); ++i)
       if (const std::optional<double> d = derivative_of(response[i])) row(name, w, w, inputs[i], *d, response[i].step);
   };
-  if (fold) failure_rows("W_d_N", fold->load, [](const InputResponse& r) { return r.fold_load; });
-  for (std::size_t c = 0; c < crossings.size(); ++c)
-    failure_rows(criterion_column(crossings[c].kind), crossings[c].load, [c](const InputResponse& r) {
+  if (failures.fold) failure_rows("W_d_N", failures.fold->load, [](const InputResponse& r) { return r.fold_load; });
+  for (std::size_t c = 0; c < failures.crossings.size(); ++c)
+    failure_rows(criterion_column(failures.crossings[c].kind), failures.crossings[c].load, [c](const InputResponse& r) {
       return c < r.crossing_loads.size() ? r.crossing_loads[c] : std::nullopt;
     });
-  for (std::size_t k = 0, end = out.sensitivity.size(); k < end && !setting.empty(); ++k)
-    if (out.sensitivity[k].quantity == setting) {
+  for (std::size_t k = 0, end = out.sensitivity.size(); k < end && !failures.setting.empty(); ++k)
+    if (out.sensitivity[k].quantity == failures.setting) {
       SensitivityRow copy = out.sensitivity[k];
       copy.quantity = "W_fail_N";
       out.sensitivity.push_back(std::move(copy));
@@ -217,8 +224,10 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
       out.summary.push_back(fmt::format("sensitivity: {}: {}: {}", inputs[i].path,
                                         response[i].state.empty() ? "not differentiated" : "only partly differentiated",
                                         response[i].why));
+}
 
-  // The inputs that matter most to the answer: W_fail's where there is one, else the torque's.
+// The inputs that matter most to the answer: W_fail's where there is one, else the torque's.
+void rank_inputs(const std::vector<SceneInput>& inputs, double rise, StudyOutcome& out) {
   const bool has_failure = std::any_of(out.sensitivity.begin(), out.sensitivity.end(),
                                        [](const SensitivityRow& r) { return r.quantity == "W_fail_N"; });
   const char* headline = has_failure ? "W_fail_N" : "torque_Nm";
@@ -231,7 +240,6 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
   std::string top;
   for (std::size_t k = 0; k < std::min<std::size_t>(5, ranked.size()); ++k)
     top += fmt::format("{}{} {:+.3g}", k ? ", " : "", ranked[k]->parameter, *ranked[k]->elasticity);
-  if (progress) progress(fmt::format("sensitivities to {} inputs", inputs.size()));
   const bool temperatures = std::any_of(inputs.begin(), inputs.end(), [](const SceneInput& in) { return in.unit == "K"; });
   out.summary.push_back(fmt::format("sensitivity of {} to {} inputs; largest elasticities (relative change per relative "
                                     "change{}): {}",
@@ -242,6 +250,33 @@ void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressRepor
                                                       rise)
                                         : std::string(),
                                     top.empty() ? "none" : top));
+}
+
+}  // namespace
+
+void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads) {
+  const Scene& scene = model.scene();
+  const std::vector<SceneInput> inputs = differentiated_inputs(scene, out);
+
+  // The state at the operating point, and J's factors there.
+  std::vector<double> u;
+  if (!solve_operating_point(model, out, u)) return;
+  const BearingState at_point = out.states.back().state;
+  const double load = model.load();
+  const std::unique_ptr<SparseLu> factors = jacobian_factors(model, u);
+  if (!factors) {
+    out.solver_failed = true;
+    out.message = fmt::format("the state at {:.6g} N has a singular Jacobian (a fold at the operating point): "
+                              "it does not move smoothly with the inputs",
+                              load);
+    return;
+  }
+
+  const SettledFailures failures = settled_failures(model, out, progress);
+  const std::vector<InputResponse> response = input_responses(model, inputs, u, load, *factors, failures, threads);
+  sensitivity_rows(scene, at_point, inputs, response, failures, out);
+  if (progress) progress(fmt::format("sensitivities to {} inputs", inputs.size()));
+  rank_inputs(inputs, at_point.washer_mean_temperature - scene.operating.ambient, out);
 }
 
 }  // namespace twb
