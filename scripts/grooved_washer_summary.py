@@ -66,6 +66,7 @@ def summarize(root, load):
                 "W_d_N": row["W_d_N"],
                 "W_oil_temperature_N": row["W_oil_temperature_N"],
                 "W_oil_peak_temperature_N": row["W_oil_peak_temperature_N"],
+                "W_scuffing_N": row["W_scuffing_N"] if "W_scuffing_N" in row else math.nan,
                 f"T_mean_C_at_{load:g}N": at_load(states, speed, load, "T_mean_C"),
                 f"T_max_C_at_{load:g}N": at_load(states, speed, load, "T_max_C"),
                 f"heat_carried_W_at_{load:g}N": at_load(states, speed, load, "heat_carried_W"),
@@ -81,13 +82,13 @@ def figure(table, load, path):
         if rows.empty:
             continue
         line = left.plot(rows["speed_rad_s"], rows["W_fail_N"], "o-", label=label)[0]
-        # The failure's criterion: a square where the oil's flash point sets it.
+        # The failure's criterion: a square where the oil's peak at its flash point sets it.
         flash = rows[rows["criterion"] == "oil_peak_temperature"]
         left.plot(flash["speed_rad_s"], flash["W_fail_N"], "s", color=line.get_color(), markersize=9, fillstyle="none")
         right.plot(rows["speed_rad_s"], rows[f"T_mean_C_at_{load:g}N"], "o-", color=line.get_color(), label=label)
     left.set_xlabel("speed (rad/s)")
     left.set_ylabel("failure load W_fail (N)")
-    left.set_title("where it fails (open square: by the flash point)")
+    left.set_title("where it fails (open square: by the oil's peak temperature)")
     left.set_yscale("log")
     right.set_xlabel("speed (rad/s)")
     right.set_ylabel(f"washer mean temperature at {load:g} N (°C)")
@@ -110,6 +111,7 @@ CRITERIA = [
     ("W_d_N", "thermo-viscous distress (W_d; none: no fold up to load_end)", "k^-"),
     ("W_oil_temperature_N", "oil's maximum temperature", "C1s--"),
     ("W_oil_peak_temperature_N", "oil's peak temperature at its flash point", "C3v:"),
+    ("W_scuffing_N", "scuffing (the asperities' contact temperature)", "C2D-."),
 ]
 
 
