@@ -76,10 +76,16 @@ double groove_angle(const Node& node, double mean_radius) {
                           "or an angle (e.g. 10 deg)",
                           node.path(), text));
   try {
-    return to_si(text, si::length) / mean_radius;
+    (void)to_si(text, si::length);  // a length, or else an angle
   } catch (const QuantityError&) {
     return node.quantity(si::angle, {.low = 0.0, .low_open = true, .high = 2 * std::numbers::pi});
   }
+  // A length is the width at the mean radius, bounded as the angle is.
+  const double circumference = 2 * std::numbers::pi * mean_radius;
+  return node.quantity(si::length,
+                       {.low = 0.0, .low_open = true, .high = circumference,
+                        .reason = "a groove is wider than nothing and at most the circumference at the mean radius"}) /
+         mean_radius;
 }
 
 namespace {

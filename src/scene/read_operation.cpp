@@ -1,5 +1,7 @@
 // How the bearing is run: its oil (lubricant), load, speed and surroundings
 // (operating), and its boundary friction law (friction). docs/physics.md sections 2, 5, 6.
+#include <stdexcept>
+
 #include <fmt/format.h>
 
 #include "scene_names.h"
@@ -69,7 +71,8 @@ void read_fitted_viscosity(const MapReader& viscosity, bool data_sheet, Lubrican
     std::vector<double> kinematic;
     for (const Node& row : rows) {
       const MapReader p(row, {"temperature", "viscosity", "kinematic"});
-      const double t = p.quantity("temperature", si::temperature, bounds::absolute_temperature);
+      // Roelands' law is fitted on 1 + T_C/135, which must be positive.
+      const double t = p.quantity("temperature", si::temperature, bounds::roelands_temperature);
       double mu = 0;
       if (p.has("kinematic")) {
         p.restrict_to({"temperature", "kinematic"}, "with kinematic");
@@ -91,7 +94,13 @@ void read_fitted_viscosity(const MapReader& viscosity, bool data_sheet, Lubrican
       points.push_back({t, mu});
     }
     // Two points fix G0 and S0 with Roelands' own μ∞ (6.31e-5 Pa s); more are fitted.
-    fit = points.size() == 2 ? fit_roelands(points, 6.31e-5) : fit_roelands(points);
+    try {
+      fit = points.size() == 2 ? fit_roelands(points, 6.31e-5) : fit_roelands(points);
+    } catch (const std::invalid_argument& e) {
+      // Points no Roelands law passes through (two below its mu_infinity of 6.31e-5 Pa s).
+      table.fail(fmt::format("{}: Roelands' law cannot be fitted to these points: {}; check their values and units",
+                             table.path(), e.what()));
+    }
 
   }
   // The fitted law must be one the scene accepts as given (it is described so, and loads
