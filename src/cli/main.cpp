@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -30,6 +32,7 @@
 #include "twb/scene/scene_loader.h"
 #include "solver/sundials_context.h"
 #include "study/study_runner.h"
+#include "study/progress_heartbeat.h"
 #include "study/results_files.h"
 #include "study/study_support.h"
 #include "twb/version.h"
@@ -221,8 +224,11 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
       std::cerr << "twb: this study is one piece of work: rank 0 runs it, the other ranks wait\n";
     }
   }
+  // Under a terminal a quiet stretch of the study says it is still at work.
+  std::optional<twb::ProgressHeartbeat> heartbeat;
+  if (!r.quiet && isatty(STDERR_FILENO)) heartbeat.emplace(progress_lines(false), std::chrono::seconds(5));
   twb::StudyOutcome outcome =
-      twb::run_study(model, progress_lines(r.quiet),
+      twb::run_study(model, heartbeat ? heartbeat->report() : progress_lines(r.quiet),
                      twb::RunOptions{.threads = threads, .cycle_start = cycle_start ? &*cycle_start : nullptr},
                      twb::StudyPlumbing{.journal = &journal, .scheduler = scheduler});
   outcome.timings.setup_ms = setup_ms;
