@@ -352,6 +352,16 @@ double BearingModel::groove_supply_force() const {
   return *film.groove_pressure * area;
 }
 
+double BearingModel::supply_lift_bound() const {
+  double most = 0.0;
+  for (const Film& film : films_) {
+    const double pressure = std::max(film.inner_edge_pressure, film.groove_pressure.value_or(0.0));
+    const double ri = film.mesh.inner_radius(), ro = film.mesh.outer_radius();
+    most = std::max(most, pressure * std::numbers::pi * (ro * ro - ri * ri));
+  }
+  return most;
+}
+
 void BearingModel::assemble(std::span<const double> u, Assembler& a, AssemblyTotals* totals,
                             const StateRates* rates) const {
   AssemblyTotals local;

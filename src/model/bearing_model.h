@@ -169,6 +169,11 @@ class BearingModel final : public SegregatedSystem {
   // their nodes' areas, a floor of the film's hydrostatic force (docs/physics.md section
   // 14). Below it no load keeps the gear down. 0 without supply into grooves.
   double groove_supply_force() const;
+  // The most the oil supply alone can hold on any film: its pressure (bore or grooves,
+  // the higher) over the film's whole face, which no film at a vanishing wedge exceeds.
+  // Above it the supply cannot lift the gear off; below it, it may, and no steady state
+  // need exist (a cold start there can search for minutes). 0 without a supply.
+  double supply_lift_bound() const;
 
   // Thermal deformation (docs/physics.md section 11; film_shape.cpp): the change δ of a film's
   // gap at a node from its plane, δ = form · u (m), from the carrier's and gear's face

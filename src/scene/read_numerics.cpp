@@ -1,5 +1,9 @@
 // What to compute and how finely: the discretisation (mesh), the nonlinear solver's
 // stopping rules (solver), the study to run, and where results go (output).
+#include <algorithm>
+#include <cctype>
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "twb/scene/scene_inputs.h"
@@ -105,6 +109,21 @@ void read_tolerance(const MapReader& study, Study& s) {
                                      .reason = "the relative accuracy wanted of each failure load, e.g. '1 %' "
                                                "or 0.01, or none"},
                                s.tolerance);
+}
+
+// study.search_past_failure: a factor of the first failure load (at least 1), or none.
+void read_search_bound(const MapReader& study, Study& s) {
+  if (!study.has("search_past_failure")) return;
+  const Node node = study.get("search_past_failure", "");
+  if (node.yaml().IsScalar() && node.yaml().Scalar() == "none") {
+    s.search_past_failure = 0.0;
+    return;
+  }
+  s.search_past_failure = study.quantity("search_past_failure", si::dimensionless,
+                                         Range{.low = 1.0, .high = 1000.0,
+                                               .reason = "how far past the first failure load the branch is "
+                                                         "searched, as a factor of it (e.g. 2), or none"},
+                                         s.search_past_failure);
 }
 
 double read_bracket_width(const MapReader& study, double fallback) {
@@ -229,6 +248,15 @@ void read_map_axes(const MapReader& study, Study& s, const Scene& scene, const c
 }
 
 // The speeds of one search each: `speeds: [136 rad/s, 545 rad/s]`.
+// Whether a speed was written in revolutions per minute ("3000 rpm", "3 krpm",
+// "50 r/min"): what the figures and summaries then show.
+bool given_in_rpm(const Node& speed) {
+  if (!speed.yaml().IsScalar()) return false;
+  std::string text = speed.yaml().Scalar();
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  return text.ends_with("rpm") || text.ends_with("r/min") || text.ends_with("rev/min");
+}
+
 void read_speeds(const MapReader& study, Study& s) {
   const Node speeds = study.get("speeds", "a list of speeds, e.g. [136 rad/s, 545 rad/s]");
   const std::vector<Node> items = speeds.list("speeds, e.g. [136 rad/s, 545 rad/s]");
@@ -237,6 +265,7 @@ void read_speeds(const MapReader& study, Study& s) {
                             "[136 rad/s, 545 rad/s]",
                             speeds.path()));
   for (const Node& speed : items) s.speeds.push_back(speed.quantity(si::angular_speed, bounds::speed));
+  s.speeds_in_rpm = std::all_of(items.begin(), items.end(), [](const Node& n) { return given_in_rpm(n); });
 }
 
 // A load grid (load_sweep, sliding_choice): the range, its number of loads, and the
@@ -356,6 +385,9 @@ void read_study(const MapReader& scene, Scene& out) {
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   Study& s = out.study;
   s.type = read_choice(study, "type", kStudyTypes, s.type);
+  // (study.speeds, where given, say again)
+  if (const std::optional<Node> speed = scene.map("operating", {"load", "speed", "sliding", "ambient"}).find("speed"))
+    s.speeds_in_rpm = given_in_rpm(*speed);
   switch (s.type) {
     case StudyType::point:
       study.restrict_to({"type", "error_estimate"}, "with type: point");
@@ -472,8 +504,9 @@ void read_study(const MapReader& scene, Scene& out) {
       break;
     case StudyType::distress_map: {
       study.restrict_to({"type", "speeds", "load_start", "load_end", "parameter", "bracket_width", "error_estimate",
-                         "method", "tolerance"},
+                         "method", "tolerance", "search_past_failure"},
                         "with type: distress_map");
+      read_search_bound(study, s);
       s.map_method = read_choice(study, "method", kMapMethods, s.map_method);
       // Followed failure loads have no refined meshes' searches: no error bars by default.
       if (s.map_method == MapMethod::follow) s.error_estimate = ErrorEstimate::none;

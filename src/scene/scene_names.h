@@ -42,7 +42,7 @@ inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start",
                                                    "parameters", "inputs", "probabilities", "monte_carlo",
                                                    "data", "fit", "sd", "max_iterations", "method",
                                                    "schedule", "failure_load_at_worst", "relative_tolerance",
-                                                   "tolerance"};
+                                                   "tolerance", "search_past_failure"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{

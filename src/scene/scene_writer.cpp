@@ -260,6 +260,9 @@ void write_numerics(Writer& w, const Scene& s) {
   if ((st.type == StudyType::load_sweep || st.type == StudyType::distress_map) &&
       st.error_estimate != ErrorEstimate::none)
     w.entry(1, "tolerance", st.tolerance > 0.0 ? quantity(st.tolerance, "1") : std::string("none"));
+  if (st.type == StudyType::distress_map)
+    w.entry(1, "search_past_failure",
+            st.search_past_failure > 0.0 ? quantity(st.search_past_failure, "1") : std::string("none"));
   if (st.type == StudyType::transient) w.entry(1, "duration", quantity(st.duration, "s"));
   if (st.type == StudyType::sensitivity) {
     w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));

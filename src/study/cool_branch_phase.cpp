@@ -11,11 +11,13 @@
 // previous state must settle, and on that state. Where it settles elsewhere the
 // corrector had jumped branches: the transient's state is the one the machine reaches,
 // and continuation restarts from it. The first step that runs away ends the cool branch.
+#include <algorithm>
 #include <chrono>
 
 #include <fmt/format.h>
 
 #include "fold_approach.h"
+#include "model/limit_thresholds.h"
 #include "study/distress_phases.h"
 #include "study_support.h"
 #include "solver/linear_stability.h"
@@ -62,6 +64,7 @@ DistressSearchPhases::CoolBranchEnd DistressSearchPhases::continue_cool_branch()
   NaturalContinuation cool_branch(model_);
 
   for (std::size_t t = 0; t < targets_.size();) {
+    if (first_failure_ && low_ >= searched_to_) return CoolBranchEnd::bounded;
     // A segment that would cross the fold the slowest mode foresees costs rejected
     // corrections: stop short of it, at 70 % of the way there (the estimate lies beyond
     // the fold, and once within 3 % of it arclength continuation takes over).
@@ -149,7 +152,8 @@ DistressSearchPhases::CoolBranchEnd DistressSearchPhases::continue_cool_branch()
       low_state_ = p.u;
       cool_.emplace_back(low_, low_state_);
       keep(low_, low_state_, p.iterations, p.wall_ms);
-      const double done = (low_ - settings_.load_start) / (settings_.load_end - settings_.load_start);
+      bound_past_failure(t);
+      const double done = (low_ - settings_.load_start) / (searched_to_ - settings_.load_start);
       say(fmt::format("  {:.6g} rad/s: {:.2f} N on the cool branch ({:.2f} C mean; {:.0f} % of the load range)",
                       model_.speed(), low_, out_.states.back().state.washer_mean_temperature - 273.15, 100 * done));
       if (replaced) {
@@ -193,9 +197,26 @@ DistressSearchPhases::CoolBranchEnd DistressSearchPhases::continue_cool_branch()
       out_.diagnostics.push_back(rep.message);
       return CoolBranchEnd::ended;
     }
-    if (target == targets_[t]) ++t;
+    if (t < targets_.size() && target == targets_[t]) ++t;
   }
-  return CoolBranchEnd::load_end;
+  return searched_to_ < settings_.load_end ? CoolBranchEnd::bounded : CoolBranchEnd::load_end;
+}
+
+void DistressSearchPhases::bound_past_failure(std::size_t t) {
+  if (!(settings_.search_past_failure > 0.0) || first_failure_) return;
+  const LimitValues values = LimitValues::of(out_.states.back().state, model_.scene().effects.thermal);
+  const std::optional<LimitKind> past = first_criterion_past(values, OperatingLimits::of(model_.scene()));
+  if (!past) return;
+  first_failure_ = low_;
+  const double bound = settings_.search_past_failure * low_;
+  if (bound >= settings_.load_end) return;
+  out_.searched_to = searched_to_ = bound;
+  targets_.erase(std::remove_if(targets_.begin() + std::ptrdiff_t(t), targets_.end(), [&](double w) { return w > bound; }),
+                 targets_.end());
+  if (targets_.size() <= t || targets_.back() < bound) targets_.push_back(bound);
+  say(fmt::format("  {:.6g} rad/s: past {} at {:.2f} N; the branch is searched on to {:.2f} N only "
+                  "(study.search_past_failure: {:g})",
+                  model_.speed(), criterion_phrase(*past), low_, bound, settings_.search_past_failure));
 }
 
 }  // namespace twb

@@ -81,6 +81,7 @@ DistressSearchPhases::DistressSearchPhases(BearingModel& model, const DistressSe
       cool_(cool),
       approach_(approach) {
   out_.row.speed = model.speed();
+  out_.searched_to = searched_to_ = settings.load_end;
   const std::vector<double> capacity = model.capacities();
   dynamics_ = std::any_of(capacity.begin(), capacity.end(), [](double c) { return c > 0.0; });
   transient_ = dynamics_ && !settings.fold_only;
@@ -123,6 +124,13 @@ DistressSearch DistressSearchPhases::run(std::vector<double> u, const SteadyRepo
   out_.cool_states = out_.states.size();
   if (end == CoolBranchEnd::load_end) {
     report_no_distress();
+    return std::move(out_);
+  }
+  if (end == CoolBranchEnd::bounded) {
+    out_.row.verdict = DistressVerdict::bounded;
+    out_.row.method = fmt::format("no fold up to {:.6g} N (not searched further: {:g} times the first failure at "
+                                  "{:.6g} N, study.search_past_failure)",
+                                  searched_to_, settings_.search_past_failure, first_failure_.value_or(0.0));
     return std::move(out_);
   }
   if (!transient_) {

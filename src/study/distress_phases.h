@@ -54,8 +54,12 @@ class DistressSearchPhases {
     load_end,  // continued to load_end: no fold, no runaway on the way
     runaway,   // a load step between two of its states ran away (at runaway_load_)
     ended,     // it ends near low_: a fold found round it, or continuation stopped
+    bounded,   // continued to searched_to_, the bound past the first failure criterion
   };
   CoolBranchEnd continue_cool_branch();          // phase 1 (cool_branch_phase.cpp)
+  // The first accepted state past a failure criterion bounds the search (a distress
+  // map's search_past_failure): the targets from index t on end at the bound.
+  void bound_past_failure(std::size_t t);
   void report_no_distress();                     // phase 2
   void report_steady_fold();                     // without transients: the steady branch's fold only
   // Phases 3-6; false where the search stops (its row says why).
@@ -97,6 +101,8 @@ class DistressSearchPhases {
   double low_ = 0.0;        // the last load accepted on the cool branch, and its state
   std::vector<double> low_state_;
   double runaway_load_ = 0.0;                 // where phase 1 saw a runaway
+  double searched_to_ = 0.0;                  // load_end, or the bound past the first failure
+  std::optional<double> first_failure_;       // the first accepted load past a failure criterion
   std::optional<ArclengthReport> around_fold_;  // the arclength round the fold, once run
 };
 

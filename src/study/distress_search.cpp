@@ -81,6 +81,7 @@ struct StartCheck {
   NaturalReport descent;
   std::vector<double> light_state;
   SteadyReport light_start;  // the light load's cold start
+  std::string unchecked;     // why no light load was tried, if none was
   long klu_factorizations = 0;
 };
 
@@ -95,12 +96,21 @@ StartCheck check_start(BearingModel& model, const DistressSearchSettings& settin
   c.light = settings.load_start * light_load_fraction;
   if (model.scene().lubricant.supply) {
     // Oil fed under pressure lifts the gear off a load light enough, which then has no
-    // steady state: the light load is the lightest of a tenth, a fifth, … of the start
-    // that has one, up to two thirds of the start.
-    for (;; c.light *= 2.0) {
+    // steady state, and a cold start there fails only after minutes (a fed grooved washer
+    // on 17 × 144: 10 min at 15 N, where 30 N solves in 4 s): the light load is the
+    // lightest of a tenth, a fifth, … of the start, and no less than the most the supply
+    // can hold, that has one, up to two thirds of the start.
+    const double top = settings.load_start / 1.5;
+    c.light = std::max(c.light, model.supply_lift_bound());
+    for (; c.light <= top; c.light *= 2.0) {
       model.set_load(c.light);
       c.light_start = steady.solve_cold(c.light_state);
-      if (c.light_start.converged || 2.0 * c.light > settings.load_start / 1.5) break;
+      if (c.light_start.converged || 2.0 * c.light > top) break;
+    }
+    if (c.light > top) {
+      c.unchecked = fmt::format("the oil supply may hold up to {:.3g} N, too near the start for a lighter load",
+                                model.supply_lift_bound());
+      return c;
     }
   }
   c.down.assign(u.begin(), u.end());
@@ -177,6 +187,10 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
     return out;
   }
   const bool beside = ahead.valid();
+  if (progress && !beside)
+    progress(fmt::format("  {:.6g} rad/s: is the start at {:.6g} N on the cool branch? following it down to a "
+                         "lighter load",
+                         model.speed(), settings.load_start));
   const StartCheck check = beside ? ahead.get() : check_start(model, settings, u);
   helper.reset();
   // Counted as on one thread: the search's own count holds the check's factorizations
@@ -189,7 +203,9 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
     return out;
   if (!check.light_start.converged) {
     // No reference to judge by: the search from the start as it is, and say so.
-    out.row.method = fmt::format("the start's branch could not be checked (no steady state at {:.3g} N); {}", light,
+    out.row.method = fmt::format("the start's branch could not be checked ({}); {}",
+                                 check.unchecked.empty() ? fmt::format("no steady state at {:.3g} N", light)
+                                                         : check.unchecked,
                                  out.row.method);
     return out;
   }
@@ -241,7 +257,10 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
     const double start = out.states.empty() ? settings.load_start : out.states.front().state.load;
     const auto t0 = std::chrono::steady_clock::now();
     long solves = 0;
-    locate_failure(model, branch, {start, settings.load_end, settings.bracket_width}, out.row, solves,
+    if (progress)
+      progress(fmt::format("  {:.6g} rad/s: where the branch crosses each failure criterion, up to {:.6g} N",
+                           model.speed(), out.searched_to));
+    locate_failure(model, branch, {start, out.searched_to, settings.bracket_width}, out.row, solves,
                    &out.crossing_states);
     if (progress && out.row.failure_load)
       progress(fmt::format("  {:.6g} rad/s: {} [{} steady solves, {:.1f} s]", model.speed(), out.row.failure, solves,

@@ -63,6 +63,9 @@ struct DistressSearchSettings {
   // Keep each state's unknowns (DistressSearch::state_vectors), for an error bar on
   // every state (study.error_estimate: every_state).
   bool keep_state_vectors = false;
+  // How far past the first failure criterion it crosses the cool branch is searched, as
+  // a factor of that load (a distress map's study.search_past_failure); 0: on to load_end.
+  double search_past_failure = 0.0;
   // Not a setting: the study's idle threads (study/spare_threads.h), one of which may
   // check the start's branch beside the search. The results do not depend on it.
   SpareThreads* spare_threads = nullptr;
@@ -92,6 +95,9 @@ struct SearchCounts {
 struct DistressSearch {
   std::vector<SolvedState> states;        // in the order solved: the cool branch, then (sweep) the hot one
   std::size_t cool_states = 0;            // how many of them lie on the cool branch
+  // The load the branch was searched to: load_end, or less where search_past_failure
+  // bounded it (W_d and crossings are reported up to here only).
+  double searched_to = 0.0;
   DistressRow row;
   std::vector<double> bracket_state;      // the steady state at the bracket's low load
   std::optional<FoldPoint> fold;          // the located fold (state, load, null vector)

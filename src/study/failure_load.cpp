@@ -253,6 +253,16 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
                                settings.load_start);
 }
 
+namespace {
+// Up to where the branch holds no thermo-viscous distress: load_end, or the bound past
+// the first failure (DistressVerdict::bounded), which was not searched past.
+std::string no_distress_up_to(const DistressRow& row, double load_end) {
+  return row.verdict == DistressVerdict::bounded
+             ? fmt::format("thermo-viscous distress not searched past {:.6g} N", load_end)
+             : fmt::format("no thermo-viscous distress up to {:.6g} N", load_end);
+}
+}  // namespace
+
 std::string failure_sentence(const DistressRow& row, double load_end) {
   if (!row.failure_load)
     return fmt::format("no failure up to {:.6g} N (no thermo-viscous distress, no limit crossed)", load_end);
@@ -260,7 +270,7 @@ std::string failure_sentence(const DistressRow& row, double load_end) {
     return fmt::format("fails at {:.2f} N by thermo-viscous distress", *row.failure_load);
   return fmt::format("fails at {:.2f} N by {} ({})", *row.failure_load, criterion_phrase(row.criterion->limit),
                      row.distress_load ? fmt::format("thermo-viscous distress at {:.2f} N", *row.distress_load)
-                                       : fmt::format("no thermo-viscous distress up to {:.6g} N", load_end));
+                                       : no_distress_up_to(row, load_end));
 }
 
 std::string converged_failure_sentence(const DistressRow& row, double load_end) {
@@ -278,7 +288,7 @@ std::string converged_failure_sentence(const DistressRow& row, double load_end) 
                     ? fmt::format("; thermo-viscous distress at {:.1f} ± {:.1f} N", *row.extrapolated_load,
                                   *row.discretization_error)
                     : fmt::format("; thermo-viscous distress at {:.2f} N on the scene's mesh", *row.distress_load))
-             : fmt::format("; no thermo-viscous distress up to {:.6g} N", load_end);
+             : "; " + no_distress_up_to(row, load_end);
   if (c.tolerance_met && !*c.tolerance_met) s += "; NOT to the tolerance";
   return s;
 }

@@ -86,10 +86,7 @@ std::shared_ptr<const OperatingStates::State> OperatingStates::state_of(const Be
   const BearingState b = model.describe(s->u);
   s->rise = b.max_film_temperature - model.scene().operating.ambient;
   const OperatingLimits limits = OperatingLimits::of(model.scene());
-  for (const LimitKind kind : kFailureCriteria) {
-    const std::optional<double> m = failure_margin(kind, LimitValues::of(b, model.scene().effects.thermal), limits);
-    s->past_limit = s->past_limit || (m && *m < 0.0);
-  }
+  s->past_limit = first_criterion_past(LimitValues::of(b, model.scene().effects.thermal), limits).has_value();
   return s;
 }
 

@@ -316,7 +316,7 @@ long estimate_failure_errors(const BearingModel& model, const DistressSearchSett
   if (row.failure_load && row.failure_error) {
     // The already-past note of locate_failure stays; the rest is said again converged first.
     const std::size_t past = row.failure.find(" (already past it at the start");
-    row.failure = converged_failure_sentence(row, settings.load_end) +
+    row.failure = converged_failure_sentence(row, found.searched_to > 0.0 ? found.searched_to : settings.load_end) +
                   (past == std::string::npos ? std::string() : row.failure.substr(past));
     if (model.scene().washer.grooves && !row.failure_convergence.meshes.empty())
       row.failure += "; " + grooves_held(model.scene());

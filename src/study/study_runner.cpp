@@ -149,6 +149,7 @@ void run_load_sweep(BearingModel& model, StudyOutcome& out, const ProgressReport
 void run_distress_map(BearingModel& base, StudyOutcome& out, const ProgressReport& progress, const Running& how) {
   DistressSearchSettings settings = range_settings(base.scene().study);
   settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
+  settings.search_past_failure = base.scene().study.search_past_failure;
   if (base.scene().study.map_method == MapMethod::follow) {
     run_followed_map(base, settings, out, progress, how);
     return;

@@ -82,6 +82,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"sweep_end_not_above_start", 15, 13, {"study.load_end: '100 N' must be greater than load_start '2000 N'"}},
     {"sweep_steps_too_few", 12, 76, {"study.load_steps: 1 is out of range; must be in [2, 10000]"}},
     {"distress_map_without_speeds", 14, 11, {"study.speeds: the list is empty", "give at least one speed"}},
+    {"distress_map_search_bound_below_one", 17, 24, {"study.search_past_failure: '0.5' is out of range; must be in [1, 1000]", "as a factor of it (e.g. 2), or none"}},
     {"distress_map_unknown_parameter", 17, 21, {"study.parameter.name: unknown value 'viscosity'", "allowed: friction_coefficient, gear_tilt, roughness, groove_count, groove_width, groove_depth"}},
     {"distress_map_friction_with_empirical_law", 19, 11, {"friction_coefficient varies the constant friction law's coefficient", "set friction.law: constant"}},
     {"distress_map_without_loads", 13, 3, {"missing required key 'load_start' in 'study'"}},

@@ -108,6 +108,7 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.study.axes, b.study.axes);
   EXPECT_EQ(a.study.bracket_width, b.study.bracket_width);
   EXPECT_EQ(a.study.tolerance, b.study.tolerance);
+  EXPECT_EQ(a.study.search_past_failure, b.study.search_past_failure);
   EXPECT_EQ(a.mesh.max_refinements, b.mesh.max_refinements);
   EXPECT_EQ(a.study.duration, b.study.duration);
   EXPECT_EQ(a.study.parameters, b.study.parameters);
@@ -295,6 +296,14 @@ INSTANTIATE_TEST_SUITE_P(
                       std::string(kMinimalScene) +
                           "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
                           "        tolerance: none}\n"},
+        RoundTripCase{"distress_map_searched_on_past_failure",
+                      std::string(kMinimalScene) +
+                          "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
+                          "        search_past_failure: 3.5}\n"},
+        RoundTripCase{"distress_map_searched_to_its_end",
+                      std::string(kMinimalScene) +
+                          "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
+                          "        search_past_failure: none}\n"},
         RoundTripCase{"sliding_choice",
                       std::string(kMinimalScene) +
                           "study: {type: sliding_choice, speeds: [545 rad/s, 953 rad/s], load_start: 100 N,\n"

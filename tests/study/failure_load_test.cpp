@@ -167,6 +167,60 @@ TEST(FailureLoad, AnotherOrderReportsTheLowerCriterion) {
   EXPECT_EQ(criterion_name(*row.criterion), limit_name(least));
 }
 
+// A search bounded past its first failure (a distress map's study.search_past_failure)
+// stops at the bound, reports what lies below it as the whole search does, and says the
+// rest was not searched.
+TEST(FailureLoad, ASearchBoundedPastTheFirstFailureStopsThere) {
+  const DistressSearch& whole = shared().found;
+  const OperatingLimits limits = OperatingLimits::of(shared().model.scene());
+  // The first state of the whole search past a criterion: the bounded search follows the
+  // same states up to there (the same continuation targets), so its bound is twice this.
+  double first = 0.0;
+  for (const SolvedState& s : whole.states)
+    if (first_criterion_past(LimitValues::of(s.state, true), limits)) {
+      first = s.state.load;
+      break;
+    }
+  ASSERT_GT(first, 0.0);
+  const double bound = 2.0 * first;
+
+  BearingModel model(bronze({"materials.washer.pv_limit=2.5 MPa m/s"}));
+  model.set_speed(model.scene().study.speeds.front());
+  DistressSearchSettings settings = range(2000.0);
+  settings.search_past_failure = 2.0;
+  const DistressSearch found = search_distress(model, settings, {});
+  const DistressRow& row = found.row;
+  EXPECT_EQ(row.verdict, DistressVerdict::bounded) << row.method;
+  EXPECT_DOUBLE_EQ(found.searched_to, bound);
+  ASSERT_FALSE(found.states.empty());
+  EXPECT_DOUBLE_EQ(found.states.back().state.load, bound);
+  for (const SolvedState& s : found.states) EXPECT_LE(s.state.load, bound);
+  EXPECT_FALSE(row.distress_load);
+  // Below the bound each crossing is the whole search's, to the bracket width it locates
+  // loads to; above it none is reported. The test needs one of each.
+  int below = 0, above = 0;
+  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
+    const std::optional<double>& all = whole.row.criterion_loads[c];
+    if (!all) continue;
+    if (*all < bound) {
+      ++below;
+      ASSERT_TRUE(row.criterion_loads[c]) << limit_name(kFailureCriteria[c]);
+      EXPECT_NEAR(*row.criterion_loads[c], *all, settings.bracket_width * *all) << limit_name(kFailureCriteria[c]);
+    } else {
+      ++above;
+      EXPECT_FALSE(row.criterion_loads[c]) << limit_name(kFailureCriteria[c]);
+    }
+  }
+  EXPECT_GT(below, 0);
+  EXPECT_GT(above, 0);
+  ASSERT_TRUE(row.failure_load && whole.row.failure_load);
+  EXPECT_NEAR(*row.failure_load, *whole.row.failure_load, settings.bracket_width * *whole.row.failure_load);
+  EXPECT_NE(row.failure.find(fmt::format("thermo-viscous distress not searched past {:.6g} N", bound)),
+            std::string::npos)
+      << row.failure;
+  EXPECT_NE(row.method.find("not searched further"), std::string::npos) << row.method;
+}
+
 // Below every criterion up to load_end: no failure load, and the row says so.
 TEST(FailureLoad, NoneReachedSaysSo) {
   BearingModel model(bronze());

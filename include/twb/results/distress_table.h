@@ -34,6 +34,8 @@ enum class DistressVerdict {
   settled,          // "no distress up to …: every load step settled on the branch"
   no_bracket,       // the transients gave no bracket
   solver_failure,   // a state the search needed could not be solved
+  bounded,          // "no fold up to … (not searched further: …)": the branch was searched only
+                    // so far past the first failure criterion (study.search_past_failure)
 };
 
 // What sets W_fail (docs/physics.md section 8): thermo-viscous distress, or the first

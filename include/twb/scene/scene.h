@@ -371,6 +371,14 @@ struct Study {
   // section 8, "To a requested accuracy"). 0: none (one refinement, a bar of the formal
   // order, as error_estimate alone gives).
   double tolerance = 0.01;
+  // distress_map: the cool branch is searched on past the first failure criterion it
+  // crosses only up to this factor times that load (W_d and the other criteria beyond
+  // it are not searched: far past the first failure they cost minutes and lie past the
+  // oil's and the model's validity). 0: none, on to load_end.
+  double search_past_failure = 2.0;
+  // The scene gave its speeds (study.speeds, or operating.speed where the study names
+  // none) in rpm: the figures say rpm too (run.json's speed_unit).
+  bool speeds_in_rpm = false;
   // distress_map: a search at every combination, or each followed from its neighbour's.
   MapMethod map_method = MapMethod::search;
   // transient: pseudo-time span in s; 0 marches until the state settles or runs away.
