@@ -114,9 +114,11 @@ std::vector<std::pair<std::string, std::string>> library_versions() {
 std::string scene_record_json(const Scene& scene) { return scene_json(YAML::Load(describe_scene(scene))).dump(); }
 
 std::string run_json(const std::string& scene_path, const std::string& resolved_scene_yaml,
-                     const UnknownLayout& layout, const RunTimings& t, const std::string& outcome) {
+                     const UnknownLayout& layout, const RunTimings& t, const std::string& outcome,
+                     const std::string& speed_unit) {
   Json out;
   out["scene_file"] = scene_path;
+  out["speed_unit"] = speed_unit;
   out["outcome"] = outcome;
   Json versions = Json::object();
   for (const auto& [k, v] : library_versions()) versions[k] = v;

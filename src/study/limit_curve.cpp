@@ -47,16 +47,17 @@ LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKin
   std::vector<std::pair<double, std::pair<double, std::vector<double>>>> history;
   while ((to - p) * (to > from ? 1.0 : -1.0) > 1e-12 * std::abs(to - from)) {
     const double next = std::abs(to - p) < std::abs(dp) ? to : p + dp;
-    const std::optional<double> fold = settings.fold_load ? settings.fold_load(next) : std::nullopt;
-    if (fold && crossing.first >= *fold) {
+    // (infinite where the branch has no fold there)
+    const double fold = settings.fold_load ? settings.fold_load(next).value_or(INFINITY) : INFINITY;
+    if (crossing.first >= fold) {
       out.ended = fmt::format("at {:.6g}: the cool branch folds at {:.2f} N, below the crossing's {:.2f} N: the fold "
                               "comes first",
-                              next, *fold, crossing.first);
+                              next, fold, crossing.first);
       break;
     }
     // Not past the fold: there the cool branch has no state (the secant would only wander
     // onto the fold's singular Jacobian).
-    const double highest = fold ? std::min(settings.load_end, *fold * (1.0 - settings.bracket_width)) : settings.load_end;
+    const double highest = std::min(settings.load_end, fold * (1.0 - settings.bracket_width));
     model.set_curve_parameter(which, next);
     // The crossing's load and state extrapolated through the last three crossings (the
     // curves bend: W ~ p^-1.5 for a temperature limit in speed, where the secant through
@@ -100,10 +101,10 @@ LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKin
       out.ended = fmt::format("at {:.6g}: {}", next, why);
       break;
     }
-    if (fold && *w >= *fold) {
+    if (*w >= fold) {
       out.ended = fmt::format("at {:.6g}: the cool branch folds at {:.2f} N, below the crossing's {:.2f} N: the fold "
                               "comes first",
-                              next, *fold, *w);
+                              next, fold, *w);
       break;
     }
     history.emplace_back(p, std::move(crossing));

@@ -22,7 +22,8 @@ void write_study_results(const std::filesystem::path& dir, const std::string& sc
   const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message
                                                     : (outcome.message.empty() ? "ok" : outcome.message);
   write_file_atomically(dir / "run.json",
-                        run_json(scene_path, describe_scene(scene), layout, outcome.timings, verdict));
+                        run_json(scene_path, describe_scene(scene), layout, outcome.timings, verdict,
+                                 scene.study.speeds_in_rpm ? "rpm" : "rad/s"));
 }
 
 }  // namespace twb

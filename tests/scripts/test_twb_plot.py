@@ -656,6 +656,64 @@ class TwbPlotTest(unittest.TestCase):
         self.assertIn("> 8000 N", [t.get_text() for t in ax.texts])
         plt.close(fig)
 
+    def test_speeds_as_the_scene_gave_them(self):
+        """run.json's speed_unit (rpm where the scene gave its speeds in rpm) sets the
+        figures' speeds; --rad-s and --rpm override it, and a run.json without it (an
+        older run) stays in rad/s."""
+        def directory(name, unit):
+            d = self.results_dir(name, speeds=(314.159,), friction={"law": "empirical"})
+            with open(os.path.join(d, "run.json"), encoding="utf-8") as f:
+                record = json.load(f)
+            if unit is not None:
+                record["speed_unit"] = unit
+            with open(os.path.join(d, "run.json"), "w", encoding="utf-8") as f:
+                json.dump(record, f)
+            return d
+        in_rpm = tp.read_run(directory("rpm", "rpm"))
+        in_rad_s = tp.read_run(directory("rad_s", "rad/s"))
+        older = tp.read_run(directory("older", None))
+        self.assertEqual((in_rpm.speed_unit, in_rad_s.speed_unit, older.speed_unit), ("rpm", "rad/s", None))
+        self.assertTrue(tp.merge([in_rpm]).rpm)
+        self.assertFalse(tp.merge([in_rad_s]).rpm)
+        self.assertFalse(tp.merge([older]).rpm)
+        self.assertFalse(tp.merge([in_rpm, in_rad_s]).rpm)  # one axis for both: the SI unit
+        self.assertFalse(tp.merge([in_rpm], rpm=False).rpm)
+        self.assertTrue(tp.merge([in_rad_s], rpm=True).rpm)
+        out_dir = os.path.join(self.tmp, "figs_rpm")
+        result = plot(in_rpm.directory, "--out", out_dir, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        text = self.svg_text(os.path.join(out_dir, "fig07_mean_temperature_vs_load.svg"))
+        self.assertIn("3000 rpm", text)
+        self.assertNotIn("314.159 rad/s", text)
+        result = plot(in_rpm.directory, "--out", out_dir, "--format", "svg", "--rad-s")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        text = self.svg_text(os.path.join(out_dir, "fig07_mean_temperature_vs_load.svg"))
+        self.assertIn("314.159 rad/s", text)
+        self.assertEqual(plot(in_rpm.directory, "--rpm", "--rad-s").returncode, 2)
+
+    def test_the_map_draws_the_mesh_converged_failure_load_and_names_each_criterion_once(self):
+        """W_fail by a limit is drawn at its mesh-converged value with its bar (what the run
+        prints first), and its criterion is named where it starts to set W_fail, not at
+        every speed."""
+        header = f"speed_rad_s,{DISTRESS_FAIL_TAIL}"
+        rows = [distress_fail_row(header, {"speed_rad_s": w, "W_fail_N": 300 + w / 10, "criterion": c,
+                                           "W_fail_extrapolated_N": 320 + w / 10, "W_fail_error_N": 4,
+                                           "method": "no fold up to 700 N (not searched further)"})
+                for w, c in ((136, "oil_peak_temperature"), (545, "oil_peak_temperature"), (953, "scuffing"))]
+        d = self.results_dir("converged", speeds=(136, 545, 953), distress=[header] + rows)
+        data = tp.merge([tp.read_run(d)])
+        self.assertEqual([r.failure_converged for r in data.distress], [320 + 13.6, 320 + 54.5, 320 + 95.3])
+        fig = tp.distress.figure_distress_map(data)
+        ax = fig.axes[0]
+        crosses = [line for line in ax.get_lines() if line.get_marker() == "X"]
+        self.assertEqual(len(crosses), 1)
+        self.assertEqual(list(crosses[0].get_ydata()), [320 + 13.6, 320 + 54.5, 320 + 95.3])
+        names = [t.get_text() for t in ax.texts]
+        self.assertEqual(names.count(tp.distress.LIMIT_LABELS["oil_peak_temperature"]), 1)
+        self.assertEqual(names.count(tp.distress.LIMIT_LABELS["scuffing"]), 1)
+        self.assertIn("mesh-converged", " ".join(t.get_text() for t in ax.get_legend().get_texts()))
+        plt.close(fig)
+
     def test_states_past_the_failure_load_are_faded(self):
         """States past W_fail (here a limit at 600 N at 545 rad/s) are drawn faded, from the
         last operating state on, with their own legend entry; the operating curve ends at

@@ -44,11 +44,17 @@ TEST(FollowedMap, EachRowIsTheSearchesFailureLoad) {
     EXPECT_EQ(f.speed, s.speed);
     EXPECT_EQ(f.parameters, s.parameters);
     ASSERT_EQ(f.failure_load.has_value(), s.failure_load.has_value());
-    if (s.failure_load) EXPECT_NEAR(*f.failure_load, *s.failure_load, 1e-8 * *s.failure_load);
+    if (s.failure_load) {
+      EXPECT_NEAR(*f.failure_load, *s.failure_load, 1e-8 * *s.failure_load);
+    }
     ASSERT_EQ(f.criterion.has_value(), s.criterion.has_value());
-    if (s.criterion) EXPECT_EQ(criterion_name(*f.criterion), criterion_name(*s.criterion));
+    if (s.criterion) {
+      EXPECT_EQ(criterion_name(*f.criterion), criterion_name(*s.criterion));
+    }
     ASSERT_EQ(f.fold_load.has_value(), s.fold_load.has_value());
-    if (s.fold_load) EXPECT_NEAR(*f.fold_load, *s.fold_load, 1e-8 * *s.fold_load);
+    if (s.fold_load) {
+      EXPECT_NEAR(*f.fold_load, *s.fold_load, 1e-8 * *s.fold_load);
+    }
     by_newton += f.method.starts_with("followed by Newton");
   }
   EXPECT_TRUE(followed.distress.front().method.starts_with("searched")) << followed.distress.front().method;

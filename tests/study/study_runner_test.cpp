@@ -91,7 +91,7 @@ TEST(StudyRunner, LoadSweepOverSpeeds) {
 TEST(StudyRunner, LoadSweepOverAParameter) {
   Scene scene = coarse_grid(StudyType::load_sweep, {136.0});
   scene.friction.law = FrictionLaw::constant;
-  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .values = {0.05, 0.2}}};
+  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .path = {}, .unit = {}, .values = {0.05, 0.2}}};
   const StudyOutcome out = run(scene);
   ASSERT_FALSE(out.solver_failed) << out.message;
   EXPECT_EQ(out.parameter_columns, std::vector<std::string>{"friction_coefficient"});
@@ -152,7 +152,7 @@ TEST(StudyRunner, SlidingChoiceKeepsTheLowerTorque) {
 TEST(StudyRunner, ThreadsGiveTheSameResults) {
   Scene scene = coarse_grid(StudyType::distress_map, {136.0, 545.0, 953.0});
   scene.friction.law = FrictionLaw::constant;
-  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .values = {0.2, 0.3}}};
+  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .path = {}, .unit = {}, .values = {0.2, 0.3}}};
   scene.study.error_estimate = ErrorEstimate::none;
   auto outcome = [&](int threads) {
     BearingModel model(scene);

@@ -56,8 +56,11 @@ def main(argv=None):
                         help="where to write the figures (default: RESULTS_DIR/figures of the first)")
     parser.add_argument("--format", type=parse_formats, default=["png", "svg"], metavar="LIST",
                         help="comma-separated file formats among png, svg, pdf (default: png,svg)")
-    parser.add_argument("--rpm", action="store_true",
-                        help="speeds in revolutions per minute on the distress map and fold curve axes")
+    units = parser.add_mutually_exclusive_group()
+    units.add_argument("--rpm", action="store_true",
+                       help="speeds in revolutions per minute (default: as the scene gave them)")
+    units.add_argument("--rad-s", action="store_true",
+                       help="speeds in rad/s (default: as the scene gave them)")
     parser.add_argument("--state", type=parse_state, metavar="N",
                         help="polar maps of the fields of state N (1-based row of states.csv); "
                              "default: the last state below the distress load, else the last")
@@ -75,8 +78,7 @@ def main(argv=None):
     except OSError as e:
         print(f"twb_plot: error: {out_dir}: cannot create: {e.strerror}", file=sys.stderr)
         return 2
-    data = merge(runs)
-    data.rpm = args.rpm
+    data = merge(runs, rpm=True if args.rpm else (False if args.rad_s else None))
     written = make_figures(data, out_dir, args.format)
     make_field_maps(maps, out_dir, args.format, written)
     if not written:

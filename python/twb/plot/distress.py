@@ -44,11 +44,12 @@ LIMIT_LABELS = {
     "material_temperature:gear": "gear's material temperature",
     "film_ratio": "least film ratio",
     "pv": "washer's PV limit",
+    "scuffing": "scuffing (contact temperature)",
 }
 LIMIT_STYLES = {"oil_temperature": "tab:purple", "oil_peak_temperature": "tab:orange",
                 "material_temperature:carrier": "tab:brown", "material_temperature:washer": "tab:olive",
                 "material_temperature:gear": "tab:cyan", "film_ratio": "tab:pink",
-                "pv": "tab:gray"}
+                "pv": "tab:gray", "scuffing": "tab:red"}
 
 
 def draw_limit_curves(ax, rows, scale, distress, single, color, tag, ends):
@@ -181,13 +182,20 @@ RUNS_INSIDE_LEGEND = 3
 
 def found_top(rows):
     """The highest load a map's rows found (W_d and its bracket, the fold, the failure
-    load, the mesh-converged W_d with its bar), or None where they found none."""
+    load, the mesh-converged W_d and W_fail with their bars), or None where they found none."""
     loads = []
     for r in rows:
         loads += [v for v in (r.w_d, r.high, r.fold, r.failure) if v is not None]
         if r.extrapolated is not None:
             loads.append(r.extrapolated + (r.error or 0.0))
+        if r.failure_converged is not None:
+            loads.append(r.failure_converged + (r.failure_error or 0.0))
     return max(loads) if loads else None
+
+
+def failure_value(row):
+    """W_fail as the run prints it first: mesh-converged where the run has it."""
+    return row.failure_converged if row.failure_converged is not None else row.failure
 
 
 def limit_rows(rows):
@@ -229,7 +237,7 @@ def figure_distress_map(data):
     fig, ax = new_figure(r"Distress load $W_d$ vs speed: below it, no sudden distress" if not limited
                          else r"Where the washer fails: $W_{fail}$ (first criterion) and $W_d$ vs speed", size=size)
     scale, xlabel = speed_axis(data)
-    any_fold = any_estimate = any_beyond = False
+    any_fold = any_estimate = any_beyond = any_limit_converged = False
     # The loads the map found set the load axis; a search that found nothing up to a far
     # higher load_end is marked at the axis's top, its load in its label, not drawn there
     # (it would squash every curve to the bottom of the figure).
@@ -272,14 +280,23 @@ def figure_distress_map(data):
             ax.errorbar([scale * r.speed for r in converged], [r.extrapolated for r in converged],
                         yerr=[r.error for r in converged], color=color, marker="s", markersize=5,
                         markerfacecolor="none", linestyle="--", linewidth=1.0, capsize=4)
-        # Where a limit, not distress, sets the failure load: drawn with its criterion.
+        # Where a limit, not distress, sets the failure load: drawn with its criterion, at
+        # its mesh-converged value and bar where the run has them (what the run prints
+        # first), else on the scene's mesh.
         failing = limit_rows(rows)
         if failing:
-            ax.plot([scale * r.speed for r in failing], [r.failure for r in failing], color=color, marker="X",
-                    markersize=8, linestyle="-." if len(failing) > 1 else "none", linewidth=1.0)
-            for r in failing:
-                ax.annotate(LIMIT_LABELS.get(r.criterion, r.criterion), (scale * r.speed, r.failure),
-                            textcoords="offset points", xytext=(7, 5), fontsize="x-small", color=color)
+            any_limit_converged = any_limit_converged or any(r.failure_converged is not None for r in failing)
+            ax.errorbar([scale * r.speed for r in failing], [failure_value(r) for r in failing],
+                        yerr=[r.failure_error if r.failure_error is not None else 0.0 for r in failing],
+                        color=color, marker="X", markersize=8, linestyle="-." if len(failing) > 1 else "none",
+                        linewidth=1.0, capsize=3)
+            # The criterion named where it starts to set W_fail along the speeds, not at
+            # every speed: the names at neighbouring speeds overprinted one another.
+            for j, r in enumerate(failing):
+                if j > 0 and failing[j - 1].criterion == r.criterion:
+                    continue
+                ax.annotate(LIMIT_LABELS.get(r.criterion, r.criterion), (scale * r.speed, failure_value(r)),
+                            textcoords="offset points", xytext=(7, 5 - 9 * i), fontsize="x-small", color=color)
         folds = [r for r in rows if r.fold is not None]
         if folds:
             any_fold = True
@@ -302,7 +319,7 @@ def figure_distress_map(data):
     labels.append("bracket: settled / ran away")
     if any_beyond:
         handles.append(Line2D([], [], color="black", linestyle="none", marker="^", markerfacecolor="none"))
-        labels.append("no W_d up to the highest load searched (> load_end)")
+        labels.append("no W_d up to the highest load searched")
     if any_fold:
         handles.append(Line2D([], [], color="black", linestyle="none", marker="D",
                               markerfacecolor="none"))
@@ -312,7 +329,8 @@ def figure_distress_map(data):
         labels.append("mesh-converged W_d (Richardson) ± error")
     if limited:
         handles.append(Line2D([], [], color="black", linestyle="none", marker="X"))
-        labels.append("$W_{fail}$: a limit crossed first (criterion named)")
+        labels.append("$W_{fail}$: a limit crossed first (criterion named)"
+                      + (", mesh-converged ± error" if any_limit_converged else ""))
     # "best" for a few runs: the markers of searches without W_d sit at the top, where a
     # fixed corner would cover them.
     ax.legend(handles, labels, fontsize="small", framealpha=0.85, **place)

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .style import Style, axis_label, parameter_label, speed_key, speed_label
+from .style import Style, axis_label, parameter_label, show_speeds_in_rpm, speed_key, speed_label
 from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_calibration, read_calibration_correlation,
                      read_calibration_points, read_cycle, read_cycle_events, read_design_point, read_distress,
                      read_fold_curve,
@@ -54,6 +54,7 @@ class Run:
     trajectory_tags: list = field(default_factory=list)
     sliding: list = field(default_factory=list)
     friction: object = None
+    speed_unit: object = None  # run.json's: "rpm" where the scene gave its speeds so
     has_fields: bool = False
     fold_curve: object = None  # (parameter column, rows) of fold_curve.csv
     sensitivity: list = field(default_factory=list)  # rows of sensitivity.csv
@@ -104,6 +105,7 @@ def read_run(directory):
             run.design_point = read_design_point(design_path)
     _read_calibration(run, directory)
     run.friction = friction_setting(os.path.join(directory, "run.json"))
+    run.speed_unit = speed_unit(os.path.join(directory, "run.json"))
     run.has_fields = os.path.isdir(os.path.join(directory, "fields"))
     return run
 
@@ -157,7 +159,24 @@ def _split_trajectory(columns, tags):
     return out
 
 
-def merge(runs):
+def speed_unit(path):
+    """The unit run.json says the scene gave its speeds in ("rpm" or "rad/s"); None where
+    it does not say (an older run) or cannot be read: labels only, so not an error."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            unit = json.load(f)["speed_unit"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    return unit if unit in ("rpm", "rad/s") else None
+
+
+def merge(runs, rpm=None):
+    """rpm: speeds drawn in rpm (True), rad/s (False), or as the scenes gave them (None:
+    rpm where every run's scene gave rpm)."""
+    if rpm is None:
+        rpm = bool(runs) and all(r.speed_unit == "rpm" for r in runs)
+    # Before the labels below are made.
+    show_speeds_in_rpm(rpm)
     states = {c: np.concatenate([r.states[c] for r in runs]) for c in STATE_COLUMNS}
     # A state's error bar where its run has one, NaN elsewhere.
     for c in STATE_ERROR_COLUMNS:
@@ -194,4 +213,5 @@ def merge(runs):
     data.calibrations = [(r.name, r.calibration, r.calibration_points) for r in runs
                          if r.calibration or r.calibration_points]
     data.cycles = [(r.name, r.cycle, r.cycle_events) for r in runs if r.cycle is not None]
+    data.rpm = rpm
     return data

@@ -404,6 +404,8 @@ class DistressRow:
     error: object = None  # its error bar, N
     failure: object = None  # W_fail: where the bearing fails by its first criterion, N
     criterion: object = None  # the criterion that sets it ("distress", "oil_peak_temperature", ...)
+    failure_converged: object = None  # W_fail mesh-converged (study.tolerance), N
+    failure_error: object = None  # its error bar, N
 
 
 # Written since every failure criterion is located (W_fail_N after the run's columns,
@@ -446,7 +448,8 @@ def _read_distress_by_name(path, records, line, header):
         rows.append(DistressRow(_number(path, line, "speed_rad_s", fields[0]), parameter, number("W_d_N"),
                                 number("bracket_low_N"), number("bracket_high_N"), number("fold_N"),
                                 fields[-1].strip(), film, number("W_d_extrapolated_N"), number("W_d_error_N"),
-                                number("W_fail_N"), fields[column["criterion"]].strip() or None))
+                                number("W_fail_N"), fields[column["criterion"]].strip() or None,
+                                number("W_fail_extrapolated_N"), number("W_fail_error_N")))
     return rows
 
 
