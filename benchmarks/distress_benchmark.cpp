@@ -7,7 +7,9 @@
 //                            error bars off                               < 5 s
 //   BM_DistressCurveWithErrorBars  the same with every fold's error bar (the shipped scene)
 //   BM_DistressWithErrorBar  W_d at 545 rad/s and its Richardson bar     < 10 s
-//   BM_DefaultRun            configs/jackson_green_2006.yaml as shipped < 10 s
+//   BM_DefaultRun            configs/jackson_green_2006.yaml as shipped < 10 s; W_d to
+//                            study.tolerance (1 %)                       < 3× the next
+//   BM_DefaultRunWithoutErrorEstimate  the same with study.error_estimate: none
 // Counters, per study: transients (IDA load steps), ida_steps, klu_factorizations (every
 // KLU factorization or refactorization, twb's own and inside IDA), and per W_d where the
 // study finds several.
@@ -66,6 +68,9 @@ void BM_DistressWithErrorBar(benchmark::State& state) {
   run_scene(state, "studies/distress_map.yaml", {"study.speeds=[545 rad/s]"});
 }
 void BM_DefaultRun(benchmark::State& state) { run_scene(state, "jackson_green_2006.yaml", {}); }
+void BM_DefaultRunWithoutErrorEstimate(benchmark::State& state) {
+  run_scene(state, "jackson_green_2006.yaml", {"study.error_estimate=none"});
+}
 
 #define TWB_WHOLE_STUDY(f) \
   BENCHMARK(f)->Unit(benchmark::kSecond)->Iterations(1)->Repetitions(3)->MeasureProcessCPUTime()
@@ -75,6 +80,7 @@ TWB_WHOLE_STUDY(BM_DistressCurve);
 TWB_WHOLE_STUDY(BM_DistressCurveWithErrorBars);
 TWB_WHOLE_STUDY(BM_DistressWithErrorBar);
 TWB_WHOLE_STUDY(BM_DefaultRun);
+TWB_WHOLE_STUDY(BM_DefaultRunWithoutErrorEstimate);
 
 }  // namespace
 
