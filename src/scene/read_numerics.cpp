@@ -390,8 +390,13 @@ void read_study(const MapReader& scene, Scene& out) {
     s.speeds_in_rpm = given_in_rpm(*speed);
   switch (s.type) {
     case StudyType::point:
-      study.restrict_to({"type", "error_estimate"}, "with type: point");
+      study.restrict_to({"type", "error_estimate", "tolerance"}, "with type: point");
       s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
+      // A point's bar is the two-mesh estimate unless a tolerance is asked for: to 1 % on
+      // every quantity a point would cost many times itself (h_min/σ near the contact
+      // converges slowest), and its bar's cost is a few times the point's.
+      s.tolerance = 0.0;
+      read_tolerance(study, s);
       refuse_every_state(study, s, "point");
       break;
     case StudyType::transient:

@@ -35,6 +35,17 @@ bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const
                   std::string& why, SparseLu::Ordering ordering, long* newton_iterations = nullptr,
                   long* jacobians = nullptr);
 
+// The state (solved at u on `model`) on the scene's mesh refined by two, again and again
+// (mesh_convergence.h: mesh.max_refinements, each mesh from the last one's state), until
+// each quantity's bar is within the relative `tolerance` (temperatures: of their rise
+// above the ambient); its mesh_errors filled from the meshes' estimates (the observed
+// order from three meshes on). `lines` gets the meshes and, where some quantity stays
+// outside the tolerance, a warning naming it. False, with the reason in `why`, where not
+// even the first refined mesh solved.
+bool refine_state_to_tolerance(const BearingModel& model, std::span<const double> u, SolvedState& state,
+                               double tolerance, std::vector<std::string>& lines, std::string& why,
+                               long* newton_iterations = nullptr, long* jacobians = nullptr);
+
 // The run's lines on the states' error bars: which mesh gave them, and a warning where a
 // quantity of a state is more than 5 % off its extrapolation, with the mesh that would
 // meet 5 %. None where no state has a bar.

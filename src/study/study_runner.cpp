@@ -47,6 +47,15 @@ void run_point(BearingModel& model, StudyOutcome& out) {
   // Its error bars (state_error.h), with the warning where the mesh is more than 5 % off.
   std::string why;
   try {
+    const double tolerance = model.scene().study.tolerance;
+    if (tolerance > 0.0) {
+      // To the tolerance asked for: the meshes' estimates and their lines.
+      if (refine_state_to_tolerance(model, u, out.states.back(), tolerance, out.summary, why,
+                                    &out.timings.newton_iterations, &out.timings.jacobian_evaluations))
+        return;
+      out.summary.push_back("no error bar: " + why);
+      return;
+    }
     const std::unique_ptr<BearingModel> fine = refined_model(model, why);
     if (fine && refine_state(model, *fine, u, out.states.back(), why, SparseLu::Ordering::minimum_degree,
                              &out.timings.newton_iterations, &out.timings.jacobian_evaluations)) {

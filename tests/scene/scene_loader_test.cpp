@@ -296,6 +296,9 @@ INSTANTIATE_TEST_SUITE_P(
                       std::string(kMinimalScene) +
                           "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
                           "        tolerance: none}\n"},
+        RoundTripCase{"point_to_a_tolerance",
+                      std::string(kMinimalScene) + "study: {type: point, tolerance: 2 %}\n"},
+        RoundTripCase{"point_with_its_two_mesh_bar", std::string(kMinimalScene) + "study: {type: point}\n"},
         RoundTripCase{"distress_map_searched_on_past_failure",
                       std::string(kMinimalScene) +
                           "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
@@ -526,7 +529,12 @@ TEST(SceneLoader, ATolerancesValueAndWhereItIsRefused) {
   refused(sweep + ", tolerance: 0}\n", "study.tolerance");
   refused(sweep + ", tolerance: 60 %}\n", "study.tolerance");
   refused(sweep + ", tolerance: 1 N}\n", "study.tolerance");
-  refused(std::string(kMinimalScene) + "study: {type: point, tolerance: 1 %}\n", "tolerance");
+  refused(std::string(kMinimalScene) + "study: {type: sensitivity, tolerance: 1 %}\n", "tolerance");
+  // A point takes one, none by default (its two-mesh bar).
+  EXPECT_EQ(load_scene_text(std::string(kMinimalScene) + "study: {type: point}\n", "t.yaml").study.tolerance, 0.0);
+  EXPECT_DOUBLE_EQ(
+      load_scene_text(std::string(kMinimalScene) + "study: {type: point, tolerance: 2 %}\n", "t.yaml").study.tolerance,
+      0.02);
   refused(std::string(kMinimalScene) + "mesh: {max_refinements: 6}\n", "mesh.max_refinements");
 }
 

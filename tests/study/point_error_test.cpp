@@ -20,13 +20,20 @@
 namespace twb {
 namespace {
 
-StudyOutcome point_on(int radial, int circumferential) {
+StudyOutcome point_on(int radial, int circumferential, const std::string& study = "study={type: point}",
+                      const std::string& load = "300 N") {
   const Scene scene = load_scene(std::string(TWB_SOURCE_DIR) + "/configs/washers/bronze_cusn8.yaml",
                                  {"mesh.radial_nodes=" + std::to_string(radial),
-                                  "mesh.circumferential_nodes=" + std::to_string(circumferential),
-                                  "study={type: point}", "operating.load=300 N"});
+                                  "mesh.circumferential_nodes=" + std::to_string(circumferential), study,
+                                  "operating.load=" + load});
   BearingModel model(scene);
   return run_study(model, {});
+}
+
+std::string line_starting(const StudyOutcome& out, const std::string& start) {
+  for (const std::string& line : out.summary)
+    if (line.starts_with(start)) return line;
+  return {};
 }
 
 TEST(PointError, BarsCoverTheNextPairsExtrapolation) {
@@ -52,6 +59,38 @@ TEST(PointError, AMeshMoreThanFivePercentOffIsNamed) {
   ASSERT_FALSE(warning.empty());
   EXPECT_NE(warning.find("torque_Nm"), std::string::npos) << warning;
   EXPECT_NE(warning.find("would meet 5 %"), std::string::npos) << warning;
+}
+
+// study.tolerance on a point: a tolerance the first refinement meets stops there, with
+// the two-mesh bars (the same estimate: Richardson with the formal order and F_s = 3,
+// temperatures taken from the ambient, which moves neither the extrapolation nor the
+// step); one it cannot meet goes on to mesh.max_refinements and says which quantities
+// stay outside, with other bars (three meshes: the observed order, F_s = 1.25). At 150 N,
+// where 5 x 24 and 9 x 48 already agree to 20 %.
+TEST(PointError, ToATolerance) {
+  const StudyOutcome two = point_on(5, 24, "study={type: point}", "150 N");
+  const StudyOutcome loose = point_on(5, 24, "study={type: point, tolerance: 20 %}", "150 N");
+  const StudyOutcome tight = point_on(5, 24, "study={type: point, tolerance: 0.01 %}", "150 N");
+  ASSERT_EQ(loose.states.size(), 1u);
+  ASSERT_EQ(tight.states.size(), 1u);
+  const std::vector<double>& a = two.states[0].mesh_errors;
+  const std::vector<double>& b = loose.states[0].mesh_errors;
+  const std::vector<double>& c = tight.states[0].mesh_errors;
+  ASSERT_EQ(a.size(), 2 * std::size(kMeshErrorQuantities));
+  ASSERT_EQ(b.size(), a.size());
+  ASSERT_EQ(c.size(), a.size());
+  const std::string loose_line = line_starting(loose, "error bars to 20 % from 5 x 24, 9 x 48:");
+  EXPECT_FALSE(loose_line.empty());
+  EXPECT_TRUE(line_starting(loose, "warning").empty());
+  // The same arithmetic in another order: equal to rounding (1e-12 of the values).
+  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(b[k], a[k], 1e-12 * std::abs(a[k]) + 1e-15) << k;
+  EXPECT_FALSE(line_starting(tight, "error bars to 0.01 % from 5 x 24, 9 x 48, 17 x 96:").empty());
+  const std::string warning = line_starting(tight, "warning: not every quantity within 0.01 %");
+  ASSERT_FALSE(warning.empty());
+  EXPECT_NE(warning.find("torque_Nm"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("after mesh.max_refinements: 2"), std::string::npos) << warning;
+  // The third mesh moved the estimate: the torque's (index 4) extrapolation is another.
+  EXPECT_NE(c[8], a[8]);
 }
 
 TEST(PointError, NoneLeavesTheColumnsOut) {
