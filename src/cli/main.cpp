@@ -231,6 +231,7 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
       twb::run_study(model, heartbeat ? heartbeat->report() : progress_lines(r.quiet),
                      twb::RunOptions{.threads = threads, .cycle_start = cycle_start ? &*cycle_start : nullptr},
                      twb::StudyPlumbing{.journal = &journal, .scheduler = scheduler});
+  heartbeat.reset();  // the study is done: its summary follows, not a beat
   outcome.timings.setup_ms = setup_ms;
   outcome.timings.total_ms = twb::elapsed_ms(t0);
   if (slice) {

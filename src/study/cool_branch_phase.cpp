@@ -64,7 +64,8 @@ DistressSearchPhases::CoolBranchEnd DistressSearchPhases::continue_cool_branch()
   NaturalContinuation cool_branch(model_);
 
   for (std::size_t t = 0; t < targets_.size();) {
-    if (first_failure_ && low_ >= searched_to_) return CoolBranchEnd::bounded;
+    if (first_failure_ && low_ >= searched_to_)
+      return searched_to_ < settings_.load_end ? CoolBranchEnd::bounded : CoolBranchEnd::load_end;
     // A segment that would cross the fold the slowest mode foresees costs rejected
     // corrections: stop short of it, at 70 % of the way there (the estimate lies beyond
     // the fold, and once within 3 % of it arclength continuation takes over).
@@ -109,6 +110,9 @@ DistressSearchPhases::CoolBranchEnd DistressSearchPhases::continue_cool_branch()
     // it from the last accepted state.
     Acceptance acceptance = Acceptance::all;
     for (Pending& p : pending) {
+      // A bound set by an earlier state of this segment: the states beyond it are not
+      // searched (the next segment ends at the bound).
+      if (searched_to_ < settings_.load_end && p.load > searched_to_) break;
       bool replaced = false;
       if (transient_ && p.stability != Stability::stable) {
         say(fmt::format("  {:.2f} N: linear stability {} ({}); the transient decides", p.load,

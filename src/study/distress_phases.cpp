@@ -117,6 +117,7 @@ DistressSearch DistressSearchPhases::run(std::vector<double> u, const SteadyRepo
   keep(settings_.load_start, u, first.iterations, first.wall_ms);
   low_ = settings_.load_start;
   low_state_ = u;
+  bound_past_failure(0);  // the start itself may be past a criterion
   cool_ = {{low_, low_state_}};
   approach_.clear();
 

@@ -714,6 +714,17 @@ class TwbPlotTest(unittest.TestCase):
         self.assertIn("mesh-converged", " ".join(t.get_text() for t in ax.get_legend().get_texts()))
         plt.close(fig)
 
+    def test_the_searched_load_is_the_verdicts_not_a_notes(self):
+        """A note before the verdict with a load of its own (the start check's supply bound)
+        is not where the search ended; a bounded search's end is its bound."""
+        self.assertEqual(tp.distress.searched_up_to(
+            "the start's branch could not be checked (the oil supply may hold up to 40.2 N, too near the "
+            "start for a lighter load); no fold up to 8000 N (gradual heating)"), 8000.0)
+        self.assertEqual(tp.distress.searched_up_to(
+            "no fold up to 575.534 N (not searched further: 2 times the first failure at 287.767 N, "
+            "study.search_past_failure)"), 575.534)
+        self.assertIsNone(tp.distress.searched_up_to("runaway; fold at 188.4 N"))
+
     def test_states_past_the_failure_load_are_faded(self):
         """States past W_fail (here a limit at 600 N at 545 rad/s) are drawn faded, from the
         last operating state on, with their own legend entry; the operating curve ends at

@@ -31,9 +31,11 @@ def speed_axis(data):
 
 
 def searched_up_to(method):
-    """The highest load a search without W_d reached, from its method ("no fold up to 2000 N ...")."""
-    m = re.search(r"up to ([0-9.eE+-]+) N", method or "")
-    return float(m.group(1)) if m else None
+    """The highest load a search without W_d reached, from its method ("no fold up to 2000 N ...").
+    The last such load: a note before the verdict (the start check's "the oil supply may hold
+    up to 40 N") is not the search's end."""
+    found = re.findall(r"up to ([0-9.eE+-]+) N", method or "")
+    return float(found[-1]) if found else None
 
 
 LIMIT_LABELS = {
