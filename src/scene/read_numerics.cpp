@@ -91,39 +91,37 @@ void read_load_range(const MapReader& study, Study& s, std::string_view end_rela
   }
 }
 
+// A dimensionless study key that is a number in `range` or `none` (0), left at `value`
+// where absent.
+void read_number_or_none(const MapReader& study, std::string_view key, const Range& range, double& value) {
+  if (!study.has(key)) return;
+  const Node node = study.get(key, "");
+  value = node.yaml().IsScalar() && node.yaml().Scalar() == "none" ? 0.0
+                                                                  : study.quantity(key, si::dimensionless, range);
+}
+
 // study.tolerance: a relative accuracy ("1 %", 0.01) or none; refused beside
 // error_estimate: none, which asks for no refined mesh at all.
 void read_tolerance(const MapReader& study, Study& s) {
-  if (!study.has("tolerance")) return;
-  const Node node = study.get("tolerance", "");
-  if (s.error_estimate == ErrorEstimate::none)
+  if (study.has("tolerance") && s.error_estimate == ErrorEstimate::none) {
+    const Node node = study.get("tolerance", "");
     node.fail(fmt::format("{}: a tolerance refines the mesh until each failure load's error bar meets it, and "
                           "error_estimate: none asks for no error bar; leave one of them out",
                           node.path()));
-  if (node.yaml().IsScalar() && node.yaml().Scalar() == "none") {
-    s.tolerance = 0.0;
-    return;
   }
-  s.tolerance = study.quantity("tolerance", si::dimensionless,
-                               Range{.low = 0.0, .low_open = true, .high = 0.5,
-                                     .reason = "the relative accuracy wanted of each failure load, e.g. '1 %' "
-                                               "or 0.01, or none"},
-                               s.tolerance);
+  read_number_or_none(study, "tolerance",
+                      Range{.low = 0.0, .low_open = true, .high = 0.5,
+                            .reason = "the relative accuracy wanted of each failure load, e.g. '1 %' or 0.01, or none"},
+                      s.tolerance);
 }
 
 // study.search_past_failure: a factor of the first failure load (at least 1), or none.
 void read_search_bound(const MapReader& study, Study& s) {
-  if (!study.has("search_past_failure")) return;
-  const Node node = study.get("search_past_failure", "");
-  if (node.yaml().IsScalar() && node.yaml().Scalar() == "none") {
-    s.search_past_failure = 0.0;
-    return;
-  }
-  s.search_past_failure = study.quantity("search_past_failure", si::dimensionless,
-                                         Range{.low = 1.0, .high = 1000.0,
-                                               .reason = "how far past the first failure load the branch is "
-                                                         "searched, as a factor of it (e.g. 2), or none"},
-                                         s.search_past_failure);
+  read_number_or_none(study, "search_past_failure",
+                      Range{.low = 1.0, .high = 1000.0,
+                            .reason = "how far past the first failure load the branch is searched, as a factor of "
+                                      "it (e.g. 2), or none"},
+                      s.search_past_failure);
 }
 
 double read_bracket_width(const MapReader& study, double fallback) {
@@ -247,9 +245,8 @@ void read_map_axes(const MapReader& study, Study& s, const Scene& scene, const c
   }
 }
 
-// The speeds of one search each: `speeds: [136 rad/s, 545 rad/s]`.
 // Whether a speed was written in revolutions per minute ("3000 rpm", "3 krpm",
-// "50 r/min"): what the figures and summaries then show.
+// "50 r/min"): what the figures then show (run.json's speed_unit).
 bool given_in_rpm(const Node& speed) {
   if (!speed.yaml().IsScalar()) return false;
   std::string text = speed.yaml().Scalar();
@@ -257,6 +254,7 @@ bool given_in_rpm(const Node& speed) {
   return text.ends_with("rpm") || text.ends_with("r/min") || text.ends_with("rev/min");
 }
 
+// The speeds of one search each: `speeds: [136 rad/s, 545 rad/s]`.
 void read_speeds(const MapReader& study, Study& s) {
   const Node speeds = study.get("speeds", "a list of speeds, e.g. [136 rad/s, 545 rad/s]");
   const std::vector<Node> items = speeds.list("speeds, e.g. [136 rad/s, 545 rad/s]");
@@ -386,7 +384,7 @@ void read_study(const MapReader& scene, Scene& out) {
   Study& s = out.study;
   s.type = read_choice(study, "type", kStudyTypes, s.type);
   // (study.speeds, where given, say again)
-  if (const std::optional<Node> speed = scene.map("operating", {"load", "speed", "sliding", "ambient"}).find("speed"))
+  if (const std::optional<Node> speed = scene.map("operating", {std::begin(kOperatingKeys), std::end(kOperatingKeys)}).find("speed"))
     s.speeds_in_rpm = given_in_rpm(*speed);
   switch (s.type) {
     case StudyType::point:

@@ -179,7 +179,7 @@ void read_lubricant(const MapReader& scene, Scene& out) {
 
 void read_operating(const MapReader& scene, Scene& out) {
   const MapReader operating(scene.get("operating", "a map with load, speed, sliding, ambient"),
-                            {"load", "speed", "sliding", "ambient"});
+                            {std::begin(kOperatingKeys), std::end(kOperatingKeys)});
   Operating& o = out.operating;
   o.load = operating.quantity("load", si::force, bounds::load);
   o.speed = operating.quantity("speed", si::angular_speed, bounds::speed);

@@ -43,6 +43,7 @@ inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start",
                                                    "data", "fit", "sd", "max_iterations", "method",
                                                    "schedule", "failure_load_at_worst", "relative_tolerance",
                                                    "tolerance", "search_past_failure"};
+inline constexpr std::string_view kOperatingKeys[] = {"load", "speed", "sliding", "ambient"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
 inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{

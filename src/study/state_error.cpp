@@ -19,11 +19,15 @@ namespace {
 // the coarse ones (refine_state).
 constexpr double kRefinedSettling = 1e-3;
 
-// How far a state's quantity k is from its extrapolation, relative: temperatures count
-// from the ambient (their error relative to the rise).
+// Where quantity k is counted from when its error is taken relative: temperatures (degC)
+// from the ambient, so that their error is relative to the rise; the rest from zero.
+double zero_of(const Scene& scene, std::size_t k) {
+  return k < kMeshErrorTemperatures ? scene.operating.ambient - 273.15 : 0.0;
+}
+
+// How far a state's quantity k is from its extrapolation, relative (zero_of).
 double relative_offset(const Scene& scene, std::size_t k, double coarse, double extrapolated) {
-  const double zero = k < kMeshErrorTemperatures ? scene.operating.ambient - 273.15 : 0.0;
-  return std::abs(coarse - extrapolated) / std::max(std::abs(extrapolated - zero), 1e-300);
+  return std::abs(coarse - extrapolated) / std::max(std::abs(extrapolated - zero_of(scene, k)), 1e-300);
 }
 
 }  // namespace
@@ -97,12 +101,6 @@ bool solve_refined(const BearingModel& coarse, BearingModel& fine, std::span<con
   return true;
 }
 
-// A quantity as the error estimate takes it: temperatures as rises above the ambient, so
-// that a tolerance is relative to the rise.
-double from_zero(const Scene& scene, std::size_t k, double value) {
-  return k < kMeshErrorTemperatures ? value - (scene.operating.ambient - 273.15) : value;
-}
-
 }  // namespace
 
 bool refine_state(const BearingModel& model, BearingModel& fine, std::span<const double> u, SolvedState& state,
@@ -142,7 +140,7 @@ bool refine_state_to_tolerance(const BearingModel& model, std::span<const double
     bool met = true;
     for (std::size_t k = 0; k < quantities; ++k) {
       std::vector<double> values;
-      for (const std::vector<double>& q : on_mesh) values.push_back(from_zero(scene, k, q[k]));
+      for (const std::vector<double>& q : on_mesh) values.push_back(q[k] - zero_of(scene, k));
       estimate[k] = mesh_converged(values);
       met = met && (!held(k) || within_tolerance(estimate[k], tolerance));
     }
@@ -173,7 +171,7 @@ bool refine_state_to_tolerance(const BearingModel& model, std::span<const double
   state.mesh_errors.clear();
   std::string unmet;
   for (std::size_t k = 0; k < quantities; ++k) {
-    const double zero = on_mesh.front()[k] - from_zero(scene, k, on_mesh.front()[k]);
+    const double zero = zero_of(scene, k);
     state.mesh_errors.push_back(estimate[k].value + zero);
     state.mesh_errors.push_back(estimate[k].error);
     if (held(k) && !within_tolerance(estimate[k], tolerance))

@@ -53,12 +53,9 @@ void run_point(BearingModel& model, StudyOutcome& out) {
       if (refine_state_to_tolerance(model, u, out.states.back(), tolerance, out.summary, why,
                                     &out.timings.newton_iterations, &out.timings.jacobian_evaluations))
         return;
-      out.summary.push_back("no error bar: " + why);
-      return;
-    }
-    const std::unique_ptr<BearingModel> fine = refined_model(model, why);
-    if (fine && refine_state(model, *fine, u, out.states.back(), why, SparseLu::Ordering::minimum_degree,
-                             &out.timings.newton_iterations, &out.timings.jacobian_evaluations)) {
+    } else if (const std::unique_ptr<BearingModel> fine = refined_model(model, why);
+               fine && refine_state(model, *fine, u, out.states.back(), why, SparseLu::Ordering::minimum_degree,
+                                    &out.timings.newton_iterations, &out.timings.jacobian_evaluations)) {
       const std::vector<std::string> lines = state_error_lines(model.scene(), out.states);
       out.summary.insert(out.summary.end(), lines.begin(), lines.end());
       return;

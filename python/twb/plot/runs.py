@@ -18,15 +18,23 @@ from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_calibration
                      run_axes, STATE_ERROR_COLUMNS)
 
 
-def friction_setting(path):
-    """The boundary friction law of run.json's resolved scene, as a legend label.
-
-    run.json is only used for labels, so an unreadable one is ignored, not an error."""
+def run_record(path):
+    """run.json as a dict, or None where it cannot be read: it is only used for labels, so
+    an unreadable one is ignored, not an error."""
     try:
         with open(path, encoding="utf-8") as f:
-            friction = json.load(f)["scene"]["friction"]
+            record = json.load(f)
+    except (OSError, ValueError):
+        return None
+    return record if isinstance(record, dict) else None
+
+
+def friction_setting(record):
+    """The boundary friction law of run.json's resolved scene, as a legend label."""
+    try:
+        friction = record["scene"]["friction"]
         law = friction["law"]
-    except (OSError, ValueError, KeyError, TypeError):
+    except (KeyError, TypeError):
         return None
     if law == "constant":
         return f"dry friction coefficient {friction.get('coefficient', '?')}"
@@ -104,8 +112,9 @@ def read_run(directory):
         if os.path.isfile(design_path):
             run.design_point = read_design_point(design_path)
     _read_calibration(run, directory)
-    run.friction = friction_setting(os.path.join(directory, "run.json"))
-    run.speed_unit = speed_unit(os.path.join(directory, "run.json"))
+    record = run_record(os.path.join(directory, "run.json"))
+    run.friction = friction_setting(record)
+    run.speed_unit = speed_unit(record)
     run.has_fields = os.path.isdir(os.path.join(directory, "fields"))
     return run
 
@@ -159,14 +168,10 @@ def _split_trajectory(columns, tags):
     return out
 
 
-def speed_unit(path):
+def speed_unit(record):
     """The unit run.json says the scene gave its speeds in ("rpm" or "rad/s"); None where
-    it does not say (an older run) or cannot be read: labels only, so not an error."""
-    try:
-        with open(path, encoding="utf-8") as f:
-            unit = json.load(f)["speed_unit"]
-    except (OSError, ValueError, KeyError, TypeError):
-        return None
+    it does not say (an older run)."""
+    unit = record.get("speed_unit") if record is not None else None
     return unit if unit in ("rpm", "rad/s") else None
 
 
