@@ -121,6 +121,27 @@ TEST(LimitCurve, NoPointLiesAboveTheDistressFold) {
     }
 }
 
+// A crossing that falls steeply with the parameter: on the paper's bearing the scuffing
+// crossing falls from about 880 N at 136 rad/s to 160 N at 370 rad/s (coarse mesh), and
+// the parabola through the last three crossings once predicted a negative load, which
+// ended the curve at its first point ("load must be positive"). Every criterion
+// crossed at the low end is continued past its start.
+TEST(LimitCurve, ACrossingThatFallsSteeplyIsFollowed) {
+  BearingModel model(load_scene(std::string(TWB_SOURCE_DIR) + "/configs/studies/distress_curve.yaml",
+                                {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24", "study.error_estimate=none"}));
+  const StudyOutcome out = run_study(model, {}, RunOptions{});
+  const auto rows = limit_rows(out);
+  ASSERT_FALSE(out.distress.empty());
+  const DistressRow& low_end = out.distress.front();
+  ASSERT_TRUE(criterion_load(low_end, LimitKind::scuffing)) << "scuffing is crossed at 136 rad/s";
+  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
+    if (!low_end.criterion_loads[c]) continue;
+    const std::string name(limit_name(kFailureCriteria[c]));
+    ASSERT_TRUE(rows.count(name)) << name;
+    EXPECT_GE(rows.at(name).size(), 3u) << name << " is followed past its start";
+  }
+}
+
 // The curve's pieces (both ends' searches, the fold's error bars in chains that follow it, each
 // limit curve) run on two threads as on one: the same files to the last bit.
 TEST(LimitCurve, TheSameCurvesOnOneThreadAndOnTwo) {
