@@ -26,6 +26,7 @@ ResultTable fold_curve_table(const std::vector<FoldCurveRow>& rows, const std::s
              t_mean = t.number("T_mean_C"), t_max = t.number("T_max_C"), hmin = t.number("hmin_over_sigma"),
              contact = t.number("contact_share"), f_eff = t.number("f_eff"), fine = t.number("W_fold_fine_N"),
              extrapolated = t.number("W_fold_extrapolated_N"), error = t.number("W_fold_error_N");
+  const cells::ConvergenceColumns convergence(t, "W_fold", true);
   const double offset = parameter_column == "ambient_C" ? kelvin_offset : 0.0;
   for (const FoldCurveRow& r : rows) {
     const BearingState& s = r.state;
@@ -41,6 +42,7 @@ ResultTable fold_curve_table(const std::vector<FoldCurveRow>& rows, const std::s
     t.put_number(fine, r.fine_load);
     t.put_number(extrapolated, r.extrapolated_load);
     t.put_number(error, r.discretization_error);
+    convergence.put(t, r.convergence);
   }
   return t;
 }

@@ -425,10 +425,11 @@ void read_study(const MapReader& scene, Scene& out) {
       break;
     case StudyType::distress_curve:
       study.restrict_to({"type", "parameter", "from", "to", "load_start", "load_end", "bracket_width", "family",
-                         "error_estimate"},
+                         "error_estimate", "tolerance"},
                         "with type: distress_curve");
       read_fold_curve(study, out);
       s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
+      read_tolerance(study, s);
       refuse_every_state(study, s, "distress_curve");
       read_map_axes(study, s, out, "family");
       break;

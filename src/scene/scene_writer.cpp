@@ -257,7 +257,8 @@ void write_numerics(Writer& w, const Scene& s) {
   if (st.type == StudyType::distress_map && st.map_method == MapMethod::follow) w.entry(1, "method", "follow");
   if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map || st.type == StudyType::distress_curve)
     w.entry(1, "error_estimate", std::string(kErrorEstimates.name(st.error_estimate)));
-  if ((st.type == StudyType::load_sweep || st.type == StudyType::distress_map || st.type == StudyType::point) &&
+  if ((st.type == StudyType::load_sweep || st.type == StudyType::distress_map || st.type == StudyType::point ||
+       st.type == StudyType::distress_curve) &&
       st.error_estimate != ErrorEstimate::none)
     w.entry(1, "tolerance", st.tolerance > 0.0 ? quantity(st.tolerance, "1") : std::string("none"));
   if (st.type == StudyType::distress_map)

@@ -13,8 +13,10 @@
 #include "study_support.h"
 #include "solver/fold_curve.h"
 #include "study/distress_search.h"
+#include "study/fold_curve_bars.h"
 #include "study/fold_curve_feed.h"
 #include "study/richardson.h"
+#include "study/search_error_bars.h"
 #include "study/limit_curve.h"
 #include "study/limit_curve_jobs.h"
 #include "study/parallel.h"
@@ -77,13 +79,6 @@ void run_pieces(std::size_t count, int threads, RunTimings& timings, const Piece
     if (e) std::rethrow_exception(e);
 }
 
-// The fold's error bar at a curve point (run_fold_curve: chains of RefinedFoldCurve),
-// or why it has none.
-struct FoldBar {
-  std::optional<MeshErrorEstimate> estimate;
-  std::string why;
-};
-
 }  // namespace
 
 void run_fold_curve(BearingModel& model, std::optional<double> member, const std::string& label, StudyOutcome& out,
@@ -129,6 +124,11 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     search_end(0);
     if (needs_other_end(*at_from)) search_end(1);
   }
+  // The ends' failure loads with their error bars, to the study's tolerance
+  // (search_error_bars.h), each end on a thread of its own.
+  run_pieces(at_to ? 2 : 1, threads, out.timings, [&](std::size_t i) {
+    estimate_failure_errors(i == 0 ? model : other_model, settings, i == 0 ? *at_from : *at_to, progress, nullptr);
+  });
   // Each end searched, with its criteria's crossings: where the limit curves start.
   std::vector<std::pair<double, Crossings>> ends;
   auto take = [&](DistressSearch& found, double end) {
@@ -160,8 +160,10 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   LimitCurveSettings limit_settings;
   limit_settings.bracket_width = st.bracket_width;
   limit_settings.load_end = st.load_end;
+  limit_settings.error_bars = st.error_estimate != ErrorEstimate::none;
+  limit_settings.tolerance = st.tolerance;
   auto add_limit_curves = [&] {
-    for (const LimitCurveJob& job : jobs) add_limit_curve(job, which, member, label, out, say);
+    for (const LimitCurveJob& job : jobs) add_limit_curve(job, which, member, label, st.tolerance, out, say);
   };
   auto limit_curves_alone = [&] {
     limit_settings.fold_load = distress_fold_of(out, member);
@@ -256,67 +258,23 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     limit_settings.fold_load = distress_fold_of(out, member);
   };
 
-  // On `threads` threads: the curve; W_d's error bar all along it (each fold again on
-  // the refined mesh, study/richardson.h), in chains of kChainPoints consecutive points
-  // that follow the curve as it is traced (each point from the last refined fold of its
-  // chain; the cut is the same for any thread count, so are the results); then every
-  // limit curve. Each piece on models of its own.
+  // On `threads` threads: the curve; W_d's error bar all along it (fold_curve_bars.h:
+  // chains that follow the curve as it is traced); then every limit curve. Each piece on
+  // models of its own.
   const bool bars = st.error_estimate != ErrorEstimate::none;
-  constexpr std::size_t kChainPoints = 6;
   const auto most_points = std::size_t(fs.arclength.max_points) + 1;
-  const std::size_t chains = bars ? (most_points + kChainPoints - 1) / kChainPoints : 0;
-  std::vector<FoldBar> bar_of(bars ? most_points : 0);
-  std::string mesh;
-  std::mutex mesh_lock;
   // The chains' bearings from the scene as it stands before the curve: the trace sets
   // its model's curve parameter while they are built (and a roughness rescales from
   // where it stands, so a copy taken mid-trace would depend on timing).
-  const Scene chain_scene = model.scene();
-  auto bar_chain = [&](std::size_t chain) {
-    const std::size_t a = chain * kChainPoints, b = a + kChainPoints;
-    std::optional<FoldCurveFeed::Entry> at = feed.wait_for(a);
-    if (!at) return;
-    BearingModel coarse(chain_scene);
-    coarse.set_curve_parameter(which, at->first.p);
-    coarse.set_load(at->first.lambda);
-    std::optional<RefinedFoldCurve> refined;
-    std::string unbuilt;
-    try {
-      if (chain == 0)
-        refined.emplace(coarse, which, *first->fold);
-      else
-        refined.emplace(coarse, which, at->first.u, first->fold->null_vector);
-      const std::lock_guard<std::mutex> hold(mesh_lock);
-      mesh = refined->mesh();
-    } catch (const InternalError&) {
-      throw;  // a bug: no fallback may hide it
-    } catch (const std::exception& e) {
-      unbuilt = std::string("the refined mesh could not be built: ") + e.what();
-    }
-    for (std::size_t k = a; k < b && k < bar_of.size(); ++k) {
-      if (k > a && !(at = feed.wait_for(k))) return;
-      if (!refined) {
-        bar_of[k].why = unbuilt;
-        continue;
-      }
-      const FoldCurvePoint& pt = at->first;
-      coarse.set_curve_parameter(which, pt.p);
-      coarse.set_load(pt.lambda);
-      try {
-        bar_of[k].estimate = refined->at(pt.p, pt.lambda, pt.u, at->second, bar_of[k].why);
-      } catch (const InternalError&) {
-        throw;  // a bug: no fallback may hide it
-      } catch (const std::exception& failure) {
-        bar_of[k].why = failure.what();
-      }
-    }
-  };
+  FoldCurveBars bar_of(model.scene(), which, *first->fold, bars ? most_points : 0,
+                       [&](const std::string& s) { say(fmt::format("[curve{}] {}", label, s)); });
+  const std::size_t chains = bar_of.chains();
   const auto t_pieces = std::chrono::steady_clock::now();
   run_pieces(1 + chains + jobs.size(), threads, out.timings, [&](std::size_t i) {
     if (i == 0) {
       trace();
     } else if (i <= chains) {
-      bar_chain(i - 1);
+      bar_of.run_chain(i - 1, feed);
     } else {
       feed.wait_for_end();
       trace_job(model.scene(), which, limit_settings, jobs[i - 1 - chains]);
@@ -329,26 +287,14 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   }
   const std::size_t points = curve.points.size();
   if (bars) {
-    int with_bar = 0;
-    std::string last_why;
-    for (std::size_t k = 0; k < points; ++k) {
-      FoldCurveRow& row = out.fold_curve[row_of[k]];
-      if (const auto& e = bar_of[k].estimate) {
-        row.fine_load = e->fine_fold;
-        row.extrapolated_load = e->extrapolated;
-        row.discretization_error = e->error;
-        ++with_bar;
-      } else {
-        last_why = bar_of[k].why;
-      }
-    }
-    const std::string line =
-        mesh.empty() ? fmt::format("fold curve{}: no error bars: {}", label, last_why)
-                     : fmt::format("fold curve{}: error bars from the {} mesh at {} of {} folds{}", label, mesh,
-                                   with_bar, points,
-                                   with_bar < int(points) ? " (the last missing: " + last_why + ")" : std::string());
-    say(fmt::format("[curve{}] {} [{:.1f} s]", label, line.substr(line.find(':') + 2), elapsed_ms(t_pieces) / 1000.0));
-    out.summary.push_back(line);
+    for (std::size_t k = 0; k < points; ++k)
+      if (const auto& e = bar_of[k].estimate) put_bar(out.fold_curve[row_of[k]], *e);
+    const BarsSummary summary = bars_summary(
+        bar_of.first(points), st.tolerance, "folds",
+        [&](std::size_t k) { return shown_parameter(which, curve.points[k].p); }, "fold curve" + label);
+    say(fmt::format("[curve{}] {} [{:.1f} s]", label, summary.phrase, elapsed_ms(t_pieces) / 1000.0));
+    out.summary.push_back(fmt::format("fold curve{}: {}", label, summary.phrase));
+    if (summary.warning) out.summary.push_back(*summary.warning);
   }
   // Where the curve ended: past the range's end, or inside it where continuation could
   // not go on (the reason is the continuation's own, in terms of the curve parameter).

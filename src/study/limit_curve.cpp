@@ -36,7 +36,7 @@ LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKin
   out.kind = kind;
   model.set_curve_parameter(which, from);
   model.set_load(crossing.first);
-  out.points.push_back({from, model.describe(crossing.second)});
+  out.points.push_back({from, model.describe(crossing.second), crossing.second});
   NewtonSettings newton = newton_settings(model.scene());
   newton.max_iterations = 12;
   newton.line_search = false;
@@ -116,7 +116,7 @@ LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKin
     crossing = std::move(here);
     p = next;
     model.set_load(*w);
-    out.points.push_back({p, std::move(described)});
+    out.points.push_back({p, std::move(described), crossing.second});
     // Back towards the full step after an easy one.
     if (std::abs(dp) < std::abs(full)) dp *= 2.0;
   }

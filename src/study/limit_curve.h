@@ -31,11 +31,17 @@ struct LimitCurveSettings {
   // cusp): a crossing at or above it would lie on the hot branch, and the curve ends
   // there (the fold comes first).
   std::function<std::optional<double>(double)> fold_load;
+  // Each point's crossing again on the mesh refined by two (study.error_estimate), and
+  // with a tolerance (relative, study.tolerance; 0: none) on finer meshes until its bar
+  // meets it (richardson.h: crossing_sequence).
+  bool error_bars = false;
+  double tolerance = 0.0;
 };
 
 struct LimitCurvePoint {
   double p = 0.0;  // the curve parameter (SI)
   BearingState state;  // at the crossing; state.load is the crossing's load
+  std::vector<double> u;  // the state there (the start of its error bar's refined crossings)
 };
 
 struct LimitCurve {

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 
 #include <fmt/format.h>
 
 #include "model/limit_thresholds.h"
+#include "study/richardson.h"
 #include "study_support.h"
 #include "twb/error_family.h"
 
@@ -53,6 +55,46 @@ std::function<std::optional<double>(double)> distress_fold_of(const StudyOutcome
   };
 }
 
+namespace {
+
+// Each point's crossing along the mesh sequence (crossing_sequence), on bearings of the
+// job's own: one per mesh, built when a point first needs it and moved to each point's
+// parameter. The crossings are located to a fifth of the tolerance where that is finer
+// than the curve's width, as a search's are (search_error_bars.cpp).
+void bar_points(const Scene& scene, CurveParameter which, const LimitCurveSettings& settings, LimitCurveJob& job) {
+  const double tolerance = settings.tolerance;
+  const double width =
+      tolerance > 0.0 ? std::min(settings.bracket_width, tolerance / 5.0) : settings.bracket_width;
+  BearingModel coarse(scene);
+  std::vector<std::unique_ptr<BearingModel>> meshes;
+  job.bars.resize(job.curve.points.size());
+  for (std::size_t k = 0; k < job.curve.points.size(); ++k) {
+    const LimitCurvePoint& pt = job.curve.points[k];
+    FoldBar& bar = job.bars[k];
+    try {
+      coarse.set_curve_parameter(which, pt.p);
+      coarse.set_load(pt.state.load);
+      std::size_t level = 0;
+      bar.estimate = crossing_sequence(coarse, job.kind, {pt.state.load, pt.u}, width, settings.load_end, tolerance,
+                                       [&](const Scene& next) -> BearingModel& {
+                                         if (meshes.size() == level)
+                                           meshes.push_back(coarse.on_mesh(next.mesh.radial_nodes,
+                                                                           next.mesh.circumferential_nodes));
+                                         BearingModel& fine = *meshes[level++];
+                                         fine.set_curve_parameter(which, pt.p);
+                                         return fine;
+                                       },
+                                       bar.why);
+    } catch (const InternalError&) {
+      throw;  // a bug: no fallback may hide it
+    } catch (const std::exception& e) {
+      bar.why = e.what();
+    }
+  }
+}
+
+}  // namespace
+
 void trace_job(const Scene& scene, CurveParameter which, const LimitCurveSettings& settings, LimitCurveJob& job) {
   const auto t0 = std::chrono::steady_clock::now();
   try {
@@ -63,19 +105,22 @@ void trace_job(const Scene& scene, CurveParameter which, const LimitCurveSetting
   } catch (const std::exception& e) {
     job.curve.ended = std::string("the curve could not be continued: ") + e.what();
   }
+  if (settings.error_bars) bar_points(scene, which, settings, job);
   job.seconds = elapsed_ms(t0) / 1000.0;
 }
 
 void add_limit_curve(const LimitCurveJob& job, CurveParameter which, std::optional<double> member,
-                     const std::string& label, StudyOutcome& out, const std::function<void(const std::string&)>& say) {
+                     const std::string& label, double tolerance, StudyOutcome& out, const std::function<void(const std::string&)>& say) {
   const LimitCurve& curve = job.curve;
-  for (const LimitCurvePoint& pt : curve.points) {
+  for (std::size_t k = 0; k < curve.points.size(); ++k) {
+    const LimitCurvePoint& pt = curve.points[k];
     FoldCurveRow& row = out.fold_curve.emplace_back();
     row.parameter = pt.p;
     row.fold = FoldKind::limit;
     row.limit = job.kind;
     row.state = pt.state;
     row.member = member;
+    if (k < job.bars.size() && job.bars[k].estimate) put_bar(row, *job.bars[k].estimate);
   }
   const std::string line =
       curve.points.empty()
@@ -85,9 +130,20 @@ void add_limit_curve(const LimitCurveJob& job, CurveParameter which, std::option
                         limit_name(job.kind), curve.points.front().state.load, shown_parameter(which, curve.points.front().p),
                         curve.points.back().state.load, shown_parameter(which, curve.points.back().p), curve.points.size(),
                         curve.ended.empty() ? std::string() : "; ended " + curve.ended);
-  say(fmt::format("[curve{}] {} [{} steady solves, {:.1f} s]", label, line.substr(line.find(':') + 2), curve.solves,
-                  job.seconds));
-  out.summary.push_back(line);
+  std::string with_bars = line;
+  std::optional<std::string> warning;
+  if (!job.bars.empty()) {
+    const std::string curve_name = fmt::format("limit curve{}: {}", label, limit_name(job.kind));
+    BarsSummary bars = bars_summary(
+        job.bars, tolerance, "points", [&](std::size_t k) { return shown_parameter(which, curve.points[k].p); },
+        curve_name);
+    with_bars += "; " + bars.phrase;
+    warning = std::move(bars.warning);
+  }
+  say(fmt::format("[curve{}] {} [{} steady solves, {:.1f} s]", label, with_bars.substr(with_bars.find(':') + 2),
+                  curve.solves, job.seconds));
+  out.summary.push_back(with_bars);
+  if (warning) out.summary.push_back(*warning);
 }
 
 }  // namespace twb

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "study/fold_curve_bars.h"
 #include "study/limit_curve.h"
 #include "twb/study/study_outcome.h"
 
@@ -27,6 +28,8 @@ struct LimitCurveJob {
   double from = 0.0, to = 0.0;
   std::pair<double, std::vector<double>> start;
   LimitCurve curve;
+  // Each point's error bar (LimitCurveSettings::error_bars), or why it has none.
+  std::vector<FoldBar> bars;
   double seconds = 0.0;
 };
 
@@ -35,11 +38,13 @@ std::vector<LimitCurveJob> limit_curve_jobs(const Study& st, const std::vector<s
 // W_d along this curve's distress fold (the member's rows so far, sorted in the
 // parameter), interpolated linearly between its points; none outside the fold's range.
 std::function<std::optional<double>(double)> distress_fold_of(const StudyOutcome& out, std::optional<double> member);
-// Traces a job's curve on a model of the scene; a failure ends the curve with its reason.
+// Traces a job's curve on a model of the scene, then with settings.error_bars each point's
+// bar; a failure ends the curve with its reason.
 void trace_job(const Scene& scene, CurveParameter which, const LimitCurveSettings& settings, LimitCurveJob& job);
 // A traced limit curve's rows in fold_curve.csv (the criterion's name in the fold
 // column) and its summary line.
 void add_limit_curve(const LimitCurveJob& job, CurveParameter which, std::optional<double> member,
-                     const std::string& label, StudyOutcome& out, const std::function<void(const std::string&)>& say);
+                     const std::string& label, double tolerance, StudyOutcome& out,
+                     const std::function<void(const std::string&)>& say);
 
 }  // namespace twb

@@ -31,6 +31,25 @@ MeshErrorEstimate richardson_extrapolation(double coarse, double fine, double sa
   return e;
 }
 
+MeshErrorEstimate sequence_estimate(const MeshSequence& sequence, double tolerance, const std::string& finest) {
+  const std::vector<double>& loads = sequence.loads();
+  MeshErrorEstimate e;
+  if (tolerance <= 0.0) {
+    e = richardson_extrapolation(loads[0], loads[1]);
+  } else {
+    const MeshConvergence c = sequence.estimate();
+    e.fine_fold = loads.back();
+    e.extrapolated = c.value;
+    e.error = c.error;
+    e.convergence.order = c.order;
+    e.convergence.tolerance_met = within_tolerance(c, tolerance);
+    if (!*e.convergence.tolerance_met) e.convergence.why_unmet = sequence.why_unmet(tolerance);
+  }
+  e.fine_mesh = finest;
+  e.convergence.meshes = sequence.solved_meshes();
+  return e;
+}
+
 std::string mesh_name(const Scene& scene) {
   return fmt::format("{} x {}", scene.mesh.radial_nodes, scene.mesh.circumferential_nodes);
 }
@@ -261,6 +280,35 @@ std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, Bearing
   // The secant's solves refactor the polish's Jacobian pattern: its symbolic analysis
   // (nested dissection on refined meshes, about 80 ms) is done once.
   return crossing_near(fine, kind, state, slope, width, load_end, solves, why, &polish, nullptr, true);
+}
+
+std::optional<MeshErrorEstimate> crossing_sequence(const BearingModel& coarse, LimitKind kind,
+                                                   std::pair<double, std::vector<double>> state, double width,
+                                                   double load_end, double tolerance, const FinerBearing& finer,
+                                                   std::string& why) {
+  MeshSequence sequence(coarse.scene(), state.first);
+  const BearingModel* at = &coarse;
+  std::string finest;
+  do {
+    const Scene* next = sequence.next_mesh();
+    if (!next) break;
+    BearingModel& fine = finer(*next);
+    std::string step_why;
+    const std::optional<double> w = crossing_on_finer_mesh(*at, fine, kind, state, width, load_end, step_why);
+    if (!w) {
+      if (sequence.loads().size() < 2) {
+        why = step_why;
+        return std::nullopt;
+      }
+      sequence.stop(fmt::format("the crossing on {} from the one on {} failed: {}", mesh_name(*next), finest,
+                                step_why));
+      break;
+    }
+    sequence.add(*w);
+    at = &fine;
+    finest = mesh_name(*next);
+  } while (tolerance > 0.0 && sequence.wants_more(tolerance));
+  return sequence_estimate(sequence, tolerance, finest);
 }
 
 std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, BearingModel& fine, LimitKind kind,

@@ -19,6 +19,8 @@
 // meshes. tests/study/richardson_test.cpp checks the order and the cover on three meshes.
 #pragma once
 
+#include <algorithm>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -29,6 +31,7 @@
 #include "twb/scene/scene.h"
 #include "solver/fold_location.h"
 #include "study/distress_search.h"
+#include "study/mesh_convergence.h"
 
 namespace twb {
 
@@ -55,6 +58,12 @@ MeshErrorEstimate richardson_extrapolation(double coarse, double fine, double sa
 // quantities (a maximum over nodes, a least gap) converge less regularly than W_d, whose
 // order three grids confirm (richardson_test.cpp). With it the bar is |fine − coarse|.
 inline constexpr double kTwoGridSafety = 3.0;
+
+// The estimate from a load's mesh sequence (mesh_convergence.h): the two-mesh bar of the
+// formal order above where no tolerance is asked (tolerance 0), else mesh_converged's with
+// how it was reached (the meshes, the order they show, whether the tolerance is met and
+// why not). `finest` names the last mesh solved on.
+MeshErrorEstimate sequence_estimate(const MeshSequence& sequence, double tolerance, const std::string& finest);
 
 // The fold on the scene's mesh, as its search found it.
 struct CoarseFold {
@@ -107,6 +116,19 @@ std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, Bearing
                                              std::pair<double, std::vector<double>>& state, double width,
                                              double load_end, std::string& why);
 
+// A crossing along the mesh sequence (mesh_convergence.h): from its load and state on
+// `coarse` (the scene's mesh) on the mesh refined by two, and with a tolerance on each
+// finer mesh from the last one's crossing (crossing_on_finer_mesh) until its bar meets it,
+// each located to `width`. `finer(next)` gives the bearing on the sequence's next mesh,
+// standing where `coarse` stands, and keeps it while the sequence goes on. Empty, with
+// `why`, where the first refinement fails; a later failure ends the sequence, said in its
+// estimate's convergence.
+using FinerBearing = std::function<BearingModel&(const Scene& next)>;
+std::optional<MeshErrorEstimate> crossing_sequence(const BearingModel& coarse, LimitKind kind,
+                                                   std::pair<double, std::vector<double>> state, double width,
+                                                   double load_end, double tolerance, const FinerBearing& finer,
+                                                   std::string& why);
+
 // A failure criterion's crossing (failure_load.h) again on the refined mesh: the coarse
 // crossing's state interpolated onto the refined mesh, Newton there at the coarse load,
 // then the secant on the margin to the crossing (crossing_near), each solve only as far
@@ -140,6 +162,14 @@ class RefinedFoldCurve {
   std::optional<MeshErrorEstimate> at(double p, double load, std::span<const double> u, int kind, std::string& why);
   const std::string& mesh() const { return mesh_; }  // e.g. "17 x 132"
 
+  // The refined model, and the last point's refined fold (state, null vector, load): the
+  // coarse model and first fold of a RefinedFoldCurve one mesh further. The fold is empty
+  // where the last point had none.
+  const BearingModel& fine_model() const { return *fine_; }
+  std::span<const double> last_fold() const { return state_part(last_fine_); }
+  std::span<const double> last_null_vector() const { return state_part(last_null_); }
+  double last_fold_load() const { return last_fine_load_; }
+
  private:
   const BearingModel& coarse_;
   std::unique_ptr<BearingModel> fine_;
@@ -149,6 +179,11 @@ class RefinedFoldCurve {
   // The last point's coarse state and load and its refined fold, when it had one.
   std::vector<double> last_coarse_, last_fine_, last_null_;
   double last_coarse_load_ = 0.0, last_fine_load_ = 0.0;
+  // A refined fold's vector as a state of the refined model (the bordered systems may
+  // append their own unknowns).
+  std::span<const double> state_part(const std::vector<double>& v) const {
+    return std::span<const double>(v).first(std::min(v.size(), std::size_t(fine_->size())));
+  }
 };
 
 }  // namespace twb

@@ -82,29 +82,9 @@ struct RefinedBar {
 };
 
 bool searches_failure(const Study& st) {
-  return (st.type == StudyType::load_sweep || st.type == StudyType::distress_map) &&
+  return (st.type == StudyType::load_sweep || st.type == StudyType::distress_map ||
+          st.type == StudyType::distress_curve) &&
          st.error_estimate != ErrorEstimate::none;
-}
-
-// The estimate of a piece's sequence: today's two-mesh bar of the formal order where no
-// tolerance is asked (richardson.h), else mesh_converged's with how it was reached.
-MeshErrorEstimate sequence_estimate(const MeshSequence& sequence, double tolerance, const std::string& finest) {
-  const std::vector<double>& loads = sequence.loads();
-  MeshErrorEstimate e;
-  if (tolerance <= 0.0) {
-    e = richardson_extrapolation(loads[0], loads[1]);
-  } else {
-    const MeshConvergence c = sequence.estimate();
-    e.fine_fold = loads.back();
-    e.extrapolated = c.value;
-    e.error = c.error;
-    e.convergence.order = c.order;
-    e.convergence.tolerance_met = within_tolerance(c, tolerance);
-    if (!*e.convergence.tolerance_met) e.convergence.why_unmet = sequence.why_unmet(tolerance);
-  }
-  e.fine_mesh = finest;
-  e.convergence.meshes = sequence.solved_meshes();
-  return e;
 }
 
 // What the meshes of a sequence hold of the washer's grooves: each refinement doubles the
@@ -192,32 +172,16 @@ RefinedBar refined_crossing(const BearingModel& model, const DistressSearchSetti
   const double tolerance = model.scene().study.tolerance;
   const double width = tolerance > 0.0 ? std::min(settings.bracket_width, tolerance / 5.0) : settings.bracket_width;
   try {
-    MeshSequence sequence(model.scene(), found.crossing_states[c].first);
-    std::pair<double, std::vector<double>> state = found.crossing_states[c];
-    const BearingModel* at = &model;
-    std::unique_ptr<BearingModel> held;
-    std::string finest;
-    do {
-      const Scene* next = sequence.next_mesh();
-      if (!next) break;
-      std::unique_ptr<BearingModel> finer = model.on_mesh(next->mesh.radial_nodes, next->mesh.circumferential_nodes);
-      std::string why;
-      const std::optional<double> w =
-          crossing_on_finer_mesh(*at, *finer, kFailureCriteria[c], state, width, settings.load_end, why);
-      if (!w) {
-        if (sequence.loads().size() < 2) {
-          bar.why = why;
-          return bar;
-        }
-        sequence.stop(fmt::format("the crossing on {} from the one on {} failed: {}", mesh_name(*next), finest, why));
-        break;
-      }
-      sequence.add(*w);
-      held = std::move(finer);
-      at = held.get();
-      finest = mesh_name(*next);
-    } while (tolerance > 0.0 && sequence.wants_more(tolerance));
-    bar.estimate = sequence_estimate(sequence, tolerance, finest);
+    // Each finer mesh's bearing from the search's, held while the next starts from it.
+    std::vector<std::unique_ptr<BearingModel>> held;
+    bar.estimate = crossing_sequence(model, kFailureCriteria[c], found.crossing_states[c], width, settings.load_end,
+                                     tolerance,
+                                     [&](const Scene& next) -> BearingModel& {
+                                       held.push_back(model.on_mesh(next.mesh.radial_nodes,
+                                                                    next.mesh.circumferential_nodes));
+                                       return *held.back();
+                                     },
+                                     bar.why);
   } catch (const InternalError&) {
     throw;  // a bug: no fallback may hide it
   } catch (const std::exception& failure) {

@@ -298,6 +298,10 @@ INSTANTIATE_TEST_SUITE_P(
                           "        tolerance: none}\n"},
         RoundTripCase{"point_to_a_tolerance",
                       std::string(kMinimalScene) + "study: {type: point, tolerance: 2 %}\n"},
+        RoundTripCase{"distress_curve_to_a_tolerance",
+                      std::string(kMinimalScene) +
+                          "study: {type: distress_curve, parameter: speed, from: 100 rad/s, to: 500 rad/s,\n"
+                          "        load_start: 100 N, load_end: 2000 N, tolerance: 3 %}\n"},
         RoundTripCase{"point_with_its_two_mesh_bar", std::string(kMinimalScene) + "study: {type: point}\n"},
         RoundTripCase{"distress_map_searched_on_past_failure",
                       std::string(kMinimalScene) +
@@ -536,6 +540,13 @@ TEST(SceneLoader, ATolerancesValueAndWhereItIsRefused) {
       load_scene_text(std::string(kMinimalScene) + "study: {type: point, tolerance: 2 %}\n", "t.yaml").study.tolerance,
       0.02);
   refused(std::string(kMinimalScene) + "mesh: {max_refinements: 6}\n", "mesh.max_refinements");
+  // A distress curve takes one (its folds and limit curves to it), 1 % by default.
+  const std::string curve = std::string(kMinimalScene) +
+                            "study: {type: distress_curve, parameter: speed, from: 100 rad/s, to: 500 rad/s, "
+                            "load_start: 100 N, load_end: 2000 N";
+  EXPECT_EQ(load_scene_text(curve + "}\n", "t.yaml").study.tolerance, 0.01);
+  EXPECT_DOUBLE_EQ(load_scene_text(curve + ", tolerance: 3 %}\n", "t.yaml").study.tolerance, 0.03);
+  refused(curve + ", error_estimate: none, tolerance: 1 %}\n", "error_estimate: none asks for no error bar");
 }
 
 // materials.washer.pv_limit: a PV in its unit, the washer's only, refused elsewhere and

@@ -507,7 +507,26 @@ class TwbPlotTest(unittest.TestCase):
         self.assertEqual([r["W_fold_extrapolated_N"] for r in rows[:4]], [242.3, 237.7, None, None])
         result = plot(d, "--out", out_dir)
         self.assertEqual(result.returncode, 0, result.stderr)
-        self.assertIn("mesh-converged (Richardson)", self.svg_text(os.path.join(out_dir, "fold_curve.svg")))
+        self.assertIn("mesh-converged, with its error bar", self.svg_text(os.path.join(out_dir, "fold_curve.svg")))
+        # To a tolerance (study.tolerance): how each bar was reached follows; the meshes and
+        # the flag read as text, the order as a number, empty cells as None.
+        convergence = ",W_fold_meshes,W_fold_order,W_fold_tolerance_met"
+        reached = {1: ",9x66 17x132 33x264,1.83,yes", 2: ",9x66 17x132,,no"}
+        with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
+            f.write("\n".join([curve[0] + errors + convergence] +
+                              [row + bars.get(k, ",,,") + reached.get(k, ",,,")
+                               for k, row in enumerate(curve[1:], start=1)]) + "\n")
+        column, rows = tp.read_fold_curve(os.path.join(d, "fold_curve.csv"))
+        self.assertEqual([r["W_fold_meshes"] for r in rows[:3]], ["9x66 17x132 33x264", "9x66 17x132", None])
+        self.assertEqual([r["W_fold_order"] for r in rows[:3]], [1.83, None, None])
+        self.assertEqual([r["W_fold_tolerance_met"] for r in rows[:3]], ["yes", "no", None])
+        self.assertEqual(plot(d, "--out", out_dir).returncode, 0)
+        # The convergence columns without the bar's are no header twb writes.
+        with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
+            f.write("\n".join([curve[0] + convergence] + [row + ",,," for row in curve[1:]]) + "\n")
+        result = plot(d, "--out", out_dir)
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("expected the header", result.stderr)
         with open(os.path.join(d, "fold_curve.csv"), "w", encoding="utf-8") as f:
             f.write("\n".join(curve[:2] + ["1000,223.0,sudden,50.0,120.0,2.5,0.02,0.03"]) + "\n")
         result = plot(d, "--out", out_dir)

@@ -38,6 +38,9 @@ Scene speed_curve_scene() {
   scene.study.to = 136.0;
   scene.study.load_start = 100.0;
   scene.study.load_end = 1000.0;
+  // No error bars: the tests of the bars (the single refinement's, and a tolerance's
+  // sequence, six times the cost and more for each further mesh) ask for them.
+  scene.study.error_estimate = ErrorEstimate::none;
   return scene;
 }
 
@@ -161,6 +164,8 @@ TEST(DistressCurve, StudyWritesTheCurveAndTheCusp) {
 // as in richardson_test.cpp). Without the estimate the columns stay empty.
 TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
   Scene scene = speed_curve_scene();
+  scene.study.error_estimate = ErrorEstimate::richardson;
+  scene.study.tolerance = 0.0;  // the single refinement's bar, of the formal order
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
   ASSERT_FALSE(out.fold_curve.empty());
@@ -199,6 +204,61 @@ TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
   const StudyOutcome without = run_study(plain, {});
   EXPECT_TRUE(std::none_of(without.fold_curve.begin(), without.fold_curve.end(),
                            [](const FoldCurveRow& r) { return r.fine_load.has_value(); }));
+}
+
+// A curve to a tolerance (study.tolerance): every fold and every limit curve's crossing
+// on the mesh sequence. On the coarse test mesh (5 x 24, W_d 20 % low) no two-mesh bar
+// meets 1 %, so each distress fold is located on three meshes (the two allowed
+// refinements), with an order, and its tolerance flag says whether its bar is within 1 %.
+// Its start is the same fold the end's search finds and refines on its own (the
+// controller's cover of a finer sequence is richardson_test.cpp's): each refined fold is
+// located to a thousandth of its coarse-to-fine step (about 0.03 N here), which moves the
+// estimate by well under 0.1 % of W_d. The limit curve's first point is the search's own
+// crossing, refined from the same state by the same sequence: the same bar to the bit.
+TEST(DistressCurve, ACurveToAToleranceGoesAlongTheMeshSequenceAtEveryPoint) {
+  Scene scene = speed_curve_scene();
+  scene.study.to = 1800.0;
+  scene.study.error_estimate = ErrorEstimate::richardson;
+  scene.study.tolerance = 0.01;
+  scene.mesh.max_refinements = 2;
+  BearingModel model(scene);
+  const StudyOutcome out = run_study(model, {});
+  ASSERT_FALSE(out.distress.empty());
+  const DistressRow& end = out.distress.front();
+  ASSERT_EQ(end.speed, 2000.0);
+  ASSERT_TRUE(end.extrapolated_load && end.discretization_error) << end.method;
+  EXPECT_EQ(end.fold_convergence.meshes, "5x24 9x48 17x96");
+  long distress = 0, limits = 0;
+  for (const FoldCurveRow& r : out.fold_curve) {
+    if (r.fold == FoldKind::distress) {
+      ++distress;
+      ASSERT_TRUE(r.extrapolated_load && r.discretization_error) << "at " << r.parameter;
+      EXPECT_EQ(r.convergence.meshes, "5x24 9x48 17x96") << "at " << r.parameter;
+      EXPECT_TRUE(r.convergence.order.has_value()) << "at " << r.parameter;
+      if (distress == 1) {
+        EXPECT_EQ(r.parameter, 2000.0);
+        EXPECT_NEAR(*r.extrapolated_load, *end.extrapolated_load, 1e-3 * *end.extrapolated_load);
+        EXPECT_NEAR(*r.discretization_error, *end.discretization_error, 1e-3 * *end.extrapolated_load);
+      }
+    }
+    if (!r.extrapolated_load) continue;
+    ASSERT_TRUE(r.convergence.tolerance_met.has_value()) << fold_name(r) << " at " << r.parameter;
+    EXPECT_EQ(*r.convergence.tolerance_met, *r.discretization_error <= 0.01 * std::abs(*r.extrapolated_load))
+        << fold_name(r) << " at " << r.parameter;
+    if (r.fold == FoldKind::limit && r.limit == LimitKind::scuffing && limits++ == 0) {
+      EXPECT_EQ(r.parameter, 2000.0);
+      const auto c = std::size_t(std::find(std::begin(kFailureCriteria), std::end(kFailureCriteria), LimitKind::scuffing) -
+                                 std::begin(kFailureCriteria));
+      EXPECT_EQ(r.extrapolated_load, end.criterion_extrapolated[c]);
+      EXPECT_EQ(r.convergence.meshes, "5x24 9x48 17x96");
+    }
+  }
+  EXPECT_GE(distress, 2);
+  EXPECT_GE(limits, 2) << "scuffing is crossed below W_d along the curve";
+  // No bar of the coarse test mesh reaches 1 %: the summary warns, as a search's does.
+  EXPECT_TRUE(std::any_of(out.summary.begin(), out.summary.end(), [](const std::string& line) {
+    return line.starts_with("warning: fold curve: not within the tolerance");
+  }));
 }
 
 // A family of curves, one per dry friction coefficient (the constant law, Fig. 15): each

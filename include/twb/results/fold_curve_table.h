@@ -1,7 +1,8 @@
 // fold_curve.csv: the fold of the cool branch continued in a second parameter (study
 // type distress_curve), one row per point of the curve and one per turn:
 //   <parameter>, W_fold_N, fold, T_mean_C, T_max_C, hmin_over_sigma, contact_share, f_eff,
-//   W_fold_fine_N, W_fold_extrapolated_N, W_fold_error_N
+//   W_fold_fine_N, W_fold_extrapolated_N, W_fold_error_N, W_fold_meshes, W_fold_order,
+//   W_fold_tolerance_met
 // <parameter> is the curve's parameter with its unit (speed_rad_s, friction_coefficient,
 // gear_tilt_rad, ambient_C, viscosity_scale, roughness_Rq_m); fold says which fold the row is: "distress" (the branch's
 // largest load: W_d), "recovery" (its smallest: the hot branch turning back to the cool
@@ -15,6 +16,7 @@
 
 #include "twb/model/bearing_state.h"
 #include "twb/model/operating_limits.h"
+#include "twb/results/distress_table.h"
 #include "twb/results/result_table.h"
 
 namespace twb {
@@ -39,6 +41,9 @@ struct FoldCurveRow {
   // the mesh refined by two, the Richardson extrapolation and its error bar (N); absent
   // for cusps and turns, and where the refined fold was not found.
   std::optional<double> fine_load, extrapolated_load, discretization_error;
+  // With a tolerance (study.tolerance): the meshes the fold was located on, the order they
+  // show and whether the bar meets the tolerance.
+  LoadConvergence convergence;
 };
 
 // "distress", "recovery", "cusp", "turn", or the criterion's limit_name: the fold column.

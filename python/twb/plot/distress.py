@@ -61,13 +61,23 @@ def draw_limit_curves(ax, rows, scale, distress, single, color, tag, ends):
     curves = {}
     for r in rows:
         if r["fold"] in LIMIT_LABELS:
-            curves.setdefault(r["fold"], []).append((scale * r["p"], r["load"]))
+            converged = r.get("W_fold_extrapolated_N")
+            curves.setdefault(r["fold"], []).append(
+                (scale * r["p"], r["load"], math.nan if converged is None else converged,
+                 math.nan if r.get("W_fold_error_N") is None else r["W_fold_error_N"]))
     lines = [distress] if len(distress) else []
     for kind, points in curves.items():
-        points = np.array(sorted(points), dtype=float).reshape(-1, 2)
-        ax.plot(points[:, 0], points[:, 1], color=LIMIT_STYLES[kind] if single else color, linestyle="-."
+        points = np.array(sorted(points), dtype=float).reshape(-1, 4)
+        line_color = LIMIT_STYLES[kind] if single else color
+        ax.plot(points[:, 0], points[:, 1], color=line_color, linestyle="-."
                 if not single else "-", linewidth=1.5, label=f"{LIMIT_LABELS[kind]} crossed" + tag)
-        lines.append(points)
+        # Its mesh-converged crossing with the bar, where the study has them; the region
+        # lies below it where every point has one (the answer the study was asked for).
+        if np.isfinite(points[:, 2]).any():
+            ax.plot(points[:, 0], points[:, 2], color=line_color, linestyle=":", linewidth=1.2)
+            ax.fill_between(points[:, 0], points[:, 2] - points[:, 3], points[:, 2] + points[:, 3],
+                            color=line_color, alpha=0.12, linewidth=0)
+        lines.append(points[:, [0, 2]] if np.isfinite(points[:, 2]).all() else points[:, :2])
     if not single or not curves:
         return
     xs = np.concatenate([line[:, 0] for line in lines] + ([np.array(ends)] if ends else []))
@@ -132,10 +142,9 @@ def figure_fold_curve(data, name, column, rows):
             converged = converged[:0]
         if len(converged):
             ax.plot(converged[:, 0], converged[:, 1], color=color, linestyle=":", linewidth=1.4,
-                    label="$W_d$ mesh-converged (Richardson)" + tag if single or i == 0 else None)
+                    label="mesh-converged, with its error bar (dotted)" + tag if single or i == 0 else None)
             ax.fill_between(converged[:, 0], converged[:, 1] - converged[:, 2], converged[:, 1] + converged[:, 2],
-                            color=color, alpha=0.12, linewidth=0,
-                            label="its error bar" if single or i == 0 else None)
+                            color=color, alpha=0.12, linewidth=0)
         if len(recovery):
             ax.plot(recovery[:, 0], recovery[:, 1], color="tab:blue" if single else color, linestyle="--",
                     linewidth=1.4, label="recovery: the hot branch's lowest load" if single else None)

@@ -258,8 +258,12 @@ FOLD_CURVE_PARAMETERS = _labels_every("the curve parameters", {
 # W_d's error bar along the curve (study.error_estimate: richardson): after the tail in
 # files written since it exists, empty cells where a fold has none.
 FOLD_CURVE_ERROR = _written("fold_curve", ("W_fold_fine_N", "W_fold_extrapolated_N", "W_fold_error_N"))
+# How each bar was reached (study.tolerance): after the error bar's columns in files written
+# since they exist.
+FOLD_CURVE_CONVERGENCE = _written("fold_curve", ("W_fold_meshes", "W_fold_order", "W_fold_tolerance_met"))
 _CURVE = _TABLES["fold_curve"]["columns"]
-FOLD_CURVE_TAIL = tuple(c for c in _CURVE[_CURVE.index("<parameter>") + 1:] if c not in FOLD_CURVE_ERROR)
+FOLD_CURVE_TAIL = tuple(c for c in _CURVE[_CURVE.index("<parameter>") + 1:]
+                        if c not in FOLD_CURVE_ERROR + FOLD_CURVE_CONVERGENCE)
 # The failure criteria whose crossing a distress curve continues beside its fold (the row's
 # load is where the criterion is crossed on the cool branch).
 LIMIT_KINDS = tuple(c for c in _DEFINITION["failure_criteria"] if c != "distress")
@@ -271,10 +275,15 @@ def read_fold_curve(path):
     the error bar's columns (None where absent), and 'member': (family column, value) of
     a family of curves, else None)."""
     records = _records(path)
-    expected = f"[<family>,]<parameter>,{','.join(FOLD_CURVE_TAIL)}[,{','.join(FOLD_CURVE_ERROR)}]"
+    expected = (f"[<family>,]<parameter>,{','.join(FOLD_CURVE_TAIL)}[,{','.join(FOLD_CURVE_ERROR)}"
+                f"[,{','.join(FOLD_CURVE_CONVERGENCE)}]]")
     line, header = _header_line(path, records, expected)
-    errors = tuple(header[-len(FOLD_CURVE_ERROR):]) == FOLD_CURVE_ERROR
-    body = header[:-len(FOLD_CURVE_ERROR)] if errors else header
+    converged = tuple(header[-len(FOLD_CURVE_CONVERGENCE):]) == FOLD_CURVE_CONVERGENCE
+    head = header[:-len(FOLD_CURVE_CONVERGENCE)] if converged else header
+    errors = tuple(head[-len(FOLD_CURVE_ERROR):]) == FOLD_CURVE_ERROR
+    body = head[:-len(FOLD_CURVE_ERROR)] if errors else head
+    if converged and not errors:
+        raise InputError(f"{path}: line {line}: expected the header {expected}, got {','.join(header)}")
     family = body[0] if len(body) == len(FOLD_CURVE_TAIL) + 2 and is_parameter_column(body[0]) else None
     first = 1 if family else 0
     if len(body) != len(FOLD_CURVE_TAIL) + 1 + first or body[first] not in FOLD_CURVE_PARAMETERS \
@@ -296,6 +305,13 @@ def read_fold_curve(path):
             row[c] = _number(path, line, c, fields[k])
         for k, c in enumerate(FOLD_CURVE_ERROR, start=len(body)):
             row[c] = _number(path, line, c, fields[k], optional=True) if errors else None
+        for k, c in enumerate(FOLD_CURVE_CONVERGENCE, start=len(head)):
+            if not converged:
+                row[c] = None
+            elif c == "W_fold_order":
+                row[c] = _number(path, line, c, fields[k], optional=True)
+            else:
+                row[c] = fields[k].strip() or None
         rows.append(row)
     return header[first], rows
 
