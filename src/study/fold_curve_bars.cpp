@@ -81,11 +81,12 @@ std::string FoldCurveBars::mesh() const {
 std::optional<MeshErrorEstimate> FoldCurveBars::estimate(std::vector<std::unique_ptr<RefinedFoldCurve>>& levels,
                                                          const FoldCurvePoint& pt, int kind,
                                                          std::string& why) const {
-  std::optional<MeshErrorEstimate> first = levels.front()->at(pt.p, pt.lambda, pt.u, kind, why);
-  if (!first || tolerance_ <= 0.0) return first;
+  const std::optional<MeshErrorEstimate> first = levels.front()->at(pt.p, pt.lambda, pt.u, kind, why);
+  if (!first) return std::nullopt;
   MeshSequence sequence(scene_, pt.lambda);
   sequence.add(first->fine_fold);
   std::string finest = levels.front()->mesh();
+  if (tolerance_ <= 0.0) return sequence_estimate(sequence, tolerance_, finest);
   // Each level's coarse model is the level below's refined one, which its `at` has just
   // set to this point's parameter; its fold there is this level's start.
   for (std::size_t level = 1; sequence.wants_more(tolerance_) && sequence.next_mesh(); ++level) {

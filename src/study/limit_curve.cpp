@@ -76,12 +76,16 @@ LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKin
       // A parabola through crossings that fall steeply (the scuffing crossing of the
       // paper's bearing falls from 830 N at 136 rad/s) can predict a load a quarter of the
       // last or below, even none: outside what three points say; the last crossing's.
-      if (!(here.first > 0.25 * crossing.first)) here = crossing;
+      if (!(here.first > 0.25 * crossing.first)) {
+        here = crossing;
+        here.first = std::min(here.first, highest);
+      }
     }
+    const bool extrapolated = here.first != crossing.first || here.second != crossing.second;
     model.set_load(here.first);
     NewtonReport rep = corrector.solve(here.second, newton);
     out.solves += 1;
-    if (!rep.converged && !history.empty()) {
+    if (!rep.converged && extrapolated) {
       here = crossing;  // the extrapolation left Newton's reach: the last crossing's
       model.set_load(here.first);
       rep = corrector.solve(here.second, newton);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -65,20 +66,29 @@ void bar_points(const Scene& scene, CurveParameter which, const LimitCurveSettin
   const double tolerance = settings.tolerance;
   const double width =
       tolerance > 0.0 ? std::min(settings.bracket_width, tolerance / 5.0) : settings.bracket_width;
-  BearingModel coarse(scene);
-  std::vector<std::unique_ptr<BearingModel>> meshes;
   job.bars.resize(job.curve.points.size());
+  if (job.bars.empty()) return;
+  std::optional<BearingModel> coarse;
+  try {
+    coarse.emplace(scene);
+  } catch (const InternalError&) {
+    throw;  // a bug: no fallback may hide it
+  } catch (const std::exception& e) {
+    for (FoldBar& bar : job.bars) bar.why = e.what();
+    return;
+  }
+  std::vector<std::unique_ptr<BearingModel>> meshes;
   for (std::size_t k = 0; k < job.curve.points.size(); ++k) {
     const LimitCurvePoint& pt = job.curve.points[k];
     FoldBar& bar = job.bars[k];
     try {
-      coarse.set_curve_parameter(which, pt.p);
-      coarse.set_load(pt.state.load);
+      coarse->set_curve_parameter(which, pt.p);
+      coarse->set_load(pt.state.load);
       std::size_t level = 0;
-      bar.estimate = crossing_sequence(coarse, job.kind, {pt.state.load, pt.u}, width, settings.load_end, tolerance,
+      bar.estimate = crossing_sequence(*coarse, job.kind, {pt.state.load, pt.u}, width, settings.load_end, tolerance,
                                        [&](const Scene& next) -> BearingModel& {
                                          if (meshes.size() == level)
-                                           meshes.push_back(coarse.on_mesh(next.mesh.radial_nodes,
+                                           meshes.push_back(coarse->on_mesh(next.mesh.radial_nodes,
                                                                            next.mesh.circumferential_nodes));
                                          BearingModel& fine = *meshes[level++];
                                          fine.set_curve_parameter(which, pt.p);

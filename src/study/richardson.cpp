@@ -141,7 +141,10 @@ std::optional<RefinedFold> refined_fold(const Scene& scene, double speed, const 
                                         const SearchProgress& progress) {
   const Scene fine_scene = refined_mesh(scene);
   RefinedFold refined;
-  refined.model = std::make_unique<BearingModel>(fine_scene);
+  // From the coarse model where there is one: it carries what its scene does not (a curve's
+  // viscosity scale).
+  refined.model = coarse.model ? coarse.model->on_mesh(fine_scene.mesh.radial_nodes, fine_scene.mesh.circumferential_nodes)
+                               : std::make_unique<BearingModel>(fine_scene);
   BearingModel& fine = *refined.model;
   fine.set_speed(speed);
   const std::string mesh = mesh_name(fine_scene);
@@ -217,8 +220,14 @@ std::optional<MeshErrorEstimate> RefinedFoldCurve::at(double p, double load, std
   // difference: a thousandth of it (as predicted, at least a thousandth of a percent of the load)
   // moves the bar by 0.1 % of itself.
   const double accuracy = 1e-3 * std::max(std::abs(guess_load - load), 1e-3 * load);
-  const auto fold = checked_fold(*fine_, guess, guess_load, last_null_.empty() ? first_null_ : last_null_, load,
-                                 kind, why, accuracy);
+  std::optional<FoldPoint> fold = checked_fold(*fine_, guess, guess_load, last_null_.empty() ? first_null_ : last_null_,
+                                               load, kind, why, accuracy);
+  // A fold followed from further back than the last point (a level a chain's points
+  // need only now and then) may start outside Newton's reach: again from the coarse fold.
+  if (!fold && follow)
+    fold = checked_fold(*fine_, fine_->interpolated_from(coarse_, u), load,
+                        last_null_.empty() ? first_null_ : last_null_, load, kind, why,
+                        1e-3 * std::max(std::abs(guess_load - load), 1e-3 * load));
   last_coarse_.assign(u.begin(), u.end());
   last_coarse_load_ = load;
   if (!fold) {
@@ -292,9 +301,18 @@ std::optional<MeshErrorEstimate> crossing_sequence(const BearingModel& coarse, L
   do {
     const Scene* next = sequence.next_mesh();
     if (!next) break;
-    BearingModel& fine = finer(*next);
     std::string step_why;
-    const std::optional<double> w = crossing_on_finer_mesh(*at, fine, kind, state, width, load_end, step_why);
+    std::optional<double> w;
+    BearingModel* fine = nullptr;
+    try {
+      fine = &finer(*next);
+      w = crossing_on_finer_mesh(*at, *fine, kind, state, width, load_end, step_why);
+    } catch (const InternalError&) {
+      throw;  // a bug: no fallback may hide it
+    } catch (const std::exception& e) {
+      if (sequence.loads().size() < 2) throw;  // no estimate yet: the caller says why
+      step_why = e.what();
+    }
     if (!w) {
       if (sequence.loads().size() < 2) {
         why = step_why;
@@ -305,7 +323,7 @@ std::optional<MeshErrorEstimate> crossing_sequence(const BearingModel& coarse, L
       break;
     }
     sequence.add(*w);
-    at = &fine;
+    at = fine;
     finest = mesh_name(*next);
   } while (tolerance > 0.0 && sequence.wants_more(tolerance));
   return sequence_estimate(sequence, tolerance, finest);

@@ -173,7 +173,10 @@ def figure_fold_curve(data, name, column, rows):
                 left = distress[:, 0].mean() > x
                 ax.annotate("no fold: gradual heating", (x, r["load"]), textcoords="offset points",
                             xytext=(-110 if left else 12, 14), fontsize="small", color="0.35")
-        draw_limit_curves(ax, mine, scale, distress, single, color, tag, ends)
+        # The region below W_d mesh-converged where every fold has its value, as the limits'
+        # (draw_limit_curves): one kind of value along the boundary.
+        region = converged[:, :2] if len(converged) and np.isfinite(converged[:, 1]).all() else distress
+        draw_limit_curves(ax, mine, scale, region, single, color, tag, ends)
     if not single:
         ax.plot([], [], color="0.3", linestyle="--", label="recovery folds (dashed)")
     ax.set_xlabel(xlabel)
