@@ -208,9 +208,10 @@ class BearingModel final : public SegregatedSystem {
   // Pressure (Pa) at node (i, j) of the sliding film; 0 on edges and without hydrodynamics.
   double pressure_at(std::span<const double> u, const Film& film, int i, int j) const;
   double temperature_of(std::span<const double> u, Index k) const;
-  // The hottest face temperature (K) of a body in state u: its material's temperature
-  // (heat_balance.cpp); the ambient without the thermal effect.
-  double hottest_face_temperature(std::span<const double> u, ComponentId id) const;
+  // The hottest node temperature (K) of a body in state u, the least its hottest face can
+  // be (describe locates the faces beside the films); the ambient without the thermal
+  // effect.
+  double hottest_node_temperature(std::span<const double> u, ComponentId id) const;
 
   // What the effects share (effect_assembler.h).
   // The viscosity temperature's gradient at film node (i, j), which depends only on the

@@ -136,9 +136,27 @@ BearingState BearingModel::describe(std::span<const double> u) const {
       if (least <= contact_cutoff_)
         s.max_contact_pressure = std::max(s.max_contact_pressure, contact_->pressure(least).value);
     }
-  s.carrier_max_temperature = hottest_face_temperature(u, ComponentId::carrier);
-  s.washer_max_temperature = hottest_face_temperature(u, ComponentId::washer);
-  s.gear_max_temperature = hottest_face_temperature(u, ComponentId::gear);
+  // Each body's hottest face, its material's temperature (physics §8): its hottest node,
+  // or hotter, a face beside a film, on the heat path from the film's temperature there,
+  // located between the film nodes as the oil's peak is. (The hottest film node's face
+  // jumps as the hot spot passes from node to node, and its film temperature is the
+  // node's control-volume mean, which lags the rim's heat.)
+  const auto hottest_face = [&](ComponentId id) {
+    const double hottest = hottest_node_temperature(u, id);
+    // (A body without resistance of its own has its faces at its nodes' temperatures,
+    // piecewise linear between them: the hottest node is its hottest face.)
+    if (!scene_.effects.thermal || body_resistance(id) <= 0.0) return hottest;
+    const LocatedMaximum face = locate_maximum(
+        films_,
+        [&](const Film& f, double r, double theta) {
+          return points.at(f, r, theta).face_temperature[f.lower == id ? 0 : 1];
+        },
+        [&](const Film& f) { return f.lower == id || f.upper == id; });
+    return face.film != 0 ? std::max(hottest, face.value) : hottest;
+  };
+  s.carrier_max_temperature = hottest_face(ComponentId::carrier);
+  s.washer_max_temperature = hottest_face(ComponentId::washer);
+  s.gear_max_temperature = hottest_face(ComponentId::gear);
   s.limits = exceeded_limits(LimitValues::of(s, scene_.effects.thermal), OperatingLimits::of(scene_));
   return s;
 }

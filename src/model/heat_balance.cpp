@@ -247,40 +247,15 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
   }
 }
 
-// A body's hottest face (docs/physics.md section 8, material temperature): the face
-// temperature at a film node lies on the heat path between the film node and the body's
-// own node, body_resistance/R of the way from the body's; the carrier's and gear's faces
-// are their nodes (no resistance on their side), the washer's lie half its thickness
-// nearer the film than its mid-plane.
-double BearingModel::hottest_face_temperature(std::span<const double> u, ComponentId id) const {
+// A body's hottest node (K): the floor of its hottest face (docs/physics.md section 8,
+// material temperature), whose faces beside the films describe() locates between the
+// film nodes.
+double BearingModel::hottest_node_temperature(std::span<const double> u, ComponentId id) const {
   const ComponentHeat* comp = component(id);
   double hottest = scene_.operating.ambient;
   if (!comp || !scene_.effects.thermal) return hottest;
   for (Index k = comp->offset; k < comp->offset + comp->node_count(); ++k)
     hottest = std::max(hottest, scene_.operating.ambient + u[k]);
-  const double own = body_resistance(id);
-  if (own <= 0.0) return hottest;
-  const RigidPosition q = position(u);
-  for (const Film& film : films_) {
-    if (film.lower != id && film.upper != id) continue;
-    const FilmMesh& m = film.mesh;
-    for (int i = 0; i < m.radial_nodes(); ++i)
-      for (int j = 0; j < m.circumferential_nodes(); ++j) {
-        const int n = m.node(i, j);
-        const double r = m.radius(i), th = m.angle(j);
-        const double h = film.node_gap(q, r * std::cos(th), r * std::sin(th)) + (deforms() ? shape_at(u, film, n) : 0.0);
-        const double body = face_temperature(u, id, m.radius(i), j, nullptr);
-        const double tf = temperature_of(u, film.temperature_row(n));
-        // Beside a relief's edge the land's part conducts more: the hotter face is under it.
-        double relief = 0.0;
-        if (!film.relief.flat()) {
-          const FaceRelief::NodeParts parts = film.relief.node_parts(i, j);
-          relief = *std::min_element(parts.relief.begin(), parts.relief.begin() + parts.count);
-        }
-        const double path = heat_path(average_gap(h + relief, film.sigma).value, id);
-        hottest = std::max(hottest, body + (tf - body) * own / path);
-      }
-  }
   return hottest;
 }
 
