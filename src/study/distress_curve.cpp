@@ -79,6 +79,135 @@ void run_pieces(std::size_t count, int threads, RunTimings& timings, const Piece
     if (e) std::rethrow_exception(e);
 }
 
+// Both ends of a curve's range searched for their first fold.
+struct CurveEnds {
+  std::optional<DistressSearch> from, to;
+};
+
+// Each end searched on a model of its own (`model` at `from`, `other` at `to`): `from`
+// always, `to` where `from` has no proven fold or does not cross every criterion the
+// scene applies (a limit curve starts from the end that crosses it). With a thread to
+// spare both are searched at once and `to`'s search is dropped where it is not needed:
+// the same results either way. Then the kept ends' failure loads with their error bars,
+// to the study's tolerance (search_error_bars.h), each end on a thread of its own.
+CurveEnds search_ends(BearingModel& model, BearingModel& other, const std::string& label,
+                      const ProgressReport& progress, int threads, RunTimings& timings) {
+  const Study& st = model.scene().study;
+  DistressSearchSettings settings;
+  settings.load_start = st.load_start;
+  settings.load_end = st.load_end;
+  settings.bracket_width = st.bracket_width;
+  settings.march_past_distress = false;
+  const OperatingLimits limits = OperatingLimits::of(model.scene());
+  auto needs_other_end = [&](const DistressSearch& found) {
+    if (!(found.fold && found.row.distress_load)) return true;
+    for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
+      if (criterion_applies(kFailureCriteria[c], limits, model.scene().effects.thermal) &&
+          (c >= found.crossing_states.size() || found.crossing_states[c].second.empty()))
+        return true;
+    return false;
+  };
+  CurveEnds ends;
+  auto search_end = [&](std::size_t i) {
+    BearingModel& m = i == 0 ? model : other;
+    const double end = i == 0 ? st.from : st.to;
+    m.set_curve_parameter(st.curve_parameter, end);
+    if (progress) progress(fmt::format("[curve{}] the first fold at {}", label, shown_parameter(st.curve_parameter, end)));
+    (i == 0 ? ends.from : ends.to) = search_distress(m, settings, progress);
+  };
+  if (threads > 1) {
+    run_pieces(2, threads, timings, search_end);
+    if (!needs_other_end(*ends.from)) ends.to.reset();
+  } else {
+    search_end(0);
+    if (needs_other_end(*ends.from)) search_end(1);
+  }
+  run_pieces(ends.to ? 2 : 1, threads, timings, [&](std::size_t i) {
+    estimate_failure_errors(i == 0 ? model : other, settings, i == 0 ? *ends.from : *ends.to, progress, nullptr);
+  });
+  return ends;
+}
+
+// An end's search in the outcome: its row in distress.csv (tagged with the family member,
+// and with the parameter's value where it is not the speed), its cool-branch states.
+void record_end(DistressSearch& found, double end, CurveParameter which, std::optional<double> member,
+                StudyOutcome& out) {
+  add_search_work(out.timings, found.counts);
+  found.row.parameters = member ? std::vector<double>{*member} : std::vector<double>{};
+  if (which != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown_parameter(which, end), found.row.method);
+  out.distress.push_back(found.row);
+  for (std::size_t k = 0; k < found.cool_states; ++k) {
+    out.states.push_back(found.states[k]);
+    out.states.back().parameters = found.row.parameters;
+    out.states.back().branch = Branch::cool;
+  }
+}
+
+// The fold's continuation from `start` towards `other` across the study's range.
+FoldCurveSettings fold_curve_settings(const Scene& scene, double start, double other) {
+  const Study& st = scene.study;
+  FoldCurveSettings fs;
+  fs.p_min = std::min(st.from, st.to);
+  fs.p_max = std::max(st.from, st.to);
+  // The metric's unit of the parameter: its range's size, not its value at the start
+  // (which may be 0: a speed, coefficient or tilt range from zero).
+  fs.p_scale = std::max(std::abs(st.from), std::abs(st.to));
+  fs.direction = other > start ? +1 : -1;
+  fs.arclength.newton = newton_settings(scene);
+  fs.arclength.newton.max_iterations = 12;
+  // Steps in the metric over (u, W/W_0, p/p_scale): 0.05 at first, up to 0.2; a
+  // correction of up to 4 iterations counts as easy (the fold system's Jacobian carries
+  // central differences, so its Newton converges a little slower than quadratically).
+  fs.arclength.initial_step = 0.05;
+  fs.arclength.max_step = 0.2;
+  fs.arclength.max_points = 400;
+  fs.arclength.easy_iterations = 4;
+  return fs;
+}
+
+// The limit curves' settings from the study's (each curve's W_d is set once the fold
+// curve is traced).
+LimitCurveSettings limit_curve_settings(const Study& st) {
+  LimitCurveSettings settings;
+  settings.bracket_width = st.bracket_width;
+  settings.load_end = st.load_end;
+  settings.error_bars = st.error_estimate != ErrorEstimate::none;
+  settings.tolerance = st.tolerance;
+  return settings;
+}
+
+// The folds' error bars in their rows (row_of[k] the row of the curve's point k), and what
+// they came to in the summary and the progress (`seconds` since the pieces began).
+void add_fold_bars(const FoldCurveBars& bars, const FoldCurve& curve, const std::vector<std::size_t>& row_of,
+                   CurveParameter which, const std::string& label, double tolerance, double seconds,
+                   StudyOutcome& out, const std::function<void(const std::string&)>& say) {
+  const std::size_t points = curve.points.size();
+  for (std::size_t k = 0; k < points; ++k)
+    if (const auto& e = bars[k].estimate) put_bar(out.fold_curve[row_of[k]], *e);
+  const BarsSummary summary = bars_summary(
+      bars.first(points), tolerance, "folds", [&](std::size_t k) { return shown_parameter(which, curve.points[k].p); },
+      "fold curve" + label);
+  say(fmt::format("[curve{}] {} [{:.1f} s]", label, summary.phrase, seconds));
+  out.summary.push_back(fmt::format("fold curve{}: {}", label, summary.phrase));
+  if (summary.warning) out.summary.push_back(*summary.warning);
+}
+
+// Where the curve ended: inside the range where continuation could not go on (the reason
+// is the continuation's own, in terms of the curve parameter), or past its end without a
+// cusp (a cusp has its own line); none otherwise.
+std::optional<std::string> where_the_curve_ended(const FoldCurve& curve, const FoldCurveSettings& fs,
+                                                 CurveParameter which, const std::string& label) {
+  const double last = curve.points.back().p;
+  if (!(last < fs.p_min || last > fs.p_max))
+    return fmt::format("fold curve{}: stopped at {}, inside the range: no continuation step was accepted there ({}); "
+                       "the curve may turn sharply or end there",
+                       label, shown_parameter(which, last), curve.message);
+  if (curve.turns.empty())
+    return fmt::format("fold curve{}: {} points from {} to {}, no cusp in range", label, curve.points.size(),
+                       shown_parameter(which, curve.points.front().p), shown_parameter(which, last));
+  return std::nullopt;
+}
+
 }  // namespace
 
 void run_fold_curve(BearingModel& model, std::optional<double> member, const std::string& label, StudyOutcome& out,
@@ -90,57 +219,13 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   };
 
   // The first fold, found and proven by the dynamics: at `from`, else at `to`.
-  DistressSearchSettings settings;
-  settings.load_start = st.load_start;
-  settings.load_end = st.load_end;
-  settings.bracket_width = st.bracket_width;
-  settings.march_past_distress = false;
-  // Each end searched on a model of its own: `from` always, `to` where `from` has no
-  // proven fold or does not cross every criterion the scene applies (a limit curve
-  // starts from the end that crosses it). With a thread to spare both are searched at
-  // once and `to`'s search is dropped where it is not needed: the same results either way.
-  const OperatingLimits limits = OperatingLimits::of(model.scene());
-  auto needs_other_end = [&](const DistressSearch& found) {
-    if (!(found.fold && found.row.distress_load)) return true;
-    for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
-      if (criterion_applies(kFailureCriteria[c], limits, model.scene().effects.thermal) &&
-          (c >= found.crossing_states.size() || found.crossing_states[c].second.empty()))
-        return true;
-    return false;
-  };
   BearingModel other_model(model.scene());
-  std::optional<DistressSearch> at_from, at_to;
-  auto search_end = [&](std::size_t i) {
-    BearingModel& m = i == 0 ? model : other_model;
-    const double end = i == 0 ? st.from : st.to;
-    m.set_curve_parameter(which, end);
-    say(fmt::format("[curve{}] the first fold at {}", label, shown_parameter(which, end)));
-    (i == 0 ? at_from : at_to) = search_distress(m, settings, progress);
-  };
-  if (threads > 1) {
-    run_pieces(2, threads, out.timings, search_end);
-    if (!needs_other_end(*at_from)) at_to.reset();
-  } else {
-    search_end(0);
-    if (needs_other_end(*at_from)) search_end(1);
-  }
-  // The ends' failure loads with their error bars, to the study's tolerance
-  // (search_error_bars.h), each end on a thread of its own.
-  run_pieces(at_to ? 2 : 1, threads, out.timings, [&](std::size_t i) {
-    estimate_failure_errors(i == 0 ? model : other_model, settings, i == 0 ? *at_from : *at_to, progress, nullptr);
-  });
+  CurveEnds searched = search_ends(model, other_model, label, progress, threads, out.timings);
+  std::optional<DistressSearch>&at_from = searched.from, &at_to = searched.to;  // (the names of the code below)
   // Each end searched, with its criteria's crossings: where the limit curves start.
   std::vector<std::pair<double, Crossings>> ends;
   auto take = [&](DistressSearch& found, double end) {
-    add_search_work(out.timings, found.counts);
-    found.row.parameters = member ? std::vector<double>{*member} : std::vector<double>{};
-    if (which != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown_parameter(which, end), found.row.method);
-    out.distress.push_back(found.row);
-    for (std::size_t k = 0; k < found.cool_states; ++k) {
-      out.states.push_back(found.states[k]);
-      out.states.back().parameters = found.row.parameters;
-      out.states.back().branch = Branch::cool;
-    }
+    record_end(found, end, which, member, out);
     ends.emplace_back(end, found.crossing_states);
   };
   const DistressSearch* first = nullptr;
@@ -157,11 +242,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   }
 
   std::vector<LimitCurveJob> jobs = limit_curve_jobs(st, ends);
-  LimitCurveSettings limit_settings;
-  limit_settings.bracket_width = st.bracket_width;
-  limit_settings.load_end = st.load_end;
-  limit_settings.error_bars = st.error_estimate != ErrorEstimate::none;
-  limit_settings.tolerance = st.tolerance;
+  LimitCurveSettings limit_settings = limit_curve_settings(st);
   auto add_limit_curves = [&] {
     for (const LimitCurveJob& job : jobs) add_limit_curve(job, which, member, label, st.tolerance, out, say);
   };
@@ -180,22 +261,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
 
   BearingParameter parameter(model, which);
   model.set_curve_parameter(which, start);
-  FoldCurveSettings fs;
-  fs.p_min = std::min(st.from, st.to);
-  fs.p_max = std::max(st.from, st.to);
-  // The metric's unit of the parameter: its range's size, not its value at the start
-  // (which may be 0: a speed, coefficient or tilt range from zero).
-  fs.p_scale = std::max(std::abs(st.from), std::abs(st.to));
-  fs.direction = other > start ? +1 : -1;
-  fs.arclength.newton = newton_settings(model.scene());
-  fs.arclength.newton.max_iterations = 12;
-  // Steps in the metric over (u, W/W_0, p/p_scale): 0.05 at first, up to 0.2; a
-  // correction of up to 4 iterations counts as easy (the fold system's Jacobian carries
-  // central differences, so its Newton converges a little slower than quadratically).
-  fs.arclength.initial_step = 0.05;
-  fs.arclength.max_step = 0.2;
-  fs.arclength.max_points = 400;
-  fs.arclength.easy_iterations = 4;
+  const FoldCurveSettings fs = fold_curve_settings(model.scene(), start, other);
   const auto t0 = std::chrono::steady_clock::now();
   auto describe_at = [&](double p, double load, std::span<const double> u) {
     model.set_curve_parameter(which, p);
@@ -285,28 +351,8 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     add_limit_curves();
     return;
   }
-  const std::size_t points = curve.points.size();
-  if (bars) {
-    for (std::size_t k = 0; k < points; ++k)
-      if (const auto& e = bar_of[k].estimate) put_bar(out.fold_curve[row_of[k]], *e);
-    const BarsSummary summary = bars_summary(
-        bar_of.first(points), st.tolerance, "folds",
-        [&](std::size_t k) { return shown_parameter(which, curve.points[k].p); }, "fold curve" + label);
-    say(fmt::format("[curve{}] {} [{:.1f} s]", label, summary.phrase, elapsed_ms(t_pieces) / 1000.0));
-    out.summary.push_back(fmt::format("fold curve{}: {}", label, summary.phrase));
-    if (summary.warning) out.summary.push_back(*summary.warning);
-  }
-  // Where the curve ended: past the range's end, or inside it where continuation could
-  // not go on (the reason is the continuation's own, in terms of the curve parameter).
-  const double last = curve.points.back().p;
-  const bool finished = last < fs.p_min || last > fs.p_max;
-  if (!finished)
-    out.summary.push_back(fmt::format("fold curve{}: stopped at {}, inside the range: no continuation step was "
-                                      "accepted there ({}); the curve may turn sharply or end there",
-                                      label, shown_parameter(which, last), curve.message));
-  else if (curve.turns.empty())
-    out.summary.push_back(fmt::format("fold curve{}: {} points from {} to {}, no cusp in range", label,
-                                      curve.points.size(), shown_parameter(which, curve.points.front().p), shown_parameter(which, last)));
+  if (bars) add_fold_bars(bar_of, curve, row_of, which, label, st.tolerance, elapsed_ms(t_pieces) / 1000.0, out, say);
+  if (const std::optional<std::string> line = where_the_curve_ended(curve, fs, which, label)) out.summary.push_back(*line);
   add_limit_curves();
 }
 

@@ -64,7 +64,9 @@ LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKin
     // two is 10 % off and the parabola through three 0.1 %), so that the margin's secant
     // in load starts next to it; the last crossing's where Newton cannot start there.
     std::pair<double, std::vector<double>> here = crossing;
+    bool extrapolated = false;
     if (!history.empty()) {
+      extrapolated = true;
       const std::vector<double> weights = extrapolation_weights(history, p, next);
       here.first = weights.back() * crossing.first;
       for (double& v : here.second) v *= weights.back();
@@ -79,9 +81,9 @@ LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKin
       if (!(here.first > 0.25 * crossing.first)) {
         here = crossing;
         here.first = std::min(here.first, highest);
+        extrapolated = here.first != crossing.first;
       }
     }
-    const bool extrapolated = here.first != crossing.first || here.second != crossing.second;
     model.set_load(here.first);
     NewtonReport rep = corrector.solve(here.second, newton);
     out.solves += 1;

@@ -60,12 +60,8 @@ namespace {
 
 // Each point's crossing along the mesh sequence (crossing_sequence), on bearings of the
 // job's own: one per mesh, built when a point first needs it and moved to each point's
-// parameter. The crossings are located to a fifth of the tolerance where that is finer
-// than the curve's width, as a search's are (search_error_bars.cpp).
+// parameter.
 void bar_points(const Scene& scene, CurveParameter which, const LimitCurveSettings& settings, LimitCurveJob& job) {
-  const double tolerance = settings.tolerance;
-  const double width =
-      tolerance > 0.0 ? std::min(settings.bracket_width, tolerance / 5.0) : settings.bracket_width;
   job.bars.resize(job.curve.points.size());
   if (job.bars.empty()) return;
   std::optional<BearingModel> coarse;
@@ -85,7 +81,8 @@ void bar_points(const Scene& scene, CurveParameter which, const LimitCurveSettin
       coarse->set_curve_parameter(which, pt.p);
       coarse->set_load(pt.state.load);
       std::size_t level = 0;
-      bar.estimate = crossing_sequence(*coarse, job.kind, {pt.state.load, pt.u}, width, settings.load_end, tolerance,
+      bar.estimate = crossing_sequence(*coarse, job.kind, {pt.state.load, pt.u}, settings.bracket_width,
+                                       settings.load_end, settings.tolerance,
                                        [&](const Scene& next) -> BearingModel& {
                                          if (meshes.size() == level)
                                            meshes.push_back(coarse->on_mesh(next.mesh.radial_nodes,

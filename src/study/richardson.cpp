@@ -220,14 +220,12 @@ std::optional<MeshErrorEstimate> RefinedFoldCurve::at(double p, double load, std
   // difference: a thousandth of it (as predicted, at least a thousandth of a percent of the load)
   // moves the bar by 0.1 % of itself.
   const double accuracy = 1e-3 * std::max(std::abs(guess_load - load), 1e-3 * load);
-  std::optional<FoldPoint> fold = checked_fold(*fine_, guess, guess_load, last_null_.empty() ? first_null_ : last_null_,
-                                               load, kind, why, accuracy);
+  const std::vector<double>& border = last_null_.empty() ? first_null_ : last_null_;
+  std::optional<FoldPoint> fold = checked_fold(*fine_, guess, guess_load, border, load, kind, why, accuracy);
   // A fold followed from further back than the last point (a level a chain's points
   // need only now and then) may start outside Newton's reach: again from the coarse fold.
   if (!fold && follow)
-    fold = checked_fold(*fine_, fine_->interpolated_from(coarse_, u), load,
-                        last_null_.empty() ? first_null_ : last_null_, load, kind, why,
-                        1e-3 * std::max(std::abs(guess_load - load), 1e-3 * load));
+    fold = checked_fold(*fine_, fine_->interpolated_from(coarse_, u), load, border, load, kind, why, accuracy);
   last_coarse_.assign(u.begin(), u.end());
   last_coarse_load_ = load;
   if (!fold) {
@@ -292,9 +290,12 @@ std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, Bearing
 }
 
 std::optional<MeshErrorEstimate> crossing_sequence(const BearingModel& coarse, LimitKind kind,
-                                                   std::pair<double, std::vector<double>> state, double width,
+                                                   std::pair<double, std::vector<double>> state, double bracket_width,
                                                    double load_end, double tolerance, const FinerBearing& finer,
                                                    std::string& why) {
+  // To a fifth of the tolerance where that is finer than the bracket: the crossing's
+  // location then moves its bar by little.
+  const double width = tolerance > 0.0 ? std::min(bracket_width, tolerance / 5.0) : bracket_width;
   MeshSequence sequence(coarse.scene(), state.first);
   const BearingModel* at = &coarse;
   std::string finest;

@@ -119,13 +119,13 @@ std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, Bearing
 // A crossing along the mesh sequence (mesh_convergence.h): from its load and state on
 // `coarse` (the scene's mesh) on the mesh refined by two, and with a tolerance on each
 // finer mesh from the last one's crossing (crossing_on_finer_mesh) until its bar meets it,
-// each located to `width`. `finer(next)` gives the bearing on the sequence's next mesh,
+// each located to the bracket width, or with a tolerance to a fifth of it where finer. `finer(next)` gives the bearing on the sequence's next mesh,
 // standing where `coarse` stands, and keeps it while the sequence goes on. Empty, with
 // `why`, where the first refinement fails; a later failure ends the sequence, said in its
 // estimate's convergence.
 using FinerBearing = std::function<BearingModel&(const Scene& next)>;
 std::optional<MeshErrorEstimate> crossing_sequence(const BearingModel& coarse, LimitKind kind,
-                                                   std::pair<double, std::vector<double>> state, double width,
+                                                   std::pair<double, std::vector<double>> state, double bracket_width,
                                                    double load_end, double tolerance, const FinerBearing& finer,
                                                    std::string& why);
 

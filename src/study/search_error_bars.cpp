@@ -169,13 +169,11 @@ RefinedBar refined_fold(const BearingModel& model, const DistressSearchSettings&
 RefinedBar refined_crossing(const BearingModel& model, const DistressSearchSettings& settings,
                             const DistressSearch& found, std::size_t c) {
   RefinedBar bar;
-  const double tolerance = model.scene().study.tolerance;
-  const double width = tolerance > 0.0 ? std::min(settings.bracket_width, tolerance / 5.0) : settings.bracket_width;
   try {
     // Each finer mesh's bearing from the search's, held while the next starts from it.
     std::vector<std::unique_ptr<BearingModel>> held;
-    bar.estimate = crossing_sequence(model, kFailureCriteria[c], found.crossing_states[c], width, settings.load_end,
-                                     tolerance,
+    bar.estimate = crossing_sequence(model, kFailureCriteria[c], found.crossing_states[c], settings.bracket_width,
+                                     settings.load_end, model.scene().study.tolerance,
                                      [&](const Scene& next) -> BearingModel& {
                                        held.push_back(model.on_mesh(next.mesh.radial_nodes,
                                                                     next.mesh.circumferential_nodes));
