@@ -14,6 +14,7 @@
 #include "model/limit_thresholds.h"
 #include "solver/kinsol_newton.h"
 #include "solver/natural_continuation.h"
+#include "study/input_neighbours.h"
 #include "study_support.h"
 
 namespace twb {
@@ -59,6 +60,9 @@ class BranchSegment {
     known_.emplace_back(load, std::move(u));
     return known_.back().second;
   }
+
+  // A state of the branch solved elsewhere: a nearer start for the continuation.
+  void add(double load, std::span<const double> u) { known_.emplace_back(load, std::vector<double>(u.begin(), u.end())); }
 
  private:
   BearingModel& model_;
@@ -115,9 +119,22 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
   std::optional<KinsolNewton> own;
   if (!corrector) corrector = &own.emplace(model);
   BranchSegment segment(model, state, solves);
-  // The state at `load` from the last one: Newton from it (a constant predictor, a few
-  // iterations for the secant's short steps), else continuation along the branch.
+  // The state at `load` from the last one: Newton from the branch's tangent there (a
+  // constant predictor until a solve here has left its factors), a few iterations for
+  // the secant's short steps.
   std::vector<double> u = state.second;
+  double u_load = state.first;
+  std::vector<double> tangent;  // J⁻¹F_W at u: u(W + Δ) ≈ u − Δ·tangent; empty where none
+  auto take_tangent = [&] {
+    tangent.clear();
+    if (!corrector->factorization().factored()) return;
+    tangent.resize(u.size());
+    model.parameter_derivative(u, tangent);
+    corrector->factorization().solve(tangent);
+  };
+  // A refined mesh's crossing starts from the caller's polish with this corrector: its
+  // factors are the start's.
+  if (load_only) take_tangent();
   // The load alone needed: a solve may stop where its margin is settled to a fiftieth of
   // the width in load at the secant's slope s (a fifth of the secant's last step, the
   // root's uncertainty at its stop).
@@ -132,15 +149,28 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
           reads, [&](std::size_t, double) { return std::abs(s) * 0.02 * width * model.load(); });
     };
   }
-  auto state_at = [&](double load) -> const std::vector<double>& {
-    model.set_load(load);
-    std::vector<double> trial = u;
-    ++solves;
-    if (corrector->solve(trial, settling).converged) {
-      u = std::move(trial);
-      return u;
+  // A step Newton cannot take is halved towards the last state, twice at most, before
+  // the branch is continued to it: on a steep stretch of the branch (a fold nearly
+  // reached) the secant overshoots the crossing, and continuing the branch that far,
+  // through the steep stretch in small steps, is the dearest solve of the search.
+  // `load` becomes the load the state is at.
+  auto state_at = [&](double& load) -> const std::vector<double>& {
+    for (int halving = 0; halving <= 2; ++halving) {
+      model.set_load(load);
+      std::vector<double> trial = tangent.empty() ? u : moved_state(u, tangent, load - u_load);
+      ++solves;
+      if (corrector->solve(trial, settling).converged) {
+        u = std::move(trial);
+        u_load = load;
+        segment.add(load, u);
+        take_tangent();
+        return u;
+      }
+      if (halving < 2) load = u_load + 0.5 * (load - u_load);
     }
     u = segment.at(load);
+    u_load = load;
+    tangent.clear();
     return u;
   };
   BearingState here;
@@ -154,7 +184,8 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
     double m0 = margin_at(u);
     // The secant on the margin along the branch, its first step with the caller's slope
     // (the crossing's at a nearby parameter), each step at most 30 % of the load.
-    s = slope < 0.0 ? slope : -std::max(std::abs(m0), 1e-3) / (0.1 * w0);
+    const bool local_slope = slope < 0.0;
+    s = local_slope ? slope : -std::max(std::abs(m0), 1e-3) / (0.1 * w0);
     for (int step = 0; step < 16; ++step) {
       double w1 = std::clamp(w0 - m0 / s, 0.7 * w0, 1.3 * w0);
       if (w1 > load_end && w0 >= load_end) {
@@ -162,9 +193,10 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
         return std::nullopt;
       }
       // The next step a tenth of the width: the root lies within it of w0 (superlinear
-      // convergence). Only on a secant through w0: the caller's slope, a nearby
-      // crossing's, may be far off where the margin bends sharply (contact setting in).
-      if (step > 0 && w1 <= load_end && std::abs(w1 - w0) <= 0.1 * width * w0) {
+      // convergence). Only on a secant through w0, or on the branch's own slope at the
+      // start (a refined mesh's, load_only: a Newton step): a nearby crossing's slope
+      // may be far off where the margin bends sharply (contact setting in).
+      if ((step > 0 || (load_only && local_slope)) && w1 <= load_end && std::abs(w1 - w0) <= 0.1 * width * w0) {
         slope = s;
         state = {w0, u};
         if (described) *described = std::move(here);

@@ -43,8 +43,10 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
 // The crossing of `kind` near `state` (a state of the cool branch at its load, e.g. the
 // crossing at a nearby parameter value, predicted): the secant on the margin in load
 // from there (the first step with `slope`, dmargin/dW, where negative), each state by
-// Newton from the last, until the next step would be a tenth of `width`: the state in
-// hand is then the crossing's to that, the secant converging superlinearly. On success
+// Newton from the last moved along the branch's tangent (a step Newton cannot take
+// halved, twice at most, before the branch is continued to it), until the next step
+// would be a tenth of `width`: the state in hand is then the crossing's to that, the
+// secant converging superlinearly. On success
 // `state` becomes the crossing's (load, state), `slope` the last secant's and
 // `described`, if given, its description; none, with `why`, where the crossing lies
 // above load_end or the branch cannot be continued to it (it folds first). `corrector`,
@@ -53,7 +55,9 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
 // bar): each Newton solve stops where the margin is settled to what moves the root by
 // a fiftieth of `width`; the load returned is the secant's last root (closer than the
 // last state solved), and the state returned is that last solve's, neither at that load
-// nor converged to the solver's tolerance.
+// nor converged to the solver's tolerance. The caller has just solved `state` with
+// `corrector` (its factors are the start's), and a negative `slope` is the branch's
+// own there: its Newton step, when short enough, is the root.
 std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pair<double, std::vector<double>>& state,
                                     double& slope, double width, double load_end, long& solves, std::string& why,
                                     KinsolNewton* corrector = nullptr, BearingState* described = nullptr,

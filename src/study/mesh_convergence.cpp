@@ -46,6 +46,12 @@ MeshConvergence mesh_converged(std::span<const double> values) {
   return e;
 }
 
+double next_mesh_value(std::span<const double> values) {
+  if (values.size() < 2) return values.empty() ? 0.0 : values.back();
+  const double order = values.size() > 2 ? mesh_converged(values).order.value_or(kFormalOrder) : kFormalOrder;
+  return values.back() + (values.back() - values[values.size() - 2]) / std::pow(2.0, order);
+}
+
 bool within_tolerance(const MeshConvergence& estimate, double tolerance) {
   return estimate.error <= tolerance * std::abs(estimate.value);
 }

@@ -37,6 +37,11 @@ struct MeshConvergence {
 // least two values.
 MeshConvergence mesh_converged(std::span<const double> values);
 
+// The value the next finer mesh should give, for its solve's start: the last plus the
+// last difference shrunk by 2^p (p the observed order where three values show one, else
+// the formal order); with one value, that value.
+double next_mesh_value(std::span<const double> values);
+
 // Whether the estimate's bar is within the relative tolerance of its value.
 bool within_tolerance(const MeshConvergence& estimate, double tolerance);
 

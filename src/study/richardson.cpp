@@ -240,42 +240,48 @@ std::optional<MeshErrorEstimate> RefinedFoldCurve::at(double p, double load, std
 
 std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, BearingModel& fine, LimitKind kind,
                                              std::pair<double, std::vector<double>>& state, double width,
-                                             double load_end, std::string& why) {
-  const double load = state.first;
+                                             double load_end, std::string& why, double predicted, double& slope) {
+  const double load = predicted > 0.0 ? predicted : state.first;
   std::vector<double> v = fine.interpolated_from(coarse, state.second);
   fine.set_load(load);
   NewtonSettings newton = newton_settings(fine.scene());
   newton.max_iterations = 20;
-  // The coarse margin is nought here, so the refined one is the meshes' difference in
-  // margin, about the slope times their crossings' difference in load: settled to 1e-3 of
-  // itself it moves the refined crossing by 1e-3 of that difference, the bar by 0.1 %
-  // (the same part as a state's bars: refine_state).
+  // At the coarse crossing the coarse margin is nought, so the refined one is the
+  // meshes' difference in margin, about the slope times their crossings' difference in
+  // load: settled to 1e-3 of itself it moves the refined crossing by 1e-3 of that
+  // difference, the bar by 0.1 % (the same part as a state's bars: refine_state). At a
+  // predicted crossing the margin is near nought too: there it needs settling only to
+  // what moves the root by the secant's own settling (a fiftieth of the width, at the
+  // coarse mesh's slope).
+  const double floor = std::abs(slope) * 0.02 * width * load;
   const OperatingLimits limits = OperatingLimits::of(fine.scene());
   newton.quantities.at = [&](std::span<const double> w) {
     return std::vector<double>{*state_margin(fine, w, kind, limits)};
   };
   newton.quantities.settled = [&](const NewtonSettings::QuantityReads& reads) {
-    return settled_by_contraction(reads, [](std::size_t, double margin) { return 1e-3 * std::abs(margin); });
+    return settled_by_contraction(
+        reads, [&](std::size_t, double margin) { return std::max(1e-3 * std::abs(margin), floor); });
   };
   KinsolNewton polish(fine);
   const NewtonReport rep = polish.solve(v, newton);
   if (!rep.converged) {
-    why = "Newton on the refined mesh did not converge at the coarse crossing: " + rep.message;
+    why = fmt::format("Newton on the refined mesh did not converge at {:.6g} N (the {} crossing): {}", load,
+                      predicted > 0.0 ? "predicted" : "coarse", rep.message);
     return std::nullopt;
   }
-  // The margin's slope along the refined branch at the coarse load, from the branch's
+  // The margin's slope along the refined branch at the start's load, from the branch's
   // tangent u_W = −J⁻¹F_W with the polish's last factors (a Jacobian one Newton step
   // from the state: its error only moves the secant's first step): with it the
   // secant's first step lands next to the crossing instead of walking towards it.
   // (None where the polish factored nothing, its start already converged: the secant
   // then walks from its own first guess.)
-  double slope = 0.0;
+  double refined_slope = 0.0;
   if (polish.factorization().factored()) {
     std::vector<double> u_load(v.size());
     fine.parameter_derivative(v, u_load);
     polish.factorization().solve(u_load);
     const double dw = kInputStep * load;
-    slope = stencil_derivative(kCentred2, dw, [&](std::size_t k) {
+    refined_slope = stencil_derivative(kCentred2, dw, [&](std::size_t k) {
       const double shift = kCentred2.offsets[k] * dw;
       fine.set_load(load + shift);
       return std::vector<double>{*state_margin(fine, moved_state(v, u_load, shift), kind, limits)};
@@ -286,7 +292,10 @@ std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, Bearing
   long solves = 0;
   // The secant's solves refactor the polish's Jacobian pattern: its symbolic analysis
   // (nested dissection on refined meshes, about 80 ms) is done once.
-  return crossing_near(fine, kind, state, slope, width, load_end, solves, why, &polish, nullptr, true);
+  const std::optional<double> w =
+      crossing_near(fine, kind, state, refined_slope, width, load_end, solves, why, &polish, nullptr, true);
+  slope = refined_slope;
+  return w;
 }
 
 std::optional<MeshErrorEstimate> crossing_sequence(const BearingModel& coarse, LimitKind kind,
@@ -299,6 +308,7 @@ std::optional<MeshErrorEstimate> crossing_sequence(const BearingModel& coarse, L
   MeshSequence sequence(coarse.scene(), state.first);
   const BearingModel* at = &coarse;
   std::string finest;
+  double slope = 0.0;  // the last mesh's dmargin/dW at its crossing
   do {
     const Scene* next = sequence.next_mesh();
     if (!next) break;
@@ -307,7 +317,8 @@ std::optional<MeshErrorEstimate> crossing_sequence(const BearingModel& coarse, L
     BearingModel* fine = nullptr;
     try {
       fine = &finer(*next);
-      w = crossing_on_finer_mesh(*at, *fine, kind, state, width, load_end, step_why);
+      w = crossing_on_finer_mesh(*at, *fine, kind, state, width, load_end, step_why,
+                                 next_mesh_value(sequence.loads()), slope);
     } catch (const InternalError&) {
       throw;  // a bug: no fallback may hide it
     } catch (const std::exception& e) {
@@ -334,7 +345,8 @@ std::optional<MeshErrorEstimate> crossing_estimate(const BearingModel& coarse, B
                                                    double load, std::span<const double> u, double width,
                                                    double load_end, std::string& why) {
   std::pair<double, std::vector<double>> state{load, std::vector<double>(u.begin(), u.end())};
-  const std::optional<double> w = crossing_on_finer_mesh(coarse, fine, kind, state, width, load_end, why);
+  double slope = 0.0;
+  const std::optional<double> w = crossing_on_finer_mesh(coarse, fine, kind, state, width, load_end, why, 0.0, slope);
   if (!w) return std::nullopt;
   return extrapolated(load, *w, mesh_name(fine.scene()));
 }

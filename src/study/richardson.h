@@ -111,10 +111,13 @@ std::optional<FoldPoint> fold_on_finer_mesh(const BearingModel& coarse, const Fo
 // A crossing one step further along a mesh sequence: `state` holds the crossing's load
 // and state on `coarse`, and comes back with the crossing on `fine` as crossing_near
 // leaves it (the last solve's load and state: a start for the next mesh). The refined
-// crossing's load, or empty with `why`; as crossing_estimate below.
+// crossing's load, or empty with `why`; as crossing_estimate below. Its first solve
+// stands at `predicted` where given (> 0: the load the sequence expects on `fine`,
+// next_mesh_value), else at the coarse crossing; `slope` holds the coarse crossing's
+// dmargin/dW (0: none) and comes back with the refined one's.
 std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, BearingModel& fine, LimitKind kind,
                                              std::pair<double, std::vector<double>>& state, double width,
-                                             double load_end, std::string& why);
+                                             double load_end, std::string& why, double predicted, double& slope);
 
 // A crossing along the mesh sequence (mesh_convergence.h): from its load and state on
 // `coarse` (the scene's mesh) on the mesh refined by two, and with a tolerance on each

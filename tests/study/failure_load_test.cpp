@@ -16,8 +16,10 @@
 #include "solver/natural_continuation.h"
 #include "study/steady_solver.h"
 #include "study/distress_search.h"
+#include "study/failure_load.h"
 #include "study/study_support.h"
 #include "twb/scene/scene_loader.h"
+#include "../support/table1_scene.h"
 
 namespace twb {
 namespace {
@@ -231,6 +233,47 @@ TEST(FailureLoad, NoneReachedSaysSo) {
   EXPECT_FALSE(row.criterion);
   for (const auto& load : row.criterion_loads) EXPECT_FALSE(load);
   EXPECT_NE(row.failure.find("no failure up to 150 N"), std::string::npos) << row.failure;
+}
+
+// A crossing just below the fold, approached by a secant whose first step overshoots the
+// fold (the slope of a crossing further down, where the margin falls slowly): no state
+// exists past the fold and the branch cannot be continued there; the step is halved back
+// below it and the crossing found where the branch's margin is nought. The paper's
+// bearing on the coarse mesh at 545 rad/s, with the flash point set to the oil's peak
+// temperature at 97 % of W_d.
+TEST(FailureLoad, ACrossingNextToTheFoldIsFoundFromAStepThatOvershootsIt) {
+  Scene s = testing::table1_scene(true, true, true, true, 545.0, 100.0);
+  testing::use_coarse_mesh(s);
+  s.lubricant.flash_temperature = 1000.0;  // K: not crossed, until set below
+  BearingModel model(s);
+  DistressSearchSettings settings = range(600.0);
+  settings.fold_only = true;
+  const DistressSearch found = search_distress(model, settings, {});
+  ASSERT_TRUE(found.row.fold_load) << found.row.method;
+  const double fold = *found.row.fold_load;
+
+  // The branch at 97 % of W_d sets the flash point; the start at 85 %.
+  std::vector<double> u;
+  double at = 0.0;
+  margin_at(model, found, LimitKind::oil_peak_temperature, 0.97 * fold, u, at);
+  s.lubricant.flash_temperature = model.describe(u).oil_peak_temperature;
+  BearingModel limited(s);
+  std::vector<double> start;
+  const double m0 = margin_at(limited, found, LimitKind::oil_peak_temperature, 0.85 * fold, start, at);
+  ASSERT_GT(m0, 0.0);
+
+  // The first step lands at 110 % of W_d.
+  std::pair<double, std::vector<double>> state{0.85 * fold, start};
+  double slope = -m0 / (1.10 * fold - 0.85 * fold);
+  long solves = 0;
+  std::string why;
+  const std::optional<double> w = crossing_near(limited, LimitKind::oil_peak_temperature, state, slope,
+                                                settings.bracket_width, settings.load_end, solves, why);
+  ASSERT_TRUE(w) << why;
+  // The secant stops where its next step is a tenth of the width: the root lies within
+  // that step (superlinear convergence), and the flash point was read off a state
+  // converged to the solver's tolerance, whose margin error moves the root by far less.
+  EXPECT_NEAR(*w, 0.97 * fold, 0.1 * settings.bracket_width * fold);
 }
 
 }  // namespace

@@ -52,6 +52,18 @@ TEST(MeshConvergence, TheBarCoversTheTrueErrorAndNarrowsWithTheThirdMesh) {
   }
 }
 
+// The value the next mesh should give, where its solve starts (next_mesh_value): on an
+// exact power law the law's own next value, from two meshes where its order is the
+// formal two, from three whatever its order (the observed one); one value is its own.
+TEST(MeshConvergence, TheNextMeshsValueContinuesThePowerLaw) {
+  const auto second_order = manufactured(202.62, -40.0, 2.0, 3);
+  EXPECT_NEAR(next_mesh_value(std::vector<double>{second_order[0], second_order[1]}), second_order[2], 1e-11);
+  const auto lower_order = manufactured(202.62, -40.0, 1.5, 4);
+  EXPECT_NEAR(next_mesh_value(std::vector<double>(lower_order.begin(), lower_order.begin() + 3)), lower_order[3],
+              1e-11);
+  EXPECT_EQ(next_mesh_value(std::vector<double>{188.38}), 188.38);
+}
+
 // An observed order above the formal one is capped at two: a chance of the data must not
 // shrink the bar; the extrapolation with order two then still lies within the bar.
 TEST(MeshConvergence, AnOrderAboveTheFormalIsCappedAtTwo) {
