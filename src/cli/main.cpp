@@ -141,7 +141,8 @@ int write_results(const std::filesystem::path& dir, const std::string& scene_pat
   twb::cli::run_is_complete();
   std::cout << twb::states_summary(outcome.states);
   for (const std::string& line : twb::summary_lines(outcome)) std::cout << line << "\n";
-  for (const std::string& line : twb::limit_notes(outcome.states, outcome.distress, outcome.parameter_columns)) std::cout << line << "\n";
+  for (const std::string& line : twb::limit_notes(outcome.states, outcome.distress, outcome.parameter_columns,
+                                                        outcome.speeds_in_rpm)) std::cout << line << "\n";
   std::cout << fmt::format("results: {}  ({} states, {:.1f} ms)\n", dir.string(), outcome.states.size(),
                            outcome.timings.total_ms);
   if (verbose)

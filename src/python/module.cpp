@@ -185,7 +185,8 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads, st
   out["formats"] = formats;
   out["fields"] = fields;
   out["summary"] = twb::summary_lines(outcome);
-  out["limit_notes"] = twb::limit_notes(outcome.states, outcome.distress, outcome.parameter_columns);
+  out["limit_notes"] = twb::limit_notes(outcome.states, outcome.distress, outcome.parameter_columns,
+                                           outcome.speeds_in_rpm);
   out["diagnostics"] = outcome.diagnostics;
   out["solver_failed"] = outcome.solver_failed;
   out["message"] = outcome.message;

@@ -25,7 +25,7 @@ struct FirstExcess {
 }  // namespace
 
 std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, const std::vector<DistressRow>& distress,
-                                     const std::vector<std::string>& parameter_columns) {
+                                     const std::vector<std::string>& parameter_columns, bool speeds_in_rpm) {
   std::map<Run, std::map<LimitKind, FirstExcess>> first;
   for (const SolvedState& r : states) {
     if (!r.converged) continue;
@@ -41,7 +41,7 @@ std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, con
     std::optional<double> w_d;
     for (const DistressRow& d : distress)
       if (d.speed == speed && d.parameters == parameters && d.sliding == sliding) w_d = d.distress_load;
-    const std::string where = fmt::format("{:.6g} rad/s{}{}", speed, run_axes_text(parameter_columns, parameters),
+    const std::string where = fmt::format("{}{}{}", speed_text(speed, speeds_in_rpm), run_axes_text(parameter_columns, parameters),
                                           sliding ? ", sliding " + std::string(scene_name(*sliding)) : "");
     for (const auto& [kind, f] : kinds) {
       const bool before_distress = w_d && f.cool_branch && f.load < *w_d;

@@ -310,6 +310,8 @@ void read_fold_curve(const MapReader& study, Scene& out) {
   };
   s.from = value("from");
   s.to = value("to");
+  if (s.curve_parameter == CurveParameter::speed)
+    s.speeds_in_rpm = given_in_rpm(study.get("from", "")) && given_in_rpm(study.get("to", ""));
   if (s.to == s.from) {
     const Node to = study.get("to", "");
     to.fail(fmt::format("{}: '{}' must differ from 'from': the curve needs a range", to.path(), to.yaml().Scalar()));

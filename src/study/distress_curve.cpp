@@ -112,7 +112,7 @@ CurveEnds search_ends(BearingModel& model, BearingModel& other, const std::strin
     BearingModel& m = i == 0 ? model : other;
     const double end = i == 0 ? st.from : st.to;
     m.set_curve_parameter(st.curve_parameter, end);
-    if (progress) progress(fmt::format("[curve{}] the first fold at {}", label, shown_parameter(st.curve_parameter, end)));
+    if (progress) progress(fmt::format("[curve{}] the first fold at {}", label, shown_parameter(st, end)));
     (i == 0 ? ends.from : ends.to) = search_distress(m, settings, progress);
   };
   if (threads > 1) {
@@ -130,11 +130,11 @@ CurveEnds search_ends(BearingModel& model, BearingModel& other, const std::strin
 
 // An end's search in the outcome: its row in distress.csv (tagged with the family member,
 // and with the parameter's value where it is not the speed), its cool-branch states.
-void record_end(DistressSearch& found, double end, CurveParameter which, std::optional<double> member,
+void record_end(DistressSearch& found, double end, const Study& st, std::optional<double> member,
                 StudyOutcome& out) {
   add_search_work(out.timings, found.counts);
   found.row.parameters = member ? std::vector<double>{*member} : std::vector<double>{};
-  if (which != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown_parameter(which, end), found.row.method);
+  if (st.curve_parameter != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown_parameter(st, end), found.row.method);
   out.distress.push_back(found.row);
   for (std::size_t k = 0; k < found.cool_states; ++k) {
     out.states.push_back(found.states[k]);
@@ -173,19 +173,20 @@ LimitCurveSettings limit_curve_settings(const Study& st) {
   settings.load_end = st.load_end;
   settings.error_bars = st.error_estimate != ErrorEstimate::none;
   settings.tolerance = st.tolerance;
+  settings.shown = [st](double p) { return shown_parameter(st, p); };
   return settings;
 }
 
 // The folds' error bars in their rows (row_of[k] the row of the curve's point k), and what
 // they came to in the summary and the progress (`seconds` since the pieces began).
 void add_fold_bars(const FoldCurveBars& bars, const FoldCurve& curve, const std::vector<std::size_t>& row_of,
-                   CurveParameter which, const std::string& label, double tolerance, double seconds,
+                   const Study& st, const std::string& label, double tolerance, double seconds,
                    StudyOutcome& out, const std::function<void(const std::string&)>& say) {
   const std::size_t points = curve.points.size();
   for (std::size_t k = 0; k < points; ++k)
     if (const auto& e = bars[k].estimate) put_bar(out.fold_curve[row_of[k]], *e);
   const BarsSummary summary = bars_summary(
-      bars.first(points), tolerance, "folds", [&](std::size_t k) { return shown_parameter(which, curve.points[k].p); },
+      bars.first(points), tolerance, "folds", [&](std::size_t k) { return shown_parameter(st, curve.points[k].p); },
       "fold curve" + label);
   say(fmt::format("[curve{}] {} [{:.1f} s]", label, summary.phrase, seconds));
   out.summary.push_back(fmt::format("fold curve{}: {}", label, summary.phrase));
@@ -196,15 +197,15 @@ void add_fold_bars(const FoldCurveBars& bars, const FoldCurve& curve, const std:
 // is the continuation's own, in terms of the curve parameter), or past its end without a
 // cusp (a cusp has its own line); none otherwise.
 std::optional<std::string> where_the_curve_ended(const FoldCurve& curve, const FoldCurveSettings& fs,
-                                                 CurveParameter which, const std::string& label) {
+                                                 const Study& st, const std::string& label) {
   const double last = curve.points.back().p;
   if (!(last < fs.p_min || last > fs.p_max))
     return fmt::format("fold curve{}: stopped at {}, inside the range: no continuation step was accepted there ({}); "
                        "the curve may turn sharply or end there",
-                       label, shown_parameter(which, last), curve.message);
+                       label, shown_parameter(st, last), curve.message);
   if (curve.turns.empty())
     return fmt::format("fold curve{}: {} points from {} to {}, no cusp in range", label, curve.points.size(),
-                       shown_parameter(which, curve.points.front().p), shown_parameter(which, last));
+                       shown_parameter(st, curve.points.front().p), shown_parameter(st, last));
   return std::nullopt;
 }
 
@@ -225,7 +226,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   // Each end searched, with its criteria's crossings: where the limit curves start.
   std::vector<std::pair<double, Crossings>> ends;
   auto take = [&](DistressSearch& found, double end) {
-    record_end(found, end, which, member, out);
+    record_end(found, end, st, member, out);
     ends.emplace_back(end, found.crossing_states);
   };
   const DistressSearch* first = nullptr;
@@ -244,7 +245,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   std::vector<LimitCurveJob> jobs = limit_curve_jobs(st, ends);
   LimitCurveSettings limit_settings = limit_curve_settings(st);
   auto add_limit_curves = [&] {
-    for (const LimitCurveJob& job : jobs) add_limit_curve(job, which, member, label, st.tolerance, out, say);
+    for (const LimitCurveJob& job : jobs) add_limit_curve(job, st, member, label, st.tolerance, out, say);
   };
   auto limit_curves_alone = [&] {
     limit_settings.fold_load = distress_fold_of(out, member);
@@ -254,7 +255,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   if (!first) {
     out.summary.push_back(fmt::format("fold curve{}: no fold between {:.6g} and {:.6g} N at either end ({} and {}): "
                                       "no sudden distress to follow",
-                                      label, st.load_start, st.load_end, shown_parameter(which, st.from), shown_parameter(which, st.to)));
+                                      label, st.load_start, st.load_end, shown_parameter(st, st.from), shown_parameter(st, st.to)));
     limit_curves_alone();
     return;
   }
@@ -289,7 +290,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     int kind = +1;  // the start's: W_d, proven
     try {
       curve = trace_fold_curve(model, parameter, *first->fold, fs, [&](const FoldCurvePoint& pt) {
-        say(fmt::format("[curve{}] {}: fold at {:.2f} N ({}) [{:.1f} s]", label, shown_parameter(which, pt.p), pt.lambda,
+        say(fmt::format("[curve{}] {}: fold at {:.2f} N ({}) [{:.1f} s]", label, shown_parameter(st, pt.p), pt.lambda,
                         pt.curvature > 0 ? "distress" : pt.curvature < 0 ? "recovery" : "of unknown kind",
                         elapsed_ms(t0) / 1000.0));
         // (a curvature that could not be computed, NaN, keeps the previous point's kind)
@@ -316,8 +317,8 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
         out.summary.push_back(
             t.cusp ? fmt::format("fold curve{}: cusp at {}, {:.2f} N: the cool and hot branches merge; on the side "
                                  "without a fold the bearing heats gradually, with no sudden distress",
-                                 label, shown_parameter(which, t.p), t.lambda)
-                   : fmt::format("fold curve{}: turns back at {}, {:.2f} N without a cusp", label, shown_parameter(which, t.p),
+                                 label, shown_parameter(st, t.p), t.lambda)
+                   : fmt::format("fold curve{}: turns back at {}, {:.2f} N without a cusp", label, shown_parameter(st, t.p),
                                  t.lambda));
       }
     }
@@ -347,12 +348,12 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     }
   });
   if (curve.points.empty()) {
-    out.summary.push_back(fmt::format("fold curve{}: not traced from {}: {}", label, shown_parameter(which, start), curve.message));
+    out.summary.push_back(fmt::format("fold curve{}: not traced from {}: {}", label, shown_parameter(st, start), curve.message));
     add_limit_curves();
     return;
   }
-  if (bars) add_fold_bars(bar_of, curve, row_of, which, label, st.tolerance, elapsed_ms(t_pieces) / 1000.0, out, say);
-  if (const std::optional<std::string> line = where_the_curve_ended(curve, fs, which, label)) out.summary.push_back(*line);
+  if (bars) add_fold_bars(bar_of, curve, row_of, st, label, st.tolerance, elapsed_ms(t_pieces) / 1000.0, out, say);
+  if (const std::optional<std::string> line = where_the_curve_ended(curve, fs, st, label)) out.summary.push_back(*line);
   add_limit_curves();
 }
 

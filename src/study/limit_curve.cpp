@@ -34,6 +34,7 @@ LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKin
   const ParameterScope load_as_given(model);
   LimitCurve out;
   out.kind = kind;
+  auto shown = [&](double v) { return settings.shown ? settings.shown(v) : fmt::format("{:.6g}", v); };
   model.set_curve_parameter(which, from);
   model.set_load(crossing.first);
   out.points.push_back({from, model.describe(crossing.second), crossing.second});
@@ -50,9 +51,9 @@ LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKin
     // (infinite where the branch has no fold there)
     const double fold = settings.fold_load ? settings.fold_load(next).value_or(INFINITY) : INFINITY;
     if (crossing.first >= fold) {
-      out.ended = fmt::format("at {:.6g}: the cool branch folds at {:.2f} N, below the crossing's {:.2f} N: the fold "
+      out.ended = fmt::format("at {}: the cool branch folds at {:.2f} N, below the crossing's {:.2f} N: the fold "
                               "comes first",
-                              next, fold, crossing.first);
+                              shown(next), fold, crossing.first);
       break;
     }
     // Not past the fold: there the cool branch has no state (the secant would only wander
@@ -96,7 +97,7 @@ LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKin
     if (!rep.converged) {
       model.set_curve_parameter(which, p);
       if (std::abs(dp) < std::abs(full) / 64.0) {
-        out.ended = fmt::format("the branch at the crossing's load was lost between {:.6g} and {:.6g}: {}", p, next,
+        out.ended = fmt::format("the branch at the crossing's load was lost between {} and {}: {}", shown(p), shown(next),
                                 rep.message);
         break;
       }
@@ -108,13 +109,13 @@ LimitCurve trace_limit_curve(BearingModel& model, CurveParameter which, LimitKin
     const std::optional<double> w = crossing_near(model, kind, here, slope, settings.bracket_width, highest,
                                                   out.solves, why, &corrector, &described);
     if (!w) {
-      out.ended = fmt::format("at {:.6g}: {}", next, why);
+      out.ended = fmt::format("at {}: {}", shown(next), why);
       break;
     }
     if (*w >= fold) {
-      out.ended = fmt::format("at {:.6g}: the cool branch folds at {:.2f} N, below the crossing's {:.2f} N: the fold "
+      out.ended = fmt::format("at {}: the cool branch folds at {:.2f} N, below the crossing's {:.2f} N: the fold "
                               "comes first",
-                              next, fold, *w);
+                              shown(next), fold, *w);
       break;
     }
     history.emplace_back(p, std::move(crossing));

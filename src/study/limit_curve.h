@@ -36,6 +36,8 @@ struct LimitCurveSettings {
   // meets it (richardson.h: crossing_sequence).
   bool error_bars = false;
   double tolerance = 0.0;
+  // A parameter value as the curve's end says it ("4125 rpm"); none: the number alone.
+  std::function<std::string(double)> shown;
 };
 
 struct LimitCurvePoint {

@@ -11,12 +11,13 @@
 #include "study/richardson.h"
 #include "study_support.h"
 #include "twb/error_family.h"
+#include "twb/results/run_axes.h"
 
 namespace twb {
 
-std::string shown_parameter(CurveParameter p, double v) {
-  switch (p) {
-    case CurveParameter::speed: return fmt::format("{:.6g} rad/s", v);
+std::string shown_parameter(const Study& st, double v) {
+  switch (st.curve_parameter) {
+    case CurveParameter::speed: return speed_text(v, st.speeds_in_rpm);
     case CurveParameter::friction_coefficient: return fmt::format("f = {:.6g}", v);
     case CurveParameter::gear_tilt: return fmt::format("{:.6g} mrad", 1e3 * v);
     case CurveParameter::ambient_temperature: return fmt::format("{:.6g} C", v - 273.15);
@@ -116,7 +117,7 @@ void trace_job(const Scene& scene, CurveParameter which, const LimitCurveSetting
   job.seconds = elapsed_ms(t0) / 1000.0;
 }
 
-void add_limit_curve(const LimitCurveJob& job, CurveParameter which, std::optional<double> member,
+void add_limit_curve(const LimitCurveJob& job, const Study& st, std::optional<double> member,
                      const std::string& label, double tolerance, StudyOutcome& out, const std::function<void(const std::string&)>& say) {
   const LimitCurve& curve = job.curve;
   for (std::size_t k = 0; k < curve.points.size(); ++k) {
@@ -131,18 +132,18 @@ void add_limit_curve(const LimitCurveJob& job, CurveParameter which, std::option
   }
   const std::string line =
       curve.points.empty()
-          ? fmt::format("limit curve{}: {} not traced from {}: {}", label, limit_name(job.kind), shown_parameter(which, job.from),
+          ? fmt::format("limit curve{}: {} not traced from {}: {}", label, limit_name(job.kind), shown_parameter(st, job.from),
                         curve.ended)
           : fmt::format("limit curve{}: {} crossed from {:.2f} N at {} to {:.2f} N at {} ({} points){}", label,
-                        limit_name(job.kind), curve.points.front().state.load, shown_parameter(which, curve.points.front().p),
-                        curve.points.back().state.load, shown_parameter(which, curve.points.back().p), curve.points.size(),
+                        limit_name(job.kind), curve.points.front().state.load, shown_parameter(st, curve.points.front().p),
+                        curve.points.back().state.load, shown_parameter(st, curve.points.back().p), curve.points.size(),
                         curve.ended.empty() ? std::string() : "; ended " + curve.ended);
   std::string with_bars = line;
   std::optional<std::string> warning;
   if (!job.bars.empty()) {
     const std::string curve_name = fmt::format("limit curve{}: {}", label, limit_name(job.kind));
     BarsSummary bars = bars_summary(
-        job.bars, tolerance, "points", [&](std::size_t k) { return shown_parameter(which, curve.points[k].p); },
+        job.bars, tolerance, "points", [&](std::size_t k) { return shown_parameter(st, curve.points[k].p); },
         curve_name);
     with_bars += "; " + bars.phrase;
     warning = std::move(bars.warning);

@@ -18,8 +18,9 @@ namespace twb {
 // Each criterion's crossing (load, state) on a searched branch, kFailureCriteria order.
 using Crossings = std::vector<std::pair<double, std::vector<double>>>;
 
-// A parameter value as a user reads it.
-std::string shown_parameter(CurveParameter p, double v);
+// The curve parameter's value as a user reads it: a speed in rpm where the scene gave
+// the curve's range so.
+std::string shown_parameter(const Study& st, double v);
 
 // One criterion's limit curve (limit_curve.h), from the first end searched that crosses
 // it to the other end, on a model of its own.
@@ -43,7 +44,7 @@ std::function<std::optional<double>(double)> distress_fold_of(const StudyOutcome
 void trace_job(const Scene& scene, CurveParameter which, const LimitCurveSettings& settings, LimitCurveJob& job);
 // A traced limit curve's rows in fold_curve.csv (the criterion's name in the fold
 // column) and its summary line.
-void add_limit_curve(const LimitCurveJob& job, CurveParameter which, std::optional<double> member,
+void add_limit_curve(const LimitCurveJob& job, const Study& st, std::optional<double> member,
                      const std::string& label, double tolerance, StudyOutcome& out,
                      const std::function<void(const std::string&)>& say);
 

@@ -45,7 +45,7 @@ std::vector<std::string> summary_lines(const StudyOutcome& outcome) {
   std::vector<std::string> lines;
   for (const DistressRow& d : outcome.distress) {
     const std::string where =
-        fmt::format("{:.6g} rad/s{}{}", d.speed, run_axes_text(outcome.parameter_columns, d.parameters),
+        fmt::format("{}{}{}", speed_text(d.speed, outcome.speeds_in_rpm), run_axes_text(outcome.parameter_columns, d.parameters),
                     d.sliding ? ", sliding " + std::string(scene_name(*d.sliding)) : "");
     std::string distress = "none";
     if (d.distress_load && d.extrapolated_load && d.discretization_error) {

@@ -259,6 +259,7 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
   const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   const Running how{threads, plumbing.journal, plumbing.scheduler, options.stop};
   StudyOutcome out;
+  out.speeds_in_rpm = model.scene().study.speeds_in_rpm;
   const auto t0 = Clock::now();
   const SparseLu::Counts klu_before = SparseLu::thread_counts();
   switch (model.scene().study.type) {

@@ -216,6 +216,7 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
                   const ProgressReport& progress, const Running& how, RunTimings& timings,
                   std::vector<std::string>& diagnostics, const SearchResult& take) {
   const std::vector<double> speeds = study_speeds(base);
+  const bool in_rpm = base.scene().study.speeds_in_rpm;
   std::vector<SearchTask> tasks;
   for (const Variant& variant : variants)
     for (std::size_t k = 0; k < speeds.size(); ++k) tasks.push_back({&variant, k, speeds[k]});
@@ -236,7 +237,7 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
       const SearchTask& t = tasks[it->first];
       DistressSearch& found = it->second.found;
       for (const std::string& d : found.diagnostics)
-        diagnostics.push_back(fmt::format("{:.6g} rad/s{}: {}", t.speed, t.variant->label, d));
+        diagnostics.push_back(fmt::format("{}{}: {}", speed_text(t.speed, in_rpm), t.variant->label, d));
       add_search_work(timings, found.counts);
       timings.klu_factorizations += it->second.klu_factorizations;
       if (it->second.model) take(*t.variant, t.speed_index, *it->second.model, found);
@@ -291,7 +292,8 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
       continue;
     }
     if (say)
-      say(fmt::format("[{}/{}] {:.6g} rad/s{}: from the journal", i + 1, total, tasks[i].speed, tasks[i].variant->label));
+      say(fmt::format("[{}/{}] {}{}: from the journal", i + 1, total, speed_text(tasks[i].speed, in_rpm),
+                      tasks[i].variant->label));
     deliver(i, std::move(*result));
   }
 
@@ -302,7 +304,7 @@ void run_searches(BearingModel& base, const std::vector<Variant>& variants, cons
   if (!how.scheduler) spare.emplace(how.threads, todo.size());
   auto run = [&](std::size_t i) {
     const SearchTask& task = tasks[i];
-    if (say) say(fmt::format("[{}/{}] {:.6g} rad/s{}", i + 1, total, task.speed, task.variant->label));
+    if (say) say(fmt::format("[{}/{}] {}{}", i + 1, total, speed_text(task.speed, in_rpm), task.variant->label));
     SearchDone result = search_one(base, task, settings, say, spare ? &*spare : nullptr);
     if (spare) spare->search_finished();
     return result;

@@ -10,6 +10,8 @@
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "twb/results/limit_notes.h"
+#include "twb/results/run_axes.h"
+#include "twb/study/study_outcome.h"
 #include "study/steady_solver.h"
 
 namespace twb {
@@ -163,6 +165,31 @@ TEST(LimitNotes, SayWhenTheCoolBranchLeavesTheModelBeforeDistress) {
   const std::vector<std::string> named = limit_notes({a, b}, {d}, {"groove_count"});
   ASSERT_EQ(named.size(), 1u);
   EXPECT_NE(named[0].find("at 545 rad/s, groove_count = 4:"), std::string::npos) << named[0];
+}
+
+// A scene that gave its speeds in rpm reads them back in rpm: the limit notes and the
+// summary's distress and failure lines (a new user who wrote 4000 rpm read 418.879
+// rad/s). 4000 rpm = 4000·2π/60 rad/s, and back to six digits.
+TEST(LimitNotes, SpeedsGivenInRpmAreSaidInRpm) {
+  const double speed = 4000.0 * 2.0 * std::numbers::pi / 60.0;
+  SolvedState a;
+  a.converged = true;
+  a.state.speed = speed;
+  a.state.load = 350.0;
+  a.state.limits = {{LimitKind::oil_temperature, 430.0, 423.15}};
+  DistressRow d;
+  d.speed = speed;
+  d.failure = "fails at 350 N";
+  EXPECT_NE(limit_notes({a}, {d}, {}, true)[0].find("limit at 4000 rpm: "), std::string::npos);
+  EXPECT_NE(limit_notes({a}, {d})[0].find("limit at 418.879 rad/s: "), std::string::npos);
+  StudyOutcome outcome;
+  outcome.distress = {d};
+  outcome.speeds_in_rpm = true;
+  const std::vector<std::string> lines = summary_lines(outcome);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0].rfind("distress at 4000 rpm: ", 0), 0u) << lines[0];
+  EXPECT_EQ(lines[1], "failure at 4000 rpm: fails at 350 N");
+  EXPECT_EQ(speed_text(545.0, false), "545 rad/s");
 }
 
 }  // namespace

@@ -65,6 +65,22 @@ TEST(LimitCurve, EveryCriterionCrossedAtTheLowEndIsContinued) {
   EXPECT_EQ(rows.size(), 5u);
 }
 
+// The curve's range was given in rpm: its summary lines say rpm, as the scene did (a
+// curve from 1000 rpm to 6000 rpm said 104.72 to 628.319 rad/s, and ended "at 453.786").
+TEST(LimitCurve, ASpeedCurveGivenInRpmIsSaidInRpm) {
+  const StudyOutcome& out = shared().out;
+  EXPECT_TRUE(out.speeds_in_rpm);
+  int limit_lines = 0;
+  for (const std::string& line : out.summary) {
+    if (line.rfind("limit curve", 0) != 0) continue;
+    ++limit_lines;
+    EXPECT_NE(line.find(" at 1000 rpm"), std::string::npos) << line;
+    EXPECT_EQ(line.find("rad/s"), std::string::npos) << line;
+  }
+  EXPECT_EQ(limit_lines, 5);
+  EXPECT_EQ(summary_lines(out).front().rfind("distress at 1000 rpm: ", 0), 0u) << summary_lines(out).front();
+}
+
 TEST(LimitCurve, PointsAreCrossingsOfTheCoolBranch) {
   BearingModel model(bronze_curve());
   const OperatingLimits limits = OperatingLimits::of(model.scene());

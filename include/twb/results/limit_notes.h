@@ -15,8 +15,10 @@ namespace twb {
 
 // One line per run and limit exceeded (runs in order, limits in LimitKind order), each
 // at the lightest load past it; empty when no state exceeds a limit. A run's parameter
-// value is named by its column (e.g. groove_count), "parameter" where none is given.
+// value is named by its column (e.g. groove_count), "parameter" where none is given; its
+// speed in rpm where the scene gave its speeds so (StudyOutcome::speeds_in_rpm).
 std::vector<std::string> limit_notes(const std::vector<SolvedState>& states, const std::vector<DistressRow>& distress,
-                                     const std::vector<std::string>& parameter_columns = {});
+                                     const std::vector<std::string>& parameter_columns = {},
+                                     bool speeds_in_rpm = false);
 
 }  // namespace twb

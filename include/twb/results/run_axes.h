@@ -13,4 +13,8 @@ namespace twb {
 // progress lines and summaries name a run); "parameter" names a column not given.
 std::string run_axes_text(const std::vector<std::string>& columns, const std::vector<double>& values);
 
+// A speed given in rad/s as the scene gave its speeds: "4000 rpm" where it gave them in
+// rpm (Study::speeds_in_rpm), else "418.879 rad/s"; six significant digits.
+std::string speed_text(double rad_per_s, bool in_rpm);
+
 }  // namespace twb

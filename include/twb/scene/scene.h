@@ -377,7 +377,8 @@ struct Study {
   // oil's and the model's validity). 0: none, on to load_end.
   double search_past_failure = 2.0;
   // The scene gave its speeds (study.speeds, or operating.speed where the study names
-  // none) in rpm: the figures say rpm too (run.json's speed_unit).
+  // none) in rpm: the figures (run.json's speed_unit), the summaries and the progress
+  // lines say rpm too.
   bool speeds_in_rpm = false;
   // distress_map: a search at every combination, or each followed from its neighbour's.
   MapMethod map_method = MapMethod::search;

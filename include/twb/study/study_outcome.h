@@ -46,6 +46,7 @@ struct StudyOutcome {
   std::optional<CycleState> cycle_end;   // duty_cycle: where a completed cycle ended, to go on from
   std::optional<CycleHeat> cycle_heat;   // duty_cycle: the heat balance over the march
   std::vector<std::string> summary;  // lines for the end of the run's output (e.g. the cusp)
+  bool speeds_in_rpm = false;        // the scene gave its speeds in rpm: the summaries say rpm
   // The solvers' own words where a search went on regardless (twb run --verbose).
   std::vector<std::string> diagnostics;
   bool solver_failed = false;  // a state the study needed could not be solved
