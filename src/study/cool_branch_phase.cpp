@@ -23,6 +23,7 @@
 #include "solver/linear_stability.h"
 #include "solver/runaway.h"
 #include "twb/error_family.h"
+#include "twb/results/run_axes.h"
 
 namespace twb {
 
@@ -158,8 +159,8 @@ DistressSearchPhases::CoolBranchEnd DistressSearchPhases::continue_cool_branch()
       keep(low_, low_state_, p.iterations, p.wall_ms);
       bound_past_failure(t);
       const double done = (low_ - settings_.load_start) / (searched_to_ - settings_.load_start);
-      say(fmt::format("  {:.6g} rad/s: {:.2f} N on the cool branch ({:.2f} C mean; {:.0f} % of the load range)",
-                      model_.speed(), low_, out_.states.back().state.washer_mean_temperature - 273.15, 100 * done));
+      say(fmt::format("  {}: {:.2f} N on the cool branch ({:.2f} C mean; {:.0f} % of the load range)",
+                      speed_text(model_.speed(), model_.scene().study.speeds_in_rpm), low_, out_.states.back().state.washer_mean_temperature - 273.15, 100 * done));
       if (replaced) {
         acceptance = Acceptance::replaced;
         break;
@@ -218,9 +219,9 @@ void DistressSearchPhases::bound_past_failure(std::size_t t) {
   targets_.erase(std::remove_if(targets_.begin() + std::ptrdiff_t(t), targets_.end(), [&](double w) { return w > bound; }),
                  targets_.end());
   if (targets_.size() <= t || targets_.back() < bound) targets_.push_back(bound);
-  say(fmt::format("  {:.6g} rad/s: past {} at {:.2f} N; the branch is searched on to {:.2f} N only "
+  say(fmt::format("  {}: past {} at {:.2f} N; the branch is searched on to {:.2f} N only "
                   "(study.search_past_failure: {:g})",
-                  model_.speed(), criterion_phrase(*past), low_, bound, settings_.search_past_failure));
+                  speed_text(model_.speed(), model_.scene().study.speeds_in_rpm), criterion_phrase(*past), low_, bound, settings_.search_past_failure));
 }
 
 }  // namespace twb

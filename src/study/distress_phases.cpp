@@ -9,6 +9,7 @@
 #include "study_support.h"
 #include "solver/runaway.h"
 #include "twb/error_family.h"
+#include "twb/results/run_axes.h"
 
 namespace twb {
 
@@ -337,7 +338,8 @@ void DistressSearchPhases::sweep_hot_branch(std::vector<double> u, double load) 
       if (p.index == 0) return true;
       keep(p.lambda, p.u, p.corrector_iterations, elapsed_ms(t0));
       t0 = std::chrono::steady_clock::now();
-      say(fmt::format("  {:.6g} rad/s: {:.1f} N past distress ({:.2f} C mean)", model_.speed(), p.lambda,
+      say(fmt::format("  {}: {:.1f} N past distress ({:.2f} C mean)",
+                      speed_text(model_.speed(), model_.scene().study.speeds_in_rpm), p.lambda,
                       out_.states.back().state.washer_mean_temperature - 273.15));
       return true;
     });

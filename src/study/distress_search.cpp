@@ -20,6 +20,7 @@
 #include "study/spare_threads.h"
 #include "study/steady_solver.h"
 #include "twb/error_family.h"
+#include "twb/results/run_axes.h"
 
 namespace twb {
 
@@ -188,9 +189,9 @@ DistressSearch search_from_start(BearingModel& model, const DistressSearchSettin
   }
   const bool beside = ahead.valid();
   if (progress && !beside)
-    progress(fmt::format("  {:.6g} rad/s: is the start at {:.6g} N on the cool branch? following it down to a "
+    progress(fmt::format("  {}: is the start at {:.6g} N on the cool branch? following it down to a "
                          "lighter load",
-                         model.speed(), settings.load_start));
+                         speed_text(model.speed(), model.scene().study.speeds_in_rpm), settings.load_start));
   const StartCheck check = beside ? ahead.get() : check_start(model, settings, u);
   helper.reset();
   // Counted as on one thread: the search's own count holds the check's factorizations
@@ -258,12 +259,13 @@ DistressSearch search_distress(BearingModel& model, const DistressSearchSettings
     const auto t0 = std::chrono::steady_clock::now();
     long solves = 0;
     if (progress)
-      progress(fmt::format("  {:.6g} rad/s: where the branch crosses each failure criterion, up to {:.6g} N",
-                           model.speed(), out.searched_to));
+      progress(fmt::format("  {}: where the branch crosses each failure criterion, up to {:.6g} N",
+                           speed_text(model.speed(), model.scene().study.speeds_in_rpm), out.searched_to));
     locate_failure(model, branch, {start, out.searched_to, settings.bracket_width}, out.row, solves,
                    &out.crossing_states);
     if (progress && out.row.failure_load)
-      progress(fmt::format("  {:.6g} rad/s: {} [{} steady solves, {:.1f} s]", model.speed(), out.row.failure, solves,
+      progress(fmt::format("  {}: {} [{} steady solves, {:.1f} s]",
+                           speed_text(model.speed(), model.scene().study.speeds_in_rpm), out.row.failure, solves,
                            elapsed_ms(t0) / 1000.0));
   }
   // (Plus the start's check where it ran beside the search: search_from_start.)

@@ -149,21 +149,27 @@ std::optional<double> crossing_near(BearingModel& model, LimitKind kind, std::pa
           reads, [&](std::size_t, double) { return std::abs(s) * 0.02 * width * model.load(); });
     };
   }
-  // A step Newton cannot take is halved towards the last state, twice at most, before
-  // the branch is continued to it: on a steep stretch of the branch (a fold nearly
-  // reached) the secant overshoots the crossing, and continuing the branch that far,
-  // through the steep stretch in small steps, is the dearest solve of the search.
-  // `load` becomes the load the state is at.
+  // A step Newton cannot take is halved towards the last state, twice at most, and the
+  // branch continued to the last halving only where Newton still fails there: on a
+  // steep stretch of the branch (a fold nearly reached) the secant overshoots the
+  // crossing, and continuing the branch that far, through the steep stretch in small
+  // steps, is the dearest solve of the search. `load` becomes the load the state is at.
   auto state_at = [&](double& load) -> const std::vector<double>& {
     for (int halving = 0; halving <= 2; ++halving) {
       model.set_load(load);
       std::vector<double> trial = tangent.empty() ? u : moved_state(u, tangent, load - u_load);
       ++solves;
-      if (corrector->solve(trial, settling).converged) {
+      const NewtonReport rep = corrector->solve(trial, settling);
+      if (rep.converged) {
         u = std::move(trial);
         u_load = load;
-        segment.add(load, u);
-        take_tangent();
+        // (A load-only solve stops once its margin is settled: not a state to continue from.)
+        if (!load_only) segment.add(load, u);
+        // A start KINSOL accepted as it was factors nothing: the factors are another solve's.
+        if (rep.jacobian_evaluations > 0)
+          take_tangent();
+        else
+          tangent.clear();
         return u;
       }
       if (halving < 2) load = u_load + 0.5 * (load - u_load);

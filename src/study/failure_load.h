@@ -44,7 +44,8 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
 // crossing at a nearby parameter value, predicted): the secant on the margin in load
 // from there (the first step with `slope`, dmargin/dW, where negative), each state by
 // Newton from the last moved along the branch's tangent (a step Newton cannot take
-// halved, twice at most, before the branch is continued to it), until the next step
+// halved, twice at most, and the branch continued to the last halving where Newton
+// still fails), until the next step
 // would be a tenth of `width`: the state in hand is then the crossing's to that, the
 // secant converging superlinearly. On success
 // `state` becomes the crossing's (load, state), `slope` the last secant's and

@@ -18,6 +18,7 @@
 #include "solver/sparse_lu.h"
 #include "study/study_support.h"
 #include "twb/error_family.h"
+#include "twb/results/run_axes.h"
 
 namespace twb {
 
@@ -61,10 +62,10 @@ DistressRow followed_row(const FailureLoadAtInputs::Followed& p, double speed, c
 }
 
 // The combination's label for a row's method: its axes and speed.
-std::string point_label(const std::vector<std::string>& columns, const std::vector<double>& x) {
+std::string point_label(const std::vector<std::string>& columns, const std::vector<double>& x, bool in_rpm) {
   std::string out;
   for (std::size_t k = 0; k < columns.size(); ++k) out += fmt::format("{} = {:.6g}, ", columns[k], x[k]);
-  return out + fmt::format("{:.6g} rad/s", x.back());
+  return out + speed_text(x.back(), in_rpm);
 }
 
 }  // namespace
@@ -113,7 +114,7 @@ void run_followed_map(BearingModel& base, const DistressSearchSettings& settings
       // One combination that cannot be settled must not lose the map's other rows.
       why[flat] = e.what();
     }
-    if (parent) from[flat] = point_label(out.parameter_columns, x_of(*parent));
+    if (parent) from[flat] = point_label(out.parameter_columns, x_of(*parent), scene.study.speeds_in_rpm);
     const std::lock_guard<std::mutex> hold(lock);
     out.timings.klu_factorizations += SparseLu::thread_counts().factored_since(before);
     ++done;
@@ -161,7 +162,7 @@ void run_followed_map(BearingModel& base, const DistressSearchSettings& settings
       row.verdict = DistressVerdict::solver_failure;
       row.method = "solver failure: " + why[flat];
       row.failure = failure_sentence(row, settings.load_end);
-      out.message += (out.message.empty() ? "" : "; ") + fmt::format("{}: {}", point_label(out.parameter_columns, x), why[flat]);
+      out.message += (out.message.empty() ? "" : "; ") + fmt::format("{}: {}", point_label(out.parameter_columns, x, scene.study.speeds_in_rpm), why[flat]);
       out.distress.push_back(std::move(row));
       continue;
     }

@@ -20,6 +20,7 @@
 #include "scene/input_distribution.h"
 #include "study/study_support.h"
 #include "twb/error_family.h"
+#include "twb/results/run_axes.h"
 
 namespace twb {
 
@@ -317,9 +318,9 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
   row.probability = form.probability;
   row.beta = form.beta;
   add_design_point(out, "form", form, inputs);
-  out.summary.push_back(fmt::format("reliability at {:.6g} N, {:.6g} rad/s: P_f = {:.3g} by FORM (β = {:.3f}; W_fail "
+  out.summary.push_back(fmt::format("reliability at {:.6g} N, {}: P_f = {:.3g} by FORM (β = {:.3f}; W_fail "
                                     "{:.6g} N at the inputs' medians, {} failure loads evaluated)",
-                                    load, speed, form.probability, form.beta, *found.row.failure_load, form.evaluations));
+                                    load, speed_text(speed, scene.study.speeds_in_rpm), form.probability, form.beta, *found.row.failure_load, form.evaluations));
   out.summary.push_back("reliability: design point: " + design_point_words(form, inputs));
   failure.keep(inputs_at(form.u));
 

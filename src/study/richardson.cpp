@@ -241,9 +241,13 @@ std::optional<MeshErrorEstimate> RefinedFoldCurve::at(double p, double load, std
 std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, BearingModel& fine, LimitKind kind,
                                              std::pair<double, std::vector<double>>& state, double width,
                                              double load_end, std::string& why, double predicted, double& slope) {
-  const double load = predicted > 0.0 ? predicted : state.first;
-  std::vector<double> v = fine.interpolated_from(coarse, state.second);
-  fine.set_load(load);
+  // The predicted load where given (within load_end), else, or where Newton fails there,
+  // the coarse crossing's.
+  std::vector<double> starts{state.first};
+  if (predicted > 0.0 && std::min(predicted, load_end) != state.first)
+    starts.insert(starts.begin(), std::min(predicted, load_end));
+  double load = starts.front();
+  std::vector<double> v;
   NewtonSettings newton = newton_settings(fine.scene());
   newton.max_iterations = 20;
   // At the coarse crossing the coarse margin is nought, so the refined one is the
@@ -253,7 +257,7 @@ std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, Bearing
   // predicted crossing the margin is near nought too: there it needs settling only to
   // what moves the root by the secant's own settling (a fiftieth of the width, at the
   // coarse mesh's slope).
-  const double floor = std::abs(slope) * 0.02 * width * load;
+  double floor = 0.0;
   const OperatingLimits limits = OperatingLimits::of(fine.scene());
   newton.quantities.at = [&](std::span<const double> w) {
     return std::vector<double>{*state_margin(fine, w, kind, limits)};
@@ -263,12 +267,19 @@ std::optional<double> crossing_on_finer_mesh(const BearingModel& coarse, Bearing
         reads, [&](std::size_t, double margin) { return std::max(1e-3 * std::abs(margin), floor); });
   };
   KinsolNewton polish(fine);
-  const NewtonReport rep = polish.solve(v, newton);
-  if (!rep.converged) {
-    why = fmt::format("Newton on the refined mesh did not converge at {:.6g} N (the {} crossing): {}", load,
-                      predicted > 0.0 ? "predicted" : "coarse", rep.message);
-    return std::nullopt;
+  bool polished = false;
+  for (std::size_t k = 0; k < starts.size() && !polished; ++k) {
+    load = starts[k];
+    floor = std::abs(slope) * 0.02 * width * load;
+    v = fine.interpolated_from(coarse, state.second);
+    fine.set_load(load);
+    const NewtonReport rep = polish.solve(v, newton);
+    polished = rep.converged;
+    if (!polished)
+      why = fmt::format("Newton on the refined mesh did not converge at {:.6g} N (the {} crossing): {}", load,
+                        k + 1 < starts.size() ? "predicted" : "coarse", rep.message);
   }
+  if (!polished) return std::nullopt;
   // The margin's slope along the refined branch at the start's load, from the branch's
   // tangent u_W = −J⁻¹F_W with the polish's last factors (a Jacobian one Newton step
   // from the state: its error only moves the secant's first step): with it the

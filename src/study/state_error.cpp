@@ -10,6 +10,7 @@
 #include "study/mesh_convergence.h"
 #include "study/richardson.h"
 #include "study_support.h"
+#include "twb/results/run_axes.h"
 
 namespace twb {
 
@@ -234,7 +235,8 @@ std::vector<std::string> state_error_lines(const Scene& scene, const std::vector
                           kMeshErrorQuantities[k], value, 100.0 * worst[k], s.mesh_errors[2 * k],
                           s.mesh_errors[2 * k + 1],
                           with.size() == 1 ? std::string()
-                                           : fmt::format(" at {:.6g} N, {:.6g} rad/s", s.state.load, s.state.speed));
+                                           : fmt::format(" at {:.6g} N, {}", s.state.load,
+                                                         speed_text(s.state.speed, scene.study.speeds_in_rpm)));
   }
   if (listed.empty()) return lines;
   // The error falls as h^2: refining by r divides it by r^2.

@@ -180,8 +180,11 @@ TEST(LimitNotes, SpeedsGivenInRpmAreSaidInRpm) {
   DistressRow d;
   d.speed = speed;
   d.failure = "fails at 350 N";
-  EXPECT_NE(limit_notes({a}, {d}, {}, true)[0].find("limit at 4000 rpm: "), std::string::npos);
-  EXPECT_NE(limit_notes({a}, {d})[0].find("limit at 418.879 rad/s: "), std::string::npos);
+  const std::vector<std::string> in_rpm = limit_notes({a}, {d}, {}, true), in_rad_s = limit_notes({a}, {d});
+  ASSERT_EQ(in_rpm.size(), 1u);
+  ASSERT_EQ(in_rad_s.size(), 1u);
+  EXPECT_NE(in_rpm[0].find("limit at 4000 rpm: "), std::string::npos) << in_rpm[0];
+  EXPECT_NE(in_rad_s[0].find("limit at 418.879 rad/s: "), std::string::npos) << in_rad_s[0];
   StudyOutcome outcome;
   outcome.distress = {d};
   outcome.speeds_in_rpm = true;

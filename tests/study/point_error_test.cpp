@@ -156,7 +156,7 @@ TEST(PointError, EveryStateOfASweepHasAPointsBar) {
   ASSERT_FALSE(warning.empty());
   EXPECT_NE(warning.find("torque_Nm"), std::string::npos) << warning;
   EXPECT_NE(warning.find(" N, "), std::string::npos) << warning;  // where: a state's load and speed
-  EXPECT_NE(warning.find(" rad/s"), std::string::npos) << warning;
+  EXPECT_NE(warning.find(" 3000 rpm)"), std::string::npos) << warning;  // in the unit the scene gave
 }
 
 
