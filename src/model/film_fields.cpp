@@ -4,16 +4,17 @@
 #include <cmath>
 
 #include "model/bearing_model.h"
+#include "model/film_gap.h"
 
 namespace twb {
 
 std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
-  const RigidPosition q = position(u);
   const double ambient = scene_.operating.ambient;
   const bool thermal = scene_.effects.thermal;
   std::vector<FilmFields> out;
   for (const Film& film : films_) {
     const FilmMesh& m = film.mesh;
+    const NodeGaps gaps(*this, u, film);
     const std::size_t n = std::size_t(m.node_count());
     FilmFields f{film.number, film.sliding, m, {}, {}, {}, {}, {}, {}};
     for (auto* v : {&f.gap, &f.pressure, &f.contact_pressure, &f.film_temperature, &f.surface_temperature,
@@ -24,13 +25,7 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
         const std::size_t k = std::size_t(m.node(i, j));
         // On a relief's edge the node's gap is its control volume's mean (face_relief.h).
-        double h = film.node_gap_polar(q, r, m.angle(j)) + (deforms() ? shape_at(u, film, int(k)) : 0.0);
-        if (!film.relief.flat()) {
-          const FaceRelief::NodeParts parts = film.relief.node_parts(i, j);
-          double mean = 0.0;
-          for (int p = 0; p < parts.count; ++p) mean += parts.share[std::size_t(p)] * parts.relief[std::size_t(p)];
-          h += mean;
-        }
+        const double h = gaps.mean(i, j);
         f.gap[k] = h;
         f.pressure[k] = pressure_at(u, film, i, j);
         // The contact law's value at the node's gap, for a map. The reported contact

@@ -44,8 +44,7 @@ FilmPointReader::FilmPointReader(const BearingModel& model, std::span<const doub
   const auto& films = model.films();
   for (std::size_t f = 0; f < films.size(); ++f)
     if (films[f].sliding && f < totals.size()) friction_coefficient_ = totals[f].friction_coefficient;
-  if (model.deforms())
-    for (const Film& film : films) shapes_.push_back(model.node_shapes(u, film));
+  for (const Film& film : films) gaps_.emplace_back(model, u, film);
   const Scene& scene = model.scene();
   const std::array<const Material*, 3> materials{&scene.carrier.material, &scene.washer.material, &scene.gear.material};
   for (std::size_t b = 0; b < 3; ++b) yield_strength_[b] = materials[b]->yield_strength;
@@ -69,7 +68,8 @@ FilmPoint FilmPointReader::at(const Film& film, double r, double theta) const {
   const CellPlace c = place(m, r, theta);
   FilmPoint p;
   double h = film.node_gap_polar(position_, r, theta);
-  if (!shapes_.empty()) h += bilinear(shapes_[std::size_t(film.number - 1)], m, c);
+  const std::vector<double>& shapes = gaps_[std::size_t(film.number - 1)].shapes();
+  if (!shapes.empty()) h += bilinear(shapes, m, c);
   if (!film.relief.flat()) h += film.relief.in_cell(c.i, c.j, c.t);
   p.gap = h;
   p.mean_gap = average_gap(h, film.sigma).value;
@@ -160,9 +160,9 @@ std::vector<double> FilmPointReader::node_advection(const Film& film, const Film
       double generated = 0.0;
       if (!totals.contact_power.empty()) generated += friction_coefficient_ * totals.contact_power[std::size_t(n)];
       if (!totals.viscous_power.empty()) generated += totals.viscous_power[std::size_t(n)];
-      const double smooth =
-          film.node_gap_polar(position_, m.radius(i), m.angle(j)) + (shapes_.empty() ? 0.0 : shapes_[std::size_t(film.number - 1)][std::size_t(n)]);
-      const FaceRelief::NodeParts parts = film.relief.flat() ? FaceRelief::NodeParts{} : film.relief.node_parts(i, j);
+      const NodeGaps& gap = gaps_[std::size_t(film.number - 1)];
+      const double smooth = gap.smooth(i, j);
+      const FaceRelief::NodeParts parts = gap.parts(i, j);
       const double tf = model_.temperature_of(u_, film.temperature_row(n));
       double conducted = 0.0;
       for (std::size_t k = 0; k < 2; ++k) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/bearing_model.h"
+#include "model/film_gap.h"
 #include "physics/flash_temperature.h"
 
 namespace twb {
@@ -53,7 +54,7 @@ class FilmPointReader {
   // the node's volume (W/m²): its generation less its conduction to the faces, what the
   // node's balance gives the advection (physics §15); empty without convection.
   std::vector<std::vector<double>> advected_;
-  std::vector<std::vector<double>> shapes_;  // δ at each film node, with thermal deformation
+  std::vector<NodeGaps> gaps_;  // each film's node gaps at u
   // The bodies a film's contacts heat, by ComponentId (carrier, washer, gear): their
   // conductivity and diffusivity; the softer one carries the summits' junctions with it.
   std::array<FlashBody, 3> flash_bodies_{};

@@ -13,6 +13,7 @@
 #include "model/deformation_effect.h"
 
 #include "model/bearing_model.h"
+#include "model/film_gap.h"
 #include "physics/thermal_deformation.h"
 
 namespace twb {
@@ -101,34 +102,8 @@ std::vector<double> BearingModel::node_shapes(std::span<const double> u, const F
   return delta;
 }
 
-// A plane h = c + a·x + b·y is least along −(a, b), on the outer rim. A deformed film:
-// the least of the nodes' gaps and of the gap at that point (the shape interpolated
-// along the rim); without expansion that is the plane's exact minimum again.
 double BearingModel::least_gap(std::span<const double> u, const Film& film) const {
-  const RigidPosition q = position(u);
-  const FilmMesh& m = film.mesh;
-  const GapPlane plane = film.plane(q);
-  const bool relief = !film.relief.flat();
-  if (!deforms() && !relief) return plane.least_within(m.outer_radius());
-  // A relief (≥ 0, docs/physics.md section 14) moves the least gap off a groove onto the
-  // land beside it, whose edge is a node line: the nodes with their least side's relief.
-  const std::vector<double> delta = deforms() ? node_shapes(u, film) : std::vector<double>(std::size_t(m.node_count()), 0.0);
-  auto lower_side = [&](int i, int j) { return relief ? film.relief.least_at_node(i, j) : 0.0; };
-  double least = INFINITY;
-  for (int i = 0; i < m.radial_nodes(); ++i)
-    for (int j = 0; j < m.circumferential_nodes(); ++j)
-      least = std::min(least, film.node_gap_polar(q, m.radius(i), m.angle(j)) + delta[std::size_t(m.node(i, j))] + lower_side(i, j));
-  if (plane.a == 0.0 && plane.b == 0.0) return least;
-  const double two_pi = 2 * std::numbers::pi;
-  double theta = std::atan2(-plane.b, -plane.a);
-  if (theta < 0) theta += two_pi;
-  const double cell = theta / m.dtheta();
-  const int j = std::min(int(cell), m.circumferential_nodes() - 1);
-  const double t = cell - j;
-  const int rim = m.radial_nodes() - 1;
-  const double rim_delta =
-      (1 - t) * delta[std::size_t(m.node(rim, j))] + t * delta[std::size_t(m.node(rim, m.wrap(j + 1)))];
-  return std::min(least, film.node_gap_polar(q, m.outer_radius(), theta) + rim_delta + (relief ? film.relief.in_cell(rim - 1, j, t) : 0.0));
+  return NodeGaps(*this, u, film).least();
 }
 
 double BearingModel::dishing_curvature(std::span<const double> u) const {

@@ -15,6 +15,7 @@
 #include "model/heat_effect.h"
 
 #include "model/assembly_totals.h"
+#include "model/film_gap.h"
 #include "physics/average_gap.h"
 
 namespace twb {
@@ -120,7 +121,6 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
   const bool jac = a.wants_jacobian();
   const double k_oil = model.scene().lubricant.conductivity;
   const double ambient = model.scene().operating.ambient;
-  const RigidPosition q = model.position(u);
   const UnknownLayout& layout = model.layout();
   const bool deforms = model.deforms();
   const Index dishing_row = model.shape_unknowns().dishing;
@@ -130,6 +130,7 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
     const FilmMesh& m = film.mesh;
     const std::array<Index, 3> rigid_cols = film.rigid_columns();
     const std::array<ComponentId, 2> sides{film.lower, film.upper};
+    const NodeGaps gaps(model, u, film);
     for (int i = 0; i < m.radial_nodes(); ++i) {
       const double area = m.node_area(i);
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
@@ -140,10 +141,10 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
         const double x = node.x, y = node.y;
         // A node on a relief's edge (docs/physics.md section 14): the parts of its control
         // volume conduct side by side, each through its own gap.
-        const FaceRelief::NodeParts relief = film.relief.flat() ? FaceRelief::NodeParts{} : film.relief.node_parts(i, j);
-        const double smooth = film.node_gap(q, x, y) + (deforms ? model.shape_at(u, film, n) : 0.0);
-        const std::array<double, 3> dh = film.gap_gradient(x, y);
-        const LinearForm& shape = model.shape_form(film, n);
+        const FaceRelief::NodeParts relief = gaps.parts(i, j);
+        const double smooth = gaps.smooth(n, x, y);
+        const std::array<double, 3> dh = gaps.rigid_slope(x, y);
+        const LinearForm& shape = gaps.shape_form(n);
         std::array<ValueSlope, 4> part_gap{};
         for (int p = 0; p < relief.count; ++p)
           part_gap[std::size_t(p)] = average_gap(smooth + relief.relief[std::size_t(p)], film.sigma);
