@@ -22,7 +22,8 @@ double combined_sigma(const Component& a, const Component& b) {
 
 }  // namespace
 
-BearingModel::BearingModel(const Scene& scene) : scene_(scene), load_(scene.operating.load) {
+BearingModel::BearingModel(const Scene& scene, std::vector<EffectMaker> more_effects)
+    : scene_(scene), load_(scene.operating.load), more_effects_(std::move(more_effects)) {
   const Effects& fx = scene_.effects;
   const int nr = scene_.mesh.radial_nodes, nt = scene_.mesh.circumferential_nodes;
   const bool film1_slides = scene_.operating.sliding == SlidingFilm::carrier_washer;
@@ -285,7 +286,8 @@ SegregatedSystem::Blocks BearingModel::segregated_blocks() const {
   for (const UnknownBlock& block : layout_.blocks()) {
     std::vector<Index>* into = block.effect == BlockEffect::mechanics       ? &b.rigid
                                : block.effect == BlockEffect::hydrodynamics ? &b.pressure
-                               : block.effect == BlockEffect::thermal || block.effect == BlockEffect::thermal_deformation
+                               : block.effect == BlockEffect::thermal || block.effect == BlockEffect::thermal_deformation ||
+                                         block.effect == BlockEffect::asperity_contact
                                    ? &b.temperature
                                                                  : nullptr;
     if (!into) throw InternalError(std::string("segregated_blocks: unknown block of effect ") + effect_name(block.effect));

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -57,7 +58,10 @@ struct ComponentHeat {
 // everything else (pressures, film nodes, rigid body) is algebraic.
 class BearingModel final : public SegregatedSystem {
  public:
-  explicit BearingModel(const Scene& scene);
+  // An effect beyond the scene's switches (a test's, a plugin's): made while the model is
+  // built, after the scene's own (effect_registry.cpp), and again on every other mesh.
+  using EffectMaker = std::function<std::unique_ptr<EffectAssembler>(ModelSetup&)>;
+  explicit BearingModel(const Scene& scene, std::vector<EffectMaker> more_effects = {});
   // The effects hold the model they read: a model is not copied (on_mesh builds another).
   BearingModel(const BearingModel&) = delete;
   BearingModel& operator=(const BearingModel&) = delete;
@@ -175,26 +179,37 @@ class BearingModel final : public SegregatedSystem {
   // need exist (a cold start there can search for minutes). 0 without a supply.
   double supply_lift_bound() const;
 
-  // Thermal deformation (docs/physics.md section 11; film_shape.cpp): the change δ of a film's
-  // gap at a node from its plane, δ = form · u (m), from the carrier's and gear's face
-  // expansion and the washer's dishing. Empty forms without the effect.
-  bool deforms() const { return shape_.dishing >= 0; }
+  // The gap's shape (docs/physics.md section 1; gap_contribution.h): the change δ of a
+  // film's gap at a node from its plane, δ = form · u (m), the sum of the parts the
+  // effects register (thermal deformation's: the carrier's and gear's face expansion
+  // and the washer's dishing, film_shape.cpp). Empty forms without any.
+  bool gap_shaped() const { return !gap_parts_.empty(); }
+  const std::vector<std::unique_ptr<GapContribution>>& gap_parts() const { return gap_parts_; }
+  // Thermal deformation is on: the washer's dishing curvature is an unknown.
+  bool deforms() const { return dishing_.unknown >= 0; }
   // The shapes δ scaled by s in [0, 1] (the cold start's homotopy, study/steady_solver.cpp): 0
-  // is the rigid film with the deformation's own unknowns riding along, 1 the model.
+  // is the rigid film with the shape's own unknowns riding along, 1 the model.
   // The Jacobian's pattern is the same for every s.
   void set_deformation_scale(double s);
   double deformation_scale() const { return deformation_scale_; }
   const LinearForm& shape_form(const Film& film, int node) const {
     return shape_forms_[std::size_t(film.number - 1)][std::size_t(node)];
   }
-  const ShapeUnknowns& shape_unknowns() const { return shape_; }
   double shape_at(std::span<const double> u, const Film& film, int node) const;
-  // δ at every node of a film, once per evaluation; empty without the effect.
+  // δ at every node of a film, once per evaluation; empty without a shape.
   std::vector<double> node_shapes(std::span<const double> u, const Film& film) const;
   // The least gap (m) of a film: its plane's exact minimum over the annulus, c − |∇h|·r_o,
-  // or for a deformed film the least of its nodes' gaps and of the gap at that point
-  // (film_shape.cpp).
+  // or for a shaped film the least of its nodes' gaps and of the gap at that point
+  // (film_gap.cpp).
   double least_gap(std::span<const double> u, const Film& film) const;
+  // The sliding film's total contact force F̂c = F_c/contact_force_scale as an unknown
+  // of its own, −1 without: with the empirical friction law and a shaped gap, every δ
+  // moves F_c, which sets f in every heat row; one column couples them instead of a
+  // dense block. Its scale is the scene's load (fixed, unlike the rigid rows' F_ext, so
+  // that the load enters no other row).
+  Index contact_force_unknown() const { return contact_force_unknown_; }
+  double contact_force_scale() const { return contact_force_scale_; }
+  const WasherDishing& washer_dishing() const { return dishing_; }
   // The washer's area-mean dishing curvature κ̄ (1/m) of state u; 0 without the effect.
   double dishing_curvature(std::span<const double> u) const;
   // The dishing row's weight of a heat flow (W) from a film node into the washer: the
@@ -263,6 +278,7 @@ class BearingModel final : public SegregatedSystem {
   UnknownLayout layout_;
   Index rigid_offset_ = 0;
   std::vector<std::unique_ptr<EffectAssembler>> effects_;
+  std::vector<EffectMaker> more_effects_;
   // One summit population for both films (scene.asperities; docs/physics.md section 4).
   std::shared_ptr<const StatisticalContact> contact_;  // shared with models of the same surfaces
   double contact_cutoff_ = 0.0;  // gap above which contact is negligible (p < 1e-20 p(0))
@@ -284,10 +300,14 @@ class BearingModel final : public SegregatedSystem {
   std::array<char, 4> rest_by_rate_{};  // which of them is held by its rate in real time
   std::vector<std::vector<LinearForm>> viscosity_forms_;  // per film, per node
 
-  // Thermal deformation's shapes (film_shape.cpp): δ = form · u per film, per node.
-  ShapeUnknowns shape_;
+  // The gap's shape: its parts in the order their effects registered them, and their
+  // summed forms δ = form · u per film, per node (film_gap.cpp).
+  std::vector<std::unique_ptr<GapContribution>> gap_parts_;
   std::vector<std::vector<LinearForm>> shape_forms_;
   void build_shape_forms();
+  WasherDishing dishing_;
+  Index contact_force_unknown_ = -1;
+  double contact_force_scale_ = 0.0;
 };
 
 }  // namespace twb

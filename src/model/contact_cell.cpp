@@ -28,8 +28,8 @@ void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotal
   // flat: 36 points each instead of 64. (p(least) > 0 within the cutoff, so a
   // greatest gap where p underflows to 0 is never flat.)
   const bool flat = !structural && flat_rule_is_cheaper &&
-                    asperities.pressure(cell.gap_range.least).value <=
-                        std::exp(0.5) * asperities.pressure(cell.gap_range.greatest).value;
+                    asperities.pressure(cell.gap.range.least).value <=
+                        std::exp(0.5) * asperities.pressure(cell.gap.range.greatest).value;
   const CellRule& rule = flat ? flat_rule : contact_rule;
   // The cell's rule at the points within the cutoff (beyond it p < 1e-20 p(0),
   // above), their pressures as one batch (vectorized).
@@ -38,11 +38,7 @@ void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotal
   for (std::size_t gs = 0; gs < rule.size(); ++gs) {
     for (std::size_t gt = 0; gt < rule.size(); ++gt) {
       const CellPoint pt = rule.point(cell.i, cell.j, gs, gt);
-      double h = gap_plane.at(pt.x, pt.y);
-      if (deformed)
-        h += (1 - pt.s) * (1 - pt.t) * cell.d_node[0] + pt.s * (1 - pt.t) * cell.d_node[1] +
-             (1 - pt.s) * pt.t * cell.d_node[2] + pt.s * pt.t * cell.d_node[3];
-      if (cell.relief) h += cell.relief_at(pt.t);
+      const double h = gap.at(cell.gap, pt.s, pt.t, pt.x, pt.y);
       if (h > cutoff) continue;
       contact_points.push_back(pt);
       contact_h.push_back(h);
@@ -67,7 +63,7 @@ void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotal
         stiffness[3] += k * y * y;
         stiffness[4] -= k * x * y;
         stiffness[5] += k * x * x;
-        if (deformed) {
+        if (shaped) {
           const std::array<double, 4> N = corner_hats(s, tt);
           for (int m = 0; m < 4; ++m) {
             l.load_shape[0][m] += k * N[m];
@@ -90,7 +86,7 @@ void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotal
           power_rigid[n][0] += kn;
           power_rigid[n][1] += kn * y;
           power_rigid[n][2] -= kn * x;
-          if (deformed)
+          if (shaped)
             for (int m = 0; m < 4; ++m) l.power_shape[n][m] += kn * N[m];
         }
       }

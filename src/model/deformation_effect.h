@@ -1,7 +1,6 @@
-// Thermal deformation (docs/physics.md section 11): the washer's dishing curvature and,
-// with the empirical friction law, the sliding film's contact force as unknowns of
-// their own, and their rows (film_shape.cpp). The shapes δ themselves are the films'
-// geometry (BearingModel::shape_form), which every effect reads.
+// Thermal deformation (docs/physics.md section 11): the washer's dishing curvature as an
+// unknown of its own, and its row, and the carrier's, gear's and washer's shape as a part
+// of the films' gap (gap_contribution.h, film_shape.cpp), which every effect reads.
 #pragma once
 
 #include "model/effect_assembler.h"
@@ -12,6 +11,9 @@ class DeformationEffect final : public EffectAssembler {
  public:
   explicit DeformationEffect(ModelSetup& setup);
   void add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const override;
+  // The dishing curvature, in physical units.
+  void carry_from(const BearingModel& source, const EffectAssembler& mine_there, std::span<const double> u,
+                  std::span<double> out) const override;
 
  private:
   const BearingModel& model_;

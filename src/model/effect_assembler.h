@@ -8,15 +8,18 @@
 //
 // Adding an effect: its section in docs/physics.md, its switch in the scene, one
 // assembler file (a class deriving from EffectAssembler) and its line in
-// register_effects. What every effect reads of the others (films, temperatures,
-// viscosity, shapes, row scales) is BearingModel's public interface.
+// register_effects; an effect that moves the films' gap registers a GapContribution
+// from its constructor. What every effect reads of the others (films, temperatures,
+// viscosity, the gap's shape, row scales) is BearingModel's public interface.
 #pragma once
 
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "model/film.h"
+#include "model/gap_contribution.h"
 #include "model/sparse_assembly.h"
 #include "model/unknown_layout.h"
 
@@ -27,23 +30,25 @@ struct AssemblyTotals;
 struct ComponentHeat;
 struct Scene;
 
-// Thermal deformation's scalar unknowns (docs/physics.md section 11), -1 without them,
-// and their scales: the film's shape reads the dishing curvature, the film loads and
-// the friction law read the contact force.
-struct ShapeUnknowns {
-  Index dishing = -1, contact_force = -1;
-  double curvature_ref = 0, contact_force_ref = 0;
+// The washer's dishing curvature (thermal deformation, docs/physics.md section 11): its
+// unknown κ̂ = κ̄/curvature_ref, -1 without the effect. The heat balance adds the flux
+// crossing the washer to its row.
+struct WasherDishing {
+  Index unknown = -1;
+  double curvature_ref = 0;
 };
 
 // What an effect's constructor may extend while the model is being built: the
 // unknowns (blocks and their row scales), the films' columns, the heat-conducting
-// bodies, the deformation's scalars. The model reads only what is already declared.
+// bodies, the parts of the films' gap it moves (gap_contribution.h), the washer's
+// dishing. The model reads only what is already declared.
 struct ModelSetup {
   const BearingModel& model;
   UnknownLayout& layout;
   std::vector<Film>& films;
   std::vector<ComponentHeat>& components;
-  ShapeUnknowns& shape;
+  std::vector<std::unique_ptr<GapContribution>>& gap_parts;
+  WasherDishing& dishing;
 };
 
 // A film's block name, e.g. "film 1 pressure".
@@ -70,6 +75,12 @@ class EffectAssembler {
                                  AssemblyTotals& totals) const {
     add_terms(u, a, totals);
   }
+  // Writes into `out` (a state of this effect's model) the unknowns this effect declared,
+  // carried from state u of `source`, the same scene's model on another mesh, whose own
+  // assembler of this effect is `mine_there` (mesh_transfer.cpp carries the films' and
+  // bodies' fields): an effect with unknowns of its own says how they move between meshes.
+  virtual void carry_from(const BearingModel& /*source*/, const EffectAssembler& /*mine_there*/,
+                          std::span<const double> /*u*/, std::span<double> /*out*/) const {}
 };
 
 }  // namespace twb

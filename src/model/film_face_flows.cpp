@@ -22,7 +22,7 @@ FilmFaceFlows::FilmFaceFlows(const BearingModel& model, const Film& film, std::s
       film_(film),
       u_(u),
       op_(film.mesh),
-      plane_(film.plane(model.position(u))),
+      gap_(model, u, film),
       jfo_(film.content_offset >= 0) {
   const FilmMesh& m = film.mesh;
   // A node on a fed groove holds the supply's pressure, full of oil: like an edge node,
@@ -34,7 +34,6 @@ FilmFaceFlows::FilmFaceFlows(const BearingModel& model, const Film& film, std::s
   }
   node_t_.resize(std::size_t(m.node_count()));
   for (int n = 0; n < m.node_count(); ++n) node_t_[std::size_t(n)] = model.apply(model.viscosity_temperature_form(film, n), u);
-  delta_ = model.node_shapes(u, film);
 }
 
 // An edge node holds its edge's pressure (ambient, or the supply's at a fed bore), a fed
@@ -50,7 +49,6 @@ FaceFlow FilmFaceFlows::evaluate(const ReynoldsFace& f) const {
   const double omega = scene.operating.speed;
   const bool factors = scene.effects.flow_factors;
   const double sigma = film_.sigma;
-  const bool deformed = !delta_.empty();
 
   auto conductance = [&](double h, double t_face) {
     const double hp = std::max(h, 0.0);
@@ -79,27 +77,20 @@ FaceFlow FilmFaceFlows::evaluate(const ReynoldsFace& f) const {
   const double x = f.r * std::cos(f.theta), y = f.r * std::sin(f.theta);
   out.na = m.node(f.ia, f.ja);
   out.nb = m.node(f.ib, f.jb);
-  // A face lies midway between its two nodes: the shape is their mean there. A face on
-  // a relief's edge has half its length on either side, each with its own gap
-  // (docs/physics.md section 14): a radial face beside a groove's or step's edge line
-  // (its conductance the halves' mean), a circumferential face on a dam's line (its
-  // halves weighed by their integrals over r: ∫dr/r for the conductance, ∫r dr for the
-  // gap the moving face carries, i.e. the node's area shares).
-  FaceRelief::Halves relief{0.0, 0.0};
-  if (!film_.relief.flat())
-    relief = out.circumferential ? film_.relief.across_row(f.ia, f.ja)
-                                 : film_.relief.across_line(std::min(f.ia, f.ib), f.ja);
-  const double smooth =
-      plane_.at(x, y) + (deformed ? 0.5 * (delta_[std::size_t(out.na)] + delta_[std::size_t(out.nb)]) : 0.0);
+  // On a relief's edge each half of the face has its own gap (FilmGap::across): a radial
+  // face's conductance is the halves' mean, a circumferential face's halves are weighed
+  // by their integrals over r (∫dr/r for the conductance, ∫r dr for the gap the moving
+  // face carries, i.e. the node's area shares).
+  const FaceGap gap = gap_.across(f, out.na, out.nb, x, y);
+  const FaceRelief::Halves relief = gap.relief;
+  const double smooth = gap.smooth;
   const double h = smooth + relief.before;
   out.dh = film_.gap_gradient(x, y);
   const double t_face = 0.5 * (node_t_[std::size_t(out.na)] + node_t_[std::size_t(out.nb)]);
   Conductance g = conductance(h, t_face);
   ValueSlope carried = out.circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
   if (relief.after != relief.before) {
-    // The outer (after) half's share of ∫r dr, which is the inner (before) half's of
-    // ∫dr/r; ½ across a radial face.
-    const double outer = out.circumferential ? film_.relief.outer_share(f.ia) : 0.5, inner = 1.0 - outer;
+    const double outer = gap.outer_share, inner = 1.0 - outer;
     const Conductance other = conductance(smooth + relief.after, t_face);
     g = {outer * g.g + inner * other.g, outer * g.dg_dh + inner * other.dg_dh, outer * g.dg_dt + inner * other.dg_dt};
     if (out.circumferential) {

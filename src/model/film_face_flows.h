@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "model/bearing_model.h"
+#include "model/film_gap.h"
 #include "model/reynolds_operator.h"
 
 namespace twb {
@@ -52,9 +53,8 @@ class FilmFaceFlows {
     for (const int i : {0, film_.mesh.radial_nodes() - 1})
       for (int j = 0; j < film_.mesh.circumferential_nodes(); ++j) visit(evaluate(op_.edge_face(i, j)));
   }
-  // The thermal deformation's shape δ (m) at every node of the film, as the fluxes read it;
-  // empty without the effect.
-  const std::vector<double>& node_shapes() const { return delta_; }
+  // The film's gap as the fluxes read it.
+  const FilmGap& gap() const { return gap_; }
   // d(row) += c · ∇Q of a face, in the order the Reynolds rows have always summed it.
   void add_gradient(Assembler& a, Index row, double c, const FaceFlow& flow) const;
 
@@ -67,10 +67,10 @@ class FilmFaceFlows {
   const Film& film_;
   std::span<const double> u_;
   ReynoldsOperator op_;
-  GapPlane plane_;
+  FilmGap gap_;
   bool jfo_;
   std::vector<char> fed_;  // per interior node; empty where no groove is fed
-  std::vector<double> node_t_, delta_;
+  std::vector<double> node_t_;
 };
 
 }  // namespace twb

@@ -14,7 +14,7 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
   std::vector<FilmFields> out;
   for (const Film& film : films_) {
     const FilmMesh& m = film.mesh;
-    const NodeGaps gaps(*this, u, film);
+    const FilmGap gaps(*this, u, film);
     const std::size_t n = std::size_t(m.node_count());
     FilmFields f{film.number, film.sliding, m, {}, {}, {}, {}, {}, {}};
     for (auto* v : {&f.gap, &f.pressure, &f.contact_pressure, &f.film_temperature, &f.surface_temperature,

@@ -1,6 +1,6 @@
 // One evaluation of the loads a film puts on its bodies (docs/physics.md sections 3, 4,
 // 6): what every cell of the film shares (its gap plane, the rules' point tables, the
-// node temperatures and shapes), and the per-cell kernels, each integrating one kind of
+// node temperatures, its gap), and the per-cell kernels, each integrating one kind of
 // load over a cell into the cell's sums:
 //   contact_cell.cpp   asperity contact force, its moments and the friction power
 //   fluid_cell.cpp     fluid pressure force and moments, viscous shear torque and heat
@@ -14,27 +14,10 @@
 #include <vector>
 
 #include "model/assembly_totals.h"
+#include "model/film_gap.h"
 #include "model/film_loads_effect.h"
 
 namespace twb {
-
-// Least and greatest gap over a cell.
-struct GapRange { double least = 0.0, greatest = 0.0; };
-
-// The gap plane over the polar cells [r0, r1] × [t0, t1]: linear along rays, so its
-// least and greatest values are at a corner or on an arc where the direction
-// (cos θ, sin θ) is opposite to (a, b) (least) or along it (greatest). Those two
-// directions are the plane's, the same for every cell: their angles are found once.
-class PlaneOverCells {
- public:
-  explicit PlaneOverCells(const GapPlane& plane);
-  GapRange range(double r0, double r1, double t0, double t1, double c0, double s0, double c1, double s1) const;
-
- private:
-  double c_, a_, b_;
-  bool tilted_;
-  double down_, up_;
-};
 
 // A Gauss point of a cell: local coordinates (s, t) in [0, 1]², position in the load
 // frame, and weight r dr dθ.
@@ -83,12 +66,8 @@ struct FilmCell {
   int i = 0, j = 0;
   std::array<int, 4> node{};
   std::array<Index, 4> p_col{-1, -1, -1, -1};
-  std::array<double, 4> p_node{}, t_node{}, d_node{};
-  // The face relief on the cell's lines j and j+1 (linear between; face_relief.h).
-  bool relief = false;
-  double relief_start = 0.0, relief_end = 0.0;
-  GapRange gap_range;
-  double relief_at(double t) const { return relief_start + t * (relief_end - relief_start); }
+  std::array<double, 4> p_node{}, t_node{};
+  CellGap gap;  // the gap beyond its plane, and its range over the cell (film_gap.h)
 };
 
 // A cell's integrals with their gradients. Rigid-body gradients are gathered against
@@ -102,7 +81,7 @@ struct CellLoads {
   std::array<double, 4> vheat{};                      // viscous heat per corner node
   std::array<std::array<double, 3>, 4> vheat_rigid{};
   std::array<std::array<double, 4>, 4> vheat_t{};
-  // The same against the corner shapes δ_k (thermal deformation).
+  // The same against the corner shapes δ_k (the parts of the gap, gap_contribution.h).
   std::array<std::array<double, 4>, 3> load_shape{};
   std::array<std::array<double, 4>, 4> vheat_shape{};
   std::array<std::array<double, 4>, 4> power_shape{};  // friction power per corner, against δ
@@ -130,9 +109,10 @@ struct FilmLoadPass {
   std::span<const double> u;
   const Film& film;
   const FilmMesh& mesh;
-  bool structural, jac, hydro, heat, contact, deformed;
+  bool structural, jac, hydro, heat, contact;
   double omega, cutoff;
-  GapPlane gap_plane;
+  FilmGap gap;
+  bool shaped;  // the gap has a shape δ: its slopes in the corner shapes are gathered
   PlaneOverCells plane;
   std::array<Index, 3> rigid_cols;
   std::array<double, 3> g;  // film.gap_gradient = g ⊙ (1, y, −x): the slopes per unit moment arm
@@ -142,9 +122,8 @@ struct FilmLoadPass {
   // Rows of the rigid-body balance this film loads (eqs [34]-[37]) with their scales.
   struct RowSign { Index row; double force, mx, my; };
   std::vector<RowSign> rows;
-  std::vector<double> node_t;      // viscosity temperature per node
-  std::vector<double> node_delta;  // shape δ per node, empty without deformation
-  Index force_row;                 // the sliding film's contact-force row, or -1
+  std::vector<double> node_t;  // viscosity temperature per node
+  Index force_row;             // the sliding film's contact-force row, or -1
 
   // Scratch of the kernels, kept between cells.
   std::vector<CellPoint> contact_points;

@@ -19,39 +19,6 @@
 
 namespace twb {
 
-namespace {
-
-// Whether the direction at angle ts (in (−π, π]) lies on the arc [t0, t1].
-bool on_arc(double ts, double t0, double t1) {
-  const double two_pi = 2.0 * std::numbers::pi;
-  while (ts < t0) ts += two_pi;
-  while (ts - two_pi >= t0) ts -= two_pi;
-  return ts <= t1;
-}
-
-}  // namespace
-
-PlaneOverCells::PlaneOverCells(const GapPlane& plane)
-    : c_(plane.c),
-      a_(plane.a),
-      b_(plane.b),
-      tilted_(plane.a != 0.0 || plane.b != 0.0),
-      down_(std::atan2(-plane.b, -plane.a)),
-      up_(std::atan2(plane.b, plane.a)) {}
-
-GapRange PlaneOverCells::range(double r0, double r1, double t0, double t1, double c0, double s0, double c1,
-                               double s1) const {
-  const double e0 = a_ * c0 + b_ * s0, e1 = a_ * c1 + b_ * s1;
-  const std::array<double, 4> corners{c_ + r0 * e0, c_ + r0 * e1, c_ + r1 * e0, c_ + r1 * e1};
-  GapRange range{*std::min_element(corners.begin(), corners.end()), *std::max_element(corners.begin(), corners.end())};
-  if (!tilted_) return range;
-  // Along the plane's steepest descent (ascent) the gap is c ∓ r·|(a, b)|.
-  const double slope = std::hypot(a_, b_);
-  if (on_arc(down_, t0, t1)) range.least = std::min(range.least, c_ - r1 * slope);
-  if (on_arc(up_, t0, t1)) range.greatest = std::max(range.greatest, c_ + r1 * slope);
-  return range;
-}
-
 CellRule::CellRule(const GaussRule& rule, const FilmMesh& mesh, const std::vector<double>& cos_node,
                    const std::vector<double>& sin_node)
     : rule_(rule), mesh_(mesh), cos_node_(cos_node), sin_node_(sin_node) {
@@ -82,11 +49,11 @@ FilmLoadPass::FilmLoadPass(const BearingModel& model, const FilmLoadRules& rules
       hydro(film.pressure_offset >= 0),
       heat(film.sliding && model.scene().effects.thermal),
       contact(model.contact() != nullptr),
-      deformed(false),
       omega(film.sliding ? model.scene().operating.speed : 0.0),
       cutoff(model.contact_cutoff()),
-      gap_plane(film.plane(model.position(u))),
-      plane(gap_plane),
+      gap(model, u, film),
+      shaped(gap.shaped()),
+      plane(gap.plane()),
       rigid_cols(film.rigid_columns()),
       g{film.gap_gradient(0.0, 1.0)[0], film.gap_gradient(0.0, 1.0)[1], film.gap_gradient(-1.0, 0.0)[2]},
       cos_node(at_node_angles(film.mesh, [](double t) { return std::cos(t); })),
@@ -95,7 +62,7 @@ FilmLoadPass::FilmLoadPass(const BearingModel& model, const FilmLoadRules& rules
       smooth_rule(rules.smooth, film.mesh, cos_node, sin_node),
       flat_rule(rules.flat_contact, film.mesh, cos_node, sin_node),
       flat_rule_is_cheaper(rules.flat_contact.points.size() < rules.contact.points.size()),
-      force_row(film.sliding ? model.shape_unknowns().contact_force : -1) {
+      force_row(film.sliding ? model.contact_force_unknown() : -1) {
   // The washer sees film 1 from below (+) and film 2 from above (−); the gear sees film 2 (+).
   const Index r0 = film.rigid_offset;
   const double f_ref = model.force_scale(), m_ref = f_ref * model.scene().washer.outer_radius;
@@ -111,12 +78,9 @@ FilmLoadPass::FilmLoadPass(const BearingModel& model, const FilmLoadRules& rules
   point_h.resize(smooth_points);
   point_mu.resize(smooth_points);
   point_gap.resize(smooth_points);
-  // Node viscosity temperatures, once per node. Thermal deformation (film_shape.cpp):
-  // the gap is the plane plus the bilinear interpolation of the node shapes δ.
+  // Node viscosity temperatures, once per node.
   node_t.resize(std::size_t(mesh.node_count()));
   for (int n = 0; n < mesh.node_count(); ++n) node_t[std::size_t(n)] = model.apply(model.viscosity_temperature_form(film, n), u);
-  node_delta = model.node_shapes(u, film);
-  deformed = !node_delta.empty();
 }
 
 FilmCell FilmLoadPass::cell(int i, int j) const {
@@ -128,30 +92,19 @@ FilmCell FilmLoadPass::cell(int i, int j) const {
   for (int k = 0; k < 4; ++k) {
     c.node[k] = mesh.node(ci[k], cj[k]);
     c.t_node[k] = node_t[std::size_t(c.node[k])];
-    if (deformed) c.d_node[k] = node_delta[std::size_t(c.node[k])];
     c.p_col[k] = film.pressure_column(ci[k], cj[k]);
     c.p_node[k] = c.p_col[k] >= 0 ? model.pressure_scale() * u[std::size_t(c.p_col[k])] : film.edge_pressure(ci[k]);
   }
   const double r0 = mesh.radius(i), r1 = mesh.radius(i + 1);
   const double t0 = mesh.angle(j), t1 = t0 + mesh.dtheta();
-  if (contact) c.gap_range = plane.range(r0, r1, t0, t1, cos_node[j], sin_node[j], cos_node[j + 1], sin_node[j + 1]);
-  // A bilinear shape stays within its corners' values, and a linear relief within its edges'.
-  if (deformed) {
-    c.gap_range.least += *std::min_element(c.d_node.begin(), c.d_node.end());
-    c.gap_range.greatest += *std::max_element(c.d_node.begin(), c.d_node.end());
-  }
-  if (!film.relief.flat()) {
-    c.relief = true;
-    c.relief_start = film.relief.cell_start(i, j);
-    c.relief_end = film.relief.cell_end(i, j);
-    c.gap_range.least += std::min(c.relief_start, c.relief_end);
-    c.gap_range.greatest += std::max(c.relief_start, c.relief_end);
-  }
+  const GapRange plane_range =
+      contact ? plane.range(r0, r1, t0, t1, cos_node[j], sin_node[j], cos_node[j + 1], sin_node[j + 1]) : GapRange{};
+  c.gap = gap.cell(i, j, c.node, plane_range);
   return c;
 }
 
 bool FilmLoadPass::near_contact(const FilmCell& cell) const {
-  return contact && (structural || cell.gap_range.least < cutoff);
+  return contact && (structural || cell.gap.range.least < cutoff);
 }
 
 void FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& l, Assembler& a) const {
@@ -164,14 +117,14 @@ void FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& l, Assembler& 
       if (!jac) continue;
       for (int d = 0; d < 3; ++d) a.add_derivative(rs.row, rigid_cols[d], coef[qd] * g[d] * l.load_rigid[qd][d]);
       for (int k = 0; k < 4; ++k) a.add_derivative(rs.row, cell.p_col[k], coef[qd] * l.load_p[qd][k]);
-      if (deformed)
+      if (shaped)
         for (int k = 0; k < 4; ++k)
           a.add_form(rs.row, coef[qd] * l.load_shape[qd][k], model.shape_form(film, cell.node[k]));
     }
   }
   // The sliding film's contact force into its own row (F_c/F_ref, film_shape.cpp).
   if (force_row >= 0) {
-    const double ref = model.shape_unknowns().contact_force_ref;
+    const double ref = model.contact_force_scale();
     a.add_residual(force_row, l.contact_force / ref);
     if (jac) {
       for (int d = 0; d < 3; ++d) a.add_derivative(force_row, rigid_cols[d], g[d] * l.contact_rigid[d] / ref);
@@ -188,7 +141,7 @@ void FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& l, Assembler& 
     for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], sc * g[d] * l.vheat_rigid[k][d]);
     for (int m = 0; m < 4; ++m)
       a.add_form(row, sc * l.vheat_t[k][m], model.viscosity_temperature_form(film, cell.node[m]));
-    if (deformed)
+    if (shaped)
       for (int m = 0; m < 4; ++m) a.add_form(row, sc * l.vheat_shape[k][m], model.shape_form(film, cell.node[m]));
   }
 }
@@ -204,7 +157,7 @@ void FilmLoadPass::friction(FilmTotals& tot, Assembler& a) const {
     // With thermal deformation the law reads the contact-force unknown (equal to the
     // integral at a solution), so that its slope is one column of every heat row.
     const double contact_force =
-        force_row >= 0 ? u[std::size_t(force_row)] * model.shape_unknowns().contact_force_ref : tot.contact_force;
+        force_row >= 0 ? u[std::size_t(force_row)] * model.contact_force_scale() : tot.contact_force;
     const FrictionLawResult fr = empirical_friction(contact_force);
     tot.friction_coefficient = fr.coefficient;
     tot.friction_slope = fr.slope;
@@ -223,7 +176,7 @@ void FilmLoadPass::friction(FilmTotals& tot, Assembler& a) const {
                        sc * (tot.friction_coefficient * tot.contact_power_rigid[n][d] +
                              slope_rigid * tot.contact_power[n] * tot.contact_force_rigid[d]));
     if (force_row >= 0)
-      a.add_derivative(row, force_row, sc * tot.friction_slope * model.shape_unknowns().contact_force_ref * tot.contact_power[n]);
+      a.add_derivative(row, force_row, sc * tot.friction_slope * model.contact_force_scale() * tot.contact_power[n]);
   }
   if (!jac) return;
   for (const ShapeTerm& term : tot.contact_power_shape)
@@ -238,8 +191,15 @@ FilmLoadsEffect::FilmLoadsEffect(ModelSetup& setup)
              GaussRule::legendre(std::min(setup.model.scene().mesh.flat_contact_quadrature,
                                           setup.model.scene().mesh.contact_quadrature))} {}
 
+// The contact force's row is assembled as (what the state implies − the unknown) and
+// negated with the others by orient_rows: F̂c − F_c(u)/F_ref, with +1 on the diagonal;
+// the cells add what the state implies.
 void FilmLoadsEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const {
   for (std::size_t f = 0; f < model_.films().size(); ++f) add_film(u, model_.films()[f], a, totals.film[f]);
+  const Index force = model_.contact_force_unknown();
+  if (force < 0) return;
+  a.add_residual(force, -u[std::size_t(force)]);
+  a.add_derivative(force, force, -1.0);
 }
 
 void FilmLoadsEffect::add_film(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& tot) const {
@@ -257,7 +217,7 @@ void FilmLoadsEffect::add_film(std::span<const double> u, const Film& film, Asse
       if (pass.near_contact(cell)) pass.contact_on_cell(cell, loads, tot);
       // Every cell's terms, zero or not, so that every pass adds the same entries in the
       // same order (the slot tape, sparse_assembly.h).
-      if (pass.deformed && film.sliding && pass.contact)
+      if (pass.shaped && film.sliding && pass.contact)
         for (int n = 0; n < 4; ++n)
           for (int l = 0; l < 4; ++l) tot.contact_power_shape.push_back({cell.node[n], cell.node[l], loads.power_shape[n][l]});
       pass.fluid_on_cell(cell, loads, tot);

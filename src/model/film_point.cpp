@@ -40,7 +40,7 @@ double bilinear(const std::vector<double>& at_node, const FilmMesh& m, const Cel
 
 FilmPointReader::FilmPointReader(const BearingModel& model, std::span<const double> u,
                                  std::span<const FilmTotals> totals)
-    : model_(model), u_(u), position_(model.position(u)) {
+    : model_(model), u_(u) {
   const auto& films = model.films();
   for (std::size_t f = 0; f < films.size(); ++f)
     if (films[f].sliding && f < totals.size()) friction_coefficient_ = totals[f].friction_coefficient;
@@ -67,10 +67,7 @@ FilmPoint FilmPointReader::at(const Film& film, double r, double theta) const {
   const FilmMesh& m = film.mesh;
   const CellPlace c = place(m, r, theta);
   FilmPoint p;
-  double h = film.node_gap_polar(position_, r, theta);
-  const std::vector<double>& shapes = gaps_[std::size_t(film.number - 1)].shapes();
-  if (!shapes.empty()) h += bilinear(shapes, m, c);
-  if (!film.relief.flat()) h += film.relief.in_cell(c.i, c.j, c.t);
+  const double h = gaps_[std::size_t(film.number - 1)].at_point(r, theta, c.i, c.j, c.s, c.t);
   p.gap = h;
   p.mean_gap = average_gap(h, film.sigma).value;
   if (model_.contact() && h <= model_.contact_cutoff()) p.contact_pressure = model_.contact()->pressure(h).value;
@@ -160,7 +157,7 @@ std::vector<double> FilmPointReader::node_advection(const Film& film, const Film
       double generated = 0.0;
       if (!totals.contact_power.empty()) generated += friction_coefficient_ * totals.contact_power[std::size_t(n)];
       if (!totals.viscous_power.empty()) generated += totals.viscous_power[std::size_t(n)];
-      const NodeGaps& gap = gaps_[std::size_t(film.number - 1)];
+      const FilmGap& gap = gaps_[std::size_t(film.number - 1)];
       const double smooth = gap.smooth(i, j);
       const FaceRelief::NodeParts parts = gap.parts(i, j);
       const double tf = model_.temperature_of(u_, film.temperature_row(n));

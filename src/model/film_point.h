@@ -48,13 +48,12 @@ class FilmPointReader {
  private:
   const BearingModel& model_;
   std::span<const double> u_;
-  RigidPosition position_;
   double friction_coefficient_ = 0.0;
   // With convection, per film and node, the heat per unit area the oil carries away from
   // the node's volume (W/m²): its generation less its conduction to the faces, what the
   // node's balance gives the advection (physics §15); empty without convection.
   std::vector<std::vector<double>> advected_;
-  std::vector<NodeGaps> gaps_;  // each film's node gaps at u
+  std::vector<FilmGap> gaps_;  // each film's gap at u
   // The bodies a film's contacts heat, by ComponentId (carrier, washer, gear): their
   // conductivity and diffusivity; the softer one carries the summits' junctions with it.
   std::array<FlashBody, 3> flash_bodies_{};

@@ -19,10 +19,7 @@ void FilmLoadPass::fluid_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals&
         const std::array<double, 4> N = corner_hats(s, tt);
         point_t[q] = 0;
         for (int k = 0; k < 4; ++k) point_t[q] += N[k] * cell.t_node[k];
-        point_h[q] = gap_plane.at(x, y);
-        if (deformed)
-          for (int k = 0; k < 4; ++k) point_h[q] += N[k] * cell.d_node[k];
-        if (cell.relief) point_h[q] += cell.relief_at(tt);
+        point_h[q] = gap.at(cell.gap, s, tt, x, y);
       }
     }
     model.viscosity(point_t, point_mu);
@@ -66,7 +63,7 @@ void FilmLoadPass::fluid_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals&
             l.vheat_rigid[k][1] += qn * y;
             l.vheat_rigid[k][2] -= qn * x;
             for (int m = 0; m < 4; ++m) l.vheat_t[k][m] += wn * dqv_dt * N[m];
-            if (deformed)
+            if (shaped)
               for (int m = 0; m < 4; ++m) l.vheat_shape[k][m] += qn * N[m];
           }
         }

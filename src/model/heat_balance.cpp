@@ -123,14 +123,14 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
   const double ambient = model.scene().operating.ambient;
   const UnknownLayout& layout = model.layout();
   const bool deforms = model.deforms();
-  const Index dishing_row = model.shape_unknowns().dishing;
+  const Index dishing_row = model.washer_dishing().unknown;
 
   // Film nodes and their exchange with the bounding components.
   for (const Film& film : model.films()) {
     const FilmMesh& m = film.mesh;
     const std::array<Index, 3> rigid_cols = film.rigid_columns();
     const std::array<ComponentId, 2> sides{film.lower, film.upper};
-    const NodeGaps gaps(model, u, film);
+    const FilmGap gaps(model, u, film);
     for (int i = 0; i < m.radial_nodes(); ++i) {
       const double area = m.node_area(i);
       for (int j = 0; j < m.circumferential_nodes(); ++j) {

@@ -96,13 +96,12 @@ std::vector<double> BearingModel::interpolated_from(const BearingModel& source, 
     for (int i = 0; i < map.dst_nr; ++i)
       for (int j = 0; j < dnt; ++j) out[dst.offset + Index(i) * dnt + j] = map.at(i, j, t);
   }
-  // Thermal deformation's scalars, in physical units.
-  if (deforms()) {
-    out[shape_.dishing] = source.dishing_curvature(u) / shape_.curvature_ref;
-    if (shape_.contact_force >= 0)
-      out[shape_.contact_force] =
-          u[source.shape_.contact_force] * source.shape_.contact_force_ref / shape_.contact_force_ref;
-  }
+  // The effects' own unknowns (the same scene registers the same effects), then the
+  // contact force's, in physical units.
+  for (std::size_t k = 0; k < effects_.size(); ++k) effects_[k]->carry_from(source, *source.effects_[k], u, out);
+  if (contact_force_unknown_ >= 0)
+    out[contact_force_unknown_] =
+        u[source.contact_force_unknown_] * source.contact_force_scale_ / contact_force_scale_;
   return out;
 }
 
@@ -128,7 +127,7 @@ std::unique_ptr<BearingModel> BearingModel::on_mesh(int radial_nodes, int circum
                                       radial_nodes, circumferential_nodes));
     scene.washer.grooves = g;
   }
-  auto model = std::make_unique<BearingModel>(scene);
+  auto model = std::make_unique<BearingModel>(scene, more_effects_);
   model->set_load(load_);
   if (viscosity_scale_ != 1.0) model->set_curve_parameter(CurveParameter::viscosity_scale, viscosity_scale_);
   model->set_deformation_scale(deformation_scale_);

@@ -23,7 +23,7 @@ class ReynoldsEffect final : public EffectAssembler {
  private:
   void add_film(std::span<const double> u, const StateRates* rates, const Film& film, Assembler& a,
                 FilmTotals& totals) const;
-  void add_squeeze(std::span<const double> u, const StateRates& rates, const Film& film, const FilmFaceFlows& flows,
+  void add_squeeze(const StateRates& rates, const Film& film, const FilmFaceFlows& flows,
                    Assembler& a) const;
 
   const BearingModel& model_;

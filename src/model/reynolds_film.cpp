@@ -74,15 +74,14 @@ void ReynoldsEffect::add_terms_in_time(std::span<const double> u, const StateRat
 // node's rigid columns and shape form, which every face flux of the node already brings
 // into the pattern (FilmFaceFlows::add_gradient): the structure pass needs none of its
 // own, and the steady passes keep the structure pass's slot tape.
-void ReynoldsEffect::add_squeeze(std::span<const double> u, const StateRates& rates, const Film& film,
+void ReynoldsEffect::add_squeeze(const StateRates& rates, const Film& film,
                                  const FilmFaceFlows& flows, Assembler& a) const {
   const BearingModel& model = model_;
   const FilmMesh& m = film.mesh;
   const ReynoldsOperator& op = flows.grid();
   const bool factors = model.scene().effects.flow_factors;
   const bool jac = a.wants_jacobian();
-  const GapPlane plane = film.plane(model.position(u));
-  const std::vector<double>& delta = flows.node_shapes();
+  const FilmGap& gap = flows.gap();
   const std::array<Index, 3> cols = film.rigid_columns();
   const double tilt_rate = film.upper == ComponentId::gear ? rates.imposed_tilt_rate : 0.0;
   for (int i = 1; i < m.radial_nodes() - 1; ++i) {
@@ -96,8 +95,8 @@ void ReynoldsEffect::add_squeeze(std::span<const double> u, const StateRates& ra
       double h_rate = -tilt_rate * x;
       for (std::size_t d = 0; d < 3; ++d) h_rate += dh[d] * rates.rate[std::size_t(cols[d])];
       const int node = m.node(i, j);
-      const double h = plane.at(x, y) + (delta.empty() ? 0.0 : delta[std::size_t(node)]);
-      const FaceRelief::NodeParts parts = film.relief.flat() ? FaceRelief::NodeParts{} : film.relief.node_parts(i, j);
+      const double h = gap.smooth_on_plane(node, x, y);
+      const FaceRelief::NodeParts parts = gap.parts(i, j);
       double slope = 0.0, curvature = 0.0;
       for (int p = 0; p < parts.count; ++p) {
         const double part_h = h + parts.relief[std::size_t(p)], share = parts.share[std::size_t(p)];
@@ -164,7 +163,7 @@ void ReynoldsEffect::add_film(std::span<const double> u, const StateRates* rates
     // The content's own rate, θ̇·h̄T, would make θ a differential unknown pinned at 1
     // wherever the film is full: a DAE of index two, which the duty cycle refuses.
     if (jfo) throw InternalError("the film's squeeze with mass-conserving cavitation is not solved");
-    add_squeeze(u, *rates, film, flows, a);
+    add_squeeze(*rates, film, flows, a);
   }
 
   // A fed node's rows: p̂ = p_s / p_ref, and θ = 1.

@@ -77,7 +77,7 @@ SteadyReport SteadySolver::solve_cold(std::vector<double>& u) {
     }
     u = model_.cold_start();
   }
-  if (model_.deforms() && deformation_homotopy_) {
+  if (model_.gap_shaped() && deformation_homotopy_) {
     try {
       SteadyReport rep = solve_by_deformation_homotopy(u);
       if (rep.converged) return with_work_of(rep, spent);

@@ -37,11 +37,11 @@ Scene grooved_deformed() {
 // its shape δ; the shape is the film's own (non-zero somewhere on a heated washer). The
 // plane is summed here in another order than Film::node_gap's: equal to rounding (a few
 // ulps of the clearance, which dominates).
-TEST(NodeGaps, TheSmoothGapIsThePlanePlusTheShape) {
+TEST(FilmGap, TheSmoothGapIsThePlanePlusTheShape) {
   const Solved at(grooved_deformed());
   const RigidPosition q = at.model.position(at.u);
   for (const Film& film : at.model.films()) {
-    const NodeGaps gaps(at.model, at.u, film);
+    const FilmGap gaps(at.model, at.u, film);
     const FilmMesh& m = film.mesh;
     ASSERT_EQ(gaps.shapes().size(), std::size_t(m.node_count()));
     double largest_shape = 0.0;
@@ -61,11 +61,11 @@ TEST(NodeGaps, TheSmoothGapIsThePlanePlusTheShape) {
 // one; the field's gap is their share-weighted mean, so it lies between the parts' gaps;
 // off the edges a node has one part. The least gap is no more than any node's least side,
 // and on the flat film 1 there are no parts to straddle.
-TEST(NodeGaps, TheReliefsPartsAndTheLeastGap) {
+TEST(FilmGap, TheReliefsPartsAndTheLeastGap) {
   const Solved at(grooved_deformed());
   int straddling = 0;
   for (const Film& film : at.model.films()) {
-    const NodeGaps gaps(at.model, at.u, film);
+    const FilmGap gaps(at.model, at.u, film);
     const FilmMesh& m = film.mesh;
     const double least = gaps.least();
     for (int i = 0; i < m.radial_nodes(); ++i)
@@ -94,13 +94,13 @@ TEST(NodeGaps, TheReliefsPartsAndTheLeastGap) {
 // Without deformation or relief the least gap is the plane's least on the disc of the
 // outer radius, which the rim reaches: no node is below it, and the rim sampled finely
 // comes to it within slope·r·(1 − cos(Δθ/2)) ≤ slope·r·Δθ²/8, the sampling's own miss.
-TEST(NodeGaps, AFlatRigidFilmsLeastGapIsThePlanesOnTheRim) {
+TEST(FilmGap, AFlatRigidFilmsLeastGapIsThePlanesOnTheRim) {
   Scene s = testing::table1_scene(true, true, true, true, 545.0, 150.0);
   testing::use_coarse_mesh(s);
   const Solved at(s);
   const RigidPosition q = at.model.position(at.u);
   for (const Film& film : at.model.films()) {
-    const NodeGaps gaps(at.model, at.u, film);
+    const FilmGap gaps(at.model, at.u, film);
     EXPECT_TRUE(gaps.shapes().empty());
     const double least = gaps.least();
     const FilmMesh& m = film.mesh;

@@ -23,6 +23,7 @@
 #include <numbers>
 #include <random>
 
+#include "../support/prescribed_wear.h"
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "solver/consistent_rates.h"
@@ -45,6 +46,7 @@ struct EffectSet {
   bool fed = false;      // oil supplied at the bore and into the grooves
   bool convection = false;
   bool dammed = false;   // the grooves closed at radial line 2 of 5, open at the bore
+  bool worn = false;     // a part of film 1's gap from outside the model (support/prescribed_wear.h)
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -62,8 +64,10 @@ std::vector<double> random_state(const BearingModel& m, std::mt19937& rng) {
       // unresolved rather than wrong.)
       else if (b.effect == BlockEffect::hydrodynamics && b.name.find("content") != std::string::npos) u[k] = 0.05 + 0.9 * unit(rng);
       else if (b.effect == BlockEffect::hydrodynamics) u[k] = 0.05 + 3.0 * unit(rng);
-      // Dishing κ̂ (rim lift in σ) and the contact force over the scene's load.
+      // Dishing κ̂ (rim lift in σ), a worn depth (in σ) and the contact force over the
+      // scene's load.
       else if (b.effect == BlockEffect::thermal_deformation) u[k] = b.name == "washer dishing curvature" ? 2.0 * unit(rng) - 1.0 : 0.2 + unit(rng);
+      else if (b.effect == BlockEffect::asperity_contact) u[k] = 0.2 + unit(rng);
     }
   }
   return u;
@@ -95,7 +99,13 @@ std::unique_ptr<BearingModel> model_of(const EffectSet& e) {
   }
   if (e.fed) s.lubricant.supply = OilSupply{2e5, SupplyInlet::both, s.operating.ambient + 15.0};
   s.effects.convection = e.convection;
-  auto m = std::make_unique<BearingModel>(s);
+  std::vector<BearingModel::EffectMaker> more;
+  if (e.worn)
+    more.push_back(testing::PrescribedWear::maker(
+        [sigma = s.asperities.summit_sigma, ro = s.washer.outer_radius](double r, double theta) {
+          return 0.3 * sigma * (1.0 + std::cos(theta)) * r / ro;
+        }));
+  auto m = std::make_unique<BearingModel>(s, more);
   m->set_newton_form(e.cavitation == CavitationRow::minimum);
   return m;
 }
@@ -416,7 +426,15 @@ INSTANTIATE_TEST_SUITE_P(
                                 FrictionLaw::empirical, CavitationModel::reynolds, 2, false, false, true},
                       EffectSet{"dammed_fed_grooves_convection_jfo", true, true, true, true, 545.0,
                                 CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, false,
-                                FrictionLaw::empirical, CavitationModel::jfo, 2, true, true, true}),
+                                FrictionLaw::empirical, CavitationModel::jfo, 2, true, true, true},
+                      // A part of the gap from outside the model: alone (the contact force
+                      // is an unknown without thermal deformation), and summed with it.
+                      EffectSet{"prescribed_wear", true, true, true, true, 545.0, CarrierTemperature::load_frame,
+                                CavitationRow::fischer_burmeister, false, FrictionLaw::empirical,
+                                CavitationModel::reynolds, 0, false, false, false, true},
+                      EffectSet{"prescribed_wear_deformation_fed_grooves_convection", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
+                                FrictionLaw::empirical, CavitationModel::reynolds, 2, true, true, false, true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
