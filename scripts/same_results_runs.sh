@@ -1,5 +1,5 @@
 #!/bin/sh
-# The runs that show a restructuring changed no result (issue: the house): 15 runs of
+# The runs that show a restructuring changed no result (issue: the house): 16 runs of
 # the shipped scenes and studies, each effect on, with full precision, into OUT/<name>.
 # Run it with the build before and after a change and compare:
 #
@@ -46,6 +46,9 @@ run jfo "$PAPER" --set "$point" --set "operating.load=300 N" --set output.fields
   "effects=[{hydrodynamics: {cavitation: jfo}}, flow_factors, asperity_contact, {thermal: {viscosity_temperature: film_node}}]"
 wait
 run paper_fields "$PAPER" --set "$point" --set "operating.load=500 N" --set output.fields=true &
+# A fed grooved washer with convection: the relief's halves and parts in every kernel.
+run fed_grooved "$CONFIGS/washers/fed_grooved_bronze.yaml"
+wait
 run bronze_curve "$CONFIGS/washers/bronze_cusn8.yaml" --set \
   "study={type: distress_curve, parameter: speed, from: 1000 rpm, to: 6000 rpm, load_start: 100 N, load_end: 4000 N}"
 wait

@@ -26,7 +26,7 @@ struct FilmTotals {
   // ∫ p_c V N_a dA per node and its gradient in (ĉ, γ̂x, γ̂y): friction heat is f times it.
   std::vector<double> contact_power;
   std::vector<std::array<double, 3>> contact_power_rigid;
-  std::vector<ShapeTerm> contact_power_shape;  // with thermal deformation only
+  std::vector<ShapeTerm> contact_power_shape;  // where the gap has a part only
   double friction_coefficient = 0, friction_slope = 0;
   bool friction_clamped = false;
   double friction_heat = 0;

@@ -184,6 +184,8 @@ class BearingModel final : public SegregatedSystem {
   // effects register (thermal deformation's: the carrier's and gear's face expansion
   // and the washer's dishing, film_shape.cpp). Empty forms without any.
   bool gap_shaped() const { return !gap_parts_.empty(); }
+  // Whether some part moves this film's gap (GapContribution::moves).
+  bool gap_shaped(const Film& film) const;
   const std::vector<std::unique_ptr<GapContribution>>& gap_parts() const { return gap_parts_; }
   // Thermal deformation is on: the washer's dishing curvature is an unknown.
   bool deforms() const { return dishing_.unknown >= 0; }

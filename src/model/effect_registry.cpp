@@ -9,23 +9,31 @@
 #include "model/film_loads_effect.h"
 #include "model/heat_effect.h"
 #include "model/reynolds_effect.h"
+#include "twb/error_family.h"
 
 namespace twb {
 
 std::string fmt_film_block(int number, const char* what) { return "film " + std::to_string(number) + " " + what; }
 
 void BearingModel::register_effects() {
+  // A stack local: an effect or a part keeps what it needs of it, never a reference to it.
   ModelSetup setup{*this, layout_, films_, components_, gap_parts_, dishing_};
   const Effects& fx = scene_.effects;
   if (fx.hydrodynamics) effects_.push_back(std::make_unique<ReynoldsEffect>(setup));
   effects_.push_back(std::make_unique<FilmLoadsEffect>(setup));  // contact, fluid force, shear and friction heat
   if (fx.thermal) effects_.push_back(std::make_unique<HeatEffect>(setup));
   if (fx.thermal_deformation) effects_.push_back(std::make_unique<DeformationEffect>(setup));
+  // Effects beyond the scene's (a test's) before convection, which rewrites the fed
+  // grooves' heat rows once every other term is in them; it declares no unknowns, so the
+  // numbering is the same either way.
+  for (const EffectMaker& make : more_effects_) {
+    effects_.push_back(make(setup));
+    if (!effects_.back()) throw InternalError("register_effects: an effect maker made no effect");
+  }
   if (fx.convection) effects_.push_back(std::make_unique<ConvectionEffect>(setup));  // rewrites the fed grooves' heat rows
-  for (const EffectMaker& make : more_effects_) effects_.push_back(make(setup));
   // Once every part of the gap is known: the contact force's own unknown, whose row the
   // film loads assemble (bearing_model.h, contact_force_unknown).
-  if (gap_shaped() && fx.asperity_contact && scene_.friction.law == FrictionLaw::empirical) {
+  if (gap_shaped(sliding_film()) && fx.asperity_contact && scene_.friction.law == FrictionLaw::empirical) {
     contact_force_unknown_ = layout_.add("sliding film contact force", BlockEffect::asperity_contact, 1);
     contact_force_scale_ = scene_.operating.load;
   }

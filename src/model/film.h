@@ -30,8 +30,9 @@ struct GapPlane {
 //   h = c + s·(γx·y − γy·x) − tilt·x
 // film 1 (carrier–washer): c = c1 = z_w,              s = +1, tilt = 0
 // film 2 (washer–gear):    c = c2 = z_g − z_w − t_w,  s = −1, tilt = γ_tilt
-// plus, with thermal deformation, the node shapes δ (film_shape.cpp), plus the face's
-// relief g (grooves, shaped lands: face_relief.h), which is constant in the unknowns.
+// plus the node shapes δ of the parts the effects register (gap_contribution.h: thermal
+// deformation's, film_shape.cpp), plus the face's relief g (grooves, shaped lands:
+// face_relief.h), which is constant in the unknowns; film_gap.h composes them.
 struct Film {
   int number = 1;
   FilmMesh mesh;

@@ -152,7 +152,7 @@ void BearingModel::build_shape_forms() {
     std::vector<LinearForm>& forms = shape_forms_[std::size_t(film.number - 1)];
     forms.resize(std::size_t(film.mesh.node_count()));
     for (const std::unique_ptr<GapContribution>& part : gap_parts_)
-      part->add_node_forms(*this, film, deformation_scale_, forms);
+      if (part->moves(film)) part->add_node_forms(*this, film, deformation_scale_, forms);
   }
 }
 
@@ -163,6 +163,12 @@ void BearingModel::set_deformation_scale(double s) {
   build_shape_forms();
 }
 
+bool BearingModel::gap_shaped(const Film& film) const {
+  for (const std::unique_ptr<GapContribution>& part : gap_parts_)
+    if (part->moves(film)) return true;
+  return false;
+}
+
 double BearingModel::shape_at(std::span<const double> u, const Film& film, int node) const {
   double delta = 0.0;
   for (const auto& [k, c] : shape_form(film, node).terms) delta += c * u[std::size_t(k)];
@@ -170,7 +176,7 @@ double BearingModel::shape_at(std::span<const double> u, const Film& film, int n
 }
 
 std::vector<double> BearingModel::node_shapes(std::span<const double> u, const Film& film) const {
-  std::vector<double> delta(gap_shaped() ? std::size_t(film.mesh.node_count()) : 0);
+  std::vector<double> delta(gap_shaped(film) ? std::size_t(film.mesh.node_count()) : 0);
   for (std::size_t n = 0; n < delta.size(); ++n) delta[n] = shape_at(u, film, int(n));
   return delta;
 }

@@ -122,7 +122,7 @@ void FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& l, Assembler& 
           a.add_form(rs.row, coef[qd] * l.load_shape[qd][k], model.shape_form(film, cell.node[k]));
     }
   }
-  // The sliding film's contact force into its own row (F_c/F_ref, film_shape.cpp).
+  // The sliding film's contact force into its own row (F_c/F_ref, add_terms).
   if (force_row >= 0) {
     const double ref = model.contact_force_scale();
     a.add_residual(force_row, l.contact_force / ref);
@@ -154,7 +154,7 @@ void FilmLoadPass::friction(FilmTotals& tot, Assembler& a) const {
     tot.friction_coefficient = scene.friction.coefficient;
     tot.friction_slope = 0.0;
   } else {
-    // With thermal deformation the law reads the contact-force unknown (equal to the
+    // Where the gap has a part the law reads the contact-force unknown (equal to the
     // integral at a solution), so that its slope is one column of every heat row.
     const double contact_force =
         force_row >= 0 ? u[std::size_t(force_row)] * model.contact_force_scale() : tot.contact_force;

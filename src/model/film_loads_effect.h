@@ -1,7 +1,8 @@
 // The loads the films put on their bodies (docs/physics.md sections 3, 4, 6): fluid and
 // asperity contact forces and moments into the rigid-body rows, viscous and friction
-// heat into the film-node heat rows, the contact force into its own row with thermal
-// deformation (film_loads.cpp, cell by cell: film_load_pass.h). Always on: the films
+// heat into the film-node heat rows, the contact force into its own row where the gap
+// has a part (bearing_model.h, contact_force_unknown; film_loads.cpp, cell by cell:
+// film_load_pass.h). Always on: the films
 // carry the load whichever effects fill them.
 #pragma once
 

@@ -22,13 +22,9 @@ namespace {
 // films' gap (gap_contribution.h).
 class ThermalShape final : public GapContribution {
  public:
-  explicit ThermalShape(const WasherDishing& dishing) : dishing_(dishing) {}
   std::string name() const override { return "thermal deformation"; }
   void add_node_forms(const BearingModel& model, const Film& film, double scale,
                       std::vector<LinearForm>& forms) const override;
-
- private:
-  const WasherDishing& dishing_;  // the model's, filled before any form is built
 };
 
 void ThermalShape::add_node_forms(const BearingModel& model, const Film& film, double scale,
@@ -37,6 +33,7 @@ void ThermalShape::add_node_forms(const BearingModel& model, const Film& film, d
   const bool constrained = scene.effects.face_expansion == FaceExpansion::constrained;
   const std::vector<double> zero(std::size_t(model.layout().size()), 0.0);
   const double ri = scene.washer.inner_radius, ro = scene.washer.outer_radius;
+  const WasherDishing& dishing = model.washer_dishing();
   const FilmMesh& m = film.mesh;
   for (int i = 0; i < m.radial_nodes(); ++i) {
     const double r = m.radius(i);
@@ -56,7 +53,7 @@ void ThermalShape::add_node_forms(const BearingModel& model, const Film& film, d
       // The dished washer's mid-surface rises by w(r) towards film 2: film 1 (washer
       // above) opens by w, film 2 (washer below) closes by w.
       const double towards = film.upper == ComponentId::washer ? 1.0 : -1.0;
-      form.add(dishing_.unknown, scale * towards * dishing_.curvature_ref * dishing_shape(r, ri, ro));
+      form.add(dishing.unknown, scale * towards * dishing.curvature_ref * dishing_shape(r, ri, ro));
     }
   }
 }
@@ -74,7 +71,7 @@ DeformationEffect::DeformationEffect(ModelSetup& setup) : model_(setup.model) {
   setup.dishing.curvature_ref = setup.model.clearance_scale() /
                                 dishing_shape(scene.washer.outer_radius, scene.washer.inner_radius,
                                               scene.washer.outer_radius);
-  setup.gap_parts.push_back(std::make_unique<ThermalShape>(setup.dishing));
+  setup.gap_parts.push_back(std::make_unique<ThermalShape>());
 }
 
 // The row is assembled as (what the state implies − the unknown) and negated with the

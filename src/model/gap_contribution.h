@@ -9,7 +9,15 @@
 // Linear in the unknowns, so that the gap's derivatives are exact and its forms are built
 // once per model: a part that depends on the state in another way gives that dependence
 // an unknown and a row of its own (as the washer's dishing curvature is), and its form
-// reads that unknown.
+// reads that unknown. Its effect owns those unknowns: their rows (written as "what the
+// state implies − the unknown", which BearingModel::orient_rows negates), their block's
+// BlockEffect (segregated_blocks groups by it) and their move to another mesh
+// (EffectAssembler::carry_from).
+//
+// In real time the squeeze (reynolds_film.cpp) reads the rate of the plane alone: thermal
+// deformation's shape moves on the thermal time scale and is left out of it (physics
+// §19). A part whose unknowns move on the squeeze's own time scale (a worn depth is
+// slow; an elastic deflection is not) needs its rate there, which is not built yet.
 #pragma once
 
 #include <string>
@@ -27,6 +35,9 @@ class GapContribution {
   virtual ~GapContribution() = default;
   // What the part is, for messages ("thermal deformation").
   virtual std::string name() const = 0;
+  // Whether it moves this film's gap at all: a film no part moves keeps its plane (and
+  // the kernels' rigid paths).
+  virtual bool moves(const Film& /*film*/) const { return true; }
   // Adds scale × (this part's δ form) at every node of the film to forms[node]; the
   // model's unknowns are all declared. scale is the cold start's homotopy
   // (BearingModel::set_deformation_scale): 0 is the rigid film, 1 the model.

@@ -9,6 +9,7 @@
 // takes a value in between, which the complementarity rows then settle.
 #include <cmath>
 #include <stdexcept>
+#include <typeinfo>
 
 #include <fmt/format.h>
 
@@ -46,6 +47,10 @@ std::vector<double> BearingModel::interpolated_from(const BearingModel& source, 
   bool same_blocks = mine.size() == theirs.size() && films_.size() == source.films_.size() &&
                      components_.size() == source.components_.size();
   for (std::size_t b = 0; same_blocks && b < mine.size(); ++b) same_blocks = mine[b].name == theirs[b].name;
+  // The effects pair up by position (carry_from below), those without unknowns too.
+  same_blocks = same_blocks && effects_.size() == source.effects_.size();
+  for (std::size_t k = 0; same_blocks && k < effects_.size(); ++k)
+    same_blocks = typeid(*effects_[k]) == typeid(*source.effects_[k]);
   if (!same_blocks || Index(u.size()) != source.size())
     throw InternalError("interpolated_from: the source model has other unknowns (not the same scene)");
 

@@ -31,8 +31,8 @@ class SteadySolver {
   SteadyReport solve_near(std::vector<double>& u);
   // From the paper's cold start, by the scene's solver.method. On meshes finer than
   // kSequenceAbove nodes per film, by a mesh sequence first (solve_by_mesh_sequence);
-  // with thermal deformation, by its homotopy (solve_by_deformation_homotopy); the cold
-  // start itself when those fail.
+  // where the gap has parts (thermal deformation), by their homotopy
+  // (solve_by_deformation_homotopy); the cold start itself when those fail.
   SteadyReport solve_cold(std::vector<double>& u);
   // Off: every cold start by pseudo-time on the mesh itself (the growth benchmark's
   // comparison).

@@ -86,6 +86,17 @@ TEST(GapContribution, AUniformWornDepthIsAShiftOfTheClearance) {
   model->evaluate(v, r, {});
   EXPECT_GT(v[std::size_t(force)], 0.0) << "contact carries part of the load at 300 N";
   EXPECT_LE(largest(r), 1e-9) << "unmoved: " << off_balance;
+  // What the state reports of the gap reads the part too: the least gap and every node's
+  // gap are the unworn ones (to rounding of the clearance, a few ulps of a micrometre).
+  for (std::size_t f = 0; f < unworn.films().size(); ++f) {
+    const double least = unworn.least_gap(u, unworn.films()[f]);
+    EXPECT_NEAR(model->least_gap(v, model->films()[f]), least, 1e-14 * std::abs(least)) << "film " << f + 1;
+  }
+  const std::vector<FilmFields> before = unworn.fields(u), after = model->fields(v);
+  ASSERT_EQ(before.size(), after.size());
+  for (std::size_t f = 0; f < before.size(); ++f)
+    for (std::size_t n = 0; n < before[f].gap.size(); ++n)
+      EXPECT_NEAR(after[f].gap[n], before[f].gap[n], 1e-14 * std::abs(before[f].gap[n])) << "film " << f + 1;
 }
 
 // Each node's shape form is the sum of the parts' in their order: thermal deformation's

@@ -57,9 +57,9 @@ class PrescribedWear final : public EffectAssembler {
    public:
     explicit Part(Index offset) : offset_(offset) {}
     std::string name() const override { return "prescribed wear"; }
+    bool moves(const Film& film) const override { return film.number == 1; }
     void add_node_forms(const BearingModel& model, const Film& film, double scale,
                         std::vector<LinearForm>& forms) const override {
-      if (film.number != 1) return;
       for (int n = 0; n < film.mesh.node_count(); ++n)
         forms[std::size_t(n)].add(offset_ + n, scale * model.clearance_scale());
     }

@@ -9,16 +9,16 @@ namespace twb {
 
 // The effect behind a block of unknowns: the scene's effect that creates it, or the
 // rigid body's mechanics, which every scene has.
-enum class BlockEffect { mechanics, hydrodynamics, asperity_contact, thermal, thermal_deformation };
+enum class BlockEffect { mechanics, hydrodynamics, thermal, thermal_deformation, asperity_contact };
 
 // The effect's name as scenes and docs/model.md write it.
 inline const char* effect_name(BlockEffect e) {
   switch (e) {
     case BlockEffect::mechanics: return "mechanics";
     case BlockEffect::hydrodynamics: return "hydrodynamics";
-    case BlockEffect::asperity_contact: return "asperity_contact";
     case BlockEffect::thermal: return "thermal";
     case BlockEffect::thermal_deformation: return "thermal_deformation";
+    case BlockEffect::asperity_contact: return "asperity_contact";
   }
   return "?";
 }
