@@ -26,6 +26,7 @@
 #include "twb/results/states_table.h"
 #include "study/search_journal.h"
 #include "study/search_scheduler.h"
+#include "twb/results/state_quantities.h"
 #include "twb/study/result_columns.h"
 #include "twb/error_family.h"
 #include "twb/scene/input_error.h"
@@ -332,6 +333,9 @@ int main(int argc, char** argv) {
 
   auto* columns_cmd = app.add_subcommand(
       "columns", "print the columns of the results directory's CSV files as JSON (python/twb/plot/columns.json)");
+  bool columns_markdown = false;
+  columns_cmd->add_flag("--markdown", columns_markdown,
+                        "instead, the table of states.csv's columns with their units and meanings (docs/results.md)");
 
   try {
     app.parse(argc, argv);
@@ -350,7 +354,7 @@ int main(int argc, char** argv) {
   try {
     if (*check_cmd) return check(scene_path, overrides);
     if (*columns_cmd) {
-      if (job.rank() == 0) std::cout << twb::result_columns_json();
+      if (job.rank() == 0) std::cout << (columns_markdown ? twb::state_quantities_markdown() : twb::result_columns_json());
       return 0;
     }
     if (*merge_cmd) return merge(slice_dirs, merge_out, merge_quiet, merge_verbose, merge_full_precision);
