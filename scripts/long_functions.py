@@ -12,14 +12,17 @@ lines (as `wc -l`, plus one if the last line has no newline).
 
 The scan matches braces on the text with comments, string and character literals
 blanked out; it knows namespaces, classes, structs, unions, enums, `extern "C"`
-blocks, brace initializers and constructors' member initializer lists. It does not
-expand macros: a macro that opens or closes a brace would mislead it (twb has none).
+blocks, brace initializers, braces inside a parameter list (a default argument `= {}`)
+and constructors' member initializer lists; on the longest functions of src/ it agrees
+with clang's AST. It does not expand macros: a macro that opens or closes a brace would
+mislead it (twb has none).
 
 Prints each offender as `path:line: name: N lines` (files as `path: N lines`), and
 exits 1 if there is any, 0 otherwise.
 """
 import argparse
 import re
+import signal
 import sys
 from pathlib import Path
 
@@ -111,6 +114,19 @@ def function_name(head):
     return re.sub(r"\s+", "", m.group(1)) if m else h[:40]
 
 
+def skip_braces(code, i):
+    """The offset just past the brace group that opens at code[i]."""
+    depth = 0
+    for j in range(i, len(code)):
+        if code[j] == "{":
+            depth += 1
+        elif code[j] == "}":
+            depth -= 1
+            if depth == 0:
+                return j + 1
+    return len(code)
+
+
 def scan(text):
     """(name, first line, last line) of every function defined in the text."""
     code = blank_comments_and_literals(text)
@@ -133,6 +149,11 @@ def scan(text):
                 i += 1
                 continue
             head = code[head_start:i]
+            if head.count("(") > head.count(")"):
+                # A brace inside parentheses (a default argument `= {}`, a braced
+                # argument) belongs to the declaration being read.
+                i = skip_braces(code, i)
+                continue
             kind = head_kind(head)
             if kind == "function" and re.search(r"\)\s*(noexcept\s*)?:(?!:)", " ".join(head.split())):
                 # In a member initializer list, `name{...}` initializes a member.
@@ -140,16 +161,7 @@ def scan(text):
                 if before and (before[-1].isalnum() or before[-1] in "_>"):
                     tail = IDENT.findall(before[-40:])
                     if tail and tail[-1] not in ("const", "noexcept", "override", "final", "mutable"):
-                        depth, j = 0, i
-                        while j < n:
-                            if code[j] == "{":
-                                depth += 1
-                            elif code[j] == "}":
-                                depth -= 1
-                                if depth == 0:
-                                    break
-                            j += 1
-                        i = j + 1
+                        i = skip_braces(code, i)
                         continue
             if kind == "function":
                 first = head_start + (len(head) - len(head.lstrip()))
@@ -176,6 +188,7 @@ def scan(text):
 
 
 def main(argv):
+    signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # quietly, into `head`
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("dirs", nargs="*")
     parser.add_argument("--function-lines", type=int, default=150)
