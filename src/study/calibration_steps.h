@@ -29,6 +29,12 @@ namespace twb {
 class CalibrationSteps {
  public:
   CalibrationSteps(const BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads);
+  // Neither copied nor moved: problem_ holds x_'s data, and its cost function refers to
+  // readings_ and response_.
+  CalibrationSteps(const CalibrationSteps&) = delete;
+  CalibrationSteps& operator=(const CalibrationSteps&) = delete;
+  CalibrationSteps(CalibrationSteps&&) = delete;
+  CalibrationSteps& operator=(CalibrationSteps&&) = delete;
 
   // Steps 1 and 2: false where the calibration stops there (out says why).
   bool weigh_readings();

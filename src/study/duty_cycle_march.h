@@ -33,13 +33,16 @@ namespace twb {
 
 class DutyCycleMarch {
  public:
-  // From u, the state at the schedule's first point, the model set to its inputs.
+  // From u, the state at the schedule's first point, the model set to its inputs. The
+  // march keeps references to model, schedule, out and progress: they must outlive it.
   DutyCycleMarch(BearingModel& model, const OperatingSchedule& schedule, std::vector<double> u, StudyOutcome& out,
                  const ProgressReport& progress);
   // The washer's balances given back, however the march ended.
   ~DutyCycleMarch() { model_.hold_at_rest({}); }
   DutyCycleMarch(const DutyCycleMarch&) = delete;
   DutyCycleMarch& operator=(const DutyCycleMarch&) = delete;
+  DutyCycleMarch(DutyCycleMarch&&) = delete;  // the watch and IDA's settings refer to this
+  DutyCycleMarch& operator=(DutyCycleMarch&&) = delete;
 
   // Steps 1-3: every segment in turn, until the schedule's end or a segment that ends
   // the march; the model then quasi-steady (no rest held, no tilt rate, its own rows).
