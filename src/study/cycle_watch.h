@@ -40,6 +40,8 @@ class CycleWatch {
   CycleEvent& event(std::string what, double t, const SchedulePoint& inputs);
 
   std::optional<std::size_t> worst() const { return worst_; }
+  // The scene's limits, each criterion's margin measured from them.
+  const OperatingLimits& limits() const { return limits_; }
 
  private:
   OperatingLimits limits_;

@@ -45,10 +45,8 @@ DutyCycleMarch::DutyCycleMarch(BearingModel& model, const OperatingSchedule& sch
       content_at_start_(heat_content(model, u_, schedule.points().front().ambient)),
       ida_(model, transient_settings()),
       march_form_(std::in_place, model),
-      lowest_ambient_(lowest_ambient(schedule)),
       between_(std::size_t(model.size())),
-      limits_(OperatingLimits::of(model.scene())),
-      watch_(model, out, lowest_ambient_,
+      watch_(model, out, lowest_ambient(schedule),
              [this](double a, double b, LimitKind kind) { return locate_crossing(a, b, kind); }),
       runaway_(model) {}
 
@@ -172,9 +170,8 @@ std::optional<SchedulePoint> DutyCycleMarch::locate_crossing(double a, double b,
   const auto margin_at = [&](double t) -> double {
     if (!ida_.state_at(t, between_)) throw std::domain_error("outside the step");
     OperatingSchedule::apply(model_, schedule_.on_segment(segment_, t));
-    const double m =
-        failure_margin(kind, LimitValues::of(model_.describe(between_), model_.scene().effects.thermal), limits_)
-            .value_or(NAN);
+    const LimitValues values = LimitValues::of(model_.describe(between_), model_.scene().effects.thermal);
+    const double m = failure_margin(kind, values, watch_.limits()).value_or(NAN);
     if (!std::isfinite(m)) throw std::domain_error("no margin there");
     return m;
   };

@@ -104,9 +104,7 @@ class DutyCycleMarch {
   // Whether IDA holds heat and work since its last start that bank() has not taken: a
   // start that fails leaves IDA as it was, already banked.
   bool unbanked_ = false;
-  const double lowest_ambient_;
   std::vector<double> between_;  // the state inside a step, where a crossing is sought
-  const OperatingLimits limits_;
   CycleWatch watch_;
   RunawayWatch runaway_;
   std::string ended_;  // why the march ended before the schedule did
