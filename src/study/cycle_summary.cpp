@@ -8,6 +8,7 @@
 
 #include "study/study_support.h"
 #include "twb/model/operating_limits.h"
+#include "twb/results/cycle_table.h"
 
 namespace twb {
 
@@ -22,11 +23,12 @@ double hottest_at(const std::vector<TrajectorySample>& trajectory, double t) {
 
 }  // namespace
 
-void summarize_cycle(const BearingModel& model, const OperatingSchedule& schedule, const CycleHeat& heat,
+void summarize_cycle(std::size_t segments, const OperatingSchedule& schedule,
                      std::chrono::steady_clock::time_point started, StudyOutcome& out) {
   const TrajectorySample& last = out.trajectory.back();
-  out.summary.push_back(fmt::format("duty cycle: {} segments, {:.6g} s to {:.6g} s, {} steps ({:.1f} s)",
-                                    model.scene().study.schedule.size() - 1, schedule.start(), last.time,
+  const CycleHeat& heat = *out.cycle_heat;
+  out.summary.push_back(fmt::format("duty cycle: {} segments, {:.6g} s to {:.6g} s, {} steps ({:.1f} s)", segments,
+                                    schedule.start(), last.time,
                                     out.trajectory.size() - 1, elapsed_ms(started) / 1000.0));
   out.summary.push_back(fmt::format(
       "duty cycle: heat: {:.6g} J generated = {:.6g} J to the ambient + {:.6g} J carried by the oil + {:.6g} J stored in "
