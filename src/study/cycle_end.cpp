@@ -49,15 +49,16 @@ void failure_at_worst(BearingModel& model, StudyOutcome& out, const TrajectorySa
 
 }  // namespace
 
-bool DutyCycleMarch::end(const std::string& bearing) {
-  if (out_.trajectory.empty()) {
-    out_.solver_failed = true;
-    out_.message = "duty cycle: the march did not start: " + ended_;
-    return false;
-  }
+bool DutyCycleMarch::check_started() {
+  if (!out_.trajectory.empty()) return true;
+  out_.solver_failed = true;
+  out_.message = "duty cycle: the march did not start: " + ended_;
+  return false;
+}
+
+void DutyCycleMarch::record_end(const std::string& bearing) {
   const TrajectorySample& last = out_.trajectory.back();
-  CycleEvent& end = watch_.event("end", last.time, schedule_.at(last.time));
-  end.margin = last.least_margin;
+  watch_.event("end", last.time, schedule_.at(last.time)).margin = last.least_margin;
   if (ended_.empty()) {
     const SchedulePoint at = schedule_.at(last.time);
     out_.cycle_end = CycleState{last.time, at.load, at.speed, at.ambient, at.tilt, u_, bearing};
@@ -74,7 +75,6 @@ bool DutyCycleMarch::end(const std::string& bearing) {
       out_.message = "duty cycle: the march ended early: " + ended_;
     }
   }
-  return true;
 }
 
 void DutyCycleMarch::worst_moment() {

@@ -24,7 +24,7 @@ std::string no_start(double t, const TransientStatus& status) {
 
 }  // namespace
 
-void DutyCycleMarch::march() {
+void DutyCycleMarch::follow_schedule() {
   for (; segment_ < schedule_.segments() && ended_.empty(); ++segment_) march_segment();
   bank();
   model_.hold_at_rest({});
@@ -41,7 +41,7 @@ void DutyCycleMarch::march_segment() {
   const double span = b.time - a.time;
   const bool rest_a = OperatingSchedule::unloaded_at_rest(a), rest_b = OperatingSchedule::unloaded_at_rest(b);
   if (rest_a) {
-    leave_rest(a, b, span, rest_b);
+    rest_at_start(a, b, span, rest_b);
     if (!ended_.empty() || rest_b) return;
   } else if (const TransientStatus status = start_at(a.time); !status.ok) {
     ended_ = no_start(a.time, status);
@@ -67,7 +67,7 @@ void DutyCycleMarch::march_segment() {
 // Held a millionth of the segment, then balanced again; where the balances find no
 // consistent state that close to the zero, held a decade longer, up to a thousandth.
 // (Held since the segment before came to rest: a schedule does not start at rest.)
-void DutyCycleMarch::leave_rest(const SchedulePoint& a, const SchedulePoint& b, double span, bool rest_b) {
+void DutyCycleMarch::rest_at_start(const SchedulePoint& a, const SchedulePoint& b, double span, bool rest_b) {
   double from = a.time;
   if (!model_.held_at_rest()) {
     model_.hold_at_rest(u_);

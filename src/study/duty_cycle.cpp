@@ -1,6 +1,5 @@
 #include "study/duty_cycle.h"
 
-#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <string>
@@ -30,11 +29,7 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   std::optional<std::vector<double>> begun = cycle_start(model, schedule, newton, start, bearing, out, progress);
   if (!begun) return;
   DutyCycleMarch march(model, schedule, std::move(*begun), out, progress);
-  march.march();
-  if (!march.end(bearing)) return;
-  march.worst_moment();
-  std::stable_sort(out.cycle_events.begin(), out.cycle_events.end(),
-                   [](const CycleEvent& a, const CycleEvent& b) { return a.time < b.time; });
+  if (!march.run(bearing)) return;
   summarize_cycle(model.scene().study.schedule.size() - 1, schedule, t0, out);
   out.timings.transients += 1;
 }

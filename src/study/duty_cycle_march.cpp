@@ -29,12 +29,6 @@ double lowest_ambient(const OperatingSchedule& schedule) {
 
 }  // namespace
 
-// IDA's Newton starts each step from its predictor, close: it works on the Newton form
-// of the model's complementarity rows (the minimum, piecewise linear, as continuation's
-// correctors do), whose roots are the model's own. Fischer–Burmeister's curvature at the
-// cavitation boundary failed its iterations over and over where a lightly loaded washer
-// lifts: a ramp from 100 to 1 N and a hold took 6802 steps, 201 in this form. The
-// consistent starts (KINSOL from rates of zero, not close) keep the model's own rows.
 DutyCycleMarch::DutyCycleMarch(BearingModel& model, const OperatingSchedule& schedule, std::vector<double> u,
                                StudyOutcome& out, const ProgressReport& progress)
     : model_(model),
@@ -49,6 +43,18 @@ DutyCycleMarch::DutyCycleMarch(BearingModel& model, const OperatingSchedule& sch
       watch_(model, out, lowest_ambient(schedule),
              [this](double a, double b, LimitKind kind) { return locate_crossing(a, b, kind); }),
       runaway_(model) {}
+
+bool DutyCycleMarch::run(const std::string& bearing) {
+  if (ran_) throw InternalError("duty cycle: the march is run once only");
+  ran_ = true;
+  follow_schedule();
+  if (!check_started()) return false;
+  record_end(bearing);
+  worst_moment();
+  std::stable_sort(out_.cycle_events.begin(), out_.cycle_events.end(),
+                   [](const CycleEvent& a, const CycleEvent& b) { return a.time < b.time; });
+  return true;
+}
 
 // Real time: the film's squeeze is on, the rigid body moves at its rate (physics §19).
 // The heat generated, conducted to the ambient and carried off is integrated with the

@@ -44,19 +44,26 @@ class DutyCycleMarch {
   DutyCycleMarch(DutyCycleMarch&&) = delete;  // the watch and IDA's settings refer to this
   DutyCycleMarch& operator=(DutyCycleMarch&&) = delete;
 
+  // Steps 1-5 in turn, once, the cycle's events then in time order (`bearing`: this
+  // one's, for the state the cycle ends in). False where the march did not start (out
+  // says so).
+  bool run(const std::string& bearing);
+
+ private:
   // Steps 1-3: every segment in turn, until the schedule's end or a segment that ends
   // the march; the model then quasi-steady (no rest held, no tilt rate, its own rows).
-  void march();
-  // Step 4: false where the march did not start (out says so).
-  bool end(const std::string& bearing);
+  void follow_schedule();
+  // Whether the march started (a first state recorded); out says so where it did not.
+  bool check_started();
+  // Step 4, once the march started.
+  void record_end(const std::string& bearing);
   // Step 5.
   void worst_moment();
 
- private:
   // The segment being marched (cycle_segment.cpp): its march from a to b, and the rest
-  // at a (held from a, and the balances given back a little after it).
+  // at its start a (held from a, and the balances given back a little after it).
   void march_segment();
-  void leave_rest(const SchedulePoint& a, const SchedulePoint& b, double span, bool rest_b);
+  void rest_at_start(const SchedulePoint& a, const SchedulePoint& b, double span, bool rest_b);
 
   // IDA started at (t, u_), consistent values computed afresh: at every point of the
   // schedule (the inputs' rates jump there, and so do the state's) and where the rest
@@ -100,6 +107,13 @@ class DutyCycleMarch {
   CycleHeat heat_;
   const double content_at_start_;
   IdaTransient ida_;
+  // IDA's Newton starts each step from its predictor, close: it works on the Newton form
+  // of the model's complementarity rows (the minimum, piecewise linear, as continuation's
+  // correctors do), whose roots are the model's own. Fischer–Burmeister's curvature at
+  // the cavitation boundary failed its iterations over and over where a lightly loaded
+  // washer lifts: a ramp from 100 to 1 N and a hold took 6802 steps, 201 in this form.
+  // The consistent starts (KINSOL from rates of zero, not close) keep the model's own
+  // rows. Held from construction to the schedule's end.
   std::optional<NewtonForm> march_form_;
   // Whether IDA holds heat and work since its last start that bank() has not taken: a
   // start that fails leaves IDA as it was, already banked.
@@ -108,7 +122,10 @@ class DutyCycleMarch {
   CycleWatch watch_;
   RunawayWatch runaway_;
   std::string ended_;  // why the march ended before the schedule did
+  // Whether IDA has started once: its first consistent state is the trajectory's first
+  // sample (recorded by the first start, never again).
   bool started_ = false;
+  bool ran_ = false;  // run() is called once only
 };
 
 }  // namespace twb
