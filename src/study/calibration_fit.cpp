@@ -59,19 +59,19 @@ bool CalibrationSteps::fit() {
   scale_.resize(n_);
   x_.resize(n_);
   for (std::size_t j = 0; j < n_; ++j) {
-    const FittedInput& f = st_.fitted[j];
+    const FittedInput& f = study_.fitted[j];
     // (at least a thousandth of the range: a start of nearly zero would make its bounds
     // remote in the scaled input)
     scale_[j] = std::max(std::abs(f.start), 1e-3 * (f.upper - f.lower));
     x_[j] = f.start / scale_[j];
   }
-  response_.emplace(load_scene_text(scene_.written, scene_.source, {"study={type: point}"}), st_.fitted,
-                    st_.measurements, threads_);
-  cost_ = new MeasurementsCost(*response_, readings_, scale_, st_.fitted);
+  response_.emplace(load_scene_text(scene_.written, scene_.source, {"study={type: point}"}), study_.fitted,
+                    study_.measurements, threads_);
+  cost_ = new MeasurementsCost(*response_, readings_, scale_, study_.fitted);
   problem_.AddResidualBlock(cost_, nullptr, x_.data());
   for (std::size_t j = 0; j < n_; ++j) {
-    problem_.SetParameterLowerBound(x_.data(), int(j), st_.fitted[j].lower / scale_[j]);
-    problem_.SetParameterUpperBound(x_.data(), int(j), st_.fitted[j].upper / scale_[j]);
+    problem_.SetParameterLowerBound(x_.data(), int(j), study_.fitted[j].lower / scale_[j]);
+    problem_.SetParameterUpperBound(x_.data(), int(j), study_.fitted[j].upper / scale_[j]);
   }
 
   // The start's predictions, for the report and a clear failure before any step.
@@ -86,7 +86,7 @@ bool CalibrationSteps::fit() {
   }
   at_start_ = cost_->last;
 
-  ceres::Solver::Options options = fit_options(st_.fit_iterations);
+  ceres::Solver::Options options = fit_options(study_.fit_iterations);
   ProgressLines lines(progress_);
   options.callbacks.push_back(&lines);
   ceres::Solve(options, &problem_, &summary_);

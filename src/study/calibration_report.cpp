@@ -27,7 +27,7 @@ std::string joined_quantities(const std::vector<Reading>& readings) {
 
 void CalibrationSteps::tables() {
   for (std::size_t j = 0; j < n_; ++j) {
-    const FittedInput& f = st_.fitted[j];
+    const FittedInput& f = study_.fitted[j];
     CalibrationRow& row = out_.calibration.emplace_back();
     row.parameter = f.path;
     row.parameter_unit = f.unit;
@@ -43,8 +43,8 @@ void CalibrationSteps::tables() {
       for (std::size_t b : free_) {
         if (b < a) continue;
         CorrelationRow& c = out_.correlations.emplace_back();
-        c.parameter_a = st_.fitted[a].path;
-        c.parameter_b = st_.fitted[b].path;
+        c.parameter_a = study_.fitted[a].path;
+        c.parameter_b = study_.fitted[b].path;
         c.covariance = (*covariance_)(long(a), long(b));
         c.correlation =
             c.covariance / std::sqrt((*covariance_)(long(a), long(a)) * (*covariance_)(long(b), long(b)));
@@ -52,7 +52,7 @@ void CalibrationSteps::tables() {
   const std::vector<PointPrediction>& fitted = cost_->last;
   for (std::size_t k = 0; k < m_; ++k) {
     const Reading& r = readings_[k];
-    const MeasuredPoint& point = st_.measurements[r.point];
+    const MeasuredPoint& point = study_.measurements[r.point];
     CalibrationPointRow& row = out_.calibration_points.emplace_back();
     row.point = long(r.point) + 1;
     row.line = point.line;
@@ -72,8 +72,9 @@ void CalibrationSteps::summarize() {
   out_.summary.push_back(fmt::format(
       "calibration: {} input{} fitted to {} measured value{} ({}) at {} point{}: {} after {} iterations, cost {:.6g} -> "
       "{:.6g} ({} steady solves)",
-      n_, n_ == 1 ? "" : "s", m_, m_ == 1 ? "" : "s", joined_quantities(readings_), st_.measurements.size(),
-      st_.measurements.size() == 1 ? "" : "s", summary_.termination_type == ceres::CONVERGENCE ? "converged" : "stopped",
+      n_, n_ == 1 ? "" : "s", m_, m_ == 1 ? "" : "s", joined_quantities(readings_), study_.measurements.size(),
+      study_.measurements.size() == 1 ? "" : "s",
+      summary_.termination_type == ceres::CONVERGENCE ? "converged" : "stopped",
       summary_.iterations.size() > 0 ? summary_.iterations.size() - 1 : 0, summary_.initial_cost, summary_.final_cost,
       response_->solves()));
   if (summary_.termination_type != ceres::CONVERGENCE) {
@@ -111,8 +112,8 @@ void CalibrationSteps::summarize() {
     std::string text;
     for (std::size_t j = 0; j < n_; ++j)
       if (std::abs(v(long(j))) > 1e-3)
-        text += fmt::format("{}{} by {:+.3g} x {:.3g} {}", text.empty() ? "" : " with ", st_.fitted[j].path, v(long(j)),
-                            scale_[j], st_.fitted[j].unit);
+        text += fmt::format("{}{} by {:+.3g} x {:.3g} {}", text.empty() ? "" : " with ", study_.fitted[j].path,
+                            v(long(j)), scale_[j], study_.fitted[j].unit);
     return text;
   };
   for (const Weak& w : weak_)

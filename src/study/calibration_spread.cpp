@@ -25,7 +25,7 @@ void CalibrationSteps::spread() {
   value_.resize(n_);
   at_bound_.resize(n_);
   for (std::size_t j = 0; j < n_; ++j) {
-    const FittedInput& f = st_.fitted[j];
+    const FittedInput& f = study_.fitted[j];
     value_[j] = std::clamp(x_[j] * scale_[j], f.lower, f.upper);
     const double tolerance = 1e-9 * (f.upper - f.lower);
     if (value_[j] <= f.lower + tolerance) at_bound_[j] = "lower";

@@ -36,20 +36,24 @@ class CalibrationSteps {
   CalibrationSteps(CalibrationSteps&&) = delete;
   CalibrationSteps& operator=(CalibrationSteps&&) = delete;
 
+  // Steps 1-5 in turn, once; the calibration stops after step 1 or 2 where out says why.
+  void run();
+
+ private:
   // Steps 1 and 2: false where the calibration stops there (out says why).
   bool weigh_readings();
   bool fit();
-  void spread();     // step 3
+  void spread();     // step 3 (once: it adds to the free inputs and the weak directions)
   void tables();     // step 4
   void summarize();  // step 5
 
- private:
   const Scene& scene_;
-  const Study& st_;
+  const Study& study_;
   const std::size_t n_;  // the fitted inputs
   StudyOutcome& out_;
   const ProgressReport& progress_;
   const int threads_;
+  bool ran_ = false;  // run() is called once only
 
   // Step 1.
   std::vector<Reading> readings_;
