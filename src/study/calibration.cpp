@@ -44,7 +44,7 @@ bool CalibrationSteps::weigh_readings() {
     for (std::size_t q = 0; q < kMeasuredQuantities; ++q) {
       const double m = study_.measurements[i].values[q];
       if (std::isnan(m)) continue;
-      Reading& r = readings_.emplace_back();
+      CalibrationReading& r = readings_.emplace_back();
       r.point = i;
       r.quantity = q;
       r.measured = m;
@@ -57,7 +57,7 @@ bool CalibrationSteps::weigh_readings() {
           out_.solver_failed = true;
           out_.message = fmt::format("the reading of {} on line {} is {}: a relative fit cannot weigh it; give each "
                                      "quantity's standard deviation (study.sd, or a <quantity>_sd column of the data)",
-                                     kCalibrationColumns[q], study_.measurements[i].line,
+                                     kMeasuredQuantityColumns[q], study_.measurements[i].line,
                                      q >= 2 ? "the ambient temperature" : "zero");
           return false;
         }

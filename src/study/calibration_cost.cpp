@@ -29,7 +29,7 @@ bool MeasurementsCost::Evaluate(double const* const* parameters, double* residua
     return false;
   }
   for (std::size_t k = 0; k < readings_.size(); ++k) {
-    const Reading& r = readings_[k];
+    const CalibrationReading& r = readings_[k];
     const PointPrediction& at = predicted[r.point];
     residuals[k] = r.weight * (at.values[r.quantity] - r.measured);
     if (derivatives)

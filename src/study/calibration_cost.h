@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <ceres/ceres.h>
@@ -14,10 +15,10 @@
 namespace twb {
 
 // The measured quantities' columns, in MeasuredQuantity's order.
-inline constexpr const char* kCalibrationColumns[] = {"torque_Nm", "f_eff", "T_mean_C", "T_max_C"};
+inline constexpr const char* kMeasuredQuantityColumns[] = {"torque_Nm", "f_eff", "T_mean_C", "T_max_C"};
 
 // One measured value: its point, its quantity, the reading (SI) and its weight 1/s.
-struct Reading {
+struct CalibrationReading {
   std::size_t point = 0, quantity = 0;
   double measured = 0.0, weight = 0.0;
   std::optional<double> sd;  // SI, where the scene gives it
@@ -26,8 +27,8 @@ struct Reading {
 // The weighted residuals of every reading, and their Jacobian in the scaled inputs x = p/scale.
 class MeasurementsCost final : public ceres::CostFunction {
  public:
-  MeasurementsCost(MeasuredResponse& response, const std::vector<Reading>& readings, std::vector<double> scale,
-                   const std::vector<FittedInput>& fitted)
+  MeasurementsCost(MeasuredResponse& response, const std::vector<CalibrationReading>& readings,
+                   std::vector<double> scale, const std::vector<FittedInput>& fitted)
       : response_(response), readings_(readings), scale_(std::move(scale)) {
     for (const FittedInput& f : fitted) {
       lower_.push_back(f.lower);
@@ -44,7 +45,7 @@ class MeasurementsCost final : public ceres::CostFunction {
 
  private:
   MeasuredResponse& response_;
-  const std::vector<Reading>& readings_;
+  const std::vector<CalibrationReading>& readings_;
   std::vector<double> scale_, lower_, upper_;
 };
 

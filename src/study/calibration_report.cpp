@@ -15,11 +15,12 @@ namespace {
 // A value in its column's unit: a temperature in °C.
 double shown(std::size_t quantity, double si) { return quantity >= 2 ? si - cells::kelvin_offset : si; }
 
-std::string joined_quantities(const std::vector<Reading>& readings) {
+std::string joined_quantities(const std::vector<CalibrationReading>& readings) {
   std::string out;
   for (std::size_t q = 0; q < kMeasuredQuantities; ++q)
-    if (std::any_of(readings.begin(), readings.end(), [q](const Reading& r) { return r.quantity == q; }))
-      out += fmt::format("{}{}", out.empty() ? "" : ", ", kCalibrationColumns[q]);
+    if (std::any_of(readings.begin(), readings.end(),
+                    [q](const CalibrationReading& r) { return r.quantity == q; }))
+      out += fmt::format("{}{}", out.empty() ? "" : ", ", kMeasuredQuantityColumns[q]);
   return out;
 }
 
@@ -51,14 +52,14 @@ void CalibrationSteps::tables() {
       }
   const std::vector<PointPrediction>& fitted = cost_->last;
   for (std::size_t k = 0; k < m_; ++k) {
-    const Reading& r = readings_[k];
+    const CalibrationReading& r = readings_[k];
     const MeasuredPoint& point = study_.measurements[r.point];
     CalibrationPointRow& row = out_.calibration_points.emplace_back();
     row.point = long(r.point) + 1;
     row.line = point.line;
     row.load = point.load;
     row.speed = point.speed;
-    row.quantity = kCalibrationColumns[r.quantity];
+    row.quantity = kMeasuredQuantityColumns[r.quantity];
     row.measured = shown(r.quantity, r.measured);
     row.at_start = shown(r.quantity, at_start_[r.point].values[r.quantity]);
     row.fitted = shown(r.quantity, fitted[r.point].values[r.quantity]);

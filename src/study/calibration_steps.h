@@ -19,12 +19,13 @@
 #include <Eigen/Dense>
 #include <ceres/ceres.h>
 
-#include "model/bearing_model.h"
 #include "study/calibration_cost.h"
 #include "study/measured_response.h"
 #include "twb/study/study_outcome.h"
 
 namespace twb {
+
+class BearingModel;
 
 class CalibrationSteps {
  public:
@@ -56,7 +57,7 @@ class CalibrationSteps {
   bool ran_ = false;  // run() is called once only
 
   // Step 1.
-  std::vector<Reading> readings_;
+  std::vector<CalibrationReading> readings_;
   bool relative_ = false;  // weighed by the readings' own size, not by a deviation
   std::size_t m_ = 0;      // the readings
 

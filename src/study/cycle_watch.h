@@ -10,6 +10,7 @@
 #include <iterator>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "model/bearing_model.h"
 #include "model/limit_thresholds.h"
@@ -17,15 +18,12 @@
 
 namespace twb {
 
-// Each failure criterion's margin in its own unit (none where the scene applies none).
-using Margins = std::array<std::optional<double>, std::size(kFailureCriteria)>;
-
-// Where between two of the march's steps (times a < b) a criterion's margin is zero:
-// the inputs there (their time the crossing's), none where it cannot say.
-using CrossingLocator = std::function<std::optional<SchedulePoint>(double a, double b, LimitKind kind)>;
-
 class CycleWatch {
  public:
+  // Where between two of the march's steps (times a < b) a criterion's margin is zero:
+  // the inputs there (their time the crossing's), none where it cannot say.
+  using CrossingLocator = std::function<std::optional<SchedulePoint>(double a, double b, LimitKind kind)>;
+
   // `lowest_ambient`: the schedule's, from which every allowance is measured (the reader
   // keeps the first point's ambient below every limit; a later, warmer ambient must not
   // shrink an allowance to nothing just as the limit is crossed).
@@ -44,6 +42,9 @@ class CycleWatch {
   const OperatingLimits& limits() const { return limits_; }
 
  private:
+  // Each failure criterion's margin in its own unit (none where the scene applies none).
+  using Margins = std::array<std::optional<double>, std::size(kFailureCriteria)>;
+
   OperatingLimits limits_;
   bool thermal_;
   StudyOutcome& out_;
