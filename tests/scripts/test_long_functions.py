@@ -64,6 +64,101 @@ class Scan(unittest.TestCase):
                 "}\n")
         self.assertEqual(functions(text), [("f", 3)])
 
+    def test_prefixed_raw_and_unterminated_literals(self):
+        text = ("char16_t c = u'{';\n"
+                "auto s = u8\"}\";\n"
+                "auto r = u8R\"x({)x\";\n"
+                "wchar_t w = L'}';\n"
+                "auto q = LR\"(})\";\n"
+                "long big = 0x1'0000'0000;\n"
+                "void f() {\n"
+                "  g(U'{', uR\"(}})\");\n"
+                "}\n"
+                "#error a stray \" ends at its line\n"
+                "int h() { return '}\n"
+                "; }\n")
+        self.assertEqual(functions(text), [("f", 3), ("h", 2)])
+
+    def test_only_the_first_branch_of_a_conditional(self):
+        text = ("#if defined(A)\n"
+                "void f(int a) {\n"
+                "#elif defined(B)\n"
+                "void f(long a) {\n"
+                "#else\n"
+                "void f() {\n"
+                "#  if C\n"
+                "  {\n"
+                "#  endif\n"
+                "#endif\n"
+                "  g();\n"
+                "}\n"
+                "#ifdef D\n"
+                "void k() { }\n"
+                "#endif\n")
+        self.assertEqual(functions(text), [("f", 11), ("k", 1)])
+
+    def test_lambdas_outside_functions_are_functions(self):
+        text = ("const auto table = [] {\n"
+                "  return 1;\n"
+                "}();\n"
+                "const bool registered = registry::add(\"x\", [](int a) -> int {\n"
+                "  return a;\n"
+                "});\n"
+                "void f() {\n"
+                "  auto g = [] { return 2; };\n"
+                "}\n"
+                "C::C() : f_([this](int a) {\n"
+                "  return a;\n"
+                "}) {}\n"
+                "int a[2] {1, 2};\n"
+                "[[nodiscard]] int h() { return a[0]; }\n")
+        self.assertEqual(functions(text), [("lambda (table)", 3), ("lambda (argument of registry::add)", 3),
+                                           ("f", 3), ("C::C", 3), ("h", 1)])
+
+    def test_names_past_templates_and_of_call_operators(self):
+        text = ("template <typename T, typename = std::enable_if_t<(sizeof(T) > 4)>>\n"
+                "bool Less::operator()(T a, T b) const {\n"
+                "  return a < b;\n"
+                "}\n"
+                "std::function<double(double)> curve_of(int k) { return {}; }\n"
+                "template <> Fields blank<Fields>() { return {}; }\n"
+                "__attribute__((target(\"avx2\"))) void fast(double* x) { }\n"
+                "Quantity::operator bool() const { return true; }\n"
+                "double& V::operator[](std::size_t i) { return v_[i]; }\n")
+        self.assertEqual([name for name, _ in functions(text)],
+                         ["Less::operator()", "curve_of", "blank<Fields>", "fast", "Quantity::operator bool",
+                          "V::operator[]"])
+
+    def test_unbalanced_braces(self):
+        for text, line in (("void f() {\n  g();\n}\n}\n", 4), ("namespace a {\nvoid f() {\n}\n", 1),
+                           ("int x = g({1,\n 2);\n", 1)):
+            with self.assertRaises(long_functions.Unbalanced) as caught:
+                long_functions.scan(text)
+            self.assertEqual(caught.exception.line, line)
+        with tempfile.TemporaryDirectory() as tmp:
+            with open(os.path.join(tmp, "good.cpp"), "w") as f:
+                f.write("void good() { }\n")
+            with open(os.path.join(tmp, "bad.cpp"), "w") as f:
+                f.write("void bad() {\n  g();\n")
+            run = subprocess.run([sys.executable, SCRIPT, tmp], capture_output=True, text=True)
+            self.assertEqual(run.returncode, 2)
+            self.assertIn("bad.cpp:1: the braces do not balance", run.stderr)
+            self.assertNotIn("good.cpp", run.stderr)
+
+    def test_all_and_utf8(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            with open(os.path.join(tmp, "a.cpp"), "w", encoding="utf-8") as f:
+                f.write("// Fischer–Burmeister, ϑ in °C\n"
+                        "void short_one() { y(); }\n"
+                        "void long_one() {\n" + "  x();\n" * 5 + "}\n")
+            # Read as UTF-8 whatever the locale says.
+            env = dict(os.environ, LC_ALL="C", PYTHONUTF8="0", PYTHONCOERCECLOCALE="0")
+            run = subprocess.run([sys.executable, SCRIPT, "--all", "--function-lines", "2", tmp],
+                                 capture_output=True, text=True, env=env)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            self.assertEqual(run.stdout.splitlines(), [f"{tmp}/a.cpp:3: long_one: 7 lines",
+                                                       f"{tmp}/a.cpp:2: short_one: 1 lines"])
+
     def test_offenders_and_status(self):
         with tempfile.TemporaryDirectory() as tmp:
             with open(os.path.join(tmp, "a.cpp"), "w") as f:
