@@ -11,6 +11,18 @@ namespace twb {
 
 namespace {
 
+// METIS (libmetis 5.1 as Debian packages it, its GKlib without a generator of its own)
+// draws its random numbers from the C library's rand(), whose state is the process's.
+// It seeds it again (srand of a fixed seed) at every call, so one call at a time finds
+// the same order every time; two at once on two threads share one stream and find
+// other orders, and every factorization after carries other round-off (a study's
+// results would depend on its thread count). One METIS call at a time, whatever the
+// thread: about 80 ms per new structure, most of which are kept (KeptOrders).
+std::mutex& metis_lock() {
+  static std::mutex lock;
+  return lock;
+}
+
 SuiteSparse_long order(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSparse_long* Ai, SuiteSparse_long* perm) {
   using Long = SuiteSparse_long;
   // The graph of A + Aᵀ without self-loops.
@@ -58,7 +70,12 @@ SuiteSparse_long order(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSparse_lon
     }
     gp[m] = e;
     std::vector<Long> order(std::size_t(std::max<Long>(m, 1)));
-    if (m == 0 || cholmod_l_metis(graph, nullptr, 0, /*postorder*/ true, order.data(), &cc)) {
+    bool ordered = m == 0;
+    if (!ordered) {
+      const std::lock_guard<std::mutex> hold(metis_lock());
+      ordered = cholmod_l_metis(graph, nullptr, 0, /*postorder*/ true, order.data(), &cc);
+    }
+    if (ordered) {
       for (Long k = 0; k < m; ++k) perm[k] = kept[std::size_t(order[std::size_t(k)])];
       for (std::size_t k = 0; k < dense.size(); ++k) perm[m + Long(k)] = dense[k];
       // KLU sizes its first allocation of L by this; it grows the factors when short.
@@ -73,8 +90,8 @@ SuiteSparse_long order(SuiteSparse_long n, SuiteSparse_long* Ap, SuiteSparse_lon
 // The orders found so far, by the block they order. A pattern is ordered again and
 // again (every Newton solver, fold system and bordered matrix built on a mesh's
 // Jacobian), and METIS costs about 80 ms on 17×132 against 6 ms for a refactorization;
-// METIS is deterministic (a fixed seed), so a kept order is the order it would find
-// again. Keyed by the block's whole structure (compared, not only hashed); the first
+// METIS called one at a time (metis_lock) is deterministic, so a kept order is the order
+// it would find again. Keyed by the block's whole structure (compared, not only hashed); the first
 // kKept blocks are kept, which covers a run's few meshes and their bordered systems.
 class KeptOrders {
  public:
