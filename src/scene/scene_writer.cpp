@@ -257,6 +257,9 @@ void write_numerics(Writer& w, const Scene& s) {
   if (st.type == StudyType::distress_map && st.map_method == MapMethod::follow) w.entry(1, "method", "follow");
   if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map || st.type == StudyType::distress_curve)
     w.entry(1, "error_estimate", std::string(kErrorEstimates.name(st.error_estimate)));
+  // A point's bar is on unless it is turned off: the one choice it has is written, so
+  // that the scene read back (run.json's) asks for what the run did.
+  if (st.type == StudyType::point && st.error_estimate == ErrorEstimate::none) w.entry(1, "error_estimate", "none");
   if ((st.type == StudyType::load_sweep || st.type == StudyType::distress_map || st.type == StudyType::point ||
        st.type == StudyType::distress_curve) &&
       st.error_estimate != ErrorEstimate::none)

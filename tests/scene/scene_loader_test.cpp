@@ -107,6 +107,7 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.study.speeds, b.study.speeds);
   EXPECT_EQ(a.study.axes, b.study.axes);
   EXPECT_EQ(a.study.bracket_width, b.study.bracket_width);
+  EXPECT_EQ(a.study.error_estimate, b.study.error_estimate);
   EXPECT_EQ(a.study.tolerance, b.study.tolerance);
   EXPECT_EQ(a.study.search_past_failure, b.study.search_past_failure);
   EXPECT_EQ(a.mesh.max_refinements, b.mesh.max_refinements);
@@ -303,6 +304,8 @@ INSTANTIATE_TEST_SUITE_P(
                           "study: {type: distress_curve, parameter: speed, from: 100 rad/s, to: 500 rad/s,\n"
                           "        load_start: 100 N, load_end: 2000 N, tolerance: 3 %}\n"},
         RoundTripCase{"point_with_its_two_mesh_bar", std::string(kMinimalScene) + "study: {type: point}\n"},
+        RoundTripCase{"point_without_an_error_bar",
+                      std::string(kMinimalScene) + "study: {type: point, error_estimate: none}\n"},
         RoundTripCase{"distress_map_searched_on_past_failure",
                       std::string(kMinimalScene) +
                           "study: {type: distress_map, speeds: [545 rad/s], load_start: 50 N, load_end: 1 kN,\n"
