@@ -4,17 +4,19 @@ the code that names a file the code no longer has misleads whoever adds the next
 
 A path is a `backticked` token that starts at one of the repository's top folders
 (src/, include/, tests/, ...), or a bare file name with a source extension
-(`film_shape.cpp`), which must be some file's name in the tree. Placeholders
-(`<name>_table.h`) and globs are skipped.
+(`film_shape.cpp`), which must be the name of a file the repository tracks (git
+ls-files: a results file a run left in the tree is not one). Placeholders
+(`<name>_table.h`), globs and the names of results files (`states.csv`) are skipped.
 
     python3 tests/scripts/doc_paths_test.py [REPO] [DOC ...]
 """
 import re
+import subprocess
 import sys
 from pathlib import Path
 
 ROOTS = ("src/", "include/", "tests/", "scripts/", "docs/", "python/", "configs/", "benchmarks/", ".ci/")
-EXTENSIONS = (".h", ".cpp", ".py", ".sh", ".md", ".yaml", ".csv", ".json", ".txt")
+EXTENSIONS = (".h", ".cpp", ".py", ".sh", ".md", ".yaml")
 
 
 def named_paths(text):
@@ -28,12 +30,26 @@ def named_paths(text):
             yield token
 
 
+def tracked(repo):
+    """The repository's files (git ls-files), or every file under it outside .git and
+    the build folders when it is not a git checkout."""
+    try:
+        listed = subprocess.run(["git", "-C", str(repo), "ls-files"], capture_output=True, text=True, check=True)
+        return [Path(line) for line in listed.stdout.splitlines() if line]
+    except (OSError, subprocess.CalledProcessError):
+        return [p.relative_to(repo) for p in repo.rglob("*")
+                if p.is_file() and not {".git", "build", "build-tests", "results"} & set(p.relative_to(repo).parts)]
+
+
 def missing(repo, doc):
-    names = {p.name for p in repo.rglob("*") if p.is_file() and ".git" not in p.parts}
+    files = tracked(repo)
+    paths = {str(p) for p in files}
+    folders = {str(parent) + "/" for p in files for parent in p.parents if str(parent) != "."}
+    names = {p.name for p in files}
     out = []
     for path in sorted(set(named_paths(doc.read_text(encoding="utf-8")))):
         if "/" in path:
-            if not (repo / path).exists():
+            if path not in paths and path not in folders and path.rstrip("/") + "/" not in folders:
                 out.append(path)
         elif path not in names:
             out.append(path)
