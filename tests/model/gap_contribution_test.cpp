@@ -149,3 +149,27 @@ TEST(GapContribution, ItsUnknownsMoveToAnotherMesh) {
 
 }  // namespace
 }  // namespace twb
+
+namespace twb {
+namespace {
+
+// Thermal deformation's own unknowns move to another mesh by its effect's carry_from (the
+// dishing curvature) and the model's (the contact force), in physical units: the same
+// scene on both meshes has the same scales, so they arrive unchanged.
+TEST(GapContribution, ThermalDeformationsUnknownsMoveToAnotherMesh) {
+  Scene s = heated_washer();
+  s.effects.thermal_deformation = true;
+  BearingModel coarse(s);
+  std::vector<double> u;
+  ASSERT_TRUE(SteadySolver(coarse, {}).solve_cold(u).converged);
+  ASSERT_GE(coarse.contact_force_unknown(), 0);
+  ASSERT_NE(coarse.dishing_curvature(u), 0.0);
+  const std::unique_ptr<BearingModel> fine = coarse.on_mesh(9, 48);
+  const std::vector<double> v = fine->interpolated_from(coarse, u);
+  EXPECT_DOUBLE_EQ(fine->dishing_curvature(v), coarse.dishing_curvature(u));
+  EXPECT_DOUBLE_EQ(v[std::size_t(fine->contact_force_unknown())] * fine->contact_force_scale(),
+                   u[std::size_t(coarse.contact_force_unknown())] * coarse.contact_force_scale());
+}
+
+}  // namespace
+}  // namespace twb
