@@ -82,8 +82,7 @@ double FilmGap::least() const {
   double least = INFINITY;
   for (int i = 0; i < m.radial_nodes(); ++i)
     for (int j = 0; j < m.circumferential_nodes(); ++j)
-      least = std::min(least, film_->node_gap_polar(q_, m.radius(i), m.angle(j)) + shape(m.node(i, j)) +
-                                  lower_side(i, j));
+      least = std::min(least, smooth(i, j) + lower_side(i, j));
   if (plane.a == 0.0 && plane.b == 0.0) return least;
   const double two_pi = 2 * std::numbers::pi;
   double theta = std::atan2(-plane.b, -plane.a);
