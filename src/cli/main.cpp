@@ -190,8 +190,7 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   }
   std::optional<twb::CycleState> cycle_start;
   if (!r.continue_from.empty()) {
-    if (scene.study.type != twb::StudyType::duty_cycle)
-      throw std::invalid_argument("--continue-from goes on with a duty cycle; this scene's study is another");
+    twb::check_continuable(scene.study, "--continue-from");
     cycle_start = twb::read_cycle_state((std::filesystem::path(r.continue_from) / "cycle_end_state.json").string());
   }
   if (r.out_dir.empty()) r.out_dir = scene.output.directory;

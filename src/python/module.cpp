@@ -146,8 +146,7 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads, st
                    std::optional<std::string> directory) {
   std::optional<twb::CycleState> cycle_start;
   if (continue_from) {
-    if (scene.study.type != twb::StudyType::duty_cycle)
-      throw std::invalid_argument("continue_from goes on with a duty cycle; this scene's study is another");
+    twb::check_continuable(scene.study, "continue_from");
     cycle_start = twb::cycle_state_of(*continue_from, "continue_from");
   }
   ProgressRelay relay(std::move(progress));

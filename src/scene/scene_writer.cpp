@@ -338,6 +338,7 @@ void write_numerics(Writer& w, const Scene& s) {
 }  // namespace
 
 std::string_view scene_name(SlidingFilm film) { return kSlidingFilms.name(film); }
+std::string_view scene_name(StudyType type) { return kStudyTypes.name(type); }
 
 std::string describe_scene(const Scene& scene) {
   Writer w;

@@ -1,43 +1,25 @@
 #include "twb/study/study_outcome.h"
 
+#include <algorithm>
+#include <stdexcept>
+
 #include <fmt/format.h>
 
 #include "twb/results/run_axes.h"
+#include "study/study_kind.h"
 #include "twb/scene/scene_loader.h"
 
 
 namespace twb {
 
 std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
-  const std::vector<std::string>& parameter = out.parameter_columns;
-  const bool sliding = out.sliding_column;
   std::vector<NamedTable> tables;
-  tables.push_back({"states", states_table(out.states, parameter, sliding)});
-  if (type != StudyType::point && type != StudyType::transient && type != StudyType::sensitivity &&
-      type != StudyType::reliability && type != StudyType::calibration && type != StudyType::duty_cycle)
-    tables.push_back({"distress", distress_table(out.distress, parameter, sliding)});
-  if (type == StudyType::sliding_choice) tables.push_back({"sliding", sliding_table(out.sliding)});
-  if (type == StudyType::distress_curve)
-    tables.push_back({"fold_curve", fold_curve_table(out.fold_curve, out.fold_curve_column, parameter.empty() ? std::string() : parameter.front())});
-  if ((type == StudyType::sensitivity || type == StudyType::reliability || type == StudyType::duty_cycle) &&
-      !out.distress.empty())
-    tables.push_back({"distress", distress_table(out.distress, parameter, sliding)});
-  if (type == StudyType::sensitivity) tables.push_back({"sensitivity", sensitivity_table(out.sensitivity)});
-  if (type == StudyType::reliability) {
-    tables.push_back({"reliability", reliability_table(out.reliability)});
-    tables.push_back({"design_point", design_point_table(out.design_points)});
-  }
-  if (type == StudyType::calibration) {
-    tables.push_back({"calibration", calibration_table(out.calibration)});
-    tables.push_back({"calibration_correlation", correlation_table(out.correlations)});
-    tables.push_back({"calibration_points", calibration_points_table(out.calibration_points)});
-  }
-  if (type == StudyType::duty_cycle) {
-    tables.push_back({"trajectory", trajectory_table(out.trajectory, {}, false, true)});
-    tables.push_back({"cycle_events", cycle_events_table(out.cycle_events)});
-  } else if (!out.trajectory.empty()) {
-    tables.push_back({"trajectory", trajectory_table(out.trajectory, parameter, sliding)});
-  }
+  tables.push_back({"states", states_table(out.states, out.parameter_columns, out.sliding_column)});
+  study_kind(type).add_tables(out, tables);
+  // A trajectory no type's tables name (the runaway's first steps of a sweep's searches).
+  const bool named = std::any_of(tables.begin(), tables.end(), [](const NamedTable& t) { return t.name == "trajectory"; });
+  if (!named && !out.trajectory.empty())
+    tables.push_back({"trajectory", trajectory_table(out.trajectory, out.parameter_columns, out.sliding_column)});
   return tables;
 }
 
@@ -74,13 +56,17 @@ std::vector<std::string> summary_lines(const StudyOutcome& outcome) {
   return lines;
 }
 
-bool has_independent_searches(const Study& study) {
-  if (study.type == StudyType::distress_map) return study.map_method == MapMethod::search;
-  return study.type == StudyType::load_sweep || study.type == StudyType::sliding_choice;
-}
+bool has_independent_searches(const Study& study) { return study_kind(study.type).independent_searches(study); }
 
 bool spreads_over_ranks(const Study& study) {
-  return has_independent_searches(study) || (study.type == StudyType::reliability && study.max_samples > 0);
+  return has_independent_searches(study) || study_kind(study.type).spreads_over_ranks(study);
+}
+
+void check_continuable(const Study& study, std::string_view asked_by) {
+  if (!study_kind(study.type).continues_from)
+    throw std::invalid_argument(fmt::format("{} goes on with a duty cycle from where an earlier one ended; this "
+                                            "scene's study is a {}",
+                                            asked_by, scene_name(study.type)));
 }
 
 }  // namespace twb

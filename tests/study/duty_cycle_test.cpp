@@ -531,6 +531,15 @@ TEST(DutyCycle, ACycleRunInTwoPartsEndsAsTheWholeCycle) {
                                        "operating.sliding=washer_gear", "study={type: duty_cycle, schedule: [" + b + "]}"});
   BearingModel other_film_model(other_film);
   EXPECT_THROW(run_study(other_film_model, {}, RunOptions{.cycle_start = &end}), std::invalid_argument);
+  // Only a duty cycle goes on from an end: a point study given one says so, not ignores it.
+  BearingModel point_model(load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
+                                      {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24"}));
+  try {
+    run_study(point_model, {}, RunOptions{.cycle_start = &end});
+    ADD_FAILURE() << "a point study went on from a cycle's end";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("this scene's study is a point"), std::string::npos) << e.what();
+  }
   std::remove(file.c_str());
 }
 

@@ -36,5 +36,7 @@ std::string describe_scene(const Scene& scene);
 // How the scene file spells a sliding film ("carrier_washer", "washer_gear"), for the
 // results that name it.
 std::string_view scene_name(SlidingFilm film);
+// How the scene file spells a study type ("point", "duty_cycle"), for the messages that name it.
+std::string_view scene_name(StudyType type);
 
 }  // namespace twb

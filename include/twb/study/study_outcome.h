@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "twb/results/calibration_table.h"
@@ -97,5 +98,9 @@ bool has_independent_searches(const Study& study);
 // or a reliability study's Monte Carlo samples (whose batches share what they found, so
 // that the slices of a job array, which cannot share, do not take them).
 bool spreads_over_ranks(const Study& study);
+// A study asked to go on from where an earlier run ended (a duty cycle's end state:
+// RunOptions::cycle_start, twb run --continue-from, twb.run's continue_from, named by
+// `asked_by`): std::invalid_argument unless its type can.
+void check_continuable(const Study& study, std::string_view asked_by);
 
 }  // namespace twb

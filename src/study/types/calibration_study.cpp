@@ -1,0 +1,22 @@
+// calibration: the inputs fitted to a rig's measurements, with their covariance
+// (calibration.h).
+#include "study/calibration.h"
+#include "study/study_kind.h"
+
+namespace twb {
+namespace {
+
+void add_calibration_tables(const StudyOutcome& out, std::vector<NamedTable>& tables) {
+  tables.push_back({"calibration", calibration_table(out.calibration)});
+  tables.push_back({"calibration_correlation", correlation_table(out.correlations)});
+  tables.push_back({"calibration_points", calibration_points_table(out.calibration_points)});
+}
+
+}  // namespace
+
+extern const StudyKind kCalibrationStudy{
+    .run = [](BearingModel& model, StudyOutcome& out,
+              const StudyRun& run) { run_calibration(model, out, run.progress, run.threads); },
+    .add_tables = add_calibration_tables};
+
+}  // namespace twb

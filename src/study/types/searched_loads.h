@@ -1,0 +1,21 @@
+// The load range and grid a study's distress searches cover (load_sweep, distress_map,
+// sliding_choice), and how a search's failure joins the study's message.
+#pragma once
+
+#include <vector>
+
+#include "study/distress_search.h"
+#include "twb/study/study_outcome.h"
+
+namespace twb {
+
+// The requested grid: load_steps loads from load_start to load_end, ends included.
+std::vector<double> load_grid(const Study& study);
+// The study's load range and bracket width: a distress map's search.
+DistressSearchSettings range_settings(const Study& study);
+// A sweep's search: the range, the requested grid, and on past distress.
+DistressSearchSettings grid_settings(const Study& study);
+// A search that failed or has something to say adds it to the study's message.
+void keep_failure(StudyOutcome& out, const DistressSearch& found);
+
+}  // namespace twb
