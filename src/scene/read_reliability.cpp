@@ -104,7 +104,6 @@ UncertainInput read_distribution(const Node& entry, const SceneInput& input, con
 
 void read_uncertain_inputs(const MapReader& scene, Scene& out) {
   Study& s = out.study;
-  if (s.type != StudyType::reliability) return;
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   const std::vector<InputEntry> entries = input_entries(
       study.get("inputs", ""), out, "no uncertain inputs",

@@ -2,6 +2,7 @@
 // (the operating limits depend on the lubricant's viscosity law, the asperity defaults
 // on the surfaces).
 #include "scene_sections.h"
+#include "studies/study_section.h"
 
 #include <algorithm>
 #include <optional>
@@ -137,9 +138,7 @@ Scene read_scene(const Node& root) {
   out.inputs = inputs_read(*root.provenance());
   check_study_parameters(scene, out);
   check_input_axis(scene, out);
-  read_uncertain_inputs(scene, out);
-  read_calibration(scene, out);
-  read_schedule(scene, out);
+  if (const auto read_after_inputs = study_section(out.study.type).read_after_inputs) read_after_inputs(scene, out);
   return out;
 }
 

@@ -289,7 +289,6 @@ std::vector<SchedulePoint> schedule_in_file(const std::string& path, const Scene
 
 void read_schedule(const MapReader& scene, Scene& out) {
   Study& s = out.study;
-  if (s.type != StudyType::duty_cycle) return;
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   const Node schedule = study.get("schedule", "a list of points, e.g. [{t: 0 s, load: 100 N, speed: 3000 rpm}, "
                                               "{t: 60 s, load: 300 N}], or the path of a CSV file");

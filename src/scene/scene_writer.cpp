@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include "scene_names.h"
+#include "scene_text.h"
+#include "studies/study_section.h"
 #include "scene/input_distribution.h"
 #include "twb/scene/scene_loader.h"
 
@@ -12,47 +14,7 @@ namespace {
 
 using namespace scene_io;
 
-// Shortest text that parses back to the same double, then the SI unit.
-std::string quantity(double value, std::string_view unit) {
-  return unit == "1" ? fmt::format("{}", value) : fmt::format("{} {}", value, unit);
-}
-
-// A YAML double-quoted string. Control characters are escaped: a raw line break would be
-// folded into a space when the text is read back, and most others may not appear in YAML.
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    const auto code = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (code < 0x20 || code == 0x7f) {
-      out += fmt::format("\\x{:02x}", code);
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
-class Writer {
- public:
-  void line(int indent, std::string_view text) {
-    out_ += std::string(static_cast<std::size_t>(2 * indent), ' ');
-    out_ += text;
-    out_ += '\n';
-  }
-  void entry(int indent, std::string_view key, const std::string& value, std::string_view comment = {}) {
-    line(indent, comment.empty() ? fmt::format("{}: {}", key, value)
-                                 : fmt::format("{}: {}  # {}", key, value, comment));
-  }
-  std::string text() && { return std::move(out_); }
-
- private:
-  std::string out_;
-};
-
-void write_effects(Writer& w, const Effects& e) {
+void write_effects(SceneText& w, const Effects& e) {
   w.line(0, "effects:");
   if (e.hydrodynamics && e.cavitation == CavitationModel::jfo)
     w.line(1, fmt::format("- hydrodynamics: {{cavitation: jfo, cavity_pressure: {}}}", quantity(e.cavity_pressure, "Pa")));
@@ -72,7 +34,7 @@ void write_effects(Writer& w, const Effects& e) {
 // The width as the scene gave it, which the grid rounds again to the same whole cells (a
 // groove parameter places the grooves anew from it), with what the grid holds beside it;
 // the land's inlet as the share of its whole cells (docs/physics.md section 14).
-void write_grooves(Writer& w, const Grooves& g, const Scene& s) {
+void write_grooves(SceneText& w, const Grooves& g, const Scene& s) {
   w.line(2, "grooves:");
   w.entry(3, "count", fmt::format("{}", g.count));
   w.entry(3, "face", g.film == 1 ? "film_1" : "film_2");
@@ -94,7 +56,7 @@ void write_grooves(Writer& w, const Grooves& g, const Scene& s) {
   w.entry(5, "fraction", quantity(g.land.fraction, "1"), "of the land, whole cells");
 }
 
-void write_geometry(Writer& w, const Scene& s) {
+void write_geometry(SceneText& w, const Scene& s) {
   w.line(0, "geometry:");
   w.line(1, "carrier:  # its face covers the washer annulus");
   w.entry(2, "thickness", quantity(s.carrier.thickness, "m"));
@@ -111,7 +73,7 @@ void write_geometry(Writer& w, const Scene& s) {
   if (s.gear.axial_play) w.entry(2, "axial_play", quantity(*s.gear.axial_play, "m"));
 }
 
-void write_materials(Writer& w, const Scene& s) {
+void write_materials(SceneText& w, const Scene& s) {
   w.line(0, "materials:");
   for (const auto& [name, component] :
        {std::pair{"carrier", &s.carrier}, std::pair{"washer", &s.washer}, std::pair{"gear", &s.gear}}) {
@@ -132,7 +94,7 @@ void write_materials(Writer& w, const Scene& s) {
   }
 }
 
-void write_surfaces(Writer& w, const Scene& s) {
+void write_surfaces(SceneText& w, const Scene& s) {
   w.line(0, "surfaces:");
   for (const auto& [name, component] :
        {std::pair{"carrier", &s.carrier}, std::pair{"washer", &s.washer}, std::pair{"gear", &s.gear}}) {
@@ -149,7 +111,7 @@ void write_surfaces(Writer& w, const Scene& s) {
           fmt::format("eta_R_sigma = {}", a.eta_r_sigma));
 }
 
-void write_operation(Writer& w, const Scene& s) {
+void write_operation(SceneText& w, const Scene& s) {
   const Lubricant& l = s.lubricant;
   w.line(0, "lubricant:");
   w.entry(1, "conductivity", quantity(l.conductivity, "W/(m K)"));
@@ -191,7 +153,7 @@ void write_operation(Writer& w, const Scene& s) {
     w.entry(1, "coefficient", quantity(s.friction.coefficient, "1"));
 }
 
-void write_numerics(Writer& w, const Scene& s) {
+void write_numerics(SceneText& w, const Scene& s) {
   w.line(0, "mesh:");
   w.entry(1, "radial_nodes", fmt::format("{}", s.mesh.radial_nodes));
   w.entry(1, "circumferential_nodes", fmt::format("{}", s.mesh.circumferential_nodes),
@@ -210,125 +172,7 @@ void write_numerics(Writer& w, const Scene& s) {
 
   w.line(0, "study:");
   w.entry(1, "type", std::string(kStudyTypes.name(s.study.type)));
-  const Study& st = s.study;
-  if (st.type != StudyType::point && st.type != StudyType::calibration && st.type != StudyType::duty_cycle &&
-      !(st.type == StudyType::sensitivity && st.load_end == 0.0)) {
-    w.entry(1, "load_start", quantity(st.load_start, "N"));
-    w.entry(1, "load_end", quantity(st.load_end, "N"));
-  }
-  const bool grid = st.type == StudyType::load_sweep || st.type == StudyType::sliding_choice;
-  if (grid) w.entry(1, "load_steps", fmt::format("{}", st.load_steps));
-  if (grid || st.type == StudyType::distress_map) {
-    std::string speeds;
-    for (double speed : st.speeds) speeds += (speeds.empty() ? "" : ", ") + quantity(speed, "rad/s");
-    w.entry(1, "speeds", fmt::format("[{}]", speeds));
-  }
-  // A map's axes (one as a map, a grid as a list of them), or a distress curve's family.
-  auto axis_text = [](const MapAxis& a) {
-    const char* unit = a.parameter == MapParameter::gear_tilt || a.parameter == MapParameter::groove_width ? "rad"
-                       : a.parameter == MapParameter::roughness || a.parameter == MapParameter::groove_depth ? "m"
-                                                                                                             : "1";
-    std::string values;
-    for (double v : a.values)
-      values += (values.empty() ? "" : ", ") +
-                (a.parameter == MapParameter::groove_count ? fmt::format("{}", int(v))
-                 : a.parameter == MapParameter::scene_input ? quantity(v, a.unit)
-                                                            : quantity(v, unit));
-    return std::pair{a.parameter == MapParameter::scene_input ? a.path : std::string(kMapParameters.name(a.parameter)),
-                     fmt::format("[{}]", values)};
-  };
-  auto map_axes = [&](const char* key) {
-    w.line(1, std::string(key) + ":");
-    if (st.axes.size() == 1) {
-      const auto [name, values] = axis_text(st.axes.front());
-      w.entry(2, "name", name);
-      w.entry(2, "values", values);
-      return;
-    }
-    for (const MapAxis& a : st.axes) {
-      const auto [name, values] = axis_text(a);
-      w.line(2, fmt::format("- name: {}", name));
-      w.entry(3, "values", values);
-    }
-  };
-  if (!st.axes.empty() && st.type != StudyType::distress_curve) map_axes("parameter");
-  if (grid || st.type == StudyType::distress_map)
-    w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
-  if (st.type == StudyType::distress_map && st.map_method == MapMethod::follow) w.entry(1, "method", "follow");
-  if (st.type == StudyType::load_sweep || st.type == StudyType::distress_map || st.type == StudyType::distress_curve)
-    w.entry(1, "error_estimate", std::string(kErrorEstimates.name(st.error_estimate)));
-  // A point's bar is on unless it is turned off: the one choice it has is written, so
-  // that the scene read back (run.json's) asks for what the run did.
-  if (st.type == StudyType::point && st.error_estimate == ErrorEstimate::none) w.entry(1, "error_estimate", "none");
-  if ((st.type == StudyType::load_sweep || st.type == StudyType::distress_map || st.type == StudyType::point ||
-       st.type == StudyType::distress_curve) &&
-      st.error_estimate != ErrorEstimate::none)
-    w.entry(1, "tolerance", st.tolerance > 0.0 ? quantity(st.tolerance, "1") : std::string("none"));
-  if (st.type == StudyType::distress_map)
-    w.entry(1, "search_past_failure",
-            st.search_past_failure > 0.0 ? quantity(st.search_past_failure, "1") : std::string("none"));
-  if (st.type == StudyType::transient) w.entry(1, "duration", quantity(st.duration, "s"));
-  if (st.type == StudyType::sensitivity) {
-    w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
-    std::string paths;
-    for (const std::string& p : st.parameters) paths += (paths.empty() ? "" : ", ") + p;
-    if (!paths.empty()) w.entry(1, "parameters", fmt::format("[{}]", paths));
-  }
-  if (st.type == StudyType::reliability) {
-    w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
-    w.line(1, "inputs:");
-    for (const UncertainInput& in : st.uncertain_inputs) {
-      std::string d = fmt::format("{{distribution: {}", kInputDistributions.name(in.distribution));
-      if (has_mean_and_sd(in.distribution))
-        d += fmt::format(", mean: {}, sd: {}", quantity(in.mean, in.unit), quantity(in.sd, in.unit));
-      if (has_bounds(in.distribution))
-        d += fmt::format(", lower: {}, upper: {}", quantity(in.lower, in.unit), quantity(in.upper, in.unit));
-      w.entry(2, in.path, d + "}");
-    }
-    std::string probabilities;
-    for (double p : st.probabilities) probabilities += (probabilities.empty() ? "" : ", ") + quantity(p, "1");
-    if (!probabilities.empty()) w.entry(1, "probabilities", fmt::format("[{}]", probabilities));
-    w.line(1, "monte_carlo:");
-    w.entry(2, "cov", quantity(st.sampling_cov, "1"));
-    w.entry(2, "max_samples", fmt::format("{}", st.max_samples));
-    w.entry(2, "seed", fmt::format("{}", st.seed));
-  }
-  if (st.type == StudyType::duty_cycle) {
-    // Every point with every field: the resolved scene needs no schedule file.
-    w.line(1, "schedule:");
-    for (const SchedulePoint& p : st.schedule)
-      w.line(2, fmt::format("- {{t: {}, load: {}, speed: {}, ambient: {}, tilt: {}}}", quantity(p.time, "s"),
-                            quantity(p.load, "N"), quantity(p.speed, "rad/s"), quantity(p.ambient, "K"),
-                            quantity(p.tilt, "rad")));
-    w.entry(1, "failure_load_at_worst", st.failure_load_at_worst ? "true" : "false");
-    w.entry(1, "relative_tolerance", quantity(st.march_tolerance, "1"));
-  }
-  if (st.type == StudyType::calibration) {
-    w.entry(1, "data", quoted(std::filesystem::absolute(st.data).string()));
-    w.line(1, "fit:");
-    for (const FittedInput& f : st.fitted)
-      w.entry(2, f.path, fmt::format("{{start: {}, lower: {}, upper: {}}}", quantity(f.start, f.unit),
-                                      quantity(f.lower, f.unit), quantity(f.upper, f.unit)));
-    const char* units[] = {"N m", "1", "K", "K"};
-    std::string sd;
-    for (std::size_t q = 0; q < kMeasuredQuantities; ++q)
-      if (st.measurement_sd[q] > 0.0)
-        sd += fmt::format("{}{}: {}", sd.empty() ? "" : ", ", kMeasuredNames[q], quantity(st.measurement_sd[q], units[q]));
-    if (!sd.empty()) w.entry(1, "sd", fmt::format("{{{}}}", sd));
-    w.entry(1, "max_iterations", fmt::format("{}", st.fit_iterations));
-  }
-  if (st.type == StudyType::distress_curve) {
-    const char* unit = st.curve_parameter == CurveParameter::speed                  ? "rad/s"
-                       : st.curve_parameter == CurveParameter::gear_tilt            ? "rad"
-                       : st.curve_parameter == CurveParameter::roughness            ? "m"
-                       : st.curve_parameter == CurveParameter::ambient_temperature ? "K"
-                                                                                    : "1";
-    w.entry(1, "parameter", std::string(kCurveParameters.name(st.curve_parameter)));
-    w.entry(1, "from", quantity(st.from, unit));
-    w.entry(1, "to", quantity(st.to, unit));
-    w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
-    if (!st.axes.empty()) map_axes("family");
-  }
+  study_section(s.study.type).write(w, s.study);
 
   w.line(0, "output:");
   w.entry(1, "directory", quoted(s.output.directory));
@@ -341,7 +185,7 @@ std::string_view scene_name(SlidingFilm film) { return kSlidingFilms.name(film);
 std::string_view scene_name(StudyType type) { return kStudyTypes.name(type); }
 
 std::string describe_scene(const Scene& scene) {
-  Writer w;
+  SceneText w;
   w.line(0, "# The resolved scene: every default filled in, every value in SI.");
   if (!scene.source.empty()) w.line(0, fmt::format("# Read from {}", scene.source));
   write_effects(w, scene.effects);

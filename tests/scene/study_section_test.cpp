@@ -19,6 +19,8 @@
 
 #include <gtest/gtest.h>
 
+#include "scene/scene_names.h"
+#include "scene/studies/study_section.h"
 #include "scene_test_support.h"
 #include "twb/scene/scene_loader.h"
 
@@ -84,6 +86,21 @@ TEST(StudySection, ShippedScenesAreWrittenBackAsBefore) {
   EXPECT_EQ(types.size(), 10u);  // point, load_sweep, ..., duty_cycle: each type's writer is checked
 }
 
+
+// The study map admits kStudyKeys before its type is known: every key a type reads must
+// be among them (else the map refuses it as unknown before the type's own check), and
+// every one of them some type's.
+TEST(StudySection, StudyKeysAreTheTypesKeys) {
+  std::set<std::string_view> of_types;
+  for (const StudyType type : scene_io::kStudyTypes.values)
+    for (const std::string_view key : scene_io::study_section(type).keys) {
+      EXPECT_NE(std::find(std::begin(scene_io::kStudyKeys), std::end(scene_io::kStudyKeys), key),
+                std::end(scene_io::kStudyKeys))
+          << key << " of type " << scene_io::kStudyTypes.name(type);
+      of_types.insert(key);
+    }
+  for (const std::string_view key : scene_io::kStudyKeys) EXPECT_TRUE(of_types.count(key)) << key;
+}
 
 // The writer's choices no shipped scene makes, each with the section it must write.
 struct SectionCase {
