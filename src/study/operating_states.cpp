@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "model/limit_thresholds.h"
+#include "model/failure_margins.h"
 #include "solver/kinsol_newton.h"
 #include "solver/linear_stability.h"
 #include "study/move_in_steps.h"
@@ -86,7 +86,7 @@ std::shared_ptr<const OperatingStates::State> OperatingStates::state_of(const Be
   const BearingState b = model.describe(s->u);
   s->rise = b.max_film_temperature - model.scene().operating.ambient;
   const OperatingLimits limits = OperatingLimits::of(model.scene());
-  s->past_limit = first_criterion_past(LimitValues::of(b, model.scene().effects.thermal), limits).has_value();
+  s->past_limit = FailureMargins(LimitValues::of(b, model.scene().effects.thermal), limits).first_past().has_value();
   return s;
 }
 
