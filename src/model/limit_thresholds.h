@@ -51,8 +51,6 @@ std::vector<LimitExcess> exceeded_limits(const LimitValues& values, const Operat
 // or h_min/σ): positive within it, zero on it, negative past it; none where the scene does
 // not apply the criterion (no thermal effect, no material limit, no least film).
 std::optional<double> failure_margin(LimitKind kind, const LimitValues& values, const OperatingLimits& limits);
-// The first failure criterion (kFailureCriteria order) a state is past, if any.
-std::optional<LimitKind> first_criterion_past(const LimitValues& values, const OperatingLimits& limits);
 // Whether the scene applies a criterion at all: its margin exists for some state.
 bool criterion_applies(LimitKind kind, const OperatingLimits& limits, bool thermal);
 

@@ -99,14 +99,6 @@ std::optional<double> failure_margin(LimitKind kind, const LimitValues& v, const
   }
 }
 
-std::optional<LimitKind> first_criterion_past(const LimitValues& values, const OperatingLimits& limits) {
-  for (const LimitKind kind : kFailureCriteria) {
-    const std::optional<double> m = failure_margin(kind, values, limits);
-    if (m && *m < 0.0) return kind;
-  }
-  return std::nullopt;
-}
-
 bool criterion_applies(LimitKind kind, const OperatingLimits& limits, bool thermal) {
   LimitValues any;
   any.thermal = thermal;

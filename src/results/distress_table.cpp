@@ -69,9 +69,8 @@ ResultTable distress_table(const std::vector<DistressRow>& rows, const std::vect
 }
 
 std::optional<double> criterion_load(const DistressRow& row, LimitKind kind) {
-  for (std::size_t k = 0; k < std::size(kFailureCriteria); ++k)
-    if (kFailureCriteria[k] == kind) return row.criterion_loads[k];
-  return std::nullopt;
+  const std::optional<std::size_t> c = criterion_index(kind);
+  return c ? row.criterion_loads[*c] : std::nullopt;
 }
 
 std::string distress_csv(const std::vector<DistressRow>& rows, const std::vector<std::string>& parameter_columns,

@@ -17,7 +17,7 @@
 #include <fmt/format.h>
 
 #include "fold_approach.h"
-#include "model/limit_thresholds.h"
+#include "model/failure_margins.h"
 #include "study/distress_phases.h"
 #include "study_support.h"
 #include "solver/linear_stability.h"
@@ -210,7 +210,7 @@ DistressSearchPhases::CoolBranchEnd DistressSearchPhases::continue_cool_branch()
 void DistressSearchPhases::bound_past_failure(std::size_t t) {
   if (!(settings_.search_past_failure > 0.0) || first_failure_) return;
   const LimitValues values = LimitValues::of(out_.states.back().state, model_.scene().effects.thermal);
-  const std::optional<LimitKind> past = first_criterion_past(values, OperatingLimits::of(model_.scene()));
+  const std::optional<LimitKind> past = FailureMargins(values, OperatingLimits::of(model_.scene())).first_past();
   if (!past) return;
   first_failure_ = low_;
   const double bound = settings_.search_past_failure * low_;

@@ -5,23 +5,21 @@
 
 namespace twb {
 
-namespace {
-
-// How far a criterion lets the state move from rest: a temperature's margin with every
-// temperature at the ambient (its limit above it), the least film ratio itself (docs/
-// physics.md section 19); the margin divided by it is 1 at rest and 0 on the limit,
-// whatever the criterion's unit.
-std::optional<double> allowance(LimitKind kind, const OperatingLimits& limits, double ambient) {
-  if (kind == LimitKind::film_ratio) return limits.min_film_ratio;
+// A temperature's margin with every temperature at the ambient (its limit above it), the
+// least film ratio itself (docs/physics.md section 19): the margin divided by it is 1 at
+// rest and 0 on the limit, whatever the criterion's unit.
+PerCriterion<std::optional<double>> CycleWatch::allowances(const OperatingLimits& limits, double ambient) {
   LimitValues rest;
   rest.thermal = true;
   rest.washer_mean_temperature = rest.oil_peak_temperature = ambient;
   rest.contact_temperature = ambient;  // nothing slides: no flash
   rest.body_temperature.fill(ambient);  // (and no contact force at no speed: no PV)
-  return failure_margin(kind, rest, limits);
+  const FailureMargins at_rest(rest, limits);
+  PerCriterion<std::optional<double>> room;
+  for (std::size_t c = 0; c < room.size(); ++c)
+    room[c] = kFailureCriteria[c] == LimitKind::film_ratio ? limits.min_film_ratio : at_rest[c];
+  return room;
 }
-
-}  // namespace
 
 void CycleWatch::sample(double t, const SchedulePoint& inputs, BearingState state) {
   TrajectorySample& s = out_.trajectory.emplace_back();
@@ -29,25 +27,18 @@ void CycleWatch::sample(double t, const SchedulePoint& inputs, BearingState stat
   s.ambient = inputs.ambient;
   s.tilt = inputs.tilt;
   s.state = std::move(state);
-  const LimitValues values = LimitValues::of(s.state, thermal_);
-  Margins margins;
-  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
-    const LimitKind kind = kFailureCriteria[c];
-    margins[c] = failure_margin(kind, values, limits_);
-    const std::optional<double> room = allowance(kind, limits_, lowest_ambient_);
-    if (!margins[c] || !room || !(*room > 0.0)) continue;
-    const double fraction = *margins[c] / *room;
-    if (!s.least_margin || fraction < *s.least_margin) s.least_margin = fraction, s.least_criterion = kind;
-  }
+  const FailureMargins margins(LimitValues::of(s.state, thermal_), limits_);
+  if (const std::optional<FailureMargins::Least> least = margins.least_share(allowances_))
+    s.least_margin = least->share, s.least_criterion = least->kind;
   if (last_margins_) {
     const TrajectorySample& before = out_.trajectory[out_.trajectory.size() - 2];
     for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
-      const std::optional<double> a = (*last_margins_)[c], b = margins[c];
-      if (!a || !b || (*a >= 0.0) == (*b >= 0.0)) continue;
+      if (!margins.crossed_since(*last_margins_, c)) continue;
+      const double a = *(*last_margins_)[c], b = *margins[c];
       std::optional<SchedulePoint> at = locate_(before.time, t, kFailureCriteria[c]);
       if (!at) {
         // Where the margin's line between the two samples is zero: within IDA's step.
-        const double share = *a / (*a - *b);
+        const double share = a / (a - b);
         const auto between = [&](double a0, double a1) { return a0 + share * (a1 - a0); };
         at = inputs;
         at->time = between(before.time, t);
@@ -56,7 +47,7 @@ void CycleWatch::sample(double t, const SchedulePoint& inputs, BearingState stat
         at->ambient = between(*before.ambient, *s.ambient);
         at->tilt = between(*before.tilt, *s.tilt);
       }
-      CycleEvent& e = event(*b < 0.0 ? "crossing" : "recovery", at->time, *at);
+      CycleEvent& e = event(b < 0.0 ? "crossing" : "recovery", at->time, *at);
       e.criterion = kFailureCriteria[c];
       e.margin = 0.0;
     }

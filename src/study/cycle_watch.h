@@ -4,16 +4,14 @@
 // worst moment.
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <functional>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <utility>
 
 #include "model/bearing_model.h"
-#include "model/limit_thresholds.h"
+#include "model/failure_margins.h"
 #include "twb/study/study_outcome.h"
 
 namespace twb {
@@ -29,7 +27,7 @@ class CycleWatch {
   // shrink an allowance to nothing just as the limit is crossed).
   CycleWatch(const BearingModel& model, StudyOutcome& out, double lowest_ambient, CrossingLocator locate)
       : limits_(OperatingLimits::of(model.scene())), thermal_(model.scene().effects.thermal), out_(out),
-        lowest_ambient_(lowest_ambient), locate_(std::move(locate)) {}
+        allowances_(allowances(limits_, lowest_ambient)), locate_(std::move(locate)) {}
 
   // The sample at t (the model's inputs already those of t), its crossings since the
   // sample before.
@@ -42,15 +40,16 @@ class CycleWatch {
   const OperatingLimits& limits() const { return limits_; }
 
  private:
-  // Each failure criterion's margin in its own unit (none where the scene applies none).
-  using Margins = std::array<std::optional<double>, std::size(kFailureCriteria)>;
+  // How far each criterion lets a state move from rest, from the lowest ambient (none
+  // where the scene applies none): what a sample's least margin is a share of.
+  static PerCriterion<std::optional<double>> allowances(const OperatingLimits& limits, double ambient);
 
   OperatingLimits limits_;
   bool thermal_;
   StudyOutcome& out_;
-  std::optional<Margins> last_margins_;
+  PerCriterion<std::optional<double>> allowances_;
+  std::optional<FailureMargins> last_margins_;
   std::optional<std::size_t> worst_;
-  double lowest_ambient_;
   CrossingLocator locate_;
 };
 

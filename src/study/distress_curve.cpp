@@ -20,7 +20,7 @@
 #include "study/limit_curve.h"
 #include "study/limit_curve_jobs.h"
 #include "study/parallel.h"
-#include "model/limit_thresholds.h"
+#include "model/failure_margins.h"
 #include "twb/error_family.h"
 
 namespace twb {
@@ -98,13 +98,12 @@ CurveEnds search_ends(BearingModel& model, BearingModel& other, const std::strin
   settings.load_end = st.load_end;
   settings.bracket_width = st.bracket_width;
   settings.march_past_distress = false;
-  const OperatingLimits limits = OperatingLimits::of(model.scene());
+  const PerCriterion<bool> in_force =
+      criteria_in_force(OperatingLimits::of(model.scene()), model.scene().effects.thermal);
   auto needs_other_end = [&](const DistressSearch& found) {
     if (!(found.fold && found.row.distress_load)) return true;
     for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
-      if (criterion_applies(kFailureCriteria[c], limits, model.scene().effects.thermal) &&
-          (c >= found.crossing_states.size() || found.crossing_states[c].second.empty()))
-        return true;
+      if (in_force[c] && (c >= found.crossing_states.size() || found.crossing_states[c].second.empty())) return true;
     return false;
   };
   CurveEnds ends;

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "model/limit_thresholds.h"
+#include "model/failure_margins.h"
 #include "study/crossing_response.h"
 #include "study/failure_load.h"
 #include "study/fold_response.h"
@@ -403,21 +403,21 @@ std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, dou
   // (its state at the crossing, or on the cool branch below it where the crossing lies
   // next to the fold: failure_load.cpp).
   if (by_state && sample && fails && found.row.criterion && !found.row.criterion->distress)
-    for (std::size_t c = 0; c < found.crossing_states.size(); ++c)
-      if (const auto& [at_load, u] = found.crossing_states[c];
-          kFailureCriteria[c] == found.row.criterion->limit && !u.empty() && at_load <= load)
+    if (const std::optional<std::size_t> c = criterion_index(found.row.criterion->limit);
+        c && *c < found.crossing_states.size())
+      if (const auto& [at_load, u] = found.crossing_states[*c]; !u.empty() && at_load <= load)
         hold_later(*sample, *s->model, x, at_load, u);
   return fails;
 }
 
 bool FailureLoadAtInputs::crosses_unfollowed(const Settled& s) const {
-  const OperatingLimits limits = OperatingLimits::of(s.model->scene());
-  for (LimitKind kind : kFailureCriteria) {
-    bool followed = false;
-    for (const SettledCrossing& c : s.crossings) followed |= c.kind == kind;
-    const std::optional<double> m = followed ? std::nullopt : state_margin(*s.model, s.failing_state(), kind, limits);
-    if (m && *m < 0.0) return true;
-  }
+  const FailureMargins margins(
+      LimitValues::of(s.model->describe(s.failing_state()), s.model->scene().effects.thermal),
+      OperatingLimits::of(s.model->scene()));
+  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
+    if (margins.past(c) && std::none_of(s.crossings.begin(), s.crossings.end(),
+                                        [&](const SettledCrossing& x) { return x.kind == kFailureCriteria[c]; }))
+      return true;
   return false;
 }
 

@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 
-#include "model/limit_thresholds.h"
+#include "model/failure_margins.h"
 #include "solver/kinsol_newton.h"
 #include "solver/natural_continuation.h"
 #include "study/input_neighbours.h"
@@ -233,20 +233,21 @@ void locate_failure(BearingModel& model, const BranchStates& branch, const Failu
   const bool thermal = model.scene().effects.thermal;
   // Each branch state described once (an assembly each), for every criterion; only the
   // criteria the scene applies.
-  std::vector<LimitValues> values;
-  auto values_at = [&](std::size_t k) -> const LimitValues& {
-    while (values.size() <= k) {
-      model.set_load(branch[values.size()].first);
-      values.push_back(LimitValues::of(model.describe(branch[values.size()].second), thermal));
+  std::vector<FailureMargins> margins;
+  auto margins_at = [&](std::size_t k) -> const FailureMargins& {
+    while (margins.size() <= k) {
+      model.set_load(branch[margins.size()].first);
+      margins.emplace_back(LimitValues::of(model.describe(branch[margins.size()].second), thermal), limits);
     }
-    return values[k];
+    return margins[k];
   };
+  const PerCriterion<bool> in_force = criteria_in_force(limits, thermal);
   for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
     const LimitKind kind = kFailureCriteria[c];
-    if (!criterion_applies(kind, limits, thermal)) continue;
+    if (!in_force[c]) continue;
     std::optional<double> previous;
     for (std::size_t k = 0; k < branch.size(); ++k) {
-      const std::optional<double> m = failure_margin(kind, values_at(k), limits);
+      const std::optional<double> m = margins_at(k)[c];
       if (!m) break;  // the scene does not apply this criterion
       if (*m <= 0.0) {
         // Past it already at the start: the crossing lies at or below the searched range.

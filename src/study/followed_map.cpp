@@ -47,8 +47,7 @@ DistressRow followed_row(const FailureLoadAtInputs::Followed& p, double speed, c
     row.verdict = DistressVerdict::undecided;
   }
   for (const auto& [kind, load] : p.crossings)
-    for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
-      if (kFailureCriteria[c] == kind) row.criterion_loads[c] = load;
+    if (const std::optional<std::size_t> c = criterion_index(kind)) row.criterion_loads[*c] = load;
   if (std::isfinite(p.failure.load)) {
     row.failure_load = p.failure.load;
     row.criterion = FailureCriterion::thermo_viscous_distress();

@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "model/limit_thresholds.h"
+#include "model/failure_margins.h"
 #include "solver/kinsol_newton.h"
 #include "solver/linear_stability.h"
 #include "study/move_in_steps.h"
@@ -86,7 +86,7 @@ std::shared_ptr<const OperatingStates::State> OperatingStates::state_of(const Be
   const BearingState b = model.describe(s->u);
   s->rise = b.max_film_temperature - model.scene().operating.ambient;
   const OperatingLimits limits = OperatingLimits::of(model.scene());
-  s->past_limit = first_criterion_past(LimitValues::of(b, model.scene().effects.thermal), limits).has_value();
+  s->past_limit = FailureMargins(LimitValues::of(b, model.scene().effects.thermal), limits).first_past().has_value();
   return s;
 }
 
@@ -176,16 +176,15 @@ std::shared_ptr<const OperatingStates::State> OperatingStates::past_limit_up_to_
   // Up the branch in load steps of at most kLoadStep, each halved where Newton fails
   // (down to an eighth of it).
   std::shared_ptr<const State> last;
-  double step = kLoadStep;
+  StepLength step(kLoadStep, kLoadStep / 8, 1.0);
   while (!(last ? last->past_limit : from.past_limit)) {
     const double at = (last ? *last : from).load;
     if (at >= load_) return last;  // the operating load reached, every margin positive
-    const double next_load = std::min(load_, at * (1.0 + step));
+    const double next_load = std::min(load_, at * (1.0 + step.value()));
     model.set_load(next_load);
     std::shared_ptr<const State> next = settle_near(model, from.x, last ? *last : from);
     if (!next) {
-      if (0.5 * step < kLoadStep / 8) return nullptr;
-      step *= 0.5;
+      if (!step.halve()) return nullptr;
       continue;
     }
     last = std::move(next);

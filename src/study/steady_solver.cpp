@@ -10,6 +10,7 @@
 #include "solver/natural_continuation.h"
 #include "solver/paper_scheme.h"
 #include "solver/sparse_lu.h"
+#include "study/move_in_steps.h"
 #include "study/study_support.h"
 #include "twb/error_family.h"
 
@@ -254,17 +255,19 @@ double SteadySolver::walk(const std::function<void(double)>& set, double from, d
                           std::vector<double>& state,
                           const std::function<bool(std::vector<double>&)>& solve_step) {
   double reached = from;
+  StepLength length(step, 1e-4 * target, 1.5);
   while (reached < target) {
-    const double next = std::min(target, reached + step);
+    // A last step the target cut short is halved, where it fails, from its length before
+    // the cut (unlike move_in_steps): the ramps' results depend on it.
+    const double next = std::min(target, reached + length.value());
     set(next);
     std::vector<double> trial = state;
     if (solve_step(trial)) {
       state = trial;
       reached = next;
-      step *= 1.5;
-    } else {
-      step *= 0.5;
-      if (step < 1e-4 * target) break;
+      length.lengthen();
+    } else if (!length.halve()) {
+      break;
     }
   }
   set(target);

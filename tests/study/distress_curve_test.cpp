@@ -247,9 +247,7 @@ TEST(DistressCurve, ACurveToAToleranceGoesAlongTheMeshSequenceAtEveryPoint) {
         << fold_name(r) << " at " << r.parameter;
     if (r.fold == FoldKind::limit && r.limit == LimitKind::scuffing && limits++ == 0) {
       EXPECT_EQ(r.parameter, 2000.0);
-      const auto c = std::size_t(std::find(std::begin(kFailureCriteria), std::end(kFailureCriteria), LimitKind::scuffing) -
-                                 std::begin(kFailureCriteria));
-      EXPECT_EQ(r.extrapolated_load, end.criterion_extrapolated[c]);
+      EXPECT_EQ(r.extrapolated_load, end.criterion_extrapolated[*criterion_index(LimitKind::scuffing)]);
       EXPECT_EQ(r.convergence.meshes, "5x24 9x48 17x96");
     }
   }

@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-#include "model/limit_thresholds.h"
+#include "model/failure_margins.h"
 #include "solver/natural_continuation.h"
 #include "study/steady_solver.h"
 #include "study/distress_search.h"
@@ -179,7 +179,7 @@ TEST(FailureLoad, ASearchBoundedPastTheFirstFailureStopsThere) {
   // same states up to there (the same continuation targets), so its bound is twice this.
   double first = 0.0;
   for (const SolvedState& s : whole.states)
-    if (first_criterion_past(LimitValues::of(s.state, true), limits)) {
+    if (FailureMargins(LimitValues::of(s.state, true), limits).first_past()) {
       first = s.state.load;
       break;
     }

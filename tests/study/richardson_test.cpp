@@ -145,9 +145,7 @@ TEST(RichardsonEstimate, TheRefinedCrossingIsSolvedAsFarAsItsLoadNeeds) {
   BearingModel model(coarse);
   DistressSearchSettings settings = fold_range();
   const DistressSearch found = search_distress(model, settings, {});
-  const std::size_t flash =
-      std::size_t(std::find(std::begin(kFailureCriteria), std::end(kFailureCriteria), LimitKind::oil_peak_temperature) -
-                  std::begin(kFailureCriteria));
+  const std::size_t flash = *criterion_index(LimitKind::oil_peak_temperature);
   ASSERT_GT(found.crossing_states.size(), flash);
   const auto& [coarse_load, coarse_state] = found.crossing_states[flash];
   ASSERT_FALSE(coarse_state.empty()) << found.row.method << " / " << found.row.failure;

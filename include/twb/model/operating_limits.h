@@ -29,6 +29,10 @@
 // film_below_statistics say where the model stops holding.
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <iterator>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,6 +59,16 @@ inline constexpr LimitKind kFailureCriteria[] = {LimitKind::oil_temperature, Lim
                                                  LimitKind::carrier_temperature, LimitKind::washer_temperature,
                                                  LimitKind::gear_temperature, LimitKind::film_ratio, LimitKind::pv,
                                                  LimitKind::scuffing};
+// One value for each failure criterion, in kFailureCriteria's order: distress.csv's loads,
+// a state's margins.
+template <class T>
+using PerCriterion = std::array<T, std::size(kFailureCriteria)>;
+// A criterion's entry in a PerCriterion; none for a limit that is no failure criterion.
+constexpr std::optional<std::size_t> criterion_index(LimitKind kind) {
+  for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c)
+    if (kFailureCriteria[c] == kind) return c;
+  return std::nullopt;
+}
 
 struct LimitExcess {
   LimitKind kind;

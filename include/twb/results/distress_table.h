@@ -11,7 +11,6 @@
 // no distress below the highest load searched) is an empty cell, never NaN.
 #pragma once
 
-#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -89,17 +88,17 @@ struct DistressRow {
   std::optional<FailureCriterion> criterion;
   // Each failure criterion's first crossing on the branch (kFailureCriteria order), N;
   // empty where it is not crossed up to the branch's end or does not apply.
-  std::array<std::optional<double>, std::size(kFailureCriteria)> criterion_loads;
+  PerCriterion<std::optional<double>> criterion_loads;
   // "fails at 307.6 N by the oil's peak temperature (no thermo-viscous distress up to 4000 N)".
   std::string failure;
   // study.error_estimate: richardson: each crossing's error bar (the crossing again on the
   // mesh refined by two, as W_d's), and W_fail's mesh-converged value and error bar (W_d's
   // or its criterion's), N.
-  std::array<std::optional<double>, std::size(kFailureCriteria)> criterion_errors;
+  PerCriterion<std::optional<double>> criterion_errors;
   std::optional<double> failure_extrapolated, failure_error;
   // study.tolerance: each crossing's mesh-converged load (W_fail's is failure_extrapolated,
   // W_d's extrapolated_load), and how W_d's and W_fail's were reached.
-  std::array<std::optional<double>, std::size(kFailureCriteria)> criterion_extrapolated;
+  PerCriterion<std::optional<double>> criterion_extrapolated;
   LoadConvergence fold_convergence, failure_convergence;
   // The verdict `method` words (with its numbers): what studies and tests read.
   DistressVerdict verdict = DistressVerdict::undecided;
