@@ -1,12 +1,13 @@
 // The errors a twb run ends with, one family, each with its exit status and whose
 // fault it is (docs/reliability.md, "Errors"):
-//   2  input     what the user gave is wrong: a scene (InputError, twb/scene/input_error.h,
+//   2  input     what the user gave is wrong: a scene (InputError, twb/input_error.h,
 //                located), a command-line value or an argument of the API
 //                (std::invalid_argument)
 //   3  solver    a state the run needs could not be solved (SolverFailure,
 //                twb/solver_failure.h), in the physics' words where twb knows them
 //   4  internal  a precondition inside twb broke (InternalError, and anything else
 //                thrown): a bug, to be reported
+// The family is the base layer's (docs/architecture.md): every other layer throws it.
 #pragma once
 
 #include <exception>

@@ -29,7 +29,7 @@
 #include "twb/results/state_quantities.h"
 #include "twb/study/result_columns.h"
 #include "twb/error_family.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/sundials_context.h"
 #include "study/study_runner.h"

@@ -1,6 +1,6 @@
 #include "twb/error_family.h"
 
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/solver_failure.h"
 
 namespace twb {

@@ -1,6 +1,6 @@
-// The error family (twb/error_family.h): each kind of error ends a run with its own exit
-// status and words, and an internal error raised where twb hands control to SUNDIALS
-// comes back out as itself, not as a failed solve.
+// The error family (twb/error_family.h, the base layer): each kind of error ends a run
+// with its own exit status and words, and an internal error raised where twb hands
+// control to SUNDIALS comes back out as itself, not as a failed solve.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +14,7 @@
 #include "study/parallel.h"
 #include "../support/model_problems.h"
 #include "twb/error_family.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/solver_failure.h"
 
 namespace twb {
