@@ -10,7 +10,9 @@
 
 namespace twb {
 
-// A directory that cannot be used; the message says which and why.
+// A directory another run is writing into: the user's to settle (the command's exit
+// status 2). A directory that cannot be made or written into is an IoError
+// (twb/error_family.h), the system's.
 struct ResultsDirectoryError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
