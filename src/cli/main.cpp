@@ -362,8 +362,6 @@ int main(int argc, char** argv) {
     }
     if (*merge_cmd) return merge(slice_dirs, merge_out, merge_quiet, merge_verbose, merge_full_precision);
     return run(request, job);
-  } catch (const twb::ResultsDirectoryError& e) {
-    return fail(exit_invalid_input, std::string("twb: error: ") + e.what());
   } catch (...) {
     // The error family (twb/error_family.h): input 2, solver 3, internal 4, I/O 5.
     const twb::ErrorReport report = twb::report_error(std::current_exception());
