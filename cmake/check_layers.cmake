@@ -1,10 +1,14 @@
 # Refuses an #include of a header from a layer that the including layer may not use
 # (CMakeLists.txt, TWB_USES_<layer>; docs/architecture.md). Run by the build:
-#   cmake -DROOT=<source dir> -DRULES="physics:|scene:physics|…" -DSTAMP=<file> -P check_layers.cmake
-# A layer's headers are src/<layer>/ and include/twb/<layer>/; the error family's
-# headers at the top of include/twb are every layer's.
+#   cmake -DROOT=<source dir> -DRULES="base:|physics:base|…" -DBASE_HEADERS=error_family.h,…
+#         -DSTAMP=<file> -P check_layers.cmake
+# RULES lists the layers bottom up. A layer's headers are src/<layer>/ and
+# include/twb/<layer>/; the top of include/twb holds two layers' public headers: those
+# named in BASE_HEADERS (the error family) are the bottom layer's, the others (the API)
+# the top layer's.
 cmake_minimum_required(VERSION 3.22)
 string(REPLACE "|" ";" rules "${RULES}")
+string(REPLACE "," ";" base_headers "${BASE_HEADERS}")
 set(layers "")
 foreach(rule ${rules})
   string(REPLACE ":" ";" parts "${rule}")
@@ -18,24 +22,49 @@ foreach(rule ${rules})
   set(uses_${layer} ${uses})
   list(APPEND layers ${layer})
 endforeach()
+list(GET layers 0 bottom)
+list(GET layers -1 top)
 
+# The layer of an included "twb/<name>.h" at the top of include/twb.
+function(top_header_layer name out)
+  if(name IN_LIST base_headers)
+    set(${out} ${bottom} PARENT_SCOPE)
+  else()
+    set(${out} ${top} PARENT_SCOPE)
+  endif()
+endfunction()
+
+file(GLOB top_files RELATIVE ${ROOT}/include/twb ${ROOT}/include/twb/*.h)
 set(problems "")
 foreach(layer ${layers})
   file(GLOB_RECURSE files ${ROOT}/src/${layer}/*.h ${ROOT}/src/${layer}/*.cpp ${ROOT}/include/twb/${layer}/*.h)
+  foreach(name ${top_files})
+    top_header_layer(${name} owner)
+    if(owner STREQUAL layer)
+      list(APPEND files ${ROOT}/include/twb/${name})
+    endif()
+  endforeach()
   foreach(file ${files})
     file(STRINGS ${file} includes REGEX "^#include \"")
     foreach(line ${includes})
-      # "model/film.h" or "twb/model/bearing_state.h": the layer is the first directory.
-      if(NOT line MATCHES "^#include \"(twb/)?([a-z_]+)/")
+      if(line MATCHES "^#include \"twb/([a-z_]+\\.h)\"")
+        top_header_layer(${CMAKE_MATCH_1} target)
+      elseif(line MATCHES "^#include \"(twb/)?([a-z_]+)/")
+        # "model/film.h" or "twb/model/bearing_state.h": the layer is the first directory.
+        set(target ${CMAKE_MATCH_2})
+      else()
         continue()
       endif()
-      set(target ${CMAKE_MATCH_2})
       if(target STREQUAL layer OR NOT target IN_LIST layers)
         continue()
       endif()
       if(NOT target IN_LIST uses_${layer})
         file(RELATIVE_PATH where ${ROOT} ${file})
-        string(APPEND problems "\n  ${where}: ${line} (the ${layer} layer may use: ${uses_${layer}})")
+        set(allowed "${uses_${layer}}")
+        if(NOT allowed)
+          set(allowed "no other layer")
+        endif()
+        string(APPEND problems "\n  ${where}: ${line} (the ${layer} layer may use: ${allowed})")
       endif()
     endforeach()
   endforeach()

@@ -1,5 +1,5 @@
 // The error a run ends with when a state it needs cannot be solved (exit status 3 of
-// the twb command); scene errors are twb::InputError (twb/scene/input_error.h).
+// the twb command); scene errors are twb::InputError (twb/input_error.h).
 #pragma once
 
 #include <stdexcept>

@@ -17,7 +17,7 @@
 #include "twb/results/states_table.h"
 #include "twb/results/trajectory_table.h"
 #include "twb/error_family.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/scene/scene.h"
 #include "twb/scene/scene_loader.h"
 #include "twb/solver_failure.h"

@@ -1,7 +1,7 @@
 // The twb command: `twb check SCENE`, `twb run SCENE` (also under mpirun, or one slice of a
 // job array) and `twb merge` (a job array's slices into one results directory).
 // Exit status: 0 success (a distress found is a result), 2 invalid input,
-// 3 solver failure, 4 internal error.
+// 3 solver failure, 4 internal error, 5 input/output error (twb/error_family.h).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -29,7 +29,7 @@
 #include "twb/results/state_quantities.h"
 #include "twb/study/result_columns.h"
 #include "twb/error_family.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/sundials_context.h"
 #include "study/study_runner.h"
@@ -344,10 +344,13 @@ int main(int argc, char** argv) {
   }
 
   // Under mpirun every rank reads the same scene: only rank 0 says what is wrong, and an
-  // error there ends the job (the other ranks would wait for work).
+  // error there ends the job (the other ranks would wait for work). An I/O error (an MPI
+  // call that failed) is the rank's own: it says so, with its rank, and ends the job.
   auto fail = [&](int status, const std::string& message) {
+    const bool own = status == int(twb::ErrorKind::io) && job.active();
     if (job.rank() == 0) std::cerr << message << "\n";
-    if (job.active() && job.rank() == 0) job.abort(status);
+    else if (own) std::cerr << "(rank " << job.rank() << ") " << message << "\n";
+    if (job.active() && (job.rank() == 0 || own)) job.abort(status);
     return status;
   };
   try {
@@ -358,10 +361,8 @@ int main(int argc, char** argv) {
     }
     if (*merge_cmd) return merge(slice_dirs, merge_out, merge_quiet, merge_verbose, merge_full_precision);
     return run(request, job);
-  } catch (const twb::ResultsDirectoryError& e) {
-    return fail(exit_invalid_input, std::string("twb: error: ") + e.what());
   } catch (...) {
-    // The error family (twb/error_family.h): input 2, solver 3, internal 4.
+    // The error family (twb/error_family.h): input 2, solver 3, internal 4, I/O 5.
     const twb::ErrorReport report = twb::report_error(std::current_exception());
     return fail(report.exit_status(), report.message);
   }

@@ -15,10 +15,11 @@
 #include <chrono>
 #include <cstdint>
 #include <cstring>
-#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "twb/error_family.h"
 #endif
 
 namespace twb::cli {
@@ -49,8 +50,13 @@ std::string ask(std::optional<std::pair<std::size_t, std::string>> result) {
   return msg;
 }
 
+// A failed call is the machine's or the network's, not a bug: an IoError with MPI's words.
 void check(int code, const char* call) {
-  if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + call + " failed");
+  if (code == MPI_SUCCESS) return;
+  char text[MPI_MAX_ERROR_STRING] = {};
+  int length = 0;
+  MPI_Error_string(code, text, &length);
+  throw IoError(std::string("MPI: ") + call + " failed: " + std::string(text, std::size_t(length)));
 }
 
 }  // namespace
@@ -61,6 +67,9 @@ MpiJob::MpiJob(int& argc, char**& argv) {
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   initialized_ = true;
+  // A failed call returns its code, so that the error says which call and why; MPI's
+  // default handler would end the job without a word from twb.
+  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
@@ -126,7 +135,7 @@ void MpiScheduler::run(const std::vector<std::size_t>& todo, int threads, const 
       continue;
     }
     int bytes = 0;
-    MPI_Get_count(&status, MPI_BYTE, &bytes);
+    check(MPI_Get_count(&status, MPI_BYTE, &bytes), "MPI_Get_count");
     buffer.resize(std::size_t(bytes));
     check(MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, kAsk, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
           "MPI_Recv");

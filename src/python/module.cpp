@@ -204,7 +204,8 @@ PYBIND11_MODULE(_twb, m) {
   static py::exception<twb::InputError> scene_error(m, "SceneError", PyExc_ValueError);
   static py::exception<twb::SolverFailure> solver_failure(m, "SolverFailure", PyExc_RuntimeError);
   // twb.InternalError: a broken precondition inside twb (twb/error_family.h), with the
-  // request to report it, as the command's exit status 4 says.
+  // request to report it, as the command's exit status 4 says. An I/O error (exit status
+  // 5) is Python's OSError.
   static py::exception<twb::InternalError> internal_error(m, "InternalError", PyExc_RuntimeError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
@@ -220,6 +221,13 @@ PYBIND11_MODULE(_twb, m) {
       PyErr_SetString(solver_failure.ptr(), e.what());
     } catch (const twb::InternalError&) {
       PyErr_SetString(internal_error.ptr(), twb::report_error(std::current_exception()).message.c_str());
+    } catch (const twb::IoError& e) {
+      // Python's own error for a file that cannot be written: OSError(errno, message), which
+      // Python makes the errno's subclass (NotADirectoryError, PermissionError, ...). No
+      // filename: the message names the path already, and str() would name it twice.
+      py::object error = e.error_number() != 0 ? py::handle(PyExc_OSError)(e.error_number(), e.what())
+                                               : py::handle(PyExc_OSError)(e.what());
+      PyErr_SetObject(PyExc_OSError, error.ptr());
     }
   });
   // Only for the test of the translation above: no input reaches an internal error.

@@ -5,12 +5,13 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstring>
 #include <regex>
 #include <string>
 #include <system_error>
 
 #include <fmt/format.h>
+
+#include "twb/error_family.h"
 
 namespace twb {
 
@@ -42,13 +43,10 @@ ResultsDirectory::ResultsDirectory(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
-    throw ResultsDirectoryError(fmt::format("cannot use '{}' as the results directory: {}", dir.string(),
-                                            ec ? ec.message() : "it is not a directory"));
+    throw IoError("cannot make the results directory", dir.string(), ec ? ec.value() : ENOTDIR);
   const fs::path lock = dir / ".twb.lock";
   lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock_fd_ < 0)
-    throw ResultsDirectoryError(fmt::format("cannot write into the results directory '{}': {}", dir.string(),
-                                            std::strerror(errno)));
+  if (lock_fd_ < 0) throw IoError("cannot write into the results directory", dir.string(), errno);
   if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
     char pid[32] = {};
     const ssize_t n = ::pread(lock_fd_, pid, sizeof pid - 1, 0);
@@ -59,18 +57,20 @@ ResultsDirectory::ResultsDirectory(const fs::path& dir) {
         n > 0 ? fmt::format(" (process {})", std::string(pid, std::size_t(n))) : "", dir.string()));
   }
   // A constructor that throws runs no destructor: the lock is released here.
-  auto give_up = [&](const std::string& message) {
+  auto give_up = [&](const char* failed, int error) {
     ::close(lock_fd_);
     lock_fd_ = -1;
-    throw ResultsDirectoryError(message);
+    throw IoError(failed, dir.string(), error);
   };
   const std::string me = std::to_string(::getpid());
-  if (::ftruncate(lock_fd_, 0) != 0 || ::pwrite(lock_fd_, me.data(), me.size(), 0) != ssize_t(me.size()))
-    give_up(fmt::format("cannot write into the results directory '{}': {}", dir.string(), std::strerror(errno)));
+  // A short write sets no errno: it is a full disk.
+  if (::ftruncate(lock_fd_, 0) != 0) give_up("cannot write into the results directory", errno);
+  const ssize_t written = ::pwrite(lock_fd_, me.data(), me.size(), 0);
+  if (written != ssize_t(me.size())) give_up("cannot write into the results directory", written < 0 ? errno : ENOSPC);
   try {
     remove_earlier_run(dir);
   } catch (const fs::filesystem_error& e) {
-    give_up(fmt::format("cannot clear an earlier run's files from '{}': {}", dir.string(), e.code().message()));
+    give_up("cannot clear an earlier run's files from", e.code().value());
   }
 }
 

@@ -10,9 +10,11 @@
 
 namespace twb {
 
-// A directory that cannot be used; the message says which and why.
-struct ResultsDirectoryError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+// A directory another run is writing into: the user's to settle, so an invalid argument
+// of the error family (exit status 2). A directory that cannot be made or written into
+// is an IoError (twb/error_family.h), the system's.
+struct ResultsDirectoryError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
 };
 
 class ResultsDirectory {

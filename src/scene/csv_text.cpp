@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "scene_source.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 
 namespace twb::scene_io {
 

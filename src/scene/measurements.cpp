@@ -9,7 +9,7 @@
 
 #include "scene/csv_text.h"
 #include "scene_names.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 
 namespace twb::scene_io {
 

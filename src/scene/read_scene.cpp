@@ -14,7 +14,7 @@
 #include "scene_names.h"
 #include "tree_path.h"
 #include "twb/error_family.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/scene/scene_inputs.h"
 #include "twb/scene/scene_loader.h"
 

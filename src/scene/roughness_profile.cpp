@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "scene/csv_text.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "scene/quantity.h"
 
 namespace twb::scene_io {

@@ -16,7 +16,7 @@
 #include "scene_sections.h"
 #include "scene_source.h"
 #include "yaml_documents.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 
 namespace twb {
 namespace {

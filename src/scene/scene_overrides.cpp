@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "yaml_documents.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 
 namespace twb::scene_io {
 namespace {

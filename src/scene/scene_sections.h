@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "scene_node.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/scene/scene.h"
 
 namespace twb::scene_io {

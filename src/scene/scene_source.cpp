@@ -1,6 +1,6 @@
 #include "scene_source.h"
 
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 
 namespace twb::scene_io {
 

@@ -16,7 +16,7 @@
 #include "study/move_in_steps.h"
 #include "study/parallel.h"
 #include "twb/error_family.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/scene/scene_inputs.h"
 #include "twb/scene/scene_loader.h"
 

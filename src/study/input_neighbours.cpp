@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/scene/scene_inputs.h"
 
 namespace twb {

@@ -1,6 +1,6 @@
 // The results directory's promises (src/results/results_directory.h, interruption.h),
 // checked on the real binary: an earlier run's files are gone before a run writes, a
-// second run into a locked directory is refused, an unusable directory is an error
+// second run into a locked directory is refused, an unusable directory is an I/O error
 // before any work, and SIGTERM ends a run with a message and no partial run.
 #include <gtest/gtest.h>
 
@@ -87,12 +87,18 @@ TEST(ResultsDirectory, ASecondRunIntoALockedDirectoryIsRefused) {
   fs::remove_all(dir);
 }
 
-TEST(ResultsDirectory, AnUnusableDirectoryIsAnErrorBeforeAnyWork) {
+// A directory under a regular file cannot be made, for root too: the I/O error's exit
+// status 5 and words, which name the directory and the system's reason, not a bug.
+TEST(ResultsDirectory, AnUnusableDirectoryIsAnIoErrorBeforeAnyWork) {
   const fs::path file = fresh_dir("file");
   std::ofstream(file) << "a file, not a directory";
   const Finished f = run_twb(file / "results", "");
-  EXPECT_EQ(f.status, 2);
-  EXPECT_NE(f.err.find("cannot use"), std::string::npos) << f.err;
+  EXPECT_EQ(f.status, 5);
+  EXPECT_NE(f.err.find("twb: I/O error: cannot make the results directory '" + (file / "results").string() +
+                       "': Not a directory"),
+            std::string::npos)
+      << f.err;
+  EXPECT_EQ(f.err.find("report"), std::string::npos) << f.err;
   // The default study takes seconds; refusing the directory takes none of them.
   EXPECT_EQ(f.err.find("unknowns"), std::string::npos) << "the model was built before the check: " << f.err;
   fs::remove(file);

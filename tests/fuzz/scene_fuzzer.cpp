@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/scene/scene_loader.h"
 
 namespace {

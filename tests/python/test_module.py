@@ -373,6 +373,18 @@ class ResultsDirectory(unittest.TestCase):
             nothing = twb.run(SCENE, overrides=overrides, out=False)
             self.assertIsNone(nothing.directory)
 
+    def test_a_directory_that_cannot_be_made_is_an_os_error_naming_it(self):
+        # Under a regular file, which root cannot write under either.
+        with tempfile.TemporaryDirectory(prefix="twb_python_out_") as out:
+            blocker = os.path.join(out, "a_file")
+            with open(blocker, "w") as f:
+                f.write("not a directory")
+            target = os.path.join(blocker, "results")
+            with self.assertRaises(NotADirectoryError) as caught:
+                twb.run(SCENE, overrides=dict(COARSE, **POINT), out=target)
+            self.assertIn(f"cannot make the results directory '{target}'", str(caught.exception))
+            self.assertNotIn("report", str(caught.exception))
+
 
 class BadArguments(unittest.TestCase):
     """What a new user passed by mistake is named for what it is."""

@@ -8,7 +8,7 @@
 
 #include "../../src/scene/measurements.h"
 #include "scene_test_support.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 
 namespace twb {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb::testing {

@@ -1,12 +1,15 @@
-// The error family (twb/error_family.h): each kind of error ends a run with its own exit
-// status and words, and an internal error raised where twb hands control to SUNDIALS
-// comes back out as itself, not as a failed solve.
+// The error family (twb/error_family.h, the base layer): each kind of error ends a run
+// with its own exit status and words, and an internal error raised where twb hands
+// control to SUNDIALS comes back out as itself, not as a failed solve.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <stdexcept>
+#include <system_error>
 #include <vector>
 
 #include "solver/ida_transient.h"
@@ -14,7 +17,7 @@
 #include "study/parallel.h"
 #include "../support/model_problems.h"
 #include "twb/error_family.h"
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 #include "twb/solver_failure.h"
 
 namespace twb {
@@ -47,6 +50,22 @@ TEST(ErrorFamily, EachKindHasItsExitStatusAndWords) {
   EXPECT_EQ(internal.exit_status(), 4);
   EXPECT_NE(internal.message.find("FoldSystem: borders of another size"), std::string::npos);
   EXPECT_NE(internal.message.find("please report"), std::string::npos) << internal.message;
+
+  // An input or output the system refused is neither the user's nor a bug: its own status,
+  // what failed and why, and no request to report it.
+  const ErrorReport io = report_of(IoError("cannot write", "out/states.csv", ENOSPC));
+  EXPECT_EQ(io.kind, ErrorKind::io);
+  EXPECT_EQ(io.exit_status(), 5);
+  EXPECT_EQ(io.message, "twb: I/O error: cannot write 'out/states.csv': No space left on device");
+  const ErrorReport mpi = report_of(IoError("MPI: MPI_Send failed: MPI_ERR_COMM: invalid communicator"));
+  EXPECT_EQ(mpi.exit_status(), 5);
+  EXPECT_EQ(mpi.message, "twb: I/O error: MPI: MPI_Send failed: MPI_ERR_COMM: invalid communicator");
+  const ErrorReport filesystem = report_of(std::filesystem::filesystem_error(
+      "cannot remove all", "out/.twb-journal", std::make_error_code(std::errc::permission_denied)));
+  EXPECT_EQ(filesystem.exit_status(), 5);
+  EXPECT_NE(filesystem.message.find("out/.twb-journal"), std::string::npos) << filesystem.message;
+  for (const ErrorReport* r : {&io, &mpi, &filesystem})
+    EXPECT_EQ(r->message.find("report"), std::string::npos) << r->message;
 
   // Anything else thrown is internal too, whatever its type.
   EXPECT_EQ(report_of(std::out_of_range("index")).exit_status(), 4);

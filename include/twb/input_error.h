@@ -1,6 +1,6 @@
-// The one error family for anything that came from a scene file or a `--set` override:
-// it knows where the offending text is and quotes it, so a user can fix the input
-// without reading the loader.
+// The error family's member (twb/error_family.h) for anything that came from a scene
+// file, a file it names or a `--set` override: it knows where the offending text is and
+// quotes it, so a user can fix the input without reading the loader.
 #pragma once
 
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "twb/scene/input_error.h"
+#include "twb/input_error.h"
 
 #include <fmt/format.h>
 
