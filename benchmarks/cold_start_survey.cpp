@@ -24,7 +24,7 @@
 #include "mesh_option.h"
 #include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 int main(int argc, char** argv) {
   twb::Scene paper = twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml");

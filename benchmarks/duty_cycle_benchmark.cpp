@@ -27,8 +27,8 @@
 #include <fmt/format.h>
 
 #include "model/bearing_model.h"
-#include "study/operating_schedule.h"
-#include "study/steady_solver.h"
+#include "study/time/operating_schedule.h"
+#include "study/searches/steady_solver.h"
 #include "study/study_runner.h"
 #include "study/study_support.h"
 #include "twb/scene/scene_loader.h"

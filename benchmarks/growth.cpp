@@ -30,8 +30,8 @@
 #include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/sparse_lu.h"
-#include "study/steady_solver.h"
-#include "study/distress_search.h"
+#include "study/searches/steady_solver.h"
+#include "study/searches/distress_search.h"
 
 namespace {
 

@@ -27,7 +27,7 @@
 #include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/nested_dissection.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 #include "solver/sundials_context.h"
 
 namespace {

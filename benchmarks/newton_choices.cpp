@@ -25,7 +25,7 @@
 #include "solver/kinsol_newton.h"
 #include "solver/natural_continuation.h"
 #include "solver/sparse_lu.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace {
 

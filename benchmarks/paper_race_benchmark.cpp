@@ -32,9 +32,9 @@
 #include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/paper_scheme.h"
-#include "study/steady_solver.h"
-#include "study/distress_search.h"
-#include "study/richardson.h"
+#include "study/searches/steady_solver.h"
+#include "study/searches/distress_search.h"
+#include "study/accuracy/richardson.h"
 
 namespace {
 

@@ -37,7 +37,7 @@
 #include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
 #include "solver/natural_continuation.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace {
 

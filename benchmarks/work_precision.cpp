@@ -24,8 +24,8 @@
 #include "mesh_option.h"
 #include "model/bearing_model.h"
 #include "twb/scene/scene_loader.h"
-#include "study/steady_solver.h"
-#include "study/distress_search.h"
+#include "study/searches/steady_solver.h"
+#include "study/searches/distress_search.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 // the same bytes as a run on one thread.
 #pragma once
 
-#include "study/search_scheduler.h"
+#include "study/parallel/search_scheduler.h"
 
 namespace twb::cli {
 

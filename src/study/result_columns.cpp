@@ -4,8 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "study/distress_curve.h"
-#include "study/study_searches.h"
+#include "study/searches/distress_curve.h"
+#include "study/searches/study_searches.h"
 #include "twb/results/fields_table.h"
 #include "twb/scene/scene_loader.h"
 #include "twb/study/study_outcome.h"

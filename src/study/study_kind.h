@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "model/bearing_model.h"
-#include "study/study_searches.h"
+#include "study/searches/study_searches.h"
 #include "twb/study/study_outcome.h"
 
 namespace twb {

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "solver/sparse_lu.h"
-#include "study/state_error.h"
+#include "study/accuracy/state_error.h"
 #include "study/study_kind.h"
 #include "study/study_support.h"
 

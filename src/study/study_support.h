@@ -10,7 +10,7 @@
 #include "twb/results/states_table.h"
 #include "twb/scene/scene.h"
 #include "solver/kinsol_newton.h"
-#include "study/distress_search.h"
+#include "study/searches/distress_search.h"
 
 namespace twb {
 

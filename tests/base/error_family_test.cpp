@@ -14,7 +14,7 @@
 
 #include "solver/ida_transient.h"
 #include "solver/kinsol_newton.h"
-#include "study/parallel.h"
+#include "study/parallel/parallel.h"
 #include "../support/model_problems.h"
 #include "twb/error_family.h"
 #include "twb/input_error.h"

@@ -11,7 +11,7 @@
 #include "model/bearing_model.h"
 #include "solver/ida_transient.h"
 #include "solver/relaxation_time.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -12,7 +12,7 @@
 #include "model/bearing_model.h"
 #include "model/convection_effect.h"
 #include "physics/average_gap.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -9,7 +9,7 @@
 #include <functional>
 
 #include "../support/table1_scene.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb {
 namespace {

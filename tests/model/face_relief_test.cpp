@@ -11,8 +11,8 @@
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "model/face_relief.h"
-#include "study/richardson.h"
-#include "study/steady_solver.h"
+#include "study/accuracy/richardson.h"
+#include "study/searches/steady_solver.h"
 #include "twb/error_family.h"
 
 namespace twb {

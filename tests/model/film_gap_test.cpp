@@ -12,7 +12,7 @@
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "model/film_gap.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb {
 namespace {

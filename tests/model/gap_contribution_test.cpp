@@ -14,7 +14,7 @@
 #include "../support/prescribed_wear.h"
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -31,7 +31,7 @@
 
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -28,7 +28,7 @@
 #include "model/bearing_model.h"
 #include "solver/consistent_rates.h"
 #include "solver/natural_continuation.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "model/film_point.h"
 #include "model/located_maximum.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {

@@ -12,7 +12,7 @@
 #include "twb/results/limit_notes.h"
 #include "twb/results/run_axes.h"
 #include "twb/study/study_outcome.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -22,7 +22,7 @@
 #include "../support/table1_scene.h"
 #include "model/bearing_model.h"
 #include "solver/kinsol_newton.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb {
 namespace {

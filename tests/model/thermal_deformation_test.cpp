@@ -13,7 +13,7 @@
 #include "model/bearing_model.h"
 #include "physics/thermal_deformation.h"
 #include "solver/natural_continuation.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -11,7 +11,7 @@
 #include "model/bearing_model.h"
 #include "solver/kinsol_newton.h"
 #include "solver/natural_continuation.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb {
 namespace {

@@ -19,7 +19,7 @@
 
 #include "../scene/scene_test_support.h"
 #include "model/bearing_model.h"
-#include "study/measured_response.h"
+#include "study/uncertainty/measured_response.h"
 #include "study/study_runner.h"
 #include "twb/scene/scene_loader.h"
 

@@ -9,8 +9,8 @@
 
 #include "../support/table1_scene.h"
 #include "solver/fold_curve.h"
-#include "study/distress_search.h"
-#include "study/richardson.h"
+#include "study/searches/distress_search.h"
+#include "study/accuracy/richardson.h"
 #include "study/study_runner.h"
 
 namespace twb {

@@ -10,8 +10,8 @@
 #include "../support/table1_scene.h"
 #include "solver/kinsol_newton.h"
 #include "solver/runaway.h"
-#include "study/distress_search.h"
-#include "study/steady_solver.h"
+#include "study/searches/distress_search.h"
+#include "study/searches/steady_solver.h"
 #include "study/study_support.h"
 
 namespace twb {

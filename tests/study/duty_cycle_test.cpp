@@ -16,9 +16,9 @@
 
 #include "model/bearing_model.h"
 #include "solver/relaxation_time.h"
-#include "study/distress_search.h"
-#include "study/operating_schedule.h"
-#include "study/steady_solver.h"
+#include "study/searches/distress_search.h"
+#include "study/time/operating_schedule.h"
+#include "study/searches/steady_solver.h"
 #include "study/study_runner.h"
 #include "study/study_support.h"
 #include "twb/results/cycle_state.h"

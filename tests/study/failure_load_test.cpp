@@ -14,9 +14,9 @@
 
 #include "model/failure_margins.h"
 #include "solver/natural_continuation.h"
-#include "study/steady_solver.h"
-#include "study/distress_search.h"
-#include "study/failure_load.h"
+#include "study/searches/steady_solver.h"
+#include "study/searches/distress_search.h"
+#include "study/searches/failure_load.h"
 #include "study/study_support.h"
 #include "twb/scene/scene_loader.h"
 #include "../support/table1_scene.h"

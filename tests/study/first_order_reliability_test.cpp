@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 
 #include "scene/input_distribution.h"
-#include "study/first_order_reliability.h"
-#include "study/importance_sampling.h"
-#include "study/input_neighbours.h"
+#include "study/uncertainty/first_order_reliability.h"
+#include "study/uncertainty/importance_sampling.h"
+#include "study/uncertainty/input_neighbours.h"
 
 namespace twb {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "../scene/scene_test_support.h"
-#include "study/study_searches.h"
+#include "study/searches/study_searches.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {

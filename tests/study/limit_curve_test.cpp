@@ -12,7 +12,7 @@
 
 #include "model/limit_thresholds.h"
 #include "solver/natural_continuation.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 #include "study/study_runner.h"
 #include "study/study_support.h"
 #include "twb/results/distress_table.h"

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "solver/ida_transient.h"
-#include "study/steady_solver.h"
-#include "study/load_step_march.h"
+#include "study/searches/steady_solver.h"
+#include "study/searches/load_step_march.h"
 #include "study/study_support.h"
 #include "twb/scene/scene_loader.h"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "../../src/study/mesh_convergence.h"
+#include "../../src/study/accuracy/mesh_convergence.h"
 #include "../support/table1_scene.h"
 
 namespace twb {

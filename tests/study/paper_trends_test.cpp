@@ -28,8 +28,8 @@
 #include "twb/scene/scene_loader.h"
 #include "solver/arclength_continuation.h"
 #include "solver/natural_continuation.h"
-#include "study/steady_solver.h"
-#include "study/distress_search.h"
+#include "study/searches/steady_solver.h"
+#include "study/searches/distress_search.h"
 
 namespace twb {
 namespace {

@@ -11,8 +11,8 @@
 #include <cmath>
 #include <string>
 
-#include "study/state_error.h"
-#include "study/steady_solver.h"
+#include "study/accuracy/state_error.h"
+#include "study/searches/steady_solver.h"
 #include "study/study_runner.h"
 #include "study/study_support.h"
 #include "twb/scene/scene_loader.h"

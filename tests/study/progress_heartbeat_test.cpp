@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "study/progress_heartbeat.h"
+#include "study/parallel/progress_heartbeat.h"
 
 namespace twb {
 namespace {

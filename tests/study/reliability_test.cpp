@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "model/bearing_model.h"
-#include "study/distress_search.h"
-#include "study/failure_at_inputs.h"
-#include "study/first_order_reliability.h"
+#include "study/searches/distress_search.h"
+#include "study/uncertainty/failure_at_inputs.h"
+#include "study/uncertainty/first_order_reliability.h"
 #include "study/study_runner.h"
 #include "twb/scene/scene_inputs.h"
 #include "twb/scene/scene_loader.h"

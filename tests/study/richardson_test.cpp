@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../../src/study/richardson.h"
-#include "study/failure_load.h"
-#include "study/search_error_bars.h"
+#include "../../src/study/accuracy/richardson.h"
+#include "study/searches/failure_load.h"
+#include "study/accuracy/search_error_bars.h"
 #include "study/study_support.h"
 #include "../support/table1_scene.h"
 

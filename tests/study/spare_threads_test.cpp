@@ -3,7 +3,7 @@
 // come back.
 #include <gtest/gtest.h>
 
-#include "study/spare_threads.h"
+#include "study/parallel/spare_threads.h"
 
 namespace twb {
 namespace {

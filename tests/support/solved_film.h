@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "model/bearing_model.h"
-#include "study/steady_solver.h"
+#include "study/searches/steady_solver.h"
 
 namespace twb::testing {
 

@@ -1,6 +1,6 @@
 // calibration: the inputs fitted to a rig's measurements, with their covariance
 // (calibration.h).
-#include "study/calibration.h"
+#include "study/uncertainty/calibration.h"
 #include "study/study_kind.h"
 
 namespace twb {

@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "solver/sparse_lu.h"
-#include "study/distress_curve.h"
-#include "study/parallel.h"
+#include "study/searches/distress_curve.h"
+#include "study/parallel/parallel.h"
 #include "study/study_kind.h"
 #include "twb/error_family.h"
 

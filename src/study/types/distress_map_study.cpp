@@ -1,6 +1,6 @@
 // distress_map: the failure loads over speeds and map combinations, each searched on its
 // own or followed from its neighbour's (followed_map.h).
-#include "study/followed_map.h"
+#include "study/searches/followed_map.h"
 #include "study/study_kind.h"
 #include "study/types/searched_loads.h"
 

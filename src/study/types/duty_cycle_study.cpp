@@ -1,6 +1,6 @@
 // duty_cycle: the bearing marched in real time through an operating schedule
 // (duty_cycle.h), from the steady state at its start or from an earlier cycle's end.
-#include "study/duty_cycle.h"
+#include "study/time/duty_cycle.h"
 #include "study/study_kind.h"
 
 namespace twb {

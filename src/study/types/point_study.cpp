@@ -3,8 +3,8 @@
 #include <string>
 
 #include "solver/sparse_lu.h"
-#include "study/operating_point.h"
-#include "study/state_error.h"
+#include "study/searches/operating_point.h"
+#include "study/accuracy/state_error.h"
 #include "study/study_kind.h"
 #include "twb/error_family.h"
 

@@ -1,6 +1,6 @@
 // reliability: the probability of failure at the operating load over the uncertain
 // inputs, and the loads of the wanted probabilities (reliability.h).
-#include "study/reliability.h"
+#include "study/uncertainty/reliability.h"
 #include "study/study_kind.h"
 
 namespace twb {

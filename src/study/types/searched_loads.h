@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "study/distress_search.h"
+#include "study/searches/distress_search.h"
 #include "twb/study/study_outcome.h"
 
 namespace twb {

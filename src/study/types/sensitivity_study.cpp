@@ -1,6 +1,6 @@
 // sensitivity: the derivatives of the state's quantities, and of the failure load where a
 // load range is given, against the scene's inputs (sensitivity.h).
-#include "study/sensitivity.h"
+#include "study/uncertainty/sensitivity.h"
 #include "study/study_kind.h"
 
 namespace twb {

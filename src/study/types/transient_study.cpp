@@ -2,9 +2,9 @@
 // (load_step_march.h): settled, or run away by thermo-viscous distress.
 #include <fmt/format.h>
 
-#include "study/load_step_march.h"
-#include "study/operating_point.h"
-#include "study/steady_solver.h"
+#include "study/searches/load_step_march.h"
+#include "study/searches/operating_point.h"
+#include "study/searches/steady_solver.h"
 #include "study/study_kind.h"
 #include "study/study_support.h"
 
