@@ -81,12 +81,6 @@ struct RefinedBar {
   long klu_factorizations = 0;  // on the thread that ran it
 };
 
-bool searches_failure(const Study& st) {
-  return (st.type == StudyType::load_sweep || st.type == StudyType::distress_map ||
-          st.type == StudyType::distress_curve) &&
-         st.error_estimate != ErrorEstimate::none;
-}
-
 // What the meshes of a sequence hold of the washer's grooves: each refinement doubles the
 // cells, so every mesh holds the grooves the scene's mesh resolved (whole cells), which
 // is the geometry the mesh-converged load belongs to, beside the width asked.
@@ -115,7 +109,7 @@ RefinedBar refined_fold(const BearingModel& model, const DistressSearchSettings&
   RefinedBar bar;
   DistressSearchSettings from = settings;
   from.load_start = found.states.front().state.load;
-  const double tolerance = model.scene().study.tolerance;
+  const double tolerance = settings.error_tolerance;
   try {
     const CoarseFold coarse{*found.row.fold_load, &model, found.fold ? &*found.fold : nullptr};
     std::optional<RefinedFold> fine = refined_fold(model.scene(), model.speed(), coarse, from, bar.why, progress);
@@ -173,7 +167,7 @@ RefinedBar refined_crossing(const BearingModel& model, const DistressSearchSetti
     // Each finer mesh's bearing from the search's, held while the next starts from it.
     std::vector<std::unique_ptr<BearingModel>> held;
     bar.estimate = crossing_sequence(model, kFailureCriteria[c], found.crossing_states[c], settings.bracket_width,
-                                     settings.load_end, model.scene().study.tolerance,
+                                     settings.load_end, settings.error_tolerance,
                                      [&](const Scene& next) -> BearingModel& {
                                        held.push_back(model.on_mesh(next.mesh.radial_nodes,
                                                                     next.mesh.circumferential_nodes));
@@ -192,7 +186,7 @@ RefinedBar refined_crossing(const BearingModel& model, const DistressSearchSetti
 
 long estimate_failure_errors(const BearingModel& model, const DistressSearchSettings& settings,
                              DistressSearch& found, const ProgressReport& progress, SpareThreads* spare) {
-  if (!searches_failure(model.scene().study)) return 0;
+  if (!settings.failure_error_bars) return 0;
   DistressRow& row = found.row;
   // The pieces: W_d's fold where the search found one, and each criterion's crossing
   // above the searched range's start (one at the start lies below it: nothing to refine).

@@ -98,6 +98,8 @@ CurveEnds search_ends(BearingModel& model, BearingModel& other, const std::strin
   settings.load_end = st.load_end;
   settings.bracket_width = st.bracket_width;
   settings.march_past_distress = false;
+  settings.failure_error_bars = st.error_estimate != ErrorEstimate::none;
+  settings.error_tolerance = st.tolerance;
   const PerCriterion<bool> in_force =
       criteria_in_force(OperatingLimits::of(model.scene()), model.scene().effects.thermal);
   auto needs_other_end = [&](const DistressSearch& found) {

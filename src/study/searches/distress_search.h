@@ -66,6 +66,13 @@ struct DistressSearchSettings {
   // How far past the first failure criterion it crosses the cool branch is searched, as
   // a factor of that load (a distress map's study.search_past_failure); 0: on to load_end.
   double search_past_failure = 0.0;
+  // The failure loads' error bars (study.error_estimate other than none): W_d's fold and
+  // each criterion's crossing again on refined meshes, each until its bar is within
+  // `error_tolerance` (relative; 0: one refinement, a bar of the formal order). The
+  // studies whose rows report them ask for them (load_sweep, distress_map,
+  // distress_curve); a sliding choice's, a sensitivity's or a duty cycle's search does not.
+  bool failure_error_bars = false;
+  double error_tolerance = 0.0;
   // Not a setting: the study's idle threads (study/spare_threads.h), one of which may
   // check the start's branch beside the search. The results do not depend on it.
   SpareThreads* spare_threads = nullptr;

@@ -11,6 +11,7 @@ void run_distress_map(BearingModel& base, StudyOutcome& out, const StudyRun& run
   DistressSearchSettings settings = range_settings(base.scene().study);
   settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
   settings.search_past_failure = base.scene().study.search_past_failure;
+  ask_failure_error_bars(base.scene().study, settings);
   if (base.scene().study.map_method == MapMethod::follow) {
     run_followed_map(base, settings, out, run.progress, run.how);
     return;

@@ -8,8 +8,10 @@ namespace {
 
 void run_load_sweep(BearingModel& model, StudyOutcome& out, const StudyRun& run) {
   const std::vector<Variant> variants = parameter_variants(model.scene(), out.parameter_columns);
-  run_searches(model, variants, grid_settings(model.scene().study), run.progress, run.how, out.timings,
-               out.diagnostics, [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
+  DistressSearchSettings settings = grid_settings(model.scene().study);
+  ask_failure_error_bars(model.scene().study, settings);
+  run_searches(model, variants, settings, run.progress, run.how, out.timings, out.diagnostics,
+               [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
                  out.states.insert(out.states.end(), found.states.begin(), found.states.end());
                  out.trajectory.insert(out.trajectory.end(), found.runaway.begin(), found.runaway.end());
                  out.distress.push_back(found.row);

@@ -18,6 +18,11 @@ DistressSearchSettings range_settings(const Study& st) {
   return s;
 }
 
+void ask_failure_error_bars(const Study& st, DistressSearchSettings& s) {
+  s.failure_error_bars = st.error_estimate != ErrorEstimate::none;
+  s.error_tolerance = st.tolerance;
+}
+
 DistressSearchSettings grid_settings(const Study& st) {
   DistressSearchSettings s = range_settings(st);
   s.grid = load_grid(st);

@@ -13,6 +13,8 @@ namespace twb {
 std::vector<double> load_grid(const Study& study);
 // The study's load range and bracket width: a distress map's search.
 DistressSearchSettings range_settings(const Study& study);
+// The failure loads' error bars the study asks for (load_sweep, distress_map).
+void ask_failure_error_bars(const Study& study, DistressSearchSettings& settings);
 // A sweep's search: the range, the requested grid, and on past distress.
 DistressSearchSettings grid_settings(const Study& study);
 // A search that failed or has something to say adds it to the study's message.
