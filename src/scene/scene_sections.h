@@ -58,6 +58,8 @@ struct InputEntry {
 std::vector<InputEntry> input_entries(const Node& map, const Scene& out, std::string_view none,
                                       std::string_view example,
                                       const std::function<std::string(const std::string&)>& not_taken);
+// The study sections' reading once every input is known, each called only through its
+// type's section (scene/studies/<type>_keys.cpp: read_after_inputs).
 // A calibration study's data file, fitted inputs and measurement spreads (read once the
 // scene's inputs are known).
 void read_calibration(const MapReader& scene, Scene& out);

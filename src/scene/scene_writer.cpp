@@ -1,12 +1,10 @@
 // describe_scene: the resolved scene written back as a scene file, so a run's inputs can be
 // stored beside its results and replayed exactly.
-#include <filesystem>
 #include <fmt/format.h>
 
 #include "scene_names.h"
 #include "scene_text.h"
 #include "studies/study_section.h"
-#include "scene/input_distribution.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {

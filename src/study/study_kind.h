@@ -12,19 +12,18 @@
 
 namespace twb {
 
-class SearchScheduler;
-
 // What a study is run with, as run_study resolved it.
 struct StudyRun {
   const ProgressReport& progress;
   int threads = 1;  // at least one
-  Running how;      // threads, resume journal, scheduler, stop: for independent searches
+  Running how;      // threads, resume journal, scheduler, stop: for independent searches (and
+                    // the scheduler for a reliability study's Monte Carlo batches)
   const CycleState* cycle_start = nullptr;  // a duty cycle continued from an earlier one's end
 };
 
 // A trait no settings of the type have.
-inline bool never(const Study&) { return false; }
-inline bool always(const Study&) { return true; }
+inline bool for_no_settings(const Study&) { return false; }
+inline bool for_all_settings(const Study&) { return true; }
 
 struct StudyKind {
   void (*run)(BearingModel& model, StudyOutcome& out, const StudyRun& run) = nullptr;
@@ -38,10 +37,10 @@ struct StudyKind {
   bool searches_count_their_work = false;
   // Made of independent distress searches: what threads, MPI ranks and the slices of a
   // job array share out, and what RunOptions::stop can stop between.
-  bool (*independent_searches)(const Study& study) = never;
+  bool (*independent_searches)(const Study& study) = for_no_settings;
   // Its work spreads over the ranks of an MPI job beyond its independent searches (a
   // reliability study's Monte Carlo batches, which the slices of a job array cannot take).
-  bool (*spreads_over_ranks)(const Study& study) = never;
+  bool (*spreads_over_ranks)(const Study& study) = for_no_settings;
   // It can go on from where an earlier run of its type ended (RunOptions::cycle_start).
   bool continues_from = false;
 };

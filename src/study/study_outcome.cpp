@@ -16,7 +16,8 @@ std::vector<NamedTable> study_tables(const StudyOutcome& out, StudyType type) {
   std::vector<NamedTable> tables;
   tables.push_back({"states", states_table(out.states, out.parameter_columns, out.sliding_column)});
   study_kind(type).add_tables(out, tables);
-  // A trajectory no type's tables name (the runaway's first steps of a sweep's searches).
+  // A trajectory the type's own tables leave out: a transient's march, the runaway's first
+  // steps of a sweep's searches.
   const bool named = std::any_of(tables.begin(), tables.end(), [](const NamedTable& t) { return t.name == "trajectory"; });
   if (!named && !out.trajectory.empty())
     tables.push_back({"trajectory", trajectory_table(out.trajectory, out.parameter_columns, out.sliding_column)});

@@ -94,6 +94,7 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"bracket_width_too_wide", 12, 94, {"study.bracket_width: '0.5' is out of range; must be in (0, 0.1]"}},
     {"transient_duration_wrong_dimension", 12, 72, {"study.duration: '60 mm' has the dimension of length, expected a time"}},
     {"transient_without_thermal", 12, 15, {"study.type: a transient study marches the heat balance", "add 'thermal' to effects"}},
+    {"transient_with_bracket_width", 12, 62, {"key 'bracket_width' in 'study' does not apply with type: transient", "allowed with type: transient: type, load_start, load_end, duration"}},
     {"load_sweep_without_speeds", 17, 11, {"study.speeds: the list is empty", "give at least one speed"}},
     {"load_sweep_speed_wrong_dimension", 12, 100, {"study.speeds[1]: '953 mm' has the dimension of length, expected an angular speed"}},
     {"load_sweep_friction_with_empirical_law", 18, 21, {"study.parameter.name: friction_coefficient varies the constant friction law's coefficient", "set friction.law: constant"}},

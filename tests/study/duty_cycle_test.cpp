@@ -533,7 +533,7 @@ TEST(DutyCycle, ACycleRunInTwoPartsEndsAsTheWholeCycle) {
   EXPECT_THROW(run_study(other_film_model, {}, RunOptions{.cycle_start = &end}), std::invalid_argument);
   // Only a duty cycle goes on from an end: a point study given one says so, not ignores it.
   BearingModel point_model(load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
-                                      {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24"}));
+                                      {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24", "study={type: point}"}));
   try {
     run_study(point_model, {}, RunOptions{.cycle_start = &end});
     ADD_FAILURE() << "a point study went on from a cycle's end";

@@ -70,7 +70,8 @@ struct RunOptions {
   // A duty cycle continued from where an earlier one ended (its StudyOutcome::cycle_end,
   // or twb run --continue-from DIR): the march starts from that state instead of the
   // steady state at the schedule's start, whose first point must be the end's time and
-  // inputs (std::invalid_argument otherwise, or for another bearing's state).
+  // inputs (std::invalid_argument otherwise, for another bearing's state, or for a study
+  // of another type: check_continuable).
   const CycleState* cycle_start = nullptr;
 };
 

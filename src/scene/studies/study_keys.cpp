@@ -55,10 +55,10 @@ double read_bracket_width(const MapReader& study, double fallback) {
                         fallback);
 }
 
-// One axis: `{name: friction_coefficient, values: [0.05, 0.1]}`, or an input's scene path
-// for a name, whose values are read once every input is known (check_input_axis).
 namespace {
 
+// One axis: `{name: friction_coefficient, values: [0.05, 0.1]}`, or an input's scene path
+// for a name, whose values are read once every input is known (check_input_axis).
 MapAxis read_map_axis(const MapReader& p, const Scene& scene) {
   MapAxis axis;
   const Node name = p.get("name", "friction_coefficient, gear_tilt, roughness, groove_count, groove_width, "

@@ -8,7 +8,7 @@
 namespace twb::scene_io {
 namespace {
 
-constexpr std::string_view kKeys[] = {"type", "load_start", "load_end", "duration", "bracket_width"};
+constexpr std::string_view kKeys[] = {"type", "load_start", "load_end", "duration"};
 
 void read(const MapReader& study, Scene& out) {
   Study& s = out.study;

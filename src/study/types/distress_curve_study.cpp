@@ -9,6 +9,7 @@
 #include "solver/sparse_lu.h"
 #include "study/searches/distress_curve.h"
 #include "study/parallel/parallel.h"
+#include "study/searches/study_searches.h"
 #include "study/study_kind.h"
 #include "twb/error_family.h"
 

@@ -1,6 +1,7 @@
 // distress_map: the failure loads over speeds and map combinations, each searched on its
 // own or followed from its neighbour's (followed_map.h).
 #include "study/searches/followed_map.h"
+#include "study/searches/study_searches.h"
 #include "study/study_kind.h"
 #include "study/types/searched_loads.h"
 

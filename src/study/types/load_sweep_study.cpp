@@ -1,5 +1,6 @@
 // load_sweep: one distress search per speed and map combination over the requested load
 // grid, each continued past distress (the hot states and the runaway's first step).
+#include "study/searches/study_searches.h"
 #include "study/study_kind.h"
 #include "study/types/searched_loads.h"
 
@@ -24,6 +25,6 @@ void run_load_sweep(BearingModel& model, StudyOutcome& out, const StudyRun& run)
 extern const StudyKind kLoadSweepStudy{.run = run_load_sweep,
                                        .add_tables = add_distress_table,
                                        .searches_count_their_work = true,
-                                       .independent_searches = always};
+                                       .independent_searches = for_all_settings};
 
 }  // namespace twb

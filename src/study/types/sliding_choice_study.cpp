@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "study/searches/study_searches.h"
 #include "study/study_kind.h"
 #include "study/types/searched_loads.h"
 #include "twb/scene/scene_loader.h"
@@ -59,6 +60,6 @@ void add_sliding_tables(const StudyOutcome& out, std::vector<NamedTable>& tables
 extern const StudyKind kSlidingChoiceStudy{.run = run_sliding_choice,
                                            .add_tables = add_sliding_tables,
                                            .searches_count_their_work = true,
-                                           .independent_searches = always};
+                                           .independent_searches = for_all_settings};
 
 }  // namespace twb
