@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 
 #include "model/failure_margins.h"
+#include "results/record_bytes.h"
 #include "solver/kinsol_newton.h"
 #include "solver/linear_stability.h"
 #include "study/searches/move_in_steps.h"
@@ -32,44 +32,12 @@ constexpr double kLeastStep = 1.0 / 32;
 // cool branch's margins change by a few percent of themselves over such a step.
 constexpr double kLoadStep = 0.05;
 
-// A waiting state's bytes: sample, x, u, load, rise, past_limit.
-void put(std::string& out, const void* p, std::size_t n) { out.append(static_cast<const char*>(p), n); }
-template <class T>
-void put(std::string& out, T v) {
-  put(out, &v, sizeof v);
+// A waiting state's fields but its sample, for writing and reading alike (S is const when
+// writing).
+template <class A, class S>
+void waiting_fields(A& a, S& s) {
+  a(s.x), a(s.u), a(s.load), a(s.rise), a(s.past_limit);
 }
-void put(std::string& out, const std::vector<double>& v) {
-  put(out, std::uint64_t(v.size()));
-  put(out, v.data(), v.size() * sizeof(double));
-}
-
-class Bytes {
- public:
-  explicit Bytes(const std::string& s) : s_(s) {}
-  bool done() const { return at_ == s_.size(); }
-  void get(void* p, std::size_t n) {
-    if (n > s_.size() - at_) throw std::runtime_error("a batch's states arrived damaged (too short)");
-    std::memcpy(p, s_.data() + at_, n);
-    at_ += n;
-  }
-  template <class T>
-  T get() {
-    T v;
-    get(&v, sizeof v);
-    return v;
-  }
-  std::vector<double> doubles() {
-    const auto n = get<std::uint64_t>();
-    if (n > (s_.size() - at_) / sizeof(double)) throw std::runtime_error("a batch's states arrived damaged (a length)");
-    std::vector<double> v(n);
-    get(v.data(), n * sizeof(double));
-    return v;
-  }
-
- private:
-  const std::string& s_;
-  std::size_t at_ = 0;
-};
 
 }  // namespace
 
@@ -240,33 +208,24 @@ void OperatingStates::hold_later(std::uint64_t sample, std::shared_ptr<const Sta
   waiting_[sample] = std::move(s);
 }
 
-std::string OperatingStates::waiting_bytes(std::optional<std::uint64_t> only) const {
+void OperatingStates::write_waiting(RecordWriter& out, std::optional<std::uint64_t> only) const {
   const std::lock_guard<std::mutex> hold(lock_);
-  std::string out;
+  out.count(only ? waiting_.count(*only) : waiting_.size());
   for (const auto& [sample, s] : waiting_) {
     if (only && sample != *only) continue;
-    put(out, sample);
-    put(out, s->x);
-    put(out, s->u);
-    put(out, s->load);
-    put(out, s->rise);
-    put(out, std::uint8_t(s->past_limit));
+    out(sample);
+    waiting_fields(out, *s);
   }
-  return out;
 }
 
-void OperatingStates::take_waiting(const std::string& bytes, bool instead) {
+void OperatingStates::take_waiting(RecordReader& in, bool instead) {
   std::map<std::uint64_t, std::shared_ptr<const State>> taken;
-  Bytes in(bytes);
-  while (!in.done()) {
-    const auto sample = in.get<std::uint64_t>();
+  for (std::size_t k = in.count(); k > 0; --k) {
+    std::uint64_t sample = 0;
+    in(sample);
     auto s = std::make_shared<State>();
-    s->x = in.doubles();
-    s->u = in.doubles();
-    s->load = in.get<double>();
-    s->rise = in.get<double>();
-    s->past_limit = in.get<std::uint8_t>() != 0;
-    if (s->x.size() != scales_.size()) throw std::runtime_error("a batch's states arrived damaged (their inputs)");
+    waiting_fields(in, *s);
+    if (s->x.size() != scales_.size()) in.damaged();
     taken[sample] = std::move(s);
   }
   const std::lock_guard<std::mutex> hold(lock_);

@@ -31,6 +31,9 @@
 
 namespace twb {
 
+class RecordReader;
+class RecordWriter;
+
 class OperatingStates {
  public:
   // The bearing at inputs x (none, with why, where the scene refuses x).
@@ -73,12 +76,12 @@ class OperatingStates {
   // verdict depends on which thread judged what first.
   void hold_later(std::uint64_t sample, std::shared_ptr<const State> s);
   void hold_those_waiting();
-  // The states waiting to be held (only sample `only`'s, if given) as bytes, doubles bit
-  // for bit, for another process of the study (MPI ranks share each batch's states, so
-  // that every rank holds the same: reliability.cpp); and such bytes taken, added to the
-  // states waiting or, with `instead`, in their place. std::runtime_error for damaged bytes.
-  std::string waiting_bytes(std::optional<std::uint64_t> only = std::nullopt) const;
-  void take_waiting(const std::string& bytes, bool instead);
+  // The states waiting to be held (only sample `only`'s, if given) written for another
+  // process of the study (MPI ranks share each batch's states, so that every rank holds
+  // the same: reliability.cpp); and such states read, added to the states waiting or, with
+  // `instead`, in their place. std::runtime_error for damaged bytes.
+  void write_waiting(RecordWriter& out, std::optional<std::uint64_t> only = std::nullopt) const;
+  void take_waiting(RecordReader& in, bool instead);
   std::size_t held() const;
 
  private:

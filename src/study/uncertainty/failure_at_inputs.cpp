@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "model/failure_margins.h"
+#include "results/record_bytes.h"
 #include "study/uncertainty/crossing_response.h"
 #include "study/searches/failure_load.h"
 #include "study/uncertainty/fold_response.h"
@@ -329,32 +330,40 @@ void FailureLoadAtInputs::note(const std::optional<Sample>& sample, Told how) co
   told_[sample->number] = how;
 }
 
-std::string FailureLoadAtInputs::sample_report(std::uint64_t sample) const {
+void FailureLoadAtInputs::write_sample_report(RecordWriter& out, std::uint64_t sample) const {
   Told how = Told::by_failure_load;
   {
     const std::lock_guard<std::mutex> hold(told_lock_);
     if (const auto it = told_.find(sample); it != told_.end()) how = it->second;
   }
-  return std::string(1, char(how)) + (operating_ ? operating_->waiting_bytes(sample) : std::string());
+  out(how), out(operating_ != nullptr);
+  if (operating_) operating_->write_waiting(out, sample);
 }
 
-void FailureLoadAtInputs::take_sample_report(std::uint64_t sample, const std::string& report) {
-  if (report.empty() || std::uint8_t(report[0]) > std::uint8_t(Told::by_search))
-    throw std::runtime_error(fmt::format("sample {}'s report arrived damaged", sample));
-  const Told how = Told(report[0]);
+void FailureLoadAtInputs::take_sample_report(RecordReader& in, std::uint64_t sample) {
+  Told how = Told::by_failure_load;
+  bool operating = false;
+  in(how), in(operating);
+  if (std::uint8_t(how) > std::uint8_t(Told::by_search)) in.damaged();
   if (how == Told::by_state) ++judged_by_state_;
   if (how == Told::by_search) ++searches_;
   note(Sample{sample, true}, how);
-  if (report.size() > 1) {
+  if (operating) {
     if (!operating_) throw std::runtime_error(fmt::format("sample {}'s report holds a state where none is held", sample));
-    operating_->take_waiting(report.substr(1), false);
+    operating_->take_waiting(in, false);
   }
 }
 
-std::string FailureLoadAtInputs::batch_states() const { return operating_ ? operating_->waiting_bytes() : std::string(); }
+void FailureLoadAtInputs::write_batch_states(RecordWriter& out) const {
+  out(operating_ != nullptr);
+  if (operating_) operating_->write_waiting(out);
+}
 
-void FailureLoadAtInputs::take_batch_states(const std::string& bytes) {
-  if (operating_) operating_->take_waiting(bytes, true);
+void FailureLoadAtInputs::take_batch_states(RecordReader& in) {
+  bool operating = false;
+  in(operating);
+  if (operating != (operating_ != nullptr)) in.damaged();
+  if (operating_) operating_->take_waiting(in, true);
 }
 
 std::optional<bool> FailureLoadAtInputs::fails_at(std::span<const double> x, double load, std::string& why,

@@ -85,13 +85,13 @@ class FailureLoadAtInputs {
   std::size_t states_held() const { return operating_ ? operating_->held() : 0; }
   // Samples judged by other processes of the study (MPI ranks: reliability.cpp). What this
   // process learnt judging `sample` (fails_at, just before): how it was told and the state
-  // it leaves to hold, as bytes; and such bytes taken here, as if it had been judged here.
-  std::string sample_report(std::uint64_t sample) const;
-  void take_sample_report(std::uint64_t sample, const std::string& report);
+  // it leaves to hold, written; and such a report read here, as if it had been judged here.
+  void write_sample_report(RecordWriter& out, std::uint64_t sample) const;
+  void take_sample_report(RecordReader& in, std::uint64_t sample);
   // The states a batch's samples leave to hold, for the processes that judged only some
   // of them; taken there in place of their own, so that every process holds the same.
-  std::string batch_states() const;
-  void take_batch_states(const std::string& bytes);
+  void write_batch_states(RecordWriter& out) const;
+  void take_batch_states(RecordReader& in);
 
   // Settle at x and keep it as a point later moves start from (e.g. the design point).
   void keep(std::span<const double> x);

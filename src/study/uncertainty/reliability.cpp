@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstring>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -11,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "results/record_bytes.h"
 #include "scene/scene_names.h"
 #include "study/uncertainty/failure_at_inputs.h"
 #include "study/searches/failure_load.h"
@@ -63,14 +63,6 @@ std::string design_point_words(const DesignPoint& p, const std::vector<Uncertain
   return words;
 }
 
-// Verdict bytes: none, safe, fails.
-char verdict_byte(const std::optional<bool>& v) { return !v ? 0 : *v ? 2 : 1; }
-std::optional<bool> verdict_of(char c) {
-  if (c == 0) return std::nullopt;
-  if (c == 1 || c == 2) return c == 2;
-  throw std::runtime_error("a sample's verdict arrived damaged");
-}
-
 // A batch's samples through `scheduler` (MPI ranks): each rank judges its share, whose
 // verdicts, reasons and states arrive at the rank that takes the results; that rank then
 // gives every rank the batch's verdicts and its states to hold, so that every rank holds
@@ -84,7 +76,7 @@ SpreadBatch spread_over(SearchScheduler& scheduler, int threads, FailureLoadAtIn
     for (std::size_t k = 0; k < count; ++k) todo[k] = first + k;
     SearchScheduler::Work work;
     work.run_here = [&](std::size_t i) { verdicts[i - first] = judge(i); };
-    // [verdict][why's length: 8 bytes][why][the sample's report]
+    // A sample's message: its verdict, why it has none, and the sample's report.
     work.run_for_another = [&](std::size_t i) {
       const std::optional<bool> v = judge(i);
       std::string why;
@@ -92,37 +84,41 @@ SpreadBatch spread_over(SearchScheduler& scheduler, int threads, FailureLoadAtIn
         const std::lock_guard<std::mutex> hold(why_lock);
         why = unresolved_why[i];
       }
-      const std::uint64_t length = why.size();
-      std::string bytes(1, verdict_byte(v));
-      bytes.append(reinterpret_cast<const char*>(&length), sizeof length);
-      return bytes + why + failure.sample_report(i);
+      RecordWriter out;
+      out(v), out(why);
+      failure.write_sample_report(out, i);
+      return out.take();
     };
     work.arrived = [&](std::size_t i, const std::string& bytes) {
-      std::uint64_t length = 0;
-      if (i < first || i >= first + count || bytes.size() < 1 + sizeof length)
-        throw std::runtime_error(fmt::format("sample {}'s verdict arrived damaged", i));
-      std::memcpy(&length, bytes.data() + 1, sizeof length);
-      if (length > bytes.size() - 1 - sizeof length)
-        throw std::runtime_error(fmt::format("sample {}'s verdict arrived damaged", i));
-      verdicts[i - first] = verdict_of(bytes[0]);
-      if (!verdicts[i - first]) {
+      RecordReader in(bytes, fmt::format("sample {}'s message", i));
+      if (i < first || i >= first + count) in.damaged();
+      std::optional<bool> v;
+      std::string why;
+      in(v), in(why);
+      verdicts[i - first] = v;
+      if (!v) {
         const std::lock_guard<std::mutex> hold(why_lock);
-        unresolved_why[i] = bytes.substr(1 + sizeof length, length);
+        unresolved_why[i] = why;
       }
-      failure.take_sample_report(i, bytes.substr(1 + sizeof length + length));
+      failure.take_sample_report(in, i);
+      in.finish();
     };
     scheduler.run(todo, threads, work);
-    // [the verdicts: one byte each][the states to hold]
-    std::string batch;
+    // The batch's verdicts and the states to hold.
     if (scheduler.takes_results()) {
-      for (const std::optional<bool>& v : verdicts) batch += verdict_byte(v);
-      batch += failure.batch_states();
-    }
-    scheduler.share(batch);
-    if (!scheduler.takes_results()) {
-      if (batch.size() < count) throw std::runtime_error("a batch's verdicts arrived damaged");
-      for (std::size_t k = 0; k < count; ++k) verdicts[k] = verdict_of(batch[k]);
-      failure.take_batch_states(batch.substr(count));
+      RecordWriter out;
+      out(verdicts);
+      failure.write_batch_states(out);
+      std::string batch = out.take();
+      scheduler.share(batch);
+    } else {
+      std::string batch;
+      scheduler.share(batch);
+      RecordReader in(batch, "a batch's message");
+      in(verdicts);
+      if (verdicts.size() != count) in.damaged();
+      failure.take_batch_states(in);
+      in.finish();
     }
     failure.hold_samples();
     return verdicts;
