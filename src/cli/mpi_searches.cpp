@@ -14,11 +14,13 @@
 #include <utility>
 #include <chrono>
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "results/record_bytes.h"
 #include "twb/error_family.h"
 #endif
 
@@ -40,14 +42,12 @@ constexpr int kAssign = 2;  // 0 → rank: the next search, or kNone
 
 constexpr std::int64_t kNone = -1;
 
-// A request: [has_result: 1 byte][search: 8 bytes][journal entry...].
-std::string ask(std::optional<std::pair<std::size_t, std::string>> result) {
-  std::string msg(1 + sizeof(std::int64_t), '\0');
-  msg[0] = result ? 1 : 0;
-  const std::int64_t search = result ? std::int64_t(result->first) : kNone;
-  std::memcpy(msg.data() + 1, &search, sizeof search);
-  if (result) msg += result->second;
-  return msg;
+// A request: whether a search was run, and if so its number and its journal entry.
+std::string ask(const std::optional<std::pair<std::size_t, std::string>>& result) {
+  RecordWriter out;
+  out(result.has_value());
+  if (result) out(std::uint64_t(result->first)), out(result->second);
+  return out.take();
 }
 
 // A failed call is the machine's or the network's, not a bug: an IoError with MPI's words.
@@ -88,7 +88,7 @@ void MpiScheduler::run(const std::vector<std::size_t>& todo, int threads, const 
     // A worker: ask, run what is assigned, send it back with the next request.
     std::optional<std::pair<std::size_t, std::string>> result;
     for (;;) {
-      const std::string msg = ask(std::move(result));
+      const std::string msg = ask(result);
       result.reset();
       check(MPI_Send(msg.data(), int(msg.size()), MPI_BYTE, 0, kAsk, MPI_COMM_WORLD), "MPI_Send");
       std::int64_t search = kNone;
@@ -139,11 +139,16 @@ void MpiScheduler::run(const std::vector<std::size_t>& todo, int threads, const 
     buffer.resize(std::size_t(bytes));
     check(MPI_Recv(buffer.data(), bytes, MPI_BYTE, status.MPI_SOURCE, kAsk, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
           "MPI_Recv");
-    if (buffer.size() >= 1 + sizeof(std::int64_t) && buffer[0] == 1) {
-      std::int64_t search = kNone;
-      std::memcpy(&search, buffer.data() + 1, sizeof search);
-      work.arrived(std::size_t(search), buffer.substr(1 + sizeof search));
+    RecordReader in(buffer, fmt::format("rank {}'s request", status.MPI_SOURCE));
+    bool has_result = false;
+    in(has_result);
+    if (has_result) {
+      std::uint64_t search = 0;
+      std::string entry;
+      in(search), in(entry);
+      work.arrived(std::size_t(search), entry);
     }
+    in.finish();
     const auto i = claim();
     const std::int64_t assign = i ? std::int64_t(*i) : kNone;
     check(MPI_Send(&assign, 1, MPI_INT64_T, status.MPI_SOURCE, kAssign, MPI_COMM_WORLD), "MPI_Send");
