@@ -183,14 +183,14 @@ TEST(RichardsonEstimate, TheRefinedCrossingIsSolvedAsFarAsItsLoadNeeds) {
 TEST(ToleranceController, TheBarOfThreeMeshesCoversTheFourthsEstimateAndSaysWhenItFallsShort) {
   Scene coarse = testing::table1_scene(true, true, true, true, 545.0, 100.0);
   testing::use_coarse_mesh(coarse);
-  coarse.study.type = StudyType::load_sweep;
-  coarse.study.tolerance = 0.01;
   const auto run = [&](int refinements) {
     Scene s = coarse;
     s.mesh.max_refinements = refinements;
     BearingModel model(s);
     DistressSearchSettings settings = fold_range();
     settings.march_past_distress = false;
+    settings.failure_error_bars = true;  // as a load sweep or map asks, to 1 %
+    settings.error_tolerance = 0.01;
     DistressSearch found = search_distress(model, settings, {});
     if (!found.row.fold_load || !found.row.distress_load) throw std::runtime_error("no W_d: " + found.row.method);
     estimate_failure_errors(model, settings, found, {}, nullptr);
