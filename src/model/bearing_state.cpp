@@ -102,10 +102,10 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   }
   s.heat_generated = ft.viscous_heat + ft.friction_heat;
   // Generated = conducted to ambient (+ carried out by the oil, with convection).
-  if (scene_.effects.convection) s.heat_carried = ft.convected_heat;
   if (scene_.effects.thermal)
-    s.energy_error = std::abs(s.heat_generated - s.heat_to_ambient - s.heat_carried.value_or(0.0)) /
-                     std::max(s.heat_generated, 1e-300);
+    s.energy_error =
+        std::abs(s.heat_generated - s.heat_to_ambient - (scene_.effects.convection ? ft.convected_heat : 0.0)) /
+        std::max(s.heat_generated, 1e-300);
 
   // Stribeck number Z·N/P: viscosity at the mean film temperature, N in rev/s, P the
   // load over the washer area (docs/physics.md section 9).
@@ -158,6 +158,7 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   s.washer_max_temperature = hottest_face(ComponentId::washer);
   s.gear_max_temperature = hottest_face(ComponentId::gear);
   s.limits = exceeded_limits(LimitValues::of(s, scene_.effects.thermal), OperatingLimits::of(scene_));
+  for (const auto& effect : effects_) effect->report(u, t, s.reported);
   return s;
 }
 

@@ -5,6 +5,7 @@
 // (film_convection.cpp). No unknowns of its own.
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include "model/effect_assembler.h"
@@ -23,8 +24,15 @@ class ConvectionEffect final : public EffectAssembler {
   // (Newton's iterates then toggle across the jump). docs/physics.md section 15.
   static constexpr double kGrooveFreshShare = 0.01;
 
+  // The heat the oil carries out of the sliding film (W, docs/physics.md section 15): with
+  // the heat conducted to the ambient, it balances the heat the film generates.
+  static constexpr std::string_view kHeatCarried = "heat_carried_W";
+  static constexpr ReportedQuantity kReported[] = {
+      {kHeatCarried, "W", "with convection, the heat the oil carries out of the film"}};
+
   explicit ConvectionEffect(ModelSetup& setup);
   void add_terms(std::span<const double> u, Assembler& a, AssemblyTotals& totals) const override;
+  void report(std::span<const double> u, const AssemblyTotals& totals, std::vector<ReportedValue>& out) const override;
 
  private:
   void add_film(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const;

@@ -9,7 +9,8 @@
 // Adding an effect: its section in docs/physics.md, its switch in the scene, one
 // assembler file (a class deriving from EffectAssembler) and its line in
 // register_effects; an effect that moves the films' gap registers a GapContribution
-// from its constructor. What every effect reads of the others (films, temperatures,
+// from its constructor; one that reports quantities of its own declares them
+// (reported_quantity.h) and names its list in effect_quantities. What every effect reads of the others (films, temperatures,
 // viscosity, the gap's shape, row scales) is BearingModel's public interface.
 #pragma once
 
@@ -20,6 +21,7 @@
 
 #include "model/film.h"
 #include "model/gap_contribution.h"
+#include "model/reported_quantity.h"
 #include "model/sparse_assembly.h"
 #include "model/unknown_layout.h"
 
@@ -29,6 +31,7 @@ class BearingModel;
 struct AssemblyTotals;
 struct ComponentHeat;
 struct Scene;
+struct ReportedValue;
 
 // The washer's dishing curvature (thermal deformation, docs/physics.md section 11): its
 // unknown κ̂ = κ̄/curvature_ref, -1 without the effect. The heat balance adds the flux
@@ -81,6 +84,11 @@ class EffectAssembler {
   // bodies' fields): an effect with unknowns of its own says how they move between meshes.
   virtual void carry_from(const BearingModel& /*source*/, const EffectAssembler& /*mine_there*/,
                           std::span<const double> /*u*/, std::span<double> /*out*/) const {}
+  // Appends to `out` the quantities this effect reports of solved state u (its kReported,
+  // reported_quantity.h), one value each in their declared order; `totals` are what the
+  // state's assembly gathered. Most effects report nothing of their own.
+  virtual void report(std::span<const double> /*u*/, const AssemblyTotals& /*totals*/,
+                      std::vector<ReportedValue>& /*out*/) const {}
 };
 
 }  // namespace twb

@@ -1,7 +1,11 @@
 // The effects a scene turns on, in the order they declare their unknowns and add their
 // terms (effect_assembler.h). The order is part of the results: it fixes the unknowns'
-// numbering and the order in which terms are summed into a shared row.
+// numbering and the order in which terms are summed into a shared row. Below them, the
+// quantities they report of their own (reported_quantity.h), in the same order.
+#include <array>
 #include <memory>
+#include <span>
+#include <vector>
 
 #include "model/bearing_model.h"
 #include "model/convection_effect.h"
@@ -37,6 +41,19 @@ void BearingModel::register_effects() {
     contact_force_unknown_ = layout_.add("sliding film contact force", BlockEffect::asperity_contact, 1);
     contact_force_scale_ = scene_.operating.load;
   }
+}
+
+std::span<const ReportedQuantity> effect_quantities() {
+  // One line per effect that reports a quantity of its own: its kReported.
+  static const std::vector<ReportedQuantity> quantities = [] {
+    std::vector<ReportedQuantity> q;
+    for (std::span<const ReportedQuantity> of_effect : std::array<std::span<const ReportedQuantity>, 1>{
+             ConvectionEffect::kReported,
+         })
+      q.insert(q.end(), of_effect.begin(), of_effect.end());
+    return q;
+  }();
+  return quantities;
 }
 
 }  // namespace twb

@@ -18,11 +18,13 @@
 // in every state (zero on the side the oil leaves), so that the Jacobian's pattern does not
 // depend on the flow's direction.
 #include <algorithm>
+#include <string>
 
 #include "model/convection_effect.h"
 
 #include "model/assembly_totals.h"
 #include "model/film_face_flows.h"
+#include "twb/model/bearing_state.h"
 
 namespace twb {
 
@@ -45,6 +47,12 @@ void ConvectionEffect::add_terms(std::span<const double> u, Assembler& a, Assemb
     const Film& film = model_.films()[f];
     if (film.pressure_offset >= 0 && film.temperature_offset >= 0) add_film(u, film, a, totals.film[f]);
   }
+}
+
+void ConvectionEffect::report(std::span<const double>, const AssemblyTotals& totals,
+                              std::vector<ReportedValue>& out) const {
+  for (std::size_t f = 0; f < model_.films().size(); ++f)
+    if (model_.films()[f].sliding) out.push_back({std::string(kHeatCarried), totals.film[f].convected_heat});
 }
 
 void ConvectionEffect::add_film(std::span<const double> u, const Film& film, Assembler& a, FilmTotals& totals) const {

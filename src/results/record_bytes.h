@@ -33,14 +33,18 @@ concept RecordOf = std::same_as<std::remove_const_t<S>, R>;
 // A field added to a state must be listed too, or a resumed run would write it as zero:
 // the size fails to compile until its list is extended (the other records' sizes are
 // in the journal's header, so an entry of another layout is never read).
-static_assert(sizeof(BearingState) == 8 * 31 + 3 * sizeof(std::optional<double>) + sizeof(std::optional<FilmFlows>) +
-                  sizeof(std::vector<LimitExcess>),
+static_assert(sizeof(BearingState) == 8 * 31 + 2 * sizeof(std::optional<double>) + sizeof(std::optional<FilmFlows>) +
+                  sizeof(std::vector<LimitExcess>) + sizeof(std::vector<ReportedValue>),
               "list every BearingState field (record_bytes.h)");
 
 // Each record's fields, for the writer (S const) and the reader alike.
 template <class A, RecordOf<LimitExcess> S>
 void record_fields(A& a, S& e) {
   a(e.kind), a(e.value), a(e.limit);
+}
+template <class A, RecordOf<ReportedValue> S>
+void record_fields(A& a, S& v) {
+  a(v.column), a(v.value);
 }
 template <class A, RecordOf<FilmFlows> S>
 void record_fields(A& a, S& q) {
@@ -53,9 +57,10 @@ void record_fields(A& a, S& s) {
   a(s.carrier_max_temperature), a(s.washer_max_temperature), a(s.gear_max_temperature);
   a(s.gamma_x_ratio), a(s.gamma_y_ratio), a(s.fluid_force), a(s.contact_force), a(s.fluid_share), a(s.stop_reaction);
   a(s.contact_share), a(s.torque), a(s.f_eff), a(s.stribeck), a(s.friction_coefficient), a(s.friction_clamped);
-  a(s.heat_generated), a(s.heat_to_ambient), a(s.energy_error), a(s.heat_carried), a(s.force_balance_error);
+  a(s.heat_generated), a(s.heat_to_ambient), a(s.energy_error), a(s.force_balance_error);
   a(s.moment_balance_error), a(s.complementarity_error), a(s.max_contact_pressure), a(s.contact_temperature);
   a(s.position.c1), a(s.position.gamma_x), a(s.position.gamma_y), a(s.position.c2), a(s.flows), a(s.limits);
+  a(s.reported);
 }
 template <class A, RecordOf<FilmFields> S>
 void record_fields(A& a, S& f) {

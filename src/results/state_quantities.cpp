@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "model/reported_quantity.h"
 #include "result_cells.h"
 
 namespace twb {
@@ -88,6 +89,20 @@ void add_flows(std::vector<StateQuantity> &q) {
                          : std::nullopt;
         },
         Style::general, has_flows));
+  }
+}
+
+// The quantities the effects report of their own (model/reported_quantity.h), each
+// written only where some state's effects report it.
+void add_effect_quantities(std::vector<StateQuantity> &q) {
+  for (const ReportedQuantity &e : effect_quantities()) {
+    const std::string_view column = e.column;
+    q.push_back(of_state(
+        std::string(column), e.unit, e.meaning,
+        [column](const BearingState &s) { return s.reported_value(column); },
+        Style::general, [column](const SolvedState &r) {
+          return r.state.reported_value(column).has_value();
+        }));
   }
 }
 
@@ -219,11 +234,7 @@ std::vector<StateQuantity> make_quantities() {
         return StateCell{std::nullopt, 0, limit_names(r.state.limits)};
       }));
   add_flows(q);
-  q.push_back(of_state(
-      "heat_carried_W", "W",
-      "with convection, the heat the oil carries out of the film",
-      [](const BearingState &s) { return s.heat_carried; }, Style::general,
-      [](const SolvedState &r) { return r.state.heat_carried.has_value(); }));
+  add_effect_quantities(q);
   add_mesh_errors(q);
   return q;
 }

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/reported_quantity.h"
 #include "study/searches/distress_curve.h"
 #include "study/searches/study_searches.h"
 #include "twb/results/fields_table.h"
@@ -41,7 +42,7 @@ std::string result_columns_json() {
   SolvedState with_errors;
   with_errors.mesh_errors.assign(std::size(kMeshErrorQuantities), 0.0);
   with_errors.state.flows = FilmFlows{};
-  with_errors.state.heat_carried = 0.0;
+  for (const ReportedQuantity& q : effect_quantities()) with_errors.state.reported.push_back({std::string(q.column), 0.0});
   Json tables;
   tables["states"] = columns(states_table({with_errors}, {parameter}, true), states_table({}, {}, false));
   tables["distress"] = columns(distress_table({}, {parameter}, true), distress_table({}, {}, false));

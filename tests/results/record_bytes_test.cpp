@@ -17,7 +17,7 @@ SolvedState a_solved_state() {
   SolvedState s;
   s.state.load = 115.0;
   s.state.speed = 0.1 + 0.2;  // a double that is not its decimal
-  s.state.heat_carried = 3.5;
+  s.state.reported = {{"heat_carried_W", 3.5}, {"toy_um", 0.1 + 0.7}};
   s.state.flows = FilmFlows{1e-6, 2e-6, 3e-6, 4e-6};
   s.state.limits.push_back(LimitExcess{LimitKind::oil_temperature, 420.0, 410.0});
   s.converged = true;
@@ -45,6 +45,9 @@ TEST(RecordBytes, EveryFieldComesBackAsWritten) {
   EXPECT_EQ(back.state.flows->grooves, 4e-6);
   ASSERT_EQ(back.state.limits.size(), 1u);
   EXPECT_EQ(back.state.limits[0].kind, LimitKind::oil_temperature);
+  ASSERT_EQ(back.state.reported.size(), 2u);
+  EXPECT_EQ(back.state.reported[1].column, "toy_um");
+  EXPECT_EQ(back.state.reported_value("toy_um"), 0.1 + 0.7);
   EXPECT_EQ(back.sliding, SlidingFilm::washer_gear);
   EXPECT_EQ(back.branch, Branch::hot);
   ASSERT_EQ(back.fields.size(), 1u);

@@ -3,9 +3,12 @@
 // one unknown per node, held by its own row at a depth the test prescribes. It is the
 // worked example of model/gap_contribution.h, and what the tests check a new part
 // against: its slopes in every kernel (jacobian_test), a uniform depth absorbed by the
-// clearance (gap_contribution_test), its unknowns carried to another mesh.
+// clearance (gap_contribution_test), its unknowns carried to another mesh. It reports its
+// deepest wear as a quantity of its own (model/reported_quantity.h), which states.csv
+// and the journal carry without a change of theirs (reported_quantity_test).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -26,6 +29,9 @@ class PrescribedWear final : public EffectAssembler {
     setup.gap_parts.push_back(std::make_unique<Part>(offset_));
   }
 
+  static constexpr ReportedQuantity kReported[] = {
+      {"worn_depth_max_um", "µm", "the deepest prescribed wear of film 1"}};
+
   // The model's effect list entry for it.
   static BearingModel::EffectMaker maker(Depth depth) {
     return [depth](ModelSetup& setup) { return std::make_unique<PrescribedWear>(setup, depth); };
@@ -44,6 +50,12 @@ class PrescribedWear final : public EffectAssembler {
       a.add_residual(offset_ + n, prescribed(n) - u[std::size_t(offset_ + n)]);
       a.add_derivative(offset_ + n, offset_ + n, -1.0);
     }
+  }
+  void report(std::span<const double> u, const AssemblyTotals&, std::vector<ReportedValue>& out) const override {
+    double deepest = 0.0;
+    for (int n = 0; n < model_.films()[0].mesh.node_count(); ++n)
+      deepest = std::max(deepest, u[std::size_t(offset_ + n)] * model_.clearance_scale());
+    out.push_back({std::string(kReported[0].column), deepest * 1e6});
   }
   // Prescribed, so the depth of this mesh's own nodes.
   void carry_from(const BearingModel&, const EffectAssembler&, std::span<const double>,

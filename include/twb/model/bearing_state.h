@@ -2,6 +2,8 @@
 #pragma once
 
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "twb/model/operating_limits.h"
@@ -13,7 +15,6 @@ struct RigidPosition {
   double c1 = 0, gamma_x = 0, gamma_y = 0, c2 = 0;
 };
 
-// Everything reported per solved state (docs/physics.md section 9).
 // The sliding film's oil flows (m³/s, docs/physics.md section 14), from the face fluxes of
 // its Reynolds balances. At a steady state with a full film supplied = leaving.
 struct FilmFlows {
@@ -23,6 +24,14 @@ struct FilmFlows {
   double grooves = 0;   // out of the fed grooves into the lands and across the rims
 };
 
+// A quantity an effect reports of its own (model/reported_quantity.h): its states.csv
+// column, unit in the name, and its value there.
+struct ReportedValue {
+  std::string column;
+  double value = 0;
+};
+
+// Everything reported per solved state (docs/physics.md section 9).
 struct BearingState {
   double load = 0, speed = 0;
   double washer_mean_temperature = 0;  // K, area-weighted
@@ -48,8 +57,6 @@ struct BearingState {
   double friction_coefficient = 0;
   bool friction_clamped = false;
   double heat_generated = 0, heat_to_ambient = 0, energy_error = 0;
-  // With convection: the heat the oil carries out of the film (W, docs/physics.md section 15).
-  std::optional<double> heat_carried;
   double force_balance_error = 0, moment_balance_error = 0;  // relative to the load
   double complementarity_error = 0;  // max |min(p̂, ŵ)|
   double max_contact_pressure = 0;   // Pa, nominal asperity pressure where either film is tightest
@@ -57,6 +64,18 @@ struct BearingState {
   RigidPosition position;
   // The limits of the model and the oil this state exceeds (operating_limits.h).
   std::vector<LimitExcess> limits;
+  // What the scene's effects report of their own (EffectAssembler::report), in the order
+  // the effects were registered: with convection the heat the oil carries; a new effect's
+  // quantities without a field here.
+  std::vector<ReportedValue> reported;
+
+  // The value an effect reported in that column; none where no effect of this state's
+  // model reports it.
+  std::optional<double> reported_value(std::string_view column) const {
+    for (const ReportedValue& v : reported)
+      if (v.column == column) return v.value;
+    return std::nullopt;
+  }
 };
 
 }  // namespace twb

@@ -11,6 +11,7 @@
 #include <boost/math/tools/toms748_solve.hpp>
 #include <fmt/format.h>
 
+#include "model/convection_effect.h"
 #include "twb/error_family.h"
 
 namespace twb {
@@ -73,7 +74,7 @@ TransientSettings DutyCycleMarch::transient_settings() {
     const BearingState& s = describe_at(t, state);
     rates[0] = s.heat_generated;
     rates[1] = s.heat_to_ambient;
-    rates[2] = s.heat_carried.value_or(0.0);
+    rates[2] = s.reported_value(ConvectionEffect::kHeatCarried).value_or(0.0);
   };
   return settings;
 }
