@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
+#include <vector>
 
 #include "model/limit_thresholds.h"
 #include "model/assembly_totals.h"
@@ -9,6 +11,35 @@
 #include "model/located_maximum.h"
 
 namespace twb {
+
+namespace {
+
+// What the bodies' temperature fields report: the washer's area-weighted mean rise above
+// the ambient (K) and the heat the bodies lose to the ambient (W), in the bodies' order.
+struct BodiesHeat {
+  double washer_mean_rise = 0.0;
+  double to_ambient = 0.0;
+};
+
+BodiesHeat bodies_heat(const std::vector<ComponentHeat>& components, std::span<const double> u) {
+  BodiesHeat out;
+  for (const ComponentHeat& comp : components) {
+    double sum = 0, area = 0, loss = 0;
+    const int nt = comp.axisymmetric ? 1 : comp.grid.circumferential_nodes();
+    for (int i = 0; i < comp.grid.radial_nodes(); ++i)
+      for (int j = 0; j < nt; ++j) {
+        const double tk = u[comp.offset + i * nt + j];
+        sum += comp.node_area(i) * tk;
+        area += comp.node_area(i);
+        if (comp.loses_to_ambient) loss += comp.node_area(i) * comp.conductivity / comp.thickness * tk;
+      }
+    if (comp.id == ComponentId::washer) out.washer_mean_rise = sum / area;
+    out.to_ambient += loss;
+  }
+  return out;
+}
+
+}  // namespace
 
 BearingState BearingModel::describe(std::span<const double> u) const {
   std::vector<double> residual(size());
@@ -86,19 +117,9 @@ BearingState BearingModel::describe(std::span<const double> u) const {
             [](const Film& f) { return f.sliding; })
             .value;
   if (scene_.effects.thermal) {
-    for (const ComponentHeat& comp : components_) {
-      double sum = 0, area = 0, loss = 0;
-      const int nt = comp.axisymmetric ? 1 : comp.grid.circumferential_nodes();
-      for (int i = 0; i < comp.grid.radial_nodes(); ++i)
-        for (int j = 0; j < nt; ++j) {
-          const double tk = u[comp.offset + i * nt + j];
-          sum += comp.node_area(i) * tk;
-          area += comp.node_area(i);
-          if (comp.loses_to_ambient) loss += comp.node_area(i) * comp.conductivity / comp.thickness * tk;
-        }
-      if (comp.id == ComponentId::washer) s.washer_mean_temperature = t0 + sum / area;
-      s.heat_to_ambient += loss;
-    }
+    const BodiesHeat bodies = bodies_heat(components_, u);
+    s.washer_mean_temperature = t0 + bodies.washer_mean_rise;
+    s.heat_to_ambient = bodies.to_ambient;
   }
   s.heat_generated = ft.viscous_heat + ft.friction_heat;
   // Generated = conducted to ambient (+ carried out by the oil, with convection).
