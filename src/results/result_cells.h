@@ -2,9 +2,14 @@
 // _C), and the columns that tell a study's runs apart.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "model/reported_quantity.h"
+#include "twb/model/bearing_state.h"
 #include "twb/results/distress_table.h"
 #include "twb/results/result_table.h"
 #include "twb/scene/scene.h"
@@ -51,6 +56,38 @@ struct ConvergenceColumns {
     table.put_text(meshes, c.meshes);
     table.put_number(order, c.order);
     if (met) table.put_text(*met, c.tolerance_met ? (*c.tolerance_met ? "yes" : "no") : "");
+  }
+};
+
+// The columns of the quantities the effects report of their own (model/reported_quantity.h)
+// that some row's state has: the registered effects' in their order (unless the table
+// writes those among its own quantities, `registered` false), then any other (a test's
+// own effect) in the order the rows first report it.
+struct ReportedColumns {
+  std::vector<std::pair<std::string, ResultTable::Column>> columns;
+
+  template <class Rows, class StateOf>
+  ReportedColumns(ResultTable& table, const Rows& rows, StateOf state_of, bool registered) {
+    const auto reports = [&](std::string_view column) {
+      return std::any_of(rows.begin(), rows.end(),
+                         [&](const auto& r) { return state_of(r).reported_value(column).has_value(); });
+    };
+    const auto listed = [&](std::string_view column) {
+      const auto quantities = effect_quantities();
+      return std::any_of(quantities.begin(), quantities.end(),
+                         [&](const ReportedQuantity& q) { return q.column == column; });
+    };
+    if (registered)
+      for (const ReportedQuantity& q : effect_quantities())
+        if (reports(q.column)) columns.emplace_back(std::string(q.column), table.number(std::string(q.column)));
+    for (const auto& r : rows)
+      for (const ReportedValue& v : state_of(r).reported)
+        if (!listed(v.column) && std::none_of(columns.begin(), columns.end(),
+                                              [&](const auto& c) { return c.first == v.column; }))
+          columns.emplace_back(v.column, table.number(v.column));
+  }
+  void put(ResultTable& table, const BearingState& state) const {
+    for (const auto& [column, at] : columns) table.put_number(at, state.reported_value(column));
   }
 };
 

@@ -56,23 +56,14 @@ ResultTable states_table(const std::vector<SolvedState> &rows,
   declare(0, kOperatingPointQuantities);
   const cells::RunColumns run(t, parameter_columns, sliding_column);
   declare(kOperatingPointQuantities, quantities.size());
-  // An effect's quantity not among the registered effects' (a test's own effect) is
-  // written too, last, in the order the states first report it.
-  std::vector<std::pair<std::string, ResultTable::Column>> unlisted;
-  for (const SolvedState &r : rows)
-    for (const ReportedValue &v : r.state.reported) {
-      const auto named = [&](const auto &c) { return c.first == v.column; };
-      if (std::none_of(quantities.begin(), quantities.end(),
-                       [&](const StateQuantity &q) { return q.column == v.column; }) &&
-          std::none_of(unlisted.begin(), unlisted.end(), named))
-        unlisted.emplace_back(v.column, t.number(v.column));
-    }
+  // An effect's quantity not among the registered effects' is written too, last.
+  const cells::ReportedColumns unlisted(
+      t, rows, [](const SolvedState &r) -> const BearingState & { return r.state; }, false);
   for (const SolvedState &r : rows) {
     put(r, 0, kOperatingPointQuantities);
     run.put(t, r.parameters, r.sliding);
     put(r, kOperatingPointQuantities, quantities.size());
-    for (const auto &[column, at] : unlisted)
-      t.put_number(at, r.state.reported_value(column));
+    unlisted.put(t, r.state);
   }
   return t;
 }

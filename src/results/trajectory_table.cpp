@@ -32,6 +32,8 @@ ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const
              fluid = t.number("fluid_share");
   const auto regime = t.text("regime");
   const auto generated = t.number("heat_generated_W"), to_ambient = t.number("heat_to_ambient_W");
+  const cells::ReportedColumns reported(
+      t, samples, [](const TrajectorySample& p) -> const BearingState& { return p.state; }, true);
   std::optional<ResultTable::Column> ambient, tilt, margin, criterion, stop;
   if (cycle) {
     ambient = t.number("ambient_C"), tilt = t.number("tilt_rad"), margin = t.number("least_margin");
@@ -54,6 +56,7 @@ ResultTable trajectory_table(const std::vector<TrajectorySample>& samples, const
     t.put_text(regime, std::string(regime_name(regime_of(s))));
     t.put_number(generated, s.heat_generated);
     t.put_number(to_ambient, s.heat_to_ambient);
+    reported.put(t, s);
     if (cycle) {
       t.put_number(*ambient, p.ambient ? std::optional<double>(*p.ambient - kelvin_offset) : std::nullopt);
       t.put_number(*tilt, p.tilt);

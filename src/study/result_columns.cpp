@@ -38,7 +38,8 @@ Json columns(const ResultTable& fullest, const ResultTable& plainest) {
 
 std::string result_columns_json() {
   const std::string parameter = "<parameter>", family = "<family>";
-  // One row is enough for the states table to declare its error bars' and flows' columns.
+  // One row is enough for the states table to declare its error bars', flows' and effects'
+  // columns (and for the trajectory its effects').
   SolvedState with_errors;
   with_errors.mesh_errors.assign(std::size(kMeshErrorQuantities), 0.0);
   with_errors.state.flows = FilmFlows{};
@@ -48,7 +49,10 @@ std::string result_columns_json() {
   tables["distress"] = columns(distress_table({}, {parameter}, true), distress_table({}, {}, false));
   tables["sliding"] = columns(sliding_table({}), sliding_table({}));
   tables["fold_curve"] = columns(fold_curve_table({}, parameter, family), fold_curve_table({}, parameter));
-  tables["trajectory"] = columns(trajectory_table({}, {parameter}, true, true), trajectory_table({}, {}, false));
+  TrajectorySample reporting;
+  reporting.state.reported = with_errors.state.reported;
+  tables["trajectory"] =
+      columns(trajectory_table({reporting}, {parameter}, true, true), trajectory_table({}, {}, false));
   tables["cycle_events"] = columns(cycle_events_table({}), cycle_events_table({}));
   tables["fields"] = columns(fields_table({}), fields_table({}));
   tables["sensitivity"] = columns(sensitivity_table({}), sensitivity_table({}));

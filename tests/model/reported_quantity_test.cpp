@@ -19,6 +19,7 @@
 #include "study/searches/steady_solver.h"
 #include "twb/results/state_quantities.h"
 #include "twb/results/states_table.h"
+#include "twb/results/trajectory_table.h"
 
 namespace twb {
 namespace {
@@ -30,8 +31,8 @@ Scene heated_washer() {
 }
 
 // The worn state's deepest wear comes back from describe(), in the table states.csv is
-// written from (its last column: its effect is not a registered one) and through the
-// journal's bytes. The depth's row is linear in its own unknown alone (depth − d̂ = 0), so
+// written from (its last column: its effect is not a registered one), in trajectory.csv's
+// and through the journal's bytes. The depth's row is linear in its own unknown alone (depth − d̂ = 0), so
 // Newton holds it to rounding: the value is compared to 1e-12 of itself.
 TEST(ReportedQuantity, AnEffectsOwnQuantityReachesStatesCsvAndTheJournal) {
   const Scene s = heated_washer();
@@ -55,6 +56,15 @@ TEST(ReportedQuantity, AnEffectsOwnQuantityReachesStatesCsvAndTheJournal) {
   ASSERT_EQ(last.numbers.size(), 1u);
   EXPECT_EQ(last.numbers[0], *reported);
 
+  TrajectorySample sample;
+  sample.state = row.state;
+  const ResultTable trajectory = trajectory_table({sample});
+  const auto in_trajectory = std::find_if(trajectory.columns().begin(), trajectory.columns().end(),
+                                          [&](const ResultColumn& c) { return c.name == column; });
+  ASSERT_NE(in_trajectory, trajectory.columns().end());
+  ASSERT_EQ(in_trajectory->numbers.size(), 1u);
+  EXPECT_EQ(in_trajectory->numbers[0], *reported);
+
   RecordWriter out;
   out(row);
   SolvedState back;
@@ -65,7 +75,8 @@ TEST(ReportedQuantity, AnEffectsOwnQuantityReachesStatesCsvAndTheJournal) {
 }
 
 // A registered effect's quantities are state quantities (so `twb columns`, Python's column
-// lists and the docs' table name them), written only where the effect is on.
+// lists and the docs' table name them), written in states.csv and trajectory.csv only
+// where the effect is on.
 TEST(ReportedQuantity, ARegisteredEffectsQuantitiesAreStateQuantities) {
   const auto listed = effect_quantities();
   ASSERT_TRUE(std::any_of(listed.begin(), listed.end(),
@@ -84,10 +95,14 @@ TEST(ReportedQuantity, ARegisteredEffectsQuantitiesAreStateQuantities) {
     ASSERT_TRUE(SteadySolver(model, {}).solve_cold(u).converged);
     SolvedState row;
     row.state = model.describe(u);
-    const ResultTable table = states_table({row}, {}, false);
-    const bool written = std::any_of(table.columns().begin(), table.columns().end(),
-                                     [](const ResultColumn& c) { return c.name == ConvectionEffect::kHeatCarried; });
-    EXPECT_EQ(written, convection);
+    TrajectorySample sample;
+    sample.state = row.state;
+    for (const ResultTable& table : {states_table({row}, {}, false), trajectory_table({sample})}) {
+      const bool written = std::any_of(table.columns().begin(), table.columns().end(), [](const ResultColumn& c) {
+        return c.name == ConvectionEffect::kHeatCarried;
+      });
+      EXPECT_EQ(written, convection);
+    }
   }
 }
 
