@@ -193,8 +193,8 @@ class Scene:
     def run(self, progress=None, threads=0, continue_from=None, out=None):
         """Runs the scene's study (see twb.run)."""
         directory = _results_directory(self, out)
-        results = Results(_core().run(self._scene, progress, threads, _cycle_end_text(continue_from), directory),
-                          self)
+        text, from_directory = _cycle_end(continue_from)
+        results = Results(_core().run(self._scene, progress, threads, text, from_directory, directory), self)
         results.directory = directory
         return results
 
@@ -328,19 +328,15 @@ def _results_directory(scene, out):
     return os.fspath(out)
 
 
-def _cycle_end_text(continue_from):
-    """The end state's JSON text of a duty cycle's Results or results directory, or None."""
+def _cycle_end(continue_from):
+    """A duty cycle's end state to go on from: its JSON text (of Results) or the results
+    directory that holds it (which twb's core reads and checks as twb run --continue-from
+    does), as (text, directory); (None, None) for none."""
     if continue_from is None:
-        return None
+        return None, None
     if isinstance(continue_from, Results):
         if continue_from.cycle_end is None:
             raise ValueError("continue_from: these results hold no cycle's end (not a duty cycle, "
                              "or one that did not run to its end)")
-        return continue_from.cycle_end
-    path = os.path.join(os.fspath(continue_from), "cycle_end_state.json")
-    try:
-        with open(path, encoding="utf-8") as f:
-            return f.read()
-    except OSError as e:
-        raise ValueError(f"continue_from: cannot read {path} (a duty cycle's results directory holds one): "
-                         f"{e.strerror}") from None
+        return continue_from.cycle_end, None
+    return None, os.fspath(continue_from)

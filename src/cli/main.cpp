@@ -188,19 +188,10 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
     const auto [k, n] = parse_slice(r.slice);
     slice.emplace(k, n);
   }
-  std::optional<twb::CycleState> cycle_start;
-  if (!r.continue_from.empty()) {
-    twb::check_continuable(scene.study, "--continue-from");
-    cycle_start = twb::read_cycle_state((std::filesystem::path(r.continue_from) / "cycle_end_state.json").string());
-  }
   if (r.out_dir.empty()) r.out_dir = scene.output.directory;
-  if (cycle_start) {
-    std::error_code same_error;
-    if (std::filesystem::equivalent(r.out_dir, r.continue_from, same_error))
-      throw std::invalid_argument(fmt::format("--continue-from {}: the continued part's results go to another "
-                                              "directory (--out DIR), or its end state would replace the one it starts from",
-                                              r.continue_from));
-  }
+  std::optional<twb::CycleState> cycle_start;
+  if (!r.continue_from.empty())
+    cycle_start = twb::cycle_to_continue(scene.study, r.continue_from, r.out_dir, "--continue-from");
   // Before any work: a directory this run cannot write into, or one another run is
   // writing into, is the user's to fix now, not after the study.
   const twb::ResultsDirectory results(r.out_dir);

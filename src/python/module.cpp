@@ -139,15 +139,19 @@ class ProgressRelay {
   std::atomic<bool> stop_{false};
 };
 
-// continue_from: a duty cycle's end state (cycle_end_state.json's text) to go on from;
-// directory: the results directory to write as `twb run` does (none: nothing written; not
-// written where the progress callback raised or Ctrl-C stopped the study).
-py::dict run_scene(const twb::Scene& scene, py::object progress, int threads, std::optional<std::string> continue_from,
+// continue_from: a duty cycle's end state to go on from, as its text (cycle_end_state.json's,
+// of a Results) or the results directory that holds it; directory: the results directory
+// to write as `twb run` does (none: nothing written; not written where the progress
+// callback raised or Ctrl-C stopped the study).
+py::dict run_scene(const twb::Scene& scene, py::object progress, int threads,
+                   std::optional<std::string> continue_from_text, std::optional<std::string> continue_from,
                    std::optional<std::string> directory) {
   std::optional<twb::CycleState> cycle_start;
-  if (continue_from) {
+  if (continue_from_text) {
     twb::check_continuable(scene.study, "continue_from");
-    cycle_start = twb::cycle_state_of(*continue_from, "continue_from");
+    cycle_start = twb::cycle_state_of(*continue_from_text, "continue_from");
+  } else if (continue_from) {
+    cycle_start = twb::cycle_to_continue(scene.study, *continue_from, directory.value_or(""), "continue_from");
   }
   ProgressRelay relay(std::move(progress));
   const twb::ProgressReport report = relay.report();
@@ -268,7 +272,7 @@ PYBIND11_MODULE(_twb, m) {
       },
       py::arg("path"), py::arg("overrides") = std::vector<std::string>{});
   m.def("run", &run_scene, py::arg("scene"), py::arg("progress") = py::none(), py::arg("threads") = 0,
-        py::arg("continue_from") = py::none(), py::arg("out") = py::none());
+        py::arg("continue_from_text") = py::none(), py::arg("continue_from") = py::none(), py::arg("out") = py::none());
 
   // One bearing for point after point (twb::Bearing): each state a mapping of states.csv's
   // columns to their values, unrounded.

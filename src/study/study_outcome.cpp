@@ -1,6 +1,7 @@
 #include "twb/study/study_outcome.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -8,7 +9,6 @@
 #include "twb/results/run_axes.h"
 #include "study/study_kind.h"
 #include "twb/scene/scene_loader.h"
-
 
 namespace twb {
 
@@ -68,6 +68,17 @@ void check_continuable(const Study& study, std::string_view asked_by) {
     throw std::invalid_argument(fmt::format("{} goes on with a duty cycle from where an earlier one ended; this "
                                             "scene's study is a {}",
                                             asked_by, scene_name(study.type)));
+}
+
+CycleState cycle_to_continue(const Study& study, const std::string& from, const std::string& out,
+                             std::string_view asked_by) {
+  check_continuable(study, asked_by);
+  std::error_code same_error;
+  if (!out.empty() && std::filesystem::equivalent(out, from, same_error))
+    throw std::invalid_argument(fmt::format("{} {}: the continued part's results go to another directory, or its "
+                                            "end state would replace the one it starts from",
+                                            asked_by, from));
+  return read_cycle_state((std::filesystem::path(from) / "cycle_end_state.json").string());
 }
 
 }  // namespace twb

@@ -145,6 +145,8 @@ class CommandComparison(unittest.TestCase):
             subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
             from_directory = twb.run(SCENE, overrides=cycle(second), continue_from=out)
             self.assertEqual(from_directory.trajectory["T_max_C"][-1], whole.trajectory["T_max_C"][-1])
+            with self.assertRaises(ValueError):  # its results would replace the end it starts from
+                twb.run(SCENE, overrides=cycle(second), continue_from=out, out=out)
         with self.assertRaises(ValueError):  # a point study has no cycle's end
             twb.run(SCENE, overrides=cycle(second), continue_from=twb.run(SCENE, overrides=dict(COARSE, **POINT)))
         with self.assertRaises(ValueError):  # nor has an empty directory

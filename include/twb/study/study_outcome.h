@@ -103,5 +103,13 @@ bool spreads_over_ranks(const Study& study);
 // RunOptions::cycle_start, twb run --continue-from, twb.run's continue_from, named by
 // `asked_by`): std::invalid_argument unless its type can.
 void check_continuable(const Study& study, std::string_view asked_by);
+// Where a duty cycle goes on from when asked by a results directory (twb run
+// --continue-from DIR, twb.run(continue_from=DIR), named by `asked_by`): the end state an
+// earlier run wrote into `from` (cycle_end_state.json), for a run whose results go to
+// `out` (empty: none written). std::invalid_argument for a study that cannot go on
+// (check_continuable, first), for `out` the directory `from` itself (the new end state
+// would replace the one it starts from), and for a directory without an end state.
+CycleState cycle_to_continue(const Study& study, const std::string& from, const std::string& out,
+                             std::string_view asked_by);
 
 }  // namespace twb
