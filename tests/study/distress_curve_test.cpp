@@ -217,7 +217,7 @@ TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
 // crossing, refined from the same state by the same sequence: the same bar to the bit.
 TEST(DistressCurve, ACurveToAToleranceGoesAlongTheMeshSequenceAtEveryPoint) {
   Scene scene = speed_curve_scene();
-  scene.study.to = 1800.0;
+  scene.study.to = 1900.0;
   scene.study.error_estimate = ErrorEstimate::richardson;
   scene.study.tolerance = 0.01;
   scene.mesh.max_refinements = 2;
