@@ -170,7 +170,7 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads,
   relay.raise_if_failed();
 
   py::dict tables, formats;
-  for (const twb::NamedTable& t : twb::study_tables(outcome, scene.study.type)) {
+  for (const twb::NamedTable& t : twb::study_tables(outcome, scene.study.type())) {
     py::tuple cf = table_columns(t.table);
     tables[py::str(t.name)] = cf[0];
     formats[py::str(t.name)] = cf[1];

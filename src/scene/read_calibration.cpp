@@ -57,7 +57,7 @@ FittedInput read_fitted(const Node& entry, const SceneInput& input, const Scene&
 }  // namespace
 
 void read_calibration(const MapReader& scene, Scene& out) {
-  Study& s = out.study;
+  CalibrationSettings& s = std::get<CalibrationSettings>(out.study.settings);
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   const Node data = study.get("data", "the path of the measurements file (CSV), e.g. rig.csv");
   s.data = named_file_path(data, "the path of the measurements file (CSV), e.g. rig.csv");

@@ -97,7 +97,7 @@ bool varies_grooves(MapParameter p) {
 }  // namespace
 
 void check_groove_parameter(const MapReader& scene, const Scene& out) {
-  const std::vector<MapAxis>& axes = out.study.axes;
+  const std::span<const MapAxis> axes = out.study.axes();
   std::vector<std::size_t> groove_axes;
   for (std::size_t k = 0; k < axes.size(); ++k)
     if (varies_grooves(axes[k].parameter)) groove_axes.push_back(k);

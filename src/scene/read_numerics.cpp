@@ -42,11 +42,11 @@ void read_solver(const MapReader& scene, Scene& out) {
   s.method = read_choice(solver, "method", kSolverMethods, s.method);
   // The paper's scheme solves one state from the paper's cold start; continuation,
   // transients and distress searches are twb's own.
-  if (s.method == SolverMethod::paper && out.study.type != StudyType::point) {
+  if (s.method == SolverMethod::paper && out.study.type() != StudyType::point) {
     const Node method = solver.get("method", "");
     method.fail(fmt::format("{}: 'paper' solves one operating point (study type: point); a {} study needs "
                             "method: newton",
-                            method.path(), kStudyTypes.names[kStudyTypes.index(out.study.type)]));
+                            method.path(), kStudyTypes.names[kStudyTypes.index(out.study.type())]));
   }
   // The baseline is the paper's scheme on the paper's rigid model; its segregated heat
   // loop is not built for the films' shapes moving with the temperatures.
@@ -84,12 +84,13 @@ void read_solver(const MapReader& scene, Scene& out) {
 void read_study(const MapReader& scene, Scene& out) {
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   Study& s = out.study;
-  s.type = read_choice(study, "type", kStudyTypes, s.type);
+  const StudyType type = read_choice(study, "type", kStudyTypes, s.type());
+  s.settings = default_settings(type);
   // (study.speeds, where given, say again)
   if (const std::optional<Node> speed = scene.map("operating", {std::begin(kOperatingKeys), std::end(kOperatingKeys)}).find("speed"))
     s.speeds_in_rpm = given_in_rpm(*speed);
-  const StudySection& section = study_section(s.type);
-  study.restrict_to({section.keys.begin(), section.keys.end()}, fmt::format("with type: {}", kStudyTypes.name(s.type)));
+  const StudySection& section = study_section(type);
+  study.restrict_to({section.keys.begin(), section.keys.end()}, fmt::format("with type: {}", kStudyTypes.name(type)));
   section.read(study, out);
 }
 

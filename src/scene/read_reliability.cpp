@@ -103,7 +103,7 @@ UncertainInput read_distribution(const Node& entry, const SceneInput& input, con
 }  // namespace
 
 void read_uncertain_inputs(const MapReader& scene, Scene& out) {
-  Study& s = out.study;
+  ReliabilitySettings& s = std::get<ReliabilitySettings>(out.study.settings);
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   const std::vector<InputEntry> entries = input_entries(
       study.get("inputs", ""), out, "no uncertain inputs",

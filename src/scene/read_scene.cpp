@@ -63,7 +63,8 @@ namespace {
 
 // A sensitivity study's parameters name inputs of this scene.
 void check_study_parameters(const MapReader& scene, const Scene& out) {
-  if (out.study.parameters.empty()) return;
+  const auto* sensitivity = std::get_if<SensitivitySettings>(&out.study.settings);
+  if (!sensitivity || sensitivity->parameters.empty()) return;
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   const std::vector<Node> items = study.get("parameters", "").list("");
   for (const Node& item : items) {
@@ -91,7 +92,7 @@ void check_study_parameters(const MapReader& scene, const Scene& out) {
 // the load and the speed (the search's and the map's own axes), and every value, in the
 // input's unit, makes a scene the reader accepts (tried once each, as a point study).
 void check_input_axis(const MapReader& scene, Scene& out) {
-  std::vector<MapAxis>& axes = out.study.axes;
+  const std::span<MapAxis> axes = out.study.axes();
   bool any = false;
   for (const MapAxis& a : axes) any = any || a.parameter == MapParameter::scene_input;
   if (!any) return;
@@ -138,7 +139,7 @@ Scene read_scene(const Node& root) {
   out.inputs = inputs_read(*root.provenance());
   check_study_parameters(scene, out);
   check_input_axis(scene, out);
-  if (const auto read_after_inputs = study_section(out.study.type).read_after_inputs) read_after_inputs(scene, out);
+  if (const auto read_after_inputs = study_section(out.study.type()).read_after_inputs) read_after_inputs(scene, out);
   return out;
 }
 

@@ -288,7 +288,7 @@ std::vector<SchedulePoint> schedule_in_file(const std::string& path, const Scene
 }  // namespace
 
 void read_schedule(const MapReader& scene, Scene& out) {
-  Study& s = out.study;
+  DutyCycleSettings& s = std::get<DutyCycleSettings>(out.study.settings);
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   const Node schedule = study.get("schedule", "a list of points, e.g. [{t: 0 s, load: 100 N, speed: 3000 rpm}, "
                                               "{t: 60 s, load: 300 N}], or the path of a CSV file");

@@ -36,7 +36,7 @@ double groove_angle(const Node& node, double mean_radius);
 // places them (read after the grooves).
 void check_groove_parameter(const MapReader& scene, const Scene& out);
 // The nodes of a study's axes (study.parameter: a map, or a list of maps for a grid;
-// study.family: a map), one per Study::axes entry.
+// study.family: a map), one per entry of Study::axes().
 std::vector<MapReader> axis_nodes(const MapReader& scene);
 
 // Why the scene refuses an input at `value`, if it does (the scene read again with it).

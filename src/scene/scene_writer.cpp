@@ -169,8 +169,8 @@ void write_numerics(SceneText& w, const Scene& s) {
   w.entry(1, "cold_start_film", quantity(s.solver.cold_start_film, "1"));
 
   w.line(0, "study:");
-  w.entry(1, "type", std::string(kStudyTypes.name(s.study.type)));
-  study_section(s.study.type).write(w, s.study);
+  w.entry(1, "type", std::string(kStudyTypes.name(s.study.type())));
+  study_section(s.study.type()).write(w, s.study);
 
   w.line(0, "output:");
   w.entry(1, "directory", quoted(s.output.directory));

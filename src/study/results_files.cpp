@@ -10,7 +10,7 @@ namespace twb {
 
 void write_study_results(const std::filesystem::path& dir, const std::string& scene_path, const Scene& scene,
                          const UnknownLayout& layout, const StudyOutcome& outcome, int digits) {
-  for (const NamedTable& table : study_tables(outcome, scene.study.type))
+  for (const NamedTable& table : study_tables(outcome, scene.study.type()))
     write_file_atomically(dir / (table.name + ".csv"), table.table.csv(digits));
   write_state_fields(dir, outcome.states, digits);
   // A completed duty cycle's end, for the next part of a long cycle (--continue-from).

@@ -57,17 +57,17 @@ std::vector<std::string> summary_lines(const StudyOutcome& outcome) {
   return lines;
 }
 
-bool has_independent_searches(const Study& study) { return study_kind(study.type).independent_searches(study); }
+bool has_independent_searches(const Study& study) { return study_kind(study.type()).independent_searches(study); }
 
 bool spreads_over_ranks(const Study& study) {
-  return has_independent_searches(study) || study_kind(study.type).spreads_over_ranks(study);
+  return has_independent_searches(study) || study_kind(study.type()).spreads_over_ranks(study);
 }
 
 void check_continuable(const Study& study, std::string_view asked_by) {
-  if (!study_kind(study.type).continues_from)
+  if (!study_kind(study.type()).continues_from)
     throw std::invalid_argument(fmt::format("{} goes on with a duty cycle from where an earlier one ended; this "
                                             "scene's study is a {}",
-                                            asked_by, scene_name(study.type)));
+                                            asked_by, scene_name(study.type())));
 }
 
 CycleState cycle_to_continue(const Study& study, const std::string& from, const std::string& out,

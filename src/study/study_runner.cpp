@@ -29,7 +29,7 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
         fmt::format("threads must be 0 (one per core) or a positive count, not {}", options.threads));
   const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   const Running how{threads, plumbing.journal, plumbing.scheduler, options.stop};
-  const StudyKind& kind = study_kind(model.scene().study.type);
+  const StudyKind& kind = study_kind(model.scene().study.type());
   if (options.cycle_start) check_continuable(model.scene().study, "RunOptions::cycle_start");
   StudyOutcome out;
   out.speeds_in_rpm = model.scene().study.speeds_in_rpm;
@@ -44,7 +44,8 @@ StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, cons
     out.stopped = true;
     out.message += (out.message.empty() ? "" : "; ") + std::string("stopped before the study's end: searches are missing");
   }
-  if (model.scene().study.error_estimate == ErrorEstimate::every_state) {
+  if (const ErrorBarSettings* bars = model.scene().study.error_bars();
+      bars && bars->estimate == ErrorEstimate::every_state) {
     const std::vector<std::string> lines = state_error_lines(model.scene(), out.states);
     out.summary.insert(out.summary.end(), lines.begin(), lines.end());
   }

@@ -16,7 +16,7 @@ namespace {
 Scene coarse_point(double load) {
   Scene s = testing::table1_scene(true, true, true, true, 545.0, load);
   testing::use_coarse_mesh(s);
-  s.study.type = StudyType::point;
+  s.study.settings = PointSettings{};
   return s;
 }
 

@@ -88,9 +88,10 @@ TEST_F(PaperScene, NumericsStudyAndOutput) {
   EXPECT_SI(scene.solver.step_tolerance, 1e-14);
   EXPECT_EQ(scene.solver.max_iterations, 200);
   EXPECT_SI(scene.solver.cold_start_film, 3.0);
-  EXPECT_EQ(scene.study.type, StudyType::load_sweep);  // the main job: where it fails
-  EXPECT_EQ(scene.study.load_start, 100.0);
-  EXPECT_EQ(scene.study.load_end, 400.0);
+  ASSERT_EQ(scene.study.type(), StudyType::load_sweep);  // the main job: where it fails
+  const LoadRange& loads = std::get<LoadSweepSettings>(scene.study.settings).grid.loads;
+  EXPECT_EQ(loads.start, 100.0);
+  EXPECT_EQ(loads.end, 400.0);
   EXPECT_EQ(scene.output.directory, "results/jackson_green_2006");
   EXPECT_FALSE(scene.output.fields);
   EXPECT_EQ(scene.source, source_path("configs/jackson_green_2006.yaml"));

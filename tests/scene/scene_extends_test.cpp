@@ -70,8 +70,10 @@ TEST(SceneExtends, MapsMergeListsAndScalarsReplace) {
   EXPECT_EQ(s.operating.speed, 953.0);
   EXPECT_EQ(s.operating.load, 500.0);
   EXPECT_NEAR(s.operating.ambient, 303.15, 1e-12);
-  EXPECT_EQ(s.study.speeds, std::vector<double>{1367.0});
-  EXPECT_EQ(s.study.load_end, 1000.0);
+  ASSERT_EQ(s.study.type(), StudyType::distress_map);
+  const DistressMapSettings& map = std::get<DistressMapSettings>(s.study.settings);
+  EXPECT_EQ(map.speeds, std::vector<double>{1367.0});
+  EXPECT_EQ(map.search.loads.end, 1000.0);
   EXPECT_NEAR(s.gear.tilt, 1e-3, 1e-18);
   EXPECT_NEAR(s.gear.outer_radius, 22.7e-3 / 2, 1e-15);  // the gear's other keys stay
 }
@@ -87,7 +89,7 @@ TEST(SceneExtends, ReplaceTagDropsTheBasesKeys) {
   EXPECT_NE(e.message().find("does not apply with type: point"), std::string::npos) << e.what();
   EXPECT_EQ(fs::path(e.file()).filename(), "base.yaml");
   const std::string replaced = dir.write("replaced.yaml", "extends: base.yaml\nstudy: !replace {type: point}\n");
-  EXPECT_EQ(load_scene(replaced).study.type, StudyType::point);
+  EXPECT_EQ(load_scene(replaced).study.type(), StudyType::point);
 }
 
 TEST(SceneExtends, ErrorsPointIntoTheFileThatWroteTheValue) {

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <numbers>
 #include <ostream>
+#include <span>
+#include <type_traits>
+#include <variant>
 
 #include <gtest/gtest.h>
 
@@ -49,6 +52,45 @@ void expect_same_component(const Component& a, const Component& b) {
   EXPECT_EQ(a.grooves->land.shape, b.grooves->land.shape);
   EXPECT_EQ(a.grooves->land.depth, b.grooves->land.depth);
   EXPECT_EQ(a.grooves->land.fraction, b.grooves->land.fraction);
+}
+
+// A calibration's settings read back: its data file by its absolute path, its points by
+// their load and speed, its fitted inputs and spreads to the last digits written.
+void expect_same_calibration(const CalibrationSettings& a, const CalibrationSettings& b) {
+  if (!a.data.empty() || !b.data.empty()) {
+    EXPECT_EQ(std::filesystem::absolute(a.data), std::filesystem::absolute(b.data));
+  }
+  ASSERT_EQ(a.measurements.size(), b.measurements.size());
+  for (std::size_t i = 0; i < a.measurements.size(); ++i) {
+    EXPECT_EQ(a.measurements[i].load, b.measurements[i].load);
+    EXPECT_EQ(a.measurements[i].speed, b.measurements[i].speed);
+  }
+  ASSERT_EQ(a.fitted.size(), b.fitted.size());
+  for (std::size_t i = 0; i < a.fitted.size(); ++i) {
+    const FittedInput &x = a.fitted[i], &y = b.fitted[i];
+    EXPECT_EQ(x.path, y.path);
+    EXPECT_DOUBLE_EQ(x.start, y.start);
+    EXPECT_DOUBLE_EQ(x.lower, y.lower);
+    EXPECT_DOUBLE_EQ(x.upper, y.upper);
+  }
+  for (std::size_t q = 0; q < kMeasuredQuantities; ++q) EXPECT_DOUBLE_EQ(a.measurement_sd[q], b.measurement_sd[q]);
+  EXPECT_EQ(a.fit_iterations, b.fit_iterations);
+}
+
+// The same study type with the same settings, every member of them (a calibration's as
+// above).
+void expect_same_study(const Study& a, const Study& b) {
+  ASSERT_EQ(a.type(), b.type());
+  std::visit(
+      [&](const auto& x) {
+        using Settings = std::decay_t<decltype(x)>;
+        const Settings& y = std::get<Settings>(b.settings);
+        if constexpr (std::is_same_v<Settings, CalibrationSettings>)
+          expect_same_calibration(x, y);
+        else
+          EXPECT_TRUE(x == y) << "the study's settings differ";
+      },
+      a.settings);
 }
 
 // Every field but `source`.
@@ -100,53 +142,8 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.solver.step_tolerance, b.solver.step_tolerance);
   EXPECT_EQ(a.solver.max_iterations, b.solver.max_iterations);
   EXPECT_EQ(a.solver.cold_start_film, b.solver.cold_start_film);
-  EXPECT_EQ(a.study.type, b.study.type);
-  EXPECT_EQ(a.study.load_start, b.study.load_start);
-  EXPECT_EQ(a.study.load_end, b.study.load_end);
-  EXPECT_EQ(a.study.load_steps, b.study.load_steps);
-  EXPECT_EQ(a.study.speeds, b.study.speeds);
-  EXPECT_EQ(a.study.axes, b.study.axes);
-  EXPECT_EQ(a.study.bracket_width, b.study.bracket_width);
-  EXPECT_EQ(a.study.error_estimate, b.study.error_estimate);
-  EXPECT_EQ(a.study.tolerance, b.study.tolerance);
-  EXPECT_EQ(a.study.search_past_failure, b.study.search_past_failure);
+  expect_same_study(a.study, b.study);
   EXPECT_EQ(a.mesh.max_refinements, b.mesh.max_refinements);
-  EXPECT_EQ(a.study.duration, b.study.duration);
-  EXPECT_EQ(a.study.parameters, b.study.parameters);
-  ASSERT_EQ(a.study.uncertain_inputs.size(), b.study.uncertain_inputs.size());
-  for (std::size_t i = 0; i < a.study.uncertain_inputs.size(); ++i) {
-    const UncertainInput &x = a.study.uncertain_inputs[i], &y = b.study.uncertain_inputs[i];
-    EXPECT_EQ(x.path, y.path);
-    EXPECT_EQ(x.unit, y.unit);
-    EXPECT_EQ(x.distribution, y.distribution);
-    EXPECT_EQ(x.mean, y.mean);
-    EXPECT_EQ(x.sd, y.sd);
-    EXPECT_EQ(x.lower, y.lower);
-    EXPECT_EQ(x.upper, y.upper);
-  }
-  EXPECT_EQ(a.study.probabilities, b.study.probabilities);
-  if (!a.study.data.empty() || !b.study.data.empty()) {
-    EXPECT_EQ(std::filesystem::absolute(a.study.data), std::filesystem::absolute(b.study.data));
-  }
-  ASSERT_EQ(a.study.measurements.size(), b.study.measurements.size());
-  for (std::size_t i = 0; i < a.study.measurements.size(); ++i) {
-    EXPECT_EQ(a.study.measurements[i].load, b.study.measurements[i].load);
-    EXPECT_EQ(a.study.measurements[i].speed, b.study.measurements[i].speed);
-  }
-  ASSERT_EQ(a.study.fitted.size(), b.study.fitted.size());
-  for (std::size_t i = 0; i < a.study.fitted.size(); ++i) {
-    const FittedInput &x = a.study.fitted[i], &y = b.study.fitted[i];
-    EXPECT_EQ(x.path, y.path);
-    EXPECT_DOUBLE_EQ(x.start, y.start);
-    EXPECT_DOUBLE_EQ(x.lower, y.lower);
-    EXPECT_DOUBLE_EQ(x.upper, y.upper);
-  }
-  for (std::size_t q = 0; q < kMeasuredQuantities; ++q)
-    EXPECT_DOUBLE_EQ(a.study.measurement_sd[q], b.study.measurement_sd[q]);
-  EXPECT_EQ(a.study.fit_iterations, b.study.fit_iterations);
-  EXPECT_EQ(a.study.sampling_cov, b.study.sampling_cov);
-  EXPECT_EQ(a.study.max_samples, b.study.max_samples);
-  EXPECT_EQ(a.study.seed, b.study.seed);
   EXPECT_EQ(a.output.directory, b.output.directory);
   EXPECT_EQ(a.output.fields, b.output.fields);
 }
@@ -165,7 +162,8 @@ TEST(SceneDefaults, OmittedKeysTakeTheDefaultsOfSceneH) {
   EXPECT_EQ(scene.friction.law, FrictionLaw::empirical);
   EXPECT_EQ(scene.mesh.radial_nodes, 9);
   EXPECT_EQ(scene.solver.max_iterations, 200);
-  EXPECT_EQ(scene.study.type, StudyType::point);
+  ASSERT_EQ(scene.study.type(), StudyType::point);
+  EXPECT_TRUE(std::get<PointSettings>(scene.study.settings) == PointSettings{});
   EXPECT_EQ(scene.output.directory, "results");
   EXPECT_FALSE(scene.effects.flow_factors);
   EXPECT_FALSE(scene.effects.thermal);
@@ -221,19 +219,25 @@ TEST(SceneGrooves, EdgesOnNodeLinesRoundTheGridAndTheWidths) {
 }
 
 // A load grid without `speeds` runs at operating.speed; with them, at each of them.
+// A scene's speeds of one search each, as its searches read them.
+std::vector<double> speeds(const Scene& scene) {
+  const std::span<const double> listed = scene.study.speeds();
+  return {listed.begin(), listed.end()};
+}
+
 TEST(SceneDefaults, LoadSweepSpeedsDefaultToTheOperatingSpeed) {
   const std::string sweep = "study: {type: load_sweep, load_start: 100 N, load_end: 1750 N, load_steps: 34";
   const TempScene plain(std::string(kMinimalScene) + sweep + "}\n");
   const Scene scene = load_scene(plain.path());
-  EXPECT_EQ(scene.study.speeds, std::vector<double>{scene.operating.speed});
-  EXPECT_TRUE(scene.study.axes.empty());
-  EXPECT_EQ(load_scene(plain.path(), {"operating.speed=953 rad/s"}).study.speeds, std::vector<double>{953.0});
+  EXPECT_EQ(speeds(scene), std::vector<double>{scene.operating.speed});
+  EXPECT_TRUE(scene.study.axes().empty());
+  EXPECT_EQ(speeds(load_scene(plain.path(), {"operating.speed=953 rad/s"})), std::vector<double>{953.0});
   const TempScene listed(std::string(kMinimalScene) + sweep + ", speeds: [136 rad/s, 1367 rad/s]}\n");
-  EXPECT_EQ(load_scene(listed.path()).study.speeds, (std::vector<double>{136.0, 1367.0}));
+  EXPECT_EQ(speeds(load_scene(listed.path())), (std::vector<double>{136.0, 1367.0}));
   const TempScene choice(std::string(kMinimalScene) +
                          "study: {type: sliding_choice, load_start: 100 N, load_end: 1750 N, load_steps: 34}\n");
-  EXPECT_EQ(load_scene(choice.path()).study.type, StudyType::sliding_choice);
-  EXPECT_EQ(load_scene(choice.path()).study.speeds, std::vector<double>{load_scene(choice.path()).operating.speed});
+  EXPECT_EQ(load_scene(choice.path()).study.type(), StudyType::sliding_choice);
+  EXPECT_EQ(speeds(load_scene(choice.path())), std::vector<double>{load_scene(choice.path()).operating.speed});
 }
 
 struct RoundTripCase {
@@ -516,13 +520,23 @@ TEST(InputErrorFormat, QuotesTheLineWithACaretUnderTheColumn) {
   EXPECT_EQ(error.message(), "unknown key 'thicknes'");
 }
 
+// The tolerance a scene's error bars are wanted to.
+double tolerance(const Scene& scene) {
+  const ErrorBarSettings* bars = scene.study.error_bars();
+  if (!bars) {
+    ADD_FAILURE() << "the study has no error bars";
+    return -1.0;
+  }
+  return bars->tolerance;
+}
+
 // study.tolerance: a relative number with its unit or none; refused where no error bar is
 // asked for, and outside (0, 0.5], each at its place.
 TEST(SceneLoader, ATolerancesValueAndWhereItIsRefused) {
   const std::string sweep = std::string(kMinimalScene) + "study: {type: load_sweep, load_start: 100 N, load_end: 400 N, load_steps: 4";
-  EXPECT_EQ(load_scene_text(sweep + "}\n", "t.yaml").study.tolerance, 0.01);  // the default
-  EXPECT_DOUBLE_EQ(load_scene_text(sweep + ", tolerance: 2 %}\n", "t.yaml").study.tolerance, 0.02);
-  EXPECT_EQ(load_scene_text(sweep + ", tolerance: none}\n", "t.yaml").study.tolerance, 0.0);
+  EXPECT_EQ(tolerance(load_scene_text(sweep + "}\n", "t.yaml")), 0.01);  // the default
+  EXPECT_DOUBLE_EQ(tolerance(load_scene_text(sweep + ", tolerance: 2 %}\n", "t.yaml")), 0.02);
+  EXPECT_EQ(tolerance(load_scene_text(sweep + ", tolerance: none}\n", "t.yaml")), 0.0);
   const auto refused = [&](const std::string& text, const std::string& needle) {
     try {
       load_scene_text(text, "t.yaml");
@@ -538,17 +552,17 @@ TEST(SceneLoader, ATolerancesValueAndWhereItIsRefused) {
   refused(sweep + ", tolerance: 1 N}\n", "study.tolerance");
   refused(std::string(kMinimalScene) + "study: {type: sensitivity, tolerance: 1 %}\n", "tolerance");
   // A point takes one, none by default (its two-mesh bar).
-  EXPECT_EQ(load_scene_text(std::string(kMinimalScene) + "study: {type: point}\n", "t.yaml").study.tolerance, 0.0);
+  EXPECT_EQ(tolerance(load_scene_text(std::string(kMinimalScene) + "study: {type: point}\n", "t.yaml")), 0.0);
   EXPECT_DOUBLE_EQ(
-      load_scene_text(std::string(kMinimalScene) + "study: {type: point, tolerance: 2 %}\n", "t.yaml").study.tolerance,
+      tolerance(load_scene_text(std::string(kMinimalScene) + "study: {type: point, tolerance: 2 %}\n", "t.yaml")),
       0.02);
   refused(std::string(kMinimalScene) + "mesh: {max_refinements: 6}\n", "mesh.max_refinements");
   // A distress curve takes one (its folds and limit curves to it), 1 % by default.
   const std::string curve = std::string(kMinimalScene) +
                             "study: {type: distress_curve, parameter: speed, from: 100 rad/s, to: 500 rad/s, "
                             "load_start: 100 N, load_end: 2000 N";
-  EXPECT_EQ(load_scene_text(curve + "}\n", "t.yaml").study.tolerance, 0.01);
-  EXPECT_DOUBLE_EQ(load_scene_text(curve + ", tolerance: 3 %}\n", "t.yaml").study.tolerance, 0.03);
+  EXPECT_EQ(tolerance(load_scene_text(curve + "}\n", "t.yaml")), 0.01);
+  EXPECT_DOUBLE_EQ(tolerance(load_scene_text(curve + ", tolerance: 3 %}\n", "t.yaml")), 0.03);
   refused(curve + ", error_estimate: none, tolerance: 1 %}\n", "error_estimate: none asks for no error bar");
 }
 
@@ -595,8 +609,9 @@ TEST(SceneLoader, AnUncertainRqCarriesItsFacesRaAlong) {
   const Scene reliability = load_scene(
       bronze, {"study={type: reliability, load_start: 100 N, load_end: 1500 N, "
                "inputs: {surfaces.washer.Rq: {distribution: lognormal, sd: 0.05 um}}, probabilities: [0.01]}"});
-  ASSERT_EQ(reliability.study.uncertain_inputs.size(), 1u);
-  EXPECT_EQ(reliability.study.uncertain_inputs.front().path, "surfaces.washer.Rq");
+  const std::vector<UncertainInput>& inputs = std::get<ReliabilitySettings>(reliability.study.settings).uncertain_inputs;
+  ASSERT_EQ(inputs.size(), 1u);
+  EXPECT_EQ(inputs.front().path, "surfaces.washer.Rq");
 }
 
 }  // namespace

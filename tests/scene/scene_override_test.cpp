@@ -41,10 +41,11 @@ TEST(SceneOverride, CreatesSectionsTheFileDoesNotHave) {
   const TempScene file(kMinimalScene);
   const Scene scene = load_scene(file.path(), {"study.type=load_sweep", "study.load_start=100 N",
                                                "study.load_end=2 kN", "study.load_steps=5"});
-  EXPECT_EQ(scene.study.type, StudyType::load_sweep);
-  EXPECT_EQ(scene.study.load_start, 100.0);
-  EXPECT_EQ(scene.study.load_end, 2000.0);
-  EXPECT_EQ(scene.study.load_steps, 5);
+  ASSERT_EQ(scene.study.type(), StudyType::load_sweep);
+  const LoadGrid& grid = std::get<LoadSweepSettings>(scene.study.settings).grid;
+  EXPECT_EQ(grid.loads.start, 100.0);
+  EXPECT_EQ(grid.loads.end, 2000.0);
+  EXPECT_EQ(grid.load_steps, 5);
 }
 
 // The paper's scene shares one steel between the bodies through a YAML anchor; an

@@ -23,14 +23,17 @@ std::string cycle_scene(const std::string& schedule) {
          "\nstudy: !replace\n  type: duty_cycle\n  schedule: " + schedule + "\n";
 }
 
+// A duty cycle scene's settings.
+const DutyCycleSettings& cycle(const Scene& scene) { return std::get<DutyCycleSettings>(scene.study.settings); }
+
 TEST(Schedule, FieldsLeftOutAreThePointBeforesAndTheFirstPointsTheScenes) {
   const TempScene file(cycle_scene("\n    - {t: 0 s, load: 100 N}\n    - {t: 1 min, speed: 3000 rpm}\n"
                                    "    - {t: 90 s, ambient: 80 degC, tilt: 1 mrad}\n"));
   const Scene s = load_scene(file.path());
-  ASSERT_EQ(s.study.schedule.size(), 3u);
-  const SchedulePoint& a = s.study.schedule[0];
-  const SchedulePoint& b = s.study.schedule[1];
-  const SchedulePoint& c = s.study.schedule[2];
+  ASSERT_EQ(cycle(s).schedule.size(), 3u);
+  const SchedulePoint& a = cycle(s).schedule[0];
+  const SchedulePoint& b = cycle(s).schedule[1];
+  const SchedulePoint& c = cycle(s).schedule[2];
   EXPECT_EQ(a.time, 0.0);
   EXPECT_EQ(a.load, 100.0);
   EXPECT_EQ(a.speed, s.operating.speed);
@@ -51,24 +54,24 @@ TEST(Schedule, FieldsLeftOutAreThePointBeforesAndTheFirstPointsTheScenes) {
 // resolved scene says which.
 TEST(Schedule, TheFailureLoadAtTheWorstMomentMayBeLeftOut) {
   const TempScene on(cycle_scene("[{t: 0 s}, {t: 1 s}]"));
-  EXPECT_TRUE(load_scene(on.path()).study.failure_load_at_worst);
+  EXPECT_TRUE(cycle(load_scene(on.path())).failure_load_at_worst);
   const TempScene off(cycle_scene("[{t: 0 s}, {t: 1 s}]\n  failure_load_at_worst: false"), "_off");
   const Scene s = load_scene(off.path());
-  EXPECT_FALSE(s.study.failure_load_at_worst);
+  EXPECT_FALSE(cycle(s).failure_load_at_worst);
   const TempScene resolved(describe_scene(s), "_resolved");
-  EXPECT_FALSE(load_scene(resolved.path()).study.failure_load_at_worst);
+  EXPECT_FALSE(cycle(load_scene(resolved.path())).failure_load_at_worst);
 }
 
 // The march's relative tolerance: 1e-6 by default, a looser one read and kept by the
 // resolved scene, one outside its range located at its key.
 TEST(Schedule, TheMarchsToleranceMayBeSet) {
   const TempScene plain(cycle_scene("[{t: 0 s}, {t: 1 s}]"));
-  EXPECT_EQ(load_scene(plain.path()).study.march_tolerance, 1e-6);
+  EXPECT_EQ(cycle(load_scene(plain.path())).march_tolerance, 1e-6);
   const TempScene loose(cycle_scene("[{t: 0 s}, {t: 1 s}]\n  relative_tolerance: 1e-4"), "_loose");
   const Scene s = load_scene(loose.path());
-  EXPECT_EQ(s.study.march_tolerance, 1e-4);
+  EXPECT_EQ(cycle(s).march_tolerance, 1e-4);
   const TempScene resolved(describe_scene(s), "_resolved");
-  EXPECT_EQ(load_scene(resolved.path()).study.march_tolerance, 1e-4);
+  EXPECT_EQ(cycle(load_scene(resolved.path())).march_tolerance, 1e-4);
   const TempScene wrong(cycle_scene("[{t: 0 s}, {t: 1 s}]\n  relative_tolerance: 0.5"), "_wrong");
   const InputError e = testing::load_error(wrong.path());
   EXPECT_EQ(e.line(), 5);
@@ -78,7 +81,7 @@ TEST(Schedule, TheMarchsToleranceMayBeSet) {
 // A speed may turn negative (the washer turns back); the points join in a straight line.
 TEST(Schedule, ASpeedMayTurnBack) {
   const TempScene file(cycle_scene("[{t: 0 s}, {t: 10 s, speed: -100 rad/s}]"));
-  EXPECT_EQ(load_scene(file.path()).study.schedule[1].speed, -100.0);
+  EXPECT_EQ(cycle(load_scene(file.path())).schedule[1].speed, -100.0);
 }
 
 TEST(Schedule, FromACsvFileWithUnitsOrTheResultsOwnNames) {
@@ -87,15 +90,15 @@ TEST(Schedule, FromACsvFileWithUnitsOrTheResultsOwnNames) {
                       "_data", ".csv");
   const TempScene file(cycle_scene(csv.path()));
   const Scene s = load_scene(file.path());
-  ASSERT_EQ(s.study.schedule.size(), 3u);
-  EXPECT_EQ(s.study.schedule_file, csv.path());
-  EXPECT_DOUBLE_EQ(s.study.schedule[0].load, 100.0);
-  EXPECT_EQ(s.study.schedule[0].speed, 0.0);
-  EXPECT_NEAR(s.study.schedule[1].ambient, 313.15, 1e-12);  // an empty field: the point before's
-  EXPECT_DOUBLE_EQ(s.study.schedule[2].load, 300.0);
-  EXPECT_NEAR(s.study.schedule[2].ambient, 333.15, 1e-12);
-  EXPECT_EQ(s.study.schedule[2].tilt, s.gear.tilt);  // no column: the scene's
-  EXPECT_EQ(s.study.schedule[2].line, 5);
+  ASSERT_EQ(cycle(s).schedule.size(), 3u);
+  EXPECT_EQ(cycle(s).schedule_file, csv.path());
+  EXPECT_DOUBLE_EQ(cycle(s).schedule[0].load, 100.0);
+  EXPECT_EQ(cycle(s).schedule[0].speed, 0.0);
+  EXPECT_NEAR(cycle(s).schedule[1].ambient, 313.15, 1e-12);  // an empty field: the point before's
+  EXPECT_DOUBLE_EQ(cycle(s).schedule[2].load, 300.0);
+  EXPECT_NEAR(cycle(s).schedule[2].ambient, 333.15, 1e-12);
+  EXPECT_EQ(cycle(s).schedule[2].tilt, s.gear.tilt);  // no column: the scene's
+  EXPECT_EQ(cycle(s).schedule[2].line, 5);
 
   // A duty cycle's trajectory.csv is a schedule.
   // (Its steps closer than its ten digits tell apart: the first of them stands for all.)
@@ -104,8 +107,8 @@ TEST(Schedule, FromACsvFileWithUnitsOrTheResultsOwnNames) {
                           "_results", ".csv");
   const TempScene again(cycle_scene(results.path()), "_again");
   const Scene r = load_scene(again.path());
-  ASSERT_EQ(r.study.schedule.size(), 2u);
-  EXPECT_EQ(r.study.schedule[1].load, 120.0);
+  ASSERT_EQ(cycle(r).schedule.size(), 2u);
+  EXPECT_EQ(cycle(r).schedule[1].load, 120.0);
 }
 
 // The resolved scene carries the schedule itself: read again it is the same.
@@ -115,13 +118,13 @@ TEST(Schedule, TheResolvedSceneHoldsEveryPoint) {
   const Scene s = load_scene(file.path());
   const TempScene resolved(describe_scene(s), "_resolved");
   const Scene r = load_scene(resolved.path());
-  ASSERT_EQ(r.study.schedule.size(), s.study.schedule.size());
-  for (std::size_t k = 0; k < s.study.schedule.size(); ++k) {
-    EXPECT_EQ(r.study.schedule[k].time, s.study.schedule[k].time);
-    EXPECT_EQ(r.study.schedule[k].load, s.study.schedule[k].load);
-    EXPECT_EQ(r.study.schedule[k].speed, s.study.schedule[k].speed);
-    EXPECT_EQ(r.study.schedule[k].ambient, s.study.schedule[k].ambient);
-    EXPECT_EQ(r.study.schedule[k].tilt, s.study.schedule[k].tilt);
+  ASSERT_EQ(cycle(r).schedule.size(), cycle(s).schedule.size());
+  for (std::size_t k = 0; k < cycle(s).schedule.size(); ++k) {
+    EXPECT_EQ(cycle(r).schedule[k].time, cycle(s).schedule[k].time);
+    EXPECT_EQ(cycle(r).schedule[k].load, cycle(s).schedule[k].load);
+    EXPECT_EQ(cycle(r).schedule[k].speed, cycle(s).schedule[k].speed);
+    EXPECT_EQ(cycle(r).schedule[k].ambient, cycle(s).schedule[k].ambient);
+    EXPECT_EQ(cycle(r).schedule[k].tilt, cycle(s).schedule[k].tilt);
   }
 }
 
@@ -201,8 +204,8 @@ TEST(Schedule, ALoadOfZeroNeedsTheGearsStopAndTheFilm) {
   const std::string play = "geometry: {gear: {axial_play: 100 um}}\n";
   const TempScene fine(cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N}, {t: 3 s, load: 50 N, speed: -3000 rpm}]") + play);
   const Scene s = load_scene(fine.path());
-  ASSERT_EQ(s.study.schedule.size(), 3u);
-  EXPECT_EQ(s.study.schedule[1].load, 0.0);
+  ASSERT_EQ(cycle(s).schedule.size(), 3u);
+  EXPECT_EQ(cycle(s).schedule[1].load, 0.0);
   ASSERT_TRUE(s.gear.axial_play);
   EXPECT_NEAR(*s.gear.axial_play, 1e-4, 1e-16);
   // The resolved scene keeps the play.
@@ -213,9 +216,9 @@ TEST(Schedule, ALoadOfZeroNeedsTheGearsStopAndTheFilm) {
 
   const TempScene at_rest(cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N, speed: 0 rpm}]") + play);
   const Scene rest = load_scene(at_rest.path());
-  ASSERT_EQ(rest.study.schedule.size(), 2u);
-  EXPECT_EQ(rest.study.schedule[1].load, 0.0);
-  EXPECT_EQ(rest.study.schedule[1].speed, 0.0);
+  ASSERT_EQ(cycle(rest).schedule.size(), 2u);
+  EXPECT_EQ(cycle(rest).schedule[1].load, 0.0);
+  EXPECT_EQ(cycle(rest).schedule[1].speed, 0.0);
 
   // A cycle starts loaded (its steady state is reached by raising the load), and a load of
   // zero needs the film's pressure to lift the washer.
@@ -236,14 +239,14 @@ TEST(Schedule, ALoadOfZeroNeedsTheGearsStopAndTheFilm) {
   const TempScene stopped_unloaded(cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N}, {t: 3 s, speed: 0 rpm}, "
                                                "{t: 4 s, speed: 3000 rpm}, {t: 5 s, load: 100 N}]") +
                                    play);
-  EXPECT_EQ(load_scene(stopped_unloaded.path()).study.schedule.size(), 5u);
+  EXPECT_EQ(cycle(load_scene(stopped_unloaded.path())).schedule.size(), 5u);
   const TempScene no_play(cycle_scene("[{t: 0 s}, {t: 2 s, load: 0 N, speed: 0 rpm}]"));
   EXPECT_NE(std::string(testing::load_error(no_play.path()).what()).find("axial_play"), std::string::npos);
 
   const TempScene csv("t [s], load [N], speed [rpm]\n0, 100, 3000\n1, 0, 3000\n2, 0, -3000\n", "_data", ".csv");
   const TempScene through(cycle_scene(csv.path()) + play);
   const Scene turned = load_scene(through.path());
-  ASSERT_EQ(turned.study.schedule.size(), 3u);
+  ASSERT_EQ(cycle(turned).schedule.size(), 3u);
   const TempScene csv_alone("t [s], load [N], speed [rpm]\n0, 100, 3000\n1, 0, 0\n2, 0, 0\n3, 0, 3000\n", "_alone",
                             ".csv");
   const InputError f = testing::load_error(TempScene(cycle_scene(csv_alone.path()) + play, "_alone_scene").path());
@@ -251,7 +254,7 @@ TEST(Schedule, ALoadOfZeroNeedsTheGearsStopAndTheFilm) {
   EXPECT_EQ(f.line(), 5);
   EXPECT_NE(std::string(f.what()).find("leaves a rest with its speed alone"), std::string::npos) << f.what();
   // (udunits2's rpm in rad/s, to its rounding.)
-  EXPECT_NEAR(turned.study.schedule[2].speed, -100.0 * std::numbers::pi, 1e-12 * 100.0 * std::numbers::pi);
+  EXPECT_NEAR(cycle(turned).schedule[2].speed, -100.0 * std::numbers::pi, 1e-12 * 100.0 * std::numbers::pi);
 }
 
 // A schedule file that is not there is the scene's fault, at its key.

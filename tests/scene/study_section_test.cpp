@@ -69,7 +69,7 @@ TEST(StudySection, ShippedScenesAreWrittenBackAsBefore) {
   for (const fs::path& scene : scenes) {
     SCOPED_TRACE(scene.string());
     const Scene loaded = load_scene(scene.string());
-    types.insert(loaded.study.type);
+    types.insert(loaded.study.type());
     const std::string section = study_section(describe_scene(loaded));
     const fs::path expected_file = expected_path(scene);
     if (write) {

@@ -32,17 +32,20 @@ Scene coarse_scene() {
 // The study of the curve traced above: W_d(ω) from 2000 down to 136 rad/s.
 Scene speed_curve_scene() {
   Scene scene = coarse_scene();
-  scene.study.type = StudyType::distress_curve;
-  scene.study.curve_parameter = CurveParameter::speed;
-  scene.study.from = 2000.0;
-  scene.study.to = 136.0;
-  scene.study.load_start = 100.0;
-  scene.study.load_end = 1000.0;
+  DistressCurveSettings curve;
+  curve.curve_parameter = CurveParameter::speed;
+  curve.from = 2000.0;
+  curve.to = 136.0;
+  curve.search.loads = {100.0, 1000.0};
   // No error bars: the tests of the bars (the single refinement's, and a tolerance's
   // sequence, six times the cost and more for each further mesh) ask for them.
-  scene.study.error_estimate = ErrorEstimate::none;
+  curve.error_bars.estimate = ErrorEstimate::none;
+  scene.study.settings = curve;
   return scene;
 }
+
+// The curve's settings (the scene's study is one).
+DistressCurveSettings& curve_of(Scene& scene) { return std::get<DistressCurveSettings>(scene.study.settings); }
 
 DistressSearchSettings search_range() {
   DistressSearchSettings s;
@@ -164,8 +167,8 @@ TEST(DistressCurve, StudyWritesTheCurveAndTheCusp) {
 // as in richardson_test.cpp). Without the estimate the columns stay empty.
 TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
   Scene scene = speed_curve_scene();
-  scene.study.error_estimate = ErrorEstimate::richardson;
-  scene.study.tolerance = 0.0;  // the single refinement's bar, of the formal order
+  // The single refinement's bar, of the formal order.
+  curve_of(scene).error_bars = {.estimate = ErrorEstimate::richardson, .tolerance = 0.0};
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
   ASSERT_FALSE(out.fold_curve.empty());
@@ -191,15 +194,15 @@ TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
   fine.operating.speed = first.parameter;
   BearingModel refined(fine);
   DistressSearchSettings s;
-  s.load_start = scene.study.load_start;
-  s.load_end = scene.study.load_end;
+  s.load_start = curve_of(scene).search.loads.start;
+  s.load_end = curve_of(scene).search.loads.end;
   s.fold_only = true;
   const DistressSearch own = search_distress(refined, s, {});
   ASSERT_TRUE(own.row.fold_load && own.fold) << own.row.method;
   ASSERT_EQ(own.fold->method, FoldMethod::minimally_augmented);  // the tolerance's argument
   EXPECT_NEAR(*first.fine_load, *own.row.fold_load, 1e-8 * *own.row.fold_load);
 
-  scene.study.error_estimate = ErrorEstimate::none;
+  curve_of(scene).error_bars.estimate = ErrorEstimate::none;
   BearingModel plain(scene);
   const StudyOutcome without = run_study(plain, {});
   EXPECT_TRUE(std::none_of(without.fold_curve.begin(), without.fold_curve.end(),
@@ -217,9 +220,8 @@ TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
 // crossing, refined from the same state by the same sequence: the same bar to the bit.
 TEST(DistressCurve, ACurveToAToleranceGoesAlongTheMeshSequenceAtEveryPoint) {
   Scene scene = speed_curve_scene();
-  scene.study.to = 1900.0;
-  scene.study.error_estimate = ErrorEstimate::richardson;
-  scene.study.tolerance = 0.01;
+  curve_of(scene).to = 1900.0;
+  curve_of(scene).error_bars = {.estimate = ErrorEstimate::richardson, .tolerance = 0.01};
   scene.mesh.max_refinements = 2;
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
@@ -265,7 +267,7 @@ TEST(DistressCurve, ACurveToAToleranceGoesAlongTheMeshSequenceAtEveryPoint) {
 TEST(DistressCurve, FamilyOfCurvesByFrictionCoefficient) {
   Scene scene = speed_curve_scene();
   scene.friction.law = FrictionLaw::constant;
-  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .path = {}, .unit = {}, .values = {0.1, 0.3}}};
+  curve_of(scene).axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .path = {}, .unit = {}, .values = {0.1, 0.3}}};
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
   EXPECT_EQ(out.parameter_columns, std::vector<std::string>{"friction_coefficient"});

@@ -36,6 +36,11 @@ Scene cycle_scene(const std::string& schedule, const std::vector<std::string>& m
   return load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml", overrides);
 }
 
+// A duty cycle scene's schedule.
+const std::vector<SchedulePoint>& schedule_of(const Scene& scene) {
+  return std::get<DutyCycleSettings>(scene.study.settings).schedule;
+}
+
 SchedulePoint point(double t, double load, double speed, double ambient, double tilt) {
   SchedulePoint p;
   p.time = t, p.load = load, p.speed = speed, p.ambient = ambient, p.tilt = tilt;
@@ -121,13 +126,13 @@ struct HeldCycle {
 };
 HeldCycle held_cycle(const std::string& schedule, const std::vector<std::string>& more = {}) {
   const Scene scene = cycle_scene(schedule, more);
-  const std::vector<SchedulePoint>& points = scene.study.schedule;
+  const std::vector<SchedulePoint>& points = schedule_of(scene);
   const double hold = points.back().time, held_from = points[points.size() - 2].time;
   BearingModel model(scene);
   HeldCycle held{run_study(model, {}), {}};
   EXPECT_FALSE(held.out.solver_failed) << held.out.message;
   BearingModel point(scene);
-  OperatingSchedule::apply(point, scene.study.schedule.back());
+  OperatingSchedule::apply(point, schedule_of(scene).back());
   std::vector<double> u;
   EXPECT_TRUE(SteadySolver(point, newton_settings(scene)).solve_cold(u).converged);
   EXPECT_LT(40.0 * slowest_relaxation_time(point, u, 20), hold - held_from) << "hold the point longer";
@@ -216,7 +221,7 @@ TEST(DutyCycle, HeldUnloadedItEndsAtTheSteadyStateOnTheStop) {
   ASSERT_FALSE(out.solver_failed) << out.message;
   ASSERT_TRUE(out.cycle_end);
   BearingModel point(scene);
-  OperatingSchedule::apply(point, scene.study.schedule.back());
+  OperatingSchedule::apply(point, schedule_of(scene).back());
   std::vector<double> u = out.cycle_end->unknowns;
   ASSERT_TRUE(SteadySolver(point, newton_settings(scene)).solve(u).converged);
   EXPECT_LT(40.0 * slowest_relaxation_time(point, u, 20), 295.0) << "hold the point longer";
@@ -464,7 +469,7 @@ TEST(DutyCycle, TheSpeedGoesThroughZero) {
   // enough (the slow mode's share below e^−40) it is back at the state it started from,
   // to IDA's error, as in HeldAtAPointItEndsAtThePointsSteadyState.
   BearingModel start(scene);
-  OperatingSchedule::apply(start, scene.study.schedule.front());
+  OperatingSchedule::apply(start, schedule_of(scene).front());
   std::vector<double> u;
   ASSERT_TRUE(SteadySolver(start, newton_settings(scene)).solve_cold(u).converged);
   ASSERT_LT(40.0 * slowest_relaxation_time(start, u, 20), 600.0 - 20.0) << "hold the reversed speed longer";

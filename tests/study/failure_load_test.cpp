@@ -42,7 +42,7 @@ struct Shared {
   BearingModel model{bronze({"materials.washer.pv_limit=2.5 MPa m/s"})};
   DistressSearch found;
   Shared() {
-    model.set_speed(model.scene().study.speeds.front());
+    model.set_speed(model.scene().study.speeds().front());
     found = search_distress(model, range(2000.0), {});
   }
 };
@@ -149,7 +149,7 @@ TEST(FailureLoad, StatesPastACriterionNameIt) {
 // they come in.
 TEST(FailureLoad, AnotherOrderReportsTheLowerCriterion) {
   BearingModel model(bronze({"lubricant.flash_temperature=295 degC", "limits.scuffing_temperature=300 degC"}));
-  model.set_speed(model.scene().study.speeds.front());
+  model.set_speed(model.scene().study.speeds().front());
   const DistressSearch found = search_distress(model, range(2000.0), {});
   const DistressRow& row = found.row;
   ASSERT_TRUE(row.failure_load) << row.failure;
@@ -187,7 +187,7 @@ TEST(FailureLoad, ASearchBoundedPastTheFirstFailureStopsThere) {
   const double bound = 2.0 * first;
 
   BearingModel model(bronze({"materials.washer.pv_limit=2.5 MPa m/s"}));
-  model.set_speed(model.scene().study.speeds.front());
+  model.set_speed(model.scene().study.speeds().front());
   DistressSearchSettings settings = range(2000.0);
   settings.search_past_failure = 2.0;
   const DistressSearch found = search_distress(model, settings, {});
@@ -226,7 +226,7 @@ TEST(FailureLoad, ASearchBoundedPastTheFirstFailureStopsThere) {
 // Below every criterion up to load_end: no failure load, and the row says so.
 TEST(FailureLoad, NoneReachedSaysSo) {
   BearingModel model(bronze());
-  model.set_speed(model.scene().study.speeds.front());
+  model.set_speed(model.scene().study.speeds().front());
   const DistressSearch found = search_distress(model, range(150.0), {});
   const DistressRow& row = found.row;
   EXPECT_FALSE(row.failure_load);

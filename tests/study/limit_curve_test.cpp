@@ -162,8 +162,9 @@ TEST(LimitCurve, ACrossingThatFallsSteeplyIsFollowed) {
 // limit curve) run on two threads as on one: the same files to the last bit.
 TEST(LimitCurve, TheSameCurvesOnOneThreadAndOnTwo) {
   Scene scene = bronze_curve();
-  scene.study.error_estimate = ErrorEstimate::richardson;
-  scene.study.tolerance = 0.0;  // one refinement: the chains and jobs are the same either way
+  // One refinement: the chains and jobs are the same either way.
+  std::get<DistressCurveSettings>(scene.study.settings).error_bars = {.estimate = ErrorEstimate::richardson,
+                                                                       .tolerance = 0.0};
   BearingModel one(scene), two(scene);
   const StudyOutcome serial = run_study(one, {}, RunOptions{.threads = 1});
   const StudyOutcome parallel = run_study(two, {}, RunOptions{.threads = 2});

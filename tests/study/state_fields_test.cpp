@@ -31,10 +31,10 @@ TEST(StateFields, PointStudyRecordsFieldsOnlyOnRequest) {
 // Isothermal, so the sweep is continuation only (no transient): quick.
 TEST(StateFields, LoadSweepRecordsFieldsOfEveryState) {
   Scene s = coarse(true);
-  s.study.type = StudyType::load_sweep;
-  s.study.load_start = 100.0;
-  s.study.load_end = 200.0;
-  s.study.load_steps = 3;
+  LoadSweepSettings sweep;
+  sweep.grid.loads = {100.0, 200.0};
+  sweep.grid.load_steps = 3;
+  s.study.settings = sweep;
   BearingModel model(s);
   const StudyOutcome out = run_study(model, {});
   ASSERT_GE(out.states.size(), 3u) << out.message;

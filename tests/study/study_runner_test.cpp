@@ -18,16 +18,25 @@ namespace {
 Scene coarse_grid(StudyType type, std::vector<double> speeds) {
   Scene s = testing::table1_scene(true, true, true, true, speeds.front(), 100.0);
   testing::use_coarse_mesh(s);
-  s.study.type = type;
-  s.study.load_start = 100.0;
-  s.study.load_end = 300.0;
-  s.study.load_steps = 3;
-  s.study.speeds = std::move(speeds);
+  LoadGrid grid;
+  grid.loads = {100.0, 300.0};
+  grid.load_steps = 3;
+  grid.speeds = std::move(speeds);
+  s.study.settings = default_settings(type);
+  if (auto* sweep = std::get_if<LoadSweepSettings>(&s.study.settings)) sweep->grid = grid;
+  if (auto* choice = std::get_if<SlidingChoiceSettings>(&s.study.settings)) choice->grid = grid;
+  if (auto* map = std::get_if<DistressMapSettings>(&s.study.settings)) {
+    map->search = grid;  // (a map searches its range: no grid)
+    map->speeds = grid.speeds;
+  }
   return s;
 }
 
+// A map's settings (the scene's study is one).
+DistressMapSettings& map_of(Scene& s) { return std::get<DistressMapSettings>(s.study.settings); }
+
 // The bracket's relative width: W_d is known to within it.
-double scene_bracket_width() { return Study{}.bracket_width; }
+double scene_bracket_width() { return FailureSearch{}.bracket_width; }
 
 StudyOutcome run(const Scene& scene) {
   BearingModel model(scene);
@@ -91,7 +100,8 @@ TEST(StudyRunner, LoadSweepOverSpeeds) {
 TEST(StudyRunner, LoadSweepOverAParameter) {
   Scene scene = coarse_grid(StudyType::load_sweep, {136.0});
   scene.friction.law = FrictionLaw::constant;
-  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .path = {}, .unit = {}, .values = {0.05, 0.2}}};
+  std::get<LoadSweepSettings>(scene.study.settings).axes = {
+      MapAxis{.parameter = MapParameter::friction_coefficient, .path = {}, .unit = {}, .values = {0.05, 0.2}}};
   const StudyOutcome out = run(scene);
   ASSERT_FALSE(out.solver_failed) << out.message;
   EXPECT_EQ(out.parameter_columns, std::vector<std::string>{"friction_coefficient"});
@@ -152,8 +162,8 @@ TEST(StudyRunner, SlidingChoiceKeepsTheLowerTorque) {
 TEST(StudyRunner, ThreadsGiveTheSameResults) {
   Scene scene = coarse_grid(StudyType::distress_map, {136.0, 545.0, 953.0});
   scene.friction.law = FrictionLaw::constant;
-  scene.study.axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .path = {}, .unit = {}, .values = {0.2, 0.3}}};
-  scene.study.error_estimate = ErrorEstimate::none;
+  map_of(scene).axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .path = {}, .unit = {}, .values = {0.2, 0.3}}};
+  map_of(scene).error_bars.estimate = ErrorEstimate::none;
   auto outcome = [&](int threads) {
     BearingModel model(scene);
     StudyOutcome out = run_study(model, {}, RunOptions{.threads = threads});
@@ -179,7 +189,7 @@ TEST(StudyRunner, ThreadsGiveTheSameResults) {
 TEST(StudyRunner, ASearchOnLentThreadsIsTheSameAsOnOne) {
   for (const double speed : {545.0, 136.0}) {
     Scene scene = coarse_grid(StudyType::distress_map, {speed});
-    scene.study.error_estimate = ErrorEstimate::richardson;
+    map_of(scene).error_bars.estimate = ErrorEstimate::richardson;
     scene.lubricant.flash_temperature = 310.15;
     auto outcome = [&](int threads) {
       BearingModel model(scene);

@@ -15,14 +15,15 @@ constexpr std::string_view kKeys[] = {"type", "data", "fit", "sd", "max_iteratio
 
 // The data and the fitted inputs are read once every input is known (read_calibration).
 void read(const MapReader& study, Scene& out) {
-  Study& s = out.study;
+  CalibrationSettings& s = std::get<CalibrationSettings>(out.study.settings);
   study.get("data", "the path of the measurements file (CSV), e.g. rig.csv");
   s.fit_iterations = study.integer("max_iterations", 1, 1000, s.fit_iterations,
                                    "Levenberg-Marquardt iterations before the fit stops unconverged");
   study.get("fit", "a map from input paths to bounds, e.g. {surfaces.washer.Rq: {lower: 0.1 um, upper: 1.5 um}}");
 }
 
-void write(SceneText& w, const Study& st) {
+void write(SceneText& w, const Study& study) {
+  const CalibrationSettings& st = std::get<CalibrationSettings>(study.settings);
   w.entry(1, "data", quoted(std::filesystem::absolute(st.data).string()));
   w.line(1, "fit:");
   for (const FittedInput& f : st.fitted)

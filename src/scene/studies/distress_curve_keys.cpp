@@ -17,7 +17,7 @@ constexpr std::string_view kKeys[] = {"type",     "parameter",     "from",   "to
 // distress_curve: `parameter: speed`, `from`, `to` in its unit, the first fold's load
 // range optional.
 void read_fold_curve(const MapReader& study, Scene& out) {
-  Study& s = out.study;
+  DistressCurveSettings& s = std::get<DistressCurveSettings>(out.study.settings);
   const Node name =
       study.get("parameter", "speed, friction_coefficient, gear_tilt, ambient_temperature, viscosity_scale or roughness");
   s.curve_parameter = kCurveParameters.values[name.choice(kCurveParameters.names)];
@@ -45,46 +45,48 @@ void read_fold_curve(const MapReader& study, Scene& out) {
   s.from = value("from");
   s.to = value("to");
   if (s.curve_parameter == CurveParameter::speed)
-    s.speeds_in_rpm = given_in_rpm(study.get("from", "")) && given_in_rpm(study.get("to", ""));
+    out.study.speeds_in_rpm = given_in_rpm(study.get("from", "")) && given_in_rpm(study.get("to", ""));
   if (s.to == s.from) {
     const Node to = study.get("to", "");
     to.fail(fmt::format("{}: '{}' must differ from 'from': the curve needs a range", to.path(), to.yaml().Scalar()));
   }
   // The first fold is searched between these loads (defaults: a fifth and four times
   // operating.load).
-  s.load_start = study.quantity("load_start", si::force, bounds::load, 0.2 * out.operating.load);
-  s.load_end = study.quantity("load_end", si::force, bounds::load, 4.0 * out.operating.load);
-  if (s.load_end <= s.load_start) {
+  LoadRange& loads = s.search.loads;
+  loads.start = study.quantity("load_start", si::force, bounds::load, 0.2 * out.operating.load);
+  loads.end = study.quantity("load_end", si::force, bounds::load, 4.0 * out.operating.load);
+  if (loads.end <= loads.start) {
     const Node node = study.has("load_end") ? study.get("load_end", "") : study.get("load_start", "");
     node.fail(fmt::format("{}: load_end must be greater than load_start (here {:.6g} N and {:.6g} N)", node.path(),
-                          s.load_end, s.load_start));
+                          loads.end, loads.start));
   }
-  s.bracket_width = read_bracket_width(study, s.bracket_width);
+  s.search.bracket_width = read_bracket_width(study, s.search.bracket_width);
 }
 
 void read(const MapReader& study, Scene& out) {
-  Study& s = out.study;
   read_fold_curve(study, out);
-  s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
-  read_tolerance(study, s);
-  refuse_every_state(study, s, "distress_curve");
-  read_map_axes(study, s, out, "family");
+  DistressCurveSettings& s = std::get<DistressCurveSettings>(out.study.settings);
+  s.error_bars.estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_bars.estimate);
+  read_tolerance(study, s.error_bars);
+  refuse_every_state(study, s.error_bars, "distress_curve");
+  read_map_axes(study, s.axes, out, "family");
 }
 
-void write(SceneText& w, const Study& st) {
-  write_load_range(w, st);
-  write_error_estimate(w, st);
-  write_tolerance(w, st);
-  const char* unit = st.curve_parameter == CurveParameter::speed                  ? "rad/s"
-                     : st.curve_parameter == CurveParameter::gear_tilt            ? "rad"
-                     : st.curve_parameter == CurveParameter::roughness            ? "m"
-                     : st.curve_parameter == CurveParameter::ambient_temperature ? "K"
-                                                                                  : "1";
-  w.entry(1, "parameter", std::string(kCurveParameters.name(st.curve_parameter)));
-  w.entry(1, "from", quantity(st.from, unit));
-  w.entry(1, "to", quantity(st.to, unit));
-  w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
-  write_axes(w, st, "family");
+void write(SceneText& w, const Study& study) {
+  const DistressCurveSettings& s = std::get<DistressCurveSettings>(study.settings);
+  write_load_range(w, s.search.loads);
+  write_error_estimate(w, s.error_bars);
+  write_tolerance(w, s.error_bars);
+  const char* unit = s.curve_parameter == CurveParameter::speed                  ? "rad/s"
+                     : s.curve_parameter == CurveParameter::gear_tilt            ? "rad"
+                     : s.curve_parameter == CurveParameter::roughness            ? "m"
+                     : s.curve_parameter == CurveParameter::ambient_temperature ? "K"
+                                                                                 : "1";
+  w.entry(1, "parameter", std::string(kCurveParameters.name(s.curve_parameter)));
+  w.entry(1, "from", quantity(s.from, unit));
+  w.entry(1, "to", quantity(s.to, unit));
+  w.entry(1, "bracket_width", quantity(s.search.bracket_width, "1"));
+  write_axes(w, s.axes, "family");
 }
 
 }  // namespace

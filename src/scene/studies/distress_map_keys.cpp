@@ -15,7 +15,7 @@ constexpr std::string_view kKeys[] = {"type",      "speeds",        "load_start"
                                       "tolerance", "search_past_failure"};
 
 // study.search_past_failure: a factor of the first failure load (at least 1), or none.
-void read_search_bound(const MapReader& study, Study& s) {
+void read_search_bound(const MapReader& study, DistressMapSettings& s) {
   read_number_or_none(study, "search_past_failure",
                       Range{.low = 1.0, .high = 1000.0,
                             .reason = "how far past the first failure load the branch is searched, as a factor of "
@@ -25,8 +25,8 @@ void read_search_bound(const MapReader& study, Study& s) {
 
 // A followed map moves its inputs by Newton (physics §16): each axis one continuous
 // input, the grid fixed, and no refined meshes' searches for error bars.
-void check_followed_axes(const MapReader& study, const Study& s) {
-  if (s.error_estimate != ErrorEstimate::none) {
+void check_followed_axes(const MapReader& study, const DistressMapSettings& s) {
+  if (s.error_bars.estimate != ErrorEstimate::none) {
     const Node node = study.get("error_estimate", "");
     node.fail(fmt::format("{}: a followed map (method: follow) gives no error bars; leave error_estimate out or set "
                           "it to none, or search every combination (method: search) for their bars",
@@ -54,30 +54,31 @@ void check_followed_axes(const MapReader& study, const Study& s) {
 }
 
 void read(const MapReader& study, Scene& out) {
-  Study& s = out.study;
+  DistressMapSettings& s = std::get<DistressMapSettings>(out.study.settings);
   read_search_bound(study, s);
   s.map_method = read_choice(study, "method", kMapMethods, s.map_method);
   // Followed failure loads have no refined meshes' searches: no error bars by default.
-  if (s.map_method == MapMethod::follow) s.error_estimate = ErrorEstimate::none;
-  s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
-  read_tolerance(study, s);
-  read_speeds(study, s);
-  read_load_range(study, s, " (distress is searched between them)");
-  read_map_axes(study, s, out);
-  s.bracket_width = read_bracket_width(study, s.bracket_width);
+  if (s.map_method == MapMethod::follow) s.error_bars.estimate = ErrorEstimate::none;
+  s.error_bars.estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_bars.estimate);
+  read_tolerance(study, s.error_bars);
+  read_speeds(study, s.speeds, out.study.speeds_in_rpm);
+  read_load_range(study, s.search.loads, " (distress is searched between them)");
+  read_map_axes(study, s.axes, out);
+  s.search.bracket_width = read_bracket_width(study, s.search.bracket_width);
   if (s.map_method == MapMethod::follow) check_followed_axes(study, s);
 }
 
-void write(SceneText& w, const Study& st) {
-  write_load_range(w, st);
-  write_speeds(w, st);
-  write_axes(w, st, "parameter");
-  w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
-  if (st.map_method == MapMethod::follow) w.entry(1, "method", "follow");
-  write_error_estimate(w, st);
-  write_tolerance(w, st);
+void write(SceneText& w, const Study& study) {
+  const DistressMapSettings& s = std::get<DistressMapSettings>(study.settings);
+  write_load_range(w, s.search.loads);
+  write_speeds(w, s.speeds);
+  write_axes(w, s.axes, "parameter");
+  w.entry(1, "bracket_width", quantity(s.search.bracket_width, "1"));
+  if (s.map_method == MapMethod::follow) w.entry(1, "method", "follow");
+  write_error_estimate(w, s.error_bars);
+  write_tolerance(w, s.error_bars);
   w.entry(1, "search_past_failure",
-          st.search_past_failure > 0.0 ? quantity(st.search_past_failure, "1") : std::string("none"));
+          s.search_past_failure > 0.0 ? quantity(s.search_past_failure, "1") : std::string("none"));
 }
 
 }  // namespace

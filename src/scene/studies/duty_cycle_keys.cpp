@@ -13,7 +13,7 @@ constexpr std::string_view kKeys[] = {"type", "schedule", "failure_load_at_worst
 
 // The schedule is read once the operating point is known (read_schedule).
 void read(const MapReader& study, Scene& out) {
-  Study& s = out.study;
+  DutyCycleSettings& s = std::get<DutyCycleSettings>(out.study.settings);
   s.failure_load_at_worst = study.boolean("failure_load_at_worst", s.failure_load_at_worst);
   s.march_tolerance = study.quantity("relative_tolerance", si::dimensionless, bounds::march_tolerance, s.march_tolerance);
   if (!out.effects.thermal) {
@@ -32,7 +32,8 @@ void read(const MapReader& study, Scene& out) {
   }
 }
 
-void write(SceneText& w, const Study& st) {
+void write(SceneText& w, const Study& study) {
+  const DutyCycleSettings& st = std::get<DutyCycleSettings>(study.settings);
   // Every point with every field: the resolved scene needs no schedule file.
   w.line(1, "schedule:");
   for (const SchedulePoint& p : st.schedule)

@@ -10,17 +10,18 @@ constexpr std::string_view kKeys[] = {"type",          "load_start",     "load_e
                                       "parameter",     "bracket_width",  "error_estimate", "tolerance"};
 
 void read(const MapReader& study, Scene& out) {
-  Study& s = out.study;
-  read_load_grid(study, out);
-  s.error_estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_estimate);
-  read_tolerance(study, s);
-  read_map_axes(study, s, out);
+  LoadSweepSettings& s = std::get<LoadSweepSettings>(out.study.settings);
+  read_load_grid(study, out, s.grid);
+  s.error_bars.estimate = read_choice(study, "error_estimate", kErrorEstimates, s.error_bars.estimate);
+  read_tolerance(study, s.error_bars);
+  read_map_axes(study, s.axes, out);
 }
 
-void write(SceneText& w, const Study& st) {
-  write_load_grid(w, st);
-  write_error_estimate(w, st);
-  write_tolerance(w, st);
+void write(SceneText& w, const Study& study) {
+  const LoadSweepSettings& s = std::get<LoadSweepSettings>(study.settings);
+  write_load_grid(w, s.grid, s.axes);
+  write_error_estimate(w, s.error_bars);
+  write_tolerance(w, s.error_bars);
 }
 
 }  // namespace

@@ -15,16 +15,16 @@ constexpr std::string_view kKeys[] = {"type",          "inputs",        "load_st
 
 // The inputs' distributions are read once every input is known (read_uncertain_inputs).
 void read(const MapReader& study, Scene& out) {
-  Study& s = out.study;
-  read_load_range(study, s, " (the failure search at the inputs' medians runs between them)");
+  ReliabilitySettings& s = std::get<ReliabilitySettings>(out.study.settings);
+  read_load_range(study, s.search.loads, " (the failure search at the inputs' medians runs between them)");
   // A sample that does not fail up to load_end must be known to survive the operating load.
-  if (!(out.operating.load > s.load_start && out.operating.load < s.load_end)) {
+  if (!(out.operating.load > s.search.loads.start && out.operating.load < s.search.loads.end)) {
     const Node end = study.get("load_end", "");
     end.fail(fmt::format("{}: the operating load {:.6g} N must lie between load_start and load_end: the "
                          "probability of failure at it needs each failure search to reach past it",
                          end.path(), out.operating.load));
   }
-  s.bracket_width = read_bracket_width(study, s.bracket_width);
+  s.search.bracket_width = read_bracket_width(study, s.search.bracket_width);
   study.get("inputs", "a map from input paths to distributions, e.g. {geometry.gear.tilt: {distribution: normal, "
                       "mean: 0.5 mrad, sd: 0.1 mrad}}");
   if (study.has("probabilities")) {
@@ -43,9 +43,10 @@ void read(const MapReader& study, Scene& out) {
   s.seed = sampling.integer("seed", 0, int(s.seed), "the samples' seed");
 }
 
-void write(SceneText& w, const Study& st) {
-  write_load_range(w, st);
-  w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
+void write(SceneText& w, const Study& study) {
+  const ReliabilitySettings& st = std::get<ReliabilitySettings>(study.settings);
+  write_load_range(w, st.search.loads);
+  w.entry(1, "bracket_width", quantity(st.search.bracket_width, "1"));
   w.line(1, "inputs:");
   for (const UncertainInput& in : st.uncertain_inputs) {
     std::string d = fmt::format("{{distribution: {}", kInputDistributions.name(in.distribution));

@@ -11,10 +11,11 @@ namespace {
 constexpr std::string_view kKeys[] = {"type", "parameters", "load_start", "load_end", "bracket_width"};
 
 void read(const MapReader& study, Scene& out) {
-  Study& s = out.study;
+  SensitivitySettings& s = std::get<SensitivitySettings>(out.study.settings);
   // The state at the operating point, and with a load range the failure load there.
-  if (study.has("load_start") || study.has("load_end")) read_load_range(study, s, " (distress is searched between them)");
-  s.bracket_width = read_bracket_width(study, s.bracket_width);
+  if (study.has("load_start") || study.has("load_end"))
+    read_load_range(study, s.search.loads, " (distress is searched between them)");
+  s.search.bracket_width = read_bracket_width(study, s.search.bracket_width);
   if (study.has("parameters")) {
     const Node list = study.get("parameters", "");
     for (const Node& item : list.list("scene paths of inputs, e.g. [geometry.gear.tilt, surfaces.washer.Rq]"))
@@ -24,11 +25,12 @@ void read(const MapReader& study, Scene& out) {
   }
 }
 
-void write(SceneText& w, const Study& st) {
-  if (st.load_end != 0.0) write_load_range(w, st);
-  w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
+void write(SceneText& w, const Study& study) {
+  const SensitivitySettings& s = std::get<SensitivitySettings>(study.settings);
+  if (s.search.loads.end != 0.0) write_load_range(w, s.search.loads);
+  w.entry(1, "bracket_width", quantity(s.search.bracket_width, "1"));
   std::string paths;
-  for (const std::string& p : st.parameters) paths += (paths.empty() ? "" : ", ") + p;
+  for (const std::string& p : s.parameters) paths += (paths.empty() ? "" : ", ") + p;
   if (!paths.empty()) w.entry(1, "parameters", fmt::format("[{}]", paths));
 }
 

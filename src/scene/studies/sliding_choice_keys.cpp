@@ -8,10 +8,14 @@ namespace {
 
 constexpr std::string_view kKeys[] = {"type", "load_start", "load_end", "load_steps", "speeds", "bracket_width"};
 
-void read(const MapReader& study, Scene& out) { read_load_grid(study, out); }
+void read(const MapReader& study, Scene& out) {
+  read_load_grid(study, out, std::get<SlidingChoiceSettings>(out.study.settings).grid);
+}
+
+void write(SceneText& w, const Study& study) { write_load_grid(w, std::get<SlidingChoiceSettings>(study.settings).grid); }
 
 }  // namespace
 
-extern const StudySection kSlidingChoiceKeys{.keys = kKeys, .read = read, .write = write_load_grid};
+extern const StudySection kSlidingChoiceKeys{.keys = kKeys, .read = read, .write = write};
 
 }  // namespace twb::scene_io

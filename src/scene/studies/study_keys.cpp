@@ -14,10 +14,10 @@
 
 namespace twb::scene_io {
 
-void read_load_range(const MapReader& study, Study& s, std::string_view end_relation) {
-  s.load_start = study.quantity("load_start", si::force, bounds::load);
-  s.load_end = study.quantity("load_end", si::force, bounds::load);
-  if (s.load_end <= s.load_start) {
+void read_load_range(const MapReader& study, LoadRange& loads, std::string_view end_relation) {
+  loads.start = study.quantity("load_start", si::force, bounds::load);
+  loads.end = study.quantity("load_end", si::force, bounds::load);
+  if (loads.end <= loads.start) {
     const Node node = study.get("load_end", "");
     node.fail(fmt::format("{}: '{}' must be greater than load_start '{}'{}", node.path(), node.yaml().Scalar(),
                           study.get("load_start", "").yaml().Scalar(), end_relation));
@@ -35,8 +35,8 @@ void read_number_or_none(const MapReader& study, std::string_view key, const Ran
 
 // study.tolerance: a relative accuracy ("1 %", 0.01) or none; refused beside
 // error_estimate: none, which asks for no refined mesh at all.
-void read_tolerance(const MapReader& study, Study& s) {
-  if (study.has("tolerance") && s.error_estimate == ErrorEstimate::none) {
+void read_tolerance(const MapReader& study, ErrorBarSettings& bars) {
+  if (study.has("tolerance") && bars.estimate == ErrorEstimate::none) {
     const Node node = study.get("tolerance", "");
     node.fail(fmt::format("{}: a tolerance refines the mesh until each failure load's error bar meets it, and "
                           "error_estimate: none asks for no error bar; leave one of them out",
@@ -45,7 +45,7 @@ void read_tolerance(const MapReader& study, Study& s) {
   read_number_or_none(study, "tolerance",
                       Range{.low = 0.0, .low_open = true, .high = 0.5,
                             .reason = "the relative accuracy wanted of each failure load, e.g. '1 %' or 0.01, or none"},
-                      s.tolerance);
+                      bars.tolerance);
 }
 
 double read_bracket_width(const MapReader& study, double fallback) {
@@ -146,11 +146,11 @@ bool same_input(const MapAxis& a, const MapAxis& b) {
 // The axes of a distress map or load sweep besides the speed: `parameter: {name: ...,
 // values: [...]}`, or a list of such maps, a grid of every combination; a distress
 // curve's family: `family: {...}`, one axis.
-void read_map_axes(const MapReader& study, Study& s, const Scene& scene, const char* key) {
+void read_map_axes(const MapReader& study, std::vector<MapAxis>& axes, const Scene& scene, const char* key) {
   if (!study.has(key)) return;
   const Node node = study.get(key, "");
   if (!(std::string_view(key) == "parameter" && node.yaml().IsSequence())) {
-    s.axes.push_back(read_map_axis(study.map(key, {"name", "values"}), scene));
+    axes.push_back(read_map_axis(study.map(key, {"name", "values"}), scene));
     return;
   }
   const std::vector<Node> items = node.list("a list of axes, each {name: ..., values: [...]}");
@@ -161,7 +161,7 @@ void read_map_axes(const MapReader& study, Study& s, const Scene& scene, const c
   for (const Node& item : items) {
     const MapReader p(item, {"name", "values"});
     MapAxis axis = read_map_axis(p, scene);
-    for (const MapAxis& before : s.axes)
+    for (const MapAxis& before : axes)
       if (same_input(before, axis)) {
         const Node name = p.get("name", "");
         const bool twice = before.parameter == axis.parameter && before.path == axis.path;
@@ -173,7 +173,7 @@ void read_map_axes(const MapReader& study, Study& s, const Scene& scene, const c
                                           ? before.path
                                           : std::string(kMapParameters.name(before.parameter))));
       }
-    s.axes.push_back(std::move(axis));
+    axes.push_back(std::move(axis));
   }
 }
 
@@ -187,35 +187,34 @@ bool given_in_rpm(const Node& speed) {
 }
 
 // The speeds of one search each: `speeds: [136 rad/s, 545 rad/s]`.
-void read_speeds(const MapReader& study, Study& s) {
-  const Node speeds = study.get("speeds", "a list of speeds, e.g. [136 rad/s, 545 rad/s]");
-  const std::vector<Node> items = speeds.list("speeds, e.g. [136 rad/s, 545 rad/s]");
+void read_speeds(const MapReader& study, std::vector<double>& speeds, bool& in_rpm) {
+  const Node list = study.get("speeds", "a list of speeds, e.g. [136 rad/s, 545 rad/s]");
+  const std::vector<Node> items = list.list("speeds, e.g. [136 rad/s, 545 rad/s]");
   if (items.empty())
-    speeds.fail(fmt::format("{}: the list is empty; give at least one speed, e.g. "
-                            "[136 rad/s, 545 rad/s]",
-                            speeds.path()));
-  for (const Node& speed : items) s.speeds.push_back(speed.quantity(si::angular_speed, bounds::speed));
-  s.speeds_in_rpm = std::all_of(items.begin(), items.end(), [](const Node& n) { return given_in_rpm(n); });
+    list.fail(fmt::format("{}: the list is empty; give at least one speed, e.g. "
+                          "[136 rad/s, 545 rad/s]",
+                          list.path()));
+  for (const Node& speed : items) speeds.push_back(speed.quantity(si::angular_speed, bounds::speed));
+  in_rpm = std::all_of(items.begin(), items.end(), [](const Node& n) { return given_in_rpm(n); });
 }
 
 // A load grid (load_sweep, sliding_choice): the range, its number of loads, and the
 // speeds, operating.speed when the study names none.
-void read_load_grid(const MapReader& study, Scene& out) {
-  Study& s = out.study;
-  read_load_range(study, s, "");
-  s.load_steps = study.get("load_steps", "a whole number in [2, 10000]")
-                     .integer(2, 10000, "the number of loads, both ends included");
+void read_load_grid(const MapReader& study, Scene& out, LoadGrid& grid) {
+  read_load_range(study, grid.loads, "");
+  grid.load_steps = study.get("load_steps", "a whole number in [2, 10000]")
+                        .integer(2, 10000, "the number of loads, both ends included");
   if (study.has("speeds"))
-    read_speeds(study, s);
+    read_speeds(study, grid.speeds, out.study.speeds_in_rpm);
   else
-    s.speeds = {out.operating.speed};
-  s.bracket_width = read_bracket_width(study, s.bracket_width);
+    grid.speeds = {out.operating.speed};
+  grid.bracket_width = read_bracket_width(study, grid.bracket_width);
 }
 
 // every_state refines each state of a sweep; a point's one state has its bar with
 // richardson, and a distress curve reports folds and crossings, not a sweep's states.
-void refuse_every_state(const MapReader& study, const Study& s, const char* type) {
-  if (s.error_estimate != ErrorEstimate::every_state) return;
+void refuse_every_state(const MapReader& study, const ErrorBarSettings& bars, const char* type) {
+  if (bars.estimate != ErrorEstimate::every_state) return;
   const Node node = study.get("error_estimate", "");
   node.fail(fmt::format("{}: every_state (an error bar on every state of a sweep) is for load_sweep and "
                         "distress_map; with type: {} use richardson or none",
@@ -236,15 +235,15 @@ std::vector<MapReader> axis_nodes_of(const MapReader& study) {
 }
 
 
-void write_load_range(SceneText& w, const Study& st) {
-  w.entry(1, "load_start", quantity(st.load_start, "N"));
-  w.entry(1, "load_end", quantity(st.load_end, "N"));
+void write_load_range(SceneText& w, const LoadRange& loads) {
+  w.entry(1, "load_start", quantity(loads.start, "N"));
+  w.entry(1, "load_end", quantity(loads.end, "N"));
 }
 
-void write_speeds(SceneText& w, const Study& st) {
-  std::string speeds;
-  for (double speed : st.speeds) speeds += (speeds.empty() ? "" : ", ") + quantity(speed, "rad/s");
-  w.entry(1, "speeds", fmt::format("[{}]", speeds));
+void write_speeds(SceneText& w, std::span<const double> speeds) {
+  std::string text;
+  for (double speed : speeds) text += (text.empty() ? "" : ", ") + quantity(speed, "rad/s");
+  w.entry(1, "speeds", fmt::format("[{}]", text));
 }
 
 namespace {
@@ -266,37 +265,37 @@ std::pair<std::string, std::string> axis_text(const MapAxis& a) {
 
 }  // namespace
 
-void write_axes(SceneText& w, const Study& st, const char* key) {
-  if (st.axes.empty()) return;
+void write_axes(SceneText& w, std::span<const MapAxis> axes, const char* key) {
+  if (axes.empty()) return;
   w.line(1, std::string(key) + ":");
-  if (st.axes.size() == 1) {
-    const auto [name, values] = axis_text(st.axes.front());
+  if (axes.size() == 1) {
+    const auto [name, values] = axis_text(axes.front());
     w.entry(2, "name", name);
     w.entry(2, "values", values);
     return;
   }
-  for (const MapAxis& a : st.axes) {
+  for (const MapAxis& a : axes) {
     const auto [name, values] = axis_text(a);
     w.line(2, fmt::format("- name: {}", name));
     w.entry(3, "values", values);
   }
 }
 
-void write_load_grid(SceneText& w, const Study& st) {
-  write_load_range(w, st);
-  w.entry(1, "load_steps", fmt::format("{}", st.load_steps));
-  write_speeds(w, st);
-  write_axes(w, st, "parameter");
-  w.entry(1, "bracket_width", quantity(st.bracket_width, "1"));
+void write_load_grid(SceneText& w, const LoadGrid& grid, std::span<const MapAxis> axes) {
+  write_load_range(w, grid.loads);
+  w.entry(1, "load_steps", fmt::format("{}", grid.load_steps));
+  write_speeds(w, grid.speeds);
+  write_axes(w, axes, "parameter");
+  w.entry(1, "bracket_width", quantity(grid.bracket_width, "1"));
 }
 
-void write_error_estimate(SceneText& w, const Study& st) {
-  w.entry(1, "error_estimate", std::string(kErrorEstimates.name(st.error_estimate)));
+void write_error_estimate(SceneText& w, const ErrorBarSettings& bars) {
+  w.entry(1, "error_estimate", std::string(kErrorEstimates.name(bars.estimate)));
 }
 
-void write_tolerance(SceneText& w, const Study& st) {
-  if (st.error_estimate != ErrorEstimate::none)
-    w.entry(1, "tolerance", st.tolerance > 0.0 ? quantity(st.tolerance, "1") : std::string("none"));
+void write_tolerance(SceneText& w, const ErrorBarSettings& bars) {
+  if (bars.estimate != ErrorEstimate::none)
+    w.entry(1, "tolerance", bars.tolerance > 0.0 ? quantity(bars.tolerance, "1") : std::string("none"));
 }
 
 }  // namespace twb::scene_io

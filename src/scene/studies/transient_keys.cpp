@@ -11,21 +11,22 @@ namespace {
 constexpr std::string_view kKeys[] = {"type", "load_start", "load_end", "duration"};
 
 void read(const MapReader& study, Scene& out) {
-  Study& s = out.study;
+  LoadStepSettings& s = std::get<LoadStepSettings>(out.study.settings);
   if (!out.effects.thermal) {
     const Node type = study.get("type", "");
     type.fail(fmt::format("{}: a transient study marches the heat balance in pseudo-time (docs/physics.md "
                           "section 8), so it needs the thermal effect; add 'thermal' to effects",
                           type.path()));
   }
-  s.load_start = study.quantity("load_start", si::force, bounds::load);
-  s.load_end = study.quantity("load_end", si::force, bounds::load);
+  s.loads.start = study.quantity("load_start", si::force, bounds::load);
+  s.loads.end = study.quantity("load_end", si::force, bounds::load);
   s.duration = study.quantity("duration", si::time, bounds::duration, 0.0);
 }
 
-void write(SceneText& w, const Study& st) {
-  write_load_range(w, st);
-  w.entry(1, "duration", quantity(st.duration, "s"));
+void write(SceneText& w, const Study& study) {
+  const LoadStepSettings& s = std::get<LoadStepSettings>(study.settings);
+  write_load_range(w, s.loads);
+  w.entry(1, "duration", quantity(s.duration, "s"));
 }
 
 }  // namespace

@@ -65,11 +65,11 @@ BarsSummary bars_summary(std::span<const FoldBar> bars, double tolerance, const 
 }
 
 FoldCurveBars::FoldCurveBars(const Scene& scene, CurveParameter which, const FoldPoint& first,
-                             std::size_t most_points, std::function<void(const std::string&)> say)
+                             std::size_t most_points, double tolerance, std::function<void(const std::string&)> say)
     : scene_(scene),
       which_(which),
       first_(first),
-      tolerance_(scene.study.tolerance),
+      tolerance_(tolerance),
       say_(std::move(say)),
       bars_(most_points) {}
 

@@ -53,10 +53,10 @@ class FoldCurveBars {
 
   // scene: the curve's scene as it stands before the curve is traced (the trace moves its
   // model's curve parameter while the chains build theirs); first: the curve's first fold
-  // on the scene's mesh; most_points: the most points the curve may have. `say` reports
-  // each chain's end (may be empty).
+  // on the scene's mesh; most_points: the most points the curve may have; tolerance: the
+  // study's (relative; 0: none). `say` reports each chain's end (may be empty).
   FoldCurveBars(const Scene& scene, CurveParameter which, const FoldPoint& first, std::size_t most_points,
-                std::function<void(const std::string&)> say);
+                double tolerance, std::function<void(const std::string&)> say);
 
   std::size_t chains() const { return (bars_.size() + kChainPoints - 1) / kChainPoints; }
   // The bars of chain `chain`'s points, taken from the feed as the trace adds them. Distinct

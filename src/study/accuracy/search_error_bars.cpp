@@ -38,7 +38,8 @@ using Clock = std::chrono::steady_clock;
 // Every state of a search again on the refined mesh (study.error_estimate: every_state),
 // on the search's thread; a state without one says why in the search's row.
 void estimate_state_errors(const BearingModel& model, DistressSearch& found, const ProgressReport& progress) {
-  if (model.scene().study.error_estimate != ErrorEstimate::every_state || found.states.empty() ||
+  const ErrorBarSettings* bars = model.scene().study.error_bars();
+  if (!bars || bars->estimate != ErrorEstimate::every_state || found.states.empty() ||
       found.state_vectors.size() != found.states.size())
     return;
   const auto t0 = Clock::now();

@@ -93,13 +93,11 @@ struct CurveEnds {
 CurveEnds search_ends(BearingModel& model, BearingModel& other, const std::string& label,
                       const ProgressReport& progress, int threads, RunTimings& timings) {
   const Study& st = model.scene().study;
-  DistressSearchSettings settings;
-  settings.load_start = st.load_start;
-  settings.load_end = st.load_end;
-  settings.bracket_width = st.bracket_width;
+  const DistressCurveSettings& asked = std::get<DistressCurveSettings>(st.settings);
+  DistressSearchSettings settings = range_settings(asked.search);
   settings.march_past_distress = false;
-  settings.failure_error_bars = st.error_estimate != ErrorEstimate::none;
-  settings.error_tolerance = st.tolerance;
+  settings.failure_error_bars = asked.error_bars.estimate != ErrorEstimate::none;
+  settings.error_tolerance = asked.error_bars.tolerance;
   const PerCriterion<bool> in_force =
       criteria_in_force(OperatingLimits::of(model.scene()), model.scene().effects.thermal);
   auto needs_other_end = [&](const DistressSearch& found) {
@@ -111,8 +109,8 @@ CurveEnds search_ends(BearingModel& model, BearingModel& other, const std::strin
   CurveEnds ends;
   auto search_end = [&](std::size_t i) {
     BearingModel& m = i == 0 ? model : other;
-    const double end = i == 0 ? st.from : st.to;
-    m.set_curve_parameter(st.curve_parameter, end);
+    const double end = i == 0 ? asked.from : asked.to;
+    m.set_curve_parameter(asked.curve_parameter, end);
     if (progress) progress(fmt::format("[curve{}] the first fold at {}", label, shown_parameter(st, end)));
     (i == 0 ? ends.from : ends.to) = search_distress(m, settings, progress);
   };
@@ -133,9 +131,10 @@ CurveEnds search_ends(BearingModel& model, BearingModel& other, const std::strin
 // and with the parameter's value where it is not the speed), its cool-branch states.
 void record_end(DistressSearch& found, double end, const Study& st, std::optional<double> member,
                 StudyOutcome& out) {
+  const DistressCurveSettings& asked = std::get<DistressCurveSettings>(st.settings);
   add_search_work(out.timings, found.counts);
   found.row.parameters = member ? std::vector<double>{*member} : std::vector<double>{};
-  if (st.curve_parameter != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown_parameter(st, end), found.row.method);
+  if (asked.curve_parameter != CurveParameter::speed) found.row.method = fmt::format("at {}: {}", shown_parameter(st, end), found.row.method);
   out.distress.push_back(found.row);
   for (std::size_t k = 0; k < found.cool_states; ++k) {
     out.states.push_back(found.states[k]);
@@ -146,13 +145,13 @@ void record_end(DistressSearch& found, double end, const Study& st, std::optiona
 
 // The fold's continuation from `start` towards `other` across the study's range.
 FoldCurveSettings fold_curve_settings(const Scene& scene, double start, double other) {
-  const Study& st = scene.study;
+  const DistressCurveSettings& asked = std::get<DistressCurveSettings>(scene.study.settings);
   FoldCurveSettings fs;
-  fs.p_min = std::min(st.from, st.to);
-  fs.p_max = std::max(st.from, st.to);
+  fs.p_min = std::min(asked.from, asked.to);
+  fs.p_max = std::max(asked.from, asked.to);
   // The metric's unit of the parameter: its range's size, not its value at the start
   // (which may be 0: a speed, coefficient or tilt range from zero).
-  fs.p_scale = std::max(std::abs(st.from), std::abs(st.to));
+  fs.p_scale = std::max(std::abs(asked.from), std::abs(asked.to));
   fs.direction = other > start ? +1 : -1;
   fs.arclength.newton = newton_settings(scene);
   fs.arclength.newton.max_iterations = 12;
@@ -169,11 +168,12 @@ FoldCurveSettings fold_curve_settings(const Scene& scene, double start, double o
 // The limit curves' settings from the study's (each curve's W_d is set once the fold
 // curve is traced).
 LimitCurveSettings limit_curve_settings(const Study& st) {
+  const DistressCurveSettings& asked = std::get<DistressCurveSettings>(st.settings);
   LimitCurveSettings settings;
-  settings.bracket_width = st.bracket_width;
-  settings.load_end = st.load_end;
-  settings.error_bars = st.error_estimate != ErrorEstimate::none;
-  settings.tolerance = st.tolerance;
+  settings.bracket_width = asked.search.bracket_width;
+  settings.load_end = asked.search.loads.end;
+  settings.error_bars = asked.error_bars.estimate != ErrorEstimate::none;
+  settings.tolerance = asked.error_bars.tolerance;
   settings.shown = [st](double p) { return shown_parameter(st, p); };
   return settings;
 }
@@ -215,7 +215,8 @@ std::optional<std::string> where_the_curve_ended(const FoldCurve& curve, const F
 void run_fold_curve(BearingModel& model, std::optional<double> member, const std::string& label, StudyOutcome& out,
                     const ProgressReport& progress, int threads) {
   const Study& st = model.scene().study;
-  const CurveParameter which = st.curve_parameter;
+  const DistressCurveSettings& asked = std::get<DistressCurveSettings>(st.settings);
+  const CurveParameter which = asked.curve_parameter;
   auto say = [&](const std::string& s) {
     if (progress) progress(s);
   };
@@ -231,22 +232,22 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     ends.emplace_back(end, found.crossing_states);
   };
   const DistressSearch* first = nullptr;
-  double start = st.from, other = st.to;
-  take(*at_from, st.from);
+  double start = asked.from, other = asked.to;
+  take(*at_from, asked.from);
   if (at_from->fold && at_from->row.distress_load) first = &*at_from;
   if (at_to) {
-    take(*at_to, st.to);
+    take(*at_to, asked.to);
     if (!first && at_to->fold && at_to->row.distress_load) {
       first = &*at_to;
-      start = st.to;
-      other = st.from;
+      start = asked.to;
+      other = asked.from;
     }
   }
 
-  std::vector<LimitCurveJob> jobs = limit_curve_jobs(st, ends);
+  std::vector<LimitCurveJob> jobs = limit_curve_jobs(asked, ends);
   LimitCurveSettings limit_settings = limit_curve_settings(st);
   auto add_limit_curves = [&] {
-    for (const LimitCurveJob& job : jobs) add_limit_curve(job, st, member, label, st.tolerance, out, say);
+    for (const LimitCurveJob& job : jobs) add_limit_curve(job, st, member, label, asked.error_bars.tolerance, out, say);
   };
   auto limit_curves_alone = [&] {
     limit_settings.fold_load = distress_fold_of(out, member);
@@ -256,7 +257,8 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   if (!first) {
     out.summary.push_back(fmt::format("fold curve{}: no fold between {:.6g} and {:.6g} N at either end ({} and {}): "
                                       "no sudden distress to follow",
-                                      label, st.load_start, st.load_end, shown_parameter(st, st.from), shown_parameter(st, st.to)));
+                                      label, asked.search.loads.start, asked.search.loads.end,
+                                      shown_parameter(st, asked.from), shown_parameter(st, asked.to)));
     limit_curves_alone();
     return;
   }
@@ -329,12 +331,12 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   // On `threads` threads: the curve; W_d's error bar all along it (fold_curve_bars.h:
   // chains that follow the curve as it is traced); then every limit curve. Each piece on
   // models of its own.
-  const bool bars = st.error_estimate != ErrorEstimate::none;
+  const bool bars = asked.error_bars.estimate != ErrorEstimate::none;
   const auto most_points = std::size_t(fs.arclength.max_points) + 1;
   // The chains' bearings from the scene as it stands before the curve: the trace sets
   // its model's curve parameter while they are built (and a roughness rescales from
   // where it stands, so a copy taken mid-trace would depend on timing).
-  FoldCurveBars bar_of(model.scene(), which, *first->fold, bars ? most_points : 0,
+  FoldCurveBars bar_of(model.scene(), which, *first->fold, bars ? most_points : 0, asked.error_bars.tolerance,
                        [&](const std::string& s) { say(fmt::format("[curve{}] {}", label, s)); });
   const std::size_t chains = bar_of.chains();
   const auto t_pieces = std::chrono::steady_clock::now();
@@ -353,7 +355,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     add_limit_curves();
     return;
   }
-  if (bars) add_fold_bars(bar_of, curve, row_of, st, label, st.tolerance, elapsed_ms(t_pieces) / 1000.0, out, say);
+  if (bars) add_fold_bars(bar_of, curve, row_of, st, label, asked.error_bars.tolerance, elapsed_ms(t_pieces) / 1000.0, out, say);
   if (const std::optional<std::string> line = where_the_curve_ended(curve, fs, st, label)) out.summary.push_back(*line);
   add_limit_curves();
 }

@@ -33,6 +33,14 @@ constexpr double light_load_fraction = 0.1;
 
 }  // namespace
 
+DistressSearchSettings range_settings(const FailureSearch& search) {
+  DistressSearchSettings s;
+  s.load_start = search.loads.start;
+  s.load_end = search.loads.end;
+  s.bracket_width = search.bracket_width;
+  return s;
+}
+
 RunawaySettings distress_detector(const Scene& scene, double bracket_width) {
   RunawaySettings r;
   // The scene's tolerances, the detector's own bound on the settle test's iterations.

@@ -78,6 +78,10 @@ struct DistressSearchSettings {
   SpareThreads* spare_threads = nullptr;
 };
 
+// A study's failure search (its load range and bracket width) as a search's settings,
+// the others at their defaults.
+DistressSearchSettings range_settings(const FailureSearch& search);
+
 // What a search cost: the work behind one W_d.
 struct SearchCounts {
   long stability_tests = 0;  // linear stability tests of cool-branch states

@@ -72,19 +72,19 @@ std::string point_label(const std::vector<std::string>& columns, const std::vect
 void run_followed_map(BearingModel& base, const DistressSearchSettings& settings, StudyOutcome& out,
                       const ProgressReport& progress, const Running& how) {
   const Scene& scene = base.scene();
-  const Study& st = scene.study;
+  const std::vector<MapAxis>& axes = std::get<DistressMapSettings>(scene.study.settings).axes;
   const std::vector<Variant> variants = parameter_variants(scene, out.parameter_columns);
   const std::vector<double> speeds = study_speeds(base);
   // The inputs x: each axis's path (the scene reader refused axes that have none), then
   // the speed; the point's dimensions in the same order, the speed turning fastest.
   std::vector<std::string> paths;
-  for (const MapAxis& axis : st.axes) {
+  for (const MapAxis& axis : axes) {
     paths.push_back(parameter_path(axis));
     if (paths.back().empty()) throw InternalError("run_followed_map: an axis without a single input");
   }
   paths.push_back("operating.speed");
   std::vector<std::size_t> sizes;
-  for (const MapAxis& axis : st.axes) sizes.push_back(axis.values.size());
+  for (const MapAxis& axis : axes) sizes.push_back(axis.values.size());
   sizes.push_back(speeds.size());
   const std::size_t dims = sizes.size(), total = variants.size() * speeds.size();
   auto x_of = [&](std::size_t flat) {

@@ -16,7 +16,7 @@
 namespace twb {
 
 std::string shown_parameter(const Study& st, double v) {
-  switch (st.curve_parameter) {
+  switch (std::get<DistressCurveSettings>(st.settings).curve_parameter) {
     case CurveParameter::speed: return speed_text(v, st.speeds_in_rpm);
     case CurveParameter::friction_coefficient: return fmt::format("f = {:.6g}", v);
     case CurveParameter::gear_tilt: return fmt::format("{:.6g} mrad", 1e3 * v);
@@ -27,7 +27,8 @@ std::string shown_parameter(const Study& st, double v) {
   return fmt::format("{:.6g}", v);
 }
 
-std::vector<LimitCurveJob> limit_curve_jobs(const Study& st, const std::vector<std::pair<double, Crossings>>& ends) {
+std::vector<LimitCurveJob> limit_curve_jobs(const DistressCurveSettings& curve,
+                                            const std::vector<std::pair<double, Crossings>>& ends) {
   std::vector<LimitCurveJob> jobs;
   for (std::size_t c = 0; c < std::size(kFailureCriteria); ++c) {
     // (a search that failed at its light load has no crossings at all)
@@ -37,7 +38,7 @@ std::vector<LimitCurveJob> limit_curve_jobs(const Study& st, const std::vector<s
     LimitCurveJob& job = jobs.emplace_back();
     job.kind = kFailureCriteria[c];
     job.from = start->first;
-    job.to = job.from == st.from ? st.to : st.from;
+    job.to = job.from == curve.from ? curve.to : curve.from;
     job.start = start->second[c];
   }
   return jobs;

@@ -18,8 +18,8 @@ namespace twb {
 // Each criterion's crossing (load, state) on a searched branch, kFailureCriteria order.
 using Crossings = std::vector<std::pair<double, std::vector<double>>>;
 
-// The curve parameter's value as a user reads it: a speed in rpm where the scene gave
-// the curve's range so.
+// The curve parameter's value as a user reads it (a distress curve's study): a speed in
+// rpm where the scene gave the curve's range so.
 std::string shown_parameter(const Study& st, double v);
 
 // One criterion's limit curve (limit_curve.h), from the first end searched that crosses
@@ -35,7 +35,8 @@ struct LimitCurveJob {
 };
 
 // The jobs for the crossings found at the range's ends (parameter value, crossings).
-std::vector<LimitCurveJob> limit_curve_jobs(const Study& st, const std::vector<std::pair<double, Crossings>>& ends);
+std::vector<LimitCurveJob> limit_curve_jobs(const DistressCurveSettings& curve,
+                                            const std::vector<std::pair<double, Crossings>>& ends);
 // W_d along this curve's distress fold (the member's rows so far, sorted in the
 // parameter), interpolated linearly between its points; none outside the fold's range.
 std::function<std::optional<double>(double)> distress_fold_of(const StudyOutcome& out, std::optional<double> member);

@@ -104,7 +104,7 @@ Scene with_parameter(Scene scene, const MapAxis& axis, double value) {
 }
 
 std::vector<Variant> parameter_variants(const Scene& scene, std::vector<std::string>& columns) {
-  const std::vector<MapAxis>& axes = scene.study.axes;
+  const std::span<const MapAxis> axes = scene.study.axes();
   columns.clear();
   for (const MapAxis& axis : axes) columns.push_back(parameter_column(axis));
   if (axes.empty()) return {Variant{}};
@@ -137,8 +137,8 @@ std::vector<Variant> parameter_variants(const Scene& scene, std::vector<std::str
 }
 
 std::vector<double> study_speeds(const BearingModel& model) {
-  const std::vector<double>& listed = model.scene().study.speeds;
-  return listed.empty() ? std::vector<double>{model.speed()} : listed;
+  const std::span<const double> listed = model.scene().study.speeds();
+  return listed.empty() ? std::vector<double>{model.speed()} : std::vector<double>(listed.begin(), listed.end());
 }
 
 

@@ -41,8 +41,8 @@ struct Variant {
 // axis outermost); `columns` gets the axes' columns.
 std::vector<Variant> parameter_variants(const Scene& scene, std::vector<std::string>& columns);
 
-// The speeds a study searches at: study.speeds, or the model's speed for a scene built
-// without them (the loader fills them in).
+// The speeds a study searches at: its settings' speeds, or the model's speed for a type
+// without them or a scene built without them (the loader fills them in).
 std::vector<double> study_speeds(const BearingModel& model);
 
 // Called after each search with the speed's index in study_speeds and a model of its

@@ -20,7 +20,8 @@ namespace twb {
 void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, const CycleState* start) {
   const auto t0 = std::chrono::steady_clock::now();
   // The scene's schedule, with a point where an unloaded washer's speed turns back.
-  const OperatingSchedule schedule(OperatingSchedule::with_rests(model.scene().study.schedule));
+  const std::vector<SchedulePoint>& points = std::get<DutyCycleSettings>(model.scene().study.settings).schedule;
+  const OperatingSchedule schedule(OperatingSchedule::with_rests(points));
   const NewtonSettings newton = newton_settings(model.scene());
   const std::string bearing = bearing_of(describe_scene(model.scene()));
 
@@ -30,7 +31,7 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   if (!begun) return;
   DutyCycleMarch march(model, schedule, std::move(*begun), out, progress);
   if (!march.run(bearing)) return;
-  summarize_cycle(model.scene().study.schedule.size() - 1, schedule, t0, out);
+  summarize_cycle(points.size() - 1, schedule, t0, out);
   out.timings.transients += 1;
 }
 

@@ -63,7 +63,7 @@ bool DutyCycleMarch::run(const std::string& bearing) {
 TransientSettings DutyCycleMarch::transient_settings() {
   TransientSettings settings;
   settings.real_time = true;
-  settings.relative_tolerance = model_.scene().study.march_tolerance;
+  settings.relative_tolerance = std::get<DutyCycleSettings>(model_.scene().study.settings).march_tolerance;
   settings.inputs_at = [this](double t) {
     OperatingSchedule::apply(model_, schedule_.on_segment(segment_, t));
     model_.set_imposed_tilt_rate(schedule_.tilt_rate(segment_));

@@ -21,7 +21,7 @@ namespace {
 void run_distress_curve(BearingModel& base, StudyOutcome& out, const StudyRun& run) {
   const int threads = run.threads;
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_columns);
-  out.fold_curve_column = fold_curve_column(base.scene().study.curve_parameter);
+  out.fold_curve_column = fold_curve_column(std::get<DistressCurveSettings>(base.scene().study.settings).curve_parameter);
   std::vector<StudyOutcome> parts(variants.size());
   std::mutex lock;
   const ProgressReport say = one_line_at_a_time(run.progress, lock);

@@ -9,11 +9,12 @@ namespace twb {
 namespace {
 
 void run_distress_map(BearingModel& base, StudyOutcome& out, const StudyRun& run) {
-  DistressSearchSettings settings = range_settings(base.scene().study);
+  const DistressMapSettings& map = std::get<DistressMapSettings>(base.scene().study.settings);
+  DistressSearchSettings settings = range_settings(map.search);
   settings.march_past_distress = false;  // the map keeps neither the hot states nor the trajectories
-  settings.search_past_failure = base.scene().study.search_past_failure;
-  ask_failure_error_bars(base.scene().study, settings);
-  if (base.scene().study.map_method == MapMethod::follow) {
+  settings.search_past_failure = map.search_past_failure;
+  ask_error_bars(map.error_bars, settings);
+  if (map.map_method == MapMethod::follow) {
     run_followed_map(base, settings, out, run.progress, run.how);
     return;
   }
@@ -30,7 +31,9 @@ void run_distress_map(BearingModel& base, StudyOutcome& out, const StudyRun& run
 }
 
 // A followed map is one piece of work: each combination starts from its neighbour's.
-bool searched_apart(const Study& study) { return study.map_method == MapMethod::search; }
+bool searched_apart(const Study& study) {
+  return std::get<DistressMapSettings>(study.settings).map_method == MapMethod::search;
+}
 
 }  // namespace
 

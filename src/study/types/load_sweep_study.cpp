@@ -9,8 +9,9 @@ namespace {
 
 void run_load_sweep(BearingModel& model, StudyOutcome& out, const StudyRun& run) {
   const std::vector<Variant> variants = parameter_variants(model.scene(), out.parameter_columns);
-  DistressSearchSettings settings = grid_settings(model.scene().study);
-  ask_failure_error_bars(model.scene().study, settings);
+  const LoadSweepSettings& sweep = std::get<LoadSweepSettings>(model.scene().study.settings);
+  DistressSearchSettings settings = grid_settings(sweep.grid);
+  ask_error_bars(sweep.error_bars, settings);
   run_searches(model, variants, settings, run.progress, run.how, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t, const BearingModel&, DistressSearch& found) {
                  out.states.insert(out.states.end(), found.states.begin(), found.states.end());

@@ -14,11 +14,12 @@ namespace {
 void run_point(BearingModel& model, StudyOutcome& out, const StudyRun&) {
   std::vector<double> u;
   if (!solve_operating_point(model, out, u)) return;
-  if (model.scene().study.error_estimate == ErrorEstimate::none) return;
+  const ErrorBarSettings& bars = std::get<PointSettings>(model.scene().study.settings).error_bars;
+  if (bars.estimate == ErrorEstimate::none) return;
   // Its error bars, with the warning where the mesh is more than 5 % off.
   std::string why;
   try {
-    const double tolerance = model.scene().study.tolerance;
+    const double tolerance = bars.tolerance;
     if (tolerance > 0.0) {
       // To the tolerance asked for: the meshes' estimates and their lines.
       if (refine_state_to_tolerance(model, u, out.states.back(), tolerance, out.summary, why,

@@ -14,7 +14,7 @@ void add_reliability_tables(const StudyOutcome& out, std::vector<NamedTable>& ta
 
 // Its Monte Carlo batches spread over the ranks of an MPI job (each batch shares what it
 // found with the next, which the slices of a job array cannot).
-bool samples_spread(const Study& study) { return study.max_samples > 0; }
+bool samples_spread(const Study& study) { return std::get<ReliabilitySettings>(study.settings).max_samples > 0; }
 
 }  // namespace
 

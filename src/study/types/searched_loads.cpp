@@ -2,30 +2,23 @@
 
 namespace twb {
 
-std::vector<double> load_grid(const Study& st) {
-  std::vector<double> grid;
-  for (int k = 0; k < st.load_steps; ++k)
-    grid.push_back(st.load_start + (st.load_end - st.load_start) * k / (st.load_steps - 1));
-  return grid;
+std::vector<double> load_grid(const LoadGrid& grid) {
+  std::vector<double> loads;
+  const LoadRange& range = grid.loads;
+  for (int k = 0; k < grid.load_steps; ++k)
+    loads.push_back(range.start + (range.end - range.start) * k / (grid.load_steps - 1));
+  return loads;
 }
 
-DistressSearchSettings range_settings(const Study& st) {
-  DistressSearchSettings s;
-  s.load_start = st.load_start;
-  s.load_end = st.load_end;
-  s.bracket_width = st.bracket_width;
-  s.keep_state_vectors = st.error_estimate == ErrorEstimate::every_state;
-  return s;
+void ask_error_bars(const ErrorBarSettings& bars, DistressSearchSettings& s) {
+  s.keep_state_vectors = bars.estimate == ErrorEstimate::every_state;
+  s.failure_error_bars = bars.estimate != ErrorEstimate::none;
+  s.error_tolerance = bars.tolerance;
 }
 
-void ask_failure_error_bars(const Study& st, DistressSearchSettings& s) {
-  s.failure_error_bars = st.error_estimate != ErrorEstimate::none;
-  s.error_tolerance = st.tolerance;
-}
-
-DistressSearchSettings grid_settings(const Study& st) {
-  DistressSearchSettings s = range_settings(st);
-  s.grid = load_grid(st);
+DistressSearchSettings grid_settings(const LoadGrid& grid) {
+  DistressSearchSettings s = range_settings(grid);
+  s.grid = load_grid(grid);
   s.continue_past_distress = true;
   return s;
 }

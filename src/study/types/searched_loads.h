@@ -9,14 +9,13 @@
 
 namespace twb {
 
-// The requested grid: load_steps loads from load_start to load_end, ends included.
-std::vector<double> load_grid(const Study& study);
-// The study's load range and bracket width: a distress map's search.
-DistressSearchSettings range_settings(const Study& study);
-// The failure loads' error bars the study asks for (load_sweep, distress_map).
-void ask_failure_error_bars(const Study& study, DistressSearchSettings& settings);
+// The requested grid: load_steps loads from the range's start to its end, ends included.
+std::vector<double> load_grid(const LoadGrid& grid);
+// The error bars the study asks for (load_sweep, distress_map): the failure loads', and
+// with every_state every state's.
+void ask_error_bars(const ErrorBarSettings& bars, DistressSearchSettings& settings);
 // A sweep's search: the range, the requested grid, and on past distress.
-DistressSearchSettings grid_settings(const Study& study);
+DistressSearchSettings grid_settings(const LoadGrid& grid);
 // A search that failed or has something to say adds it to the study's message.
 void keep_failure(StudyOutcome& out, const DistressSearch& found);
 

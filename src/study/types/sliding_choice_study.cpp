@@ -14,7 +14,7 @@ namespace twb {
 namespace {
 
 void run_sliding_choice(BearingModel& base, StudyOutcome& out, const StudyRun& run) {
-  const Study& st = base.scene().study;
+  const LoadGrid& requested = std::get<SlidingChoiceSettings>(base.scene().study.settings).grid;
   out.sliding_column = true;
   std::vector<Variant> variants;
   for (SlidingFilm film : {SlidingFilm::carrier_washer, SlidingFilm::washer_gear}) {
@@ -23,11 +23,11 @@ void run_sliding_choice(BearingModel& base, StudyOutcome& out, const StudyRun& r
     const std::string name(scene_name(film));
     variants.push_back({std::move(scene), {}, film, ", sliding " + name});
   }
-  const std::vector<double> grid = load_grid(st);
+  const std::vector<double> grid = load_grid(requested);
   // Per speed and grid load, the state of each configuration that reached it.
   std::vector<std::vector<std::vector<SlidingRow>>> at(study_speeds(base).size(),
                                                         std::vector<std::vector<SlidingRow>>(grid.size()));
-  run_searches(base, variants, grid_settings(st), run.progress, run.how, out.timings, out.diagnostics,
+  run_searches(base, variants, grid_settings(requested), run.progress, run.how, out.timings, out.diagnostics,
                [&](const Variant&, std::size_t speed, const BearingModel& model, DistressSearch& found) {
     const auto film = std::find_if(model.films().begin(), model.films().end(), [](const Film& f) { return f.sliding; });
     const double area = film->mesh.area();

@@ -12,27 +12,28 @@ namespace twb {
 namespace {
 
 void run_transient(BearingModel& model, StudyOutcome& out, const StudyRun& run) {
-  const Study& st = model.scene().study;
+  const LoadStepSettings& step = std::get<LoadStepSettings>(model.scene().study.settings);
   const NewtonSettings newton = newton_settings(model.scene());
-  model.set_load(st.load_start);
+  const LoadRange& loads = step.loads;
+  model.set_load(loads.start);
   SteadySolver solver(model, newton);
   std::vector<double> u;
   const SteadyReport rep = solver.solve_cold(u);
   if (!rep.converged) {
     out.solver_failed = true;
-    out.message = fmt::format("no steady state before the step, at {:.6g} N: {}", st.load_start, rep.message);
+    out.message = fmt::format("no steady state before the step, at {:.6g} N: {}", loads.start, rep.message);
     return;
   }
   out.states.push_back(recorded_state(model, u, rep));
-  if (run.progress) run.progress(fmt::format("steady at {:.6g} N; stepping to {:.6g} N", st.load_start, st.load_end));
-  StepMarch march = march_load_step(model, u, st.load_start, st.load_end, TransientSettings{}, newton, st.duration);
+  if (run.progress) run.progress(fmt::format("steady at {:.6g} N; stepping to {:.6g} N", loads.start, loads.end));
+  StepMarch march = march_load_step(model, u, loads.start, loads.end, TransientSettings{}, newton, step.duration);
   out.timings.newton_iterations += rep.iterations + march.newton_iterations;
   out.timings.jacobian_evaluations += rep.jacobian_evaluations;
   out.timings.transients += 1;
   out.timings.ida_steps += march.ida_steps;
   out.timings.ida_factorizations += march.ida_factorizations;
   out.trajectory = std::move(march.trajectory);
-  model.set_load(st.load_end);  // the march's last state is at the load it stepped to
+  model.set_load(loads.end);  // the march's last state is at the load it stepped to
   SolvedState last = solved_state(model, march.state);
   last.converged = march.settled;
   last.iterations = march.newton_iterations;

@@ -17,7 +17,7 @@ void run_calibration(BearingModel& model, StudyOutcome& out, const ProgressRepor
 CalibrationSteps::CalibrationSteps(const BearingModel& model, StudyOutcome& out, const ProgressReport& progress,
                                    int threads)
     : scene_(model.scene()),
-      study_(scene_.study),
+      study_(std::get<CalibrationSettings>(scene_.study.settings)),
       n_(study_.fitted.size()),
       out_(out),
       progress_(progress),

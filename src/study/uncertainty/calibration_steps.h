@@ -49,7 +49,7 @@ class CalibrationSteps {
   void summarize();  // step 5
 
   const Scene& scene_;
-  const Study& study_;
+  const CalibrationSettings& study_;
   const std::size_t n_;  // the fitted inputs
   StudyOutcome& out_;
   const ProgressReport& progress_;

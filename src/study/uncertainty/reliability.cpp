@@ -135,7 +135,8 @@ std::vector<double> inputs_at_coordinates(const std::vector<UncertainInput>& inp
 // The Monte Carlo check round FORM's design point, its row and summary; false on the
 // ranks of an MPI job that leave the rest to the one that takes the results.
 bool importance_sampling_check(FailureLoadAtInputs& failure, const DesignPoint& form,
-                               const std::vector<UncertainInput>& inputs, double load, double speed, const Study& st,
+                               const std::vector<UncertainInput>& inputs, double load, double speed,
+                               const ReliabilitySettings& st,
                                int threads, SearchScheduler* scheduler, const ProgressReport& progress,
                                StudyOutcome& out) {
   const auto inputs_at = [&](std::span<const double> u) { return inputs_at_coordinates(inputs, u); };
@@ -215,7 +216,7 @@ bool importance_sampling_check(FailureLoadAtInputs& failure, const DesignPoint& 
 
 // The loads at the failure probabilities asked for, by inverse FORM.
 void loads_at_probabilities(const FailureLoadFunction& h, const std::vector<UncertainInput>& inputs, double speed,
-                            const Study& st, const ProgressReport& progress, StudyOutcome& out) {
+                            const ReliabilitySettings& st, const ProgressReport& progress, StudyOutcome& out) {
   const std::size_t n = inputs.size();
   for (const double p : st.probabilities) {
     if (progress) progress(fmt::format("reliability: the load at P_f = {:.3g}", p));
@@ -244,7 +245,7 @@ void loads_at_probabilities(const FailureLoadFunction& h, const std::vector<Unce
 void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads,
                      SearchScheduler* scheduler) {
   const Scene& scene = model.scene();
-  const Study& st = scene.study;
+  const ReliabilitySettings& st = std::get<ReliabilitySettings>(scene.study.settings);
   const std::vector<UncertainInput>& inputs = st.uncertain_inputs;
   const std::size_t n = inputs.size();
   std::vector<std::string> paths;
@@ -253,11 +254,7 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
     paths.push_back(in.path);
     scales.push_back(input_slope(in, 0.0));
   }
-  DistressSearchSettings settings;
-  settings.load_start = st.load_start;
-  settings.load_end = st.load_end;
-  settings.bracket_width = st.bracket_width;
-  FailureLoadAtInputs failure(scene, paths, scales, settings, threads);
+  FailureLoadAtInputs failure(scene, paths, scales, range_settings(st.search), threads);
 
   // The failure search at the inputs' medians (u = 0, where FORM starts): where every
   // move starts from.
@@ -277,7 +274,7 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
   if (!found.row.failure_load) {
     out.summary.push_back(fmt::format("reliability: the inputs' medians do not fail up to {:.6g} N ({}): no failure "
                                       "load to take the probability of; widen load_end",
-                                      st.load_end, found.row.method));
+                                      st.search.loads.end, found.row.method));
     return;
   }
 

@@ -82,8 +82,9 @@ namespace {
 // bearing smoothly (stepwise_input), the others named in the summary.
 std::vector<SceneInput> differentiated_inputs(const Scene& scene, StudyOutcome& out) {
   std::vector<SceneInput> inputs;
-  if (!scene.study.parameters.empty()) {
-    for (const std::string& path : scene.study.parameters) inputs.push_back(scene_input(scene, path));
+  if (const std::vector<std::string>& paths = std::get<SensitivitySettings>(scene.study.settings).parameters;
+      !paths.empty()) {
+    for (const std::string& path : paths) inputs.push_back(scene_input(scene, path));
     return inputs;
   }
   std::string left_out;
@@ -107,13 +108,10 @@ struct SettledFailures {
 };
 
 SettledFailures settled_failures(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
-  const Study& st = model.scene().study;
+  const FailureSearch& search = std::get<SensitivitySettings>(model.scene().study.settings).search;
   SettledFailures f;
-  if (!(st.load_end > 0.0)) return f;
-  DistressSearchSettings settings;
-  settings.load_start = st.load_start;
-  settings.load_end = st.load_end;
-  settings.bracket_width = st.bracket_width;
+  if (!(search.loads.end > 0.0)) return f;
+  DistressSearchSettings settings = range_settings(search);
   settings.march_past_distress = false;
   DistressSearch found = search_distress(model, settings, progress);
   add_search_work(out.timings, found.counts);
