@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <fmt/format.h>
@@ -62,7 +63,7 @@ void BM_TenMinuteCycle(benchmark::State& state) {
   for (auto _ : state) {
     const twb::StudyOutcome out = run(study);
     state.counters["ida_steps"] = double(out.timings.ida_steps);
-    for (const twb::CycleEvent& e : out.cycle_events)
+    for (const twb::CycleEvent& e : std::get<twb::DutyCycleOutcome>(out.own).events)
       if (e.event == "worst" && e.failure_load) state.counters["W_fail_worst_N"] = *e.failure_load;
     if (out.solver_failed) state.SkipWithError(out.message.c_str());
   }

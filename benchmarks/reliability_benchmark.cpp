@@ -15,6 +15,8 @@
 #include <benchmark/benchmark.h>
 
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "model/bearing_model.h"
 #include "study/study_runner.h"
@@ -48,9 +50,10 @@ void BM_PaperForm(benchmark::State& state) {
     const twb::StudyOutcome out = run(
         "150 N", std::string("{type: reliability, load_start: 100 N, load_end: 400 N, monte_carlo: {max_samples: 0}, ") + kInputs + "}",
         int(state.range(0)));
-    if (!out.reliability.empty()) {
-      state.counters["P_f"] = out.reliability[0].probability;
-      state.counters["evaluations"] = double(out.reliability[0].evaluations);
+    const std::vector<twb::ReliabilityRow>& rows = std::get<twb::ReliabilityOutcome>(out.own).rows;
+    if (!rows.empty()) {
+      state.counters["P_f"] = rows[0].probability;
+      state.counters["evaluations"] = double(rows[0].evaluations);
     }
   }
 }
@@ -60,10 +63,11 @@ void BM_PaperMonteCarlo(benchmark::State& state) {
     const twb::StudyOutcome out = run(
         "115 N", std::string("{type: reliability, load_start: 100 N, load_end: 400 N, monte_carlo: {cov: 0.1}, ") + kInputs + "}",
         int(state.range(0)));
-    if (out.reliability.size() > 1) {
-      state.counters["P_f_form"] = out.reliability[0].probability;
-      state.counters["P_f_sampled"] = out.reliability[1].probability;
-      state.counters["samples"] = double(out.reliability[1].samples.value_or(0));
+    const std::vector<twb::ReliabilityRow>& rows = std::get<twb::ReliabilityOutcome>(out.own).rows;
+    if (rows.size() > 1) {
+      state.counters["P_f_form"] = rows[0].probability;
+      state.counters["P_f_sampled"] = rows[1].probability;
+      state.counters["samples"] = double(rows[1].samples.value_or(0));
     }
   }
 }

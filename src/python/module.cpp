@@ -194,7 +194,8 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads,
   out["solver_failed"] = outcome.solver_failed;
   out["message"] = outcome.message;
   out["timings"] = timings_dict(outcome.timings);
-  out["cycle_end"] = outcome.cycle_end ? py::object(py::str(twb::cycle_state_json(*outcome.cycle_end))) : py::none();
+  const twb::DutyCycleOutcome* cycle = outcome.duty_cycle();
+  out["cycle_end"] = cycle && cycle->end ? py::object(py::str(twb::cycle_state_json(*cycle->end))) : py::none();
   return out;
 }
 

@@ -15,8 +15,8 @@ void write_study_results(const std::filesystem::path& dir, const std::string& sc
   write_state_fields(dir, outcome.states, digits);
   // A completed duty cycle's end, for the next part of a long cycle (--continue-from).
   // (None from an unfinished one: no earlier run's end may be left to look like this one's.)
-  if (outcome.cycle_end)
-    write_file_atomically(dir / "cycle_end_state.json", cycle_state_json(*outcome.cycle_end));
+  if (const DutyCycleOutcome* cycle = outcome.duty_cycle(); cycle && cycle->end)
+    write_file_atomically(dir / "cycle_end_state.json", cycle_state_json(*cycle->end));
   else
     std::filesystem::remove(dir / "cycle_end_state.json");
   const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message

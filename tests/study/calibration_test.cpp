@@ -88,17 +88,19 @@ TEST(Calibration, RecoversTheInputsThatMadeTheDataOnAnyThreadCount) {
   const StudyOutcome one = calibrate(calibration_scene(data.path()), 1);
   ASSERT_FALSE(one.solver_failed) << one.message;
   EXPECT_TRUE(one.message.empty()) << one.message;  // converged: run.json's outcome "ok"
-  ASSERT_EQ(one.calibration.size(), 2u);
+  const CalibrationOutcome& one_fit = std::get<CalibrationOutcome>(one.own);
+  ASSERT_EQ(one_fit.fitted.size(), 2u);
   for (std::size_t j = 0; j < 2; ++j) {
-    EXPECT_NEAR(one.calibration[j].fitted, kTruth[j], 1e-4 * kTruth[j]) << one.calibration[j].parameter;
-    EXPECT_TRUE(one.calibration[j].sd.has_value());
+    EXPECT_NEAR(one_fit.fitted[j].fitted, kTruth[j], 1e-4 * kTruth[j]) << one_fit.fitted[j].parameter;
+    EXPECT_TRUE(one_fit.fitted[j].sd.has_value());
   }
-  for (const CalibrationPointRow& r : one.calibration_points) EXPECT_NEAR(r.residual, 0.0, 1e-6);
+  for (const CalibrationPointRow& r : one_fit.points) EXPECT_NEAR(r.residual, 0.0, 1e-6);
   EXPECT_EQ(one.states.size(), kPoints.size());  // the fitted state at each point
   // The speeds spread over two threads: the same fit, bit for bit.
   const StudyOutcome two = calibrate(calibration_scene(data.path()), 2);
-  ASSERT_EQ(two.calibration.size(), 2u);
-  for (std::size_t j = 0; j < 2; ++j) EXPECT_EQ(two.calibration[j].fitted, one.calibration[j].fitted);
+  const CalibrationOutcome& two_fit = std::get<CalibrationOutcome>(two.own);
+  ASSERT_EQ(two_fit.fitted.size(), 2u);
+  for (std::size_t j = 0; j < 2; ++j) EXPECT_EQ(two_fit.fitted[j].fitted, one_fit.fitted[j].fitted);
   EXPECT_EQ(two.summary, one.summary);
 }
 
@@ -145,10 +147,11 @@ TEST(Calibration, CovarianceIsTheInverseOfTheWeightedNormalMatrix) {
   const StudyOutcome out =
       calibrate(calibration_scene(data.path(), fmt::format("{{torque: {} N m, T_mean: {} K}}", sd_torque, sd_temperature)), 1);
   ASSERT_FALSE(out.solver_failed) << out.message;
+  const CalibrationOutcome& fit = std::get<CalibrationOutcome>(out.own);
   MeasuredResponse response(point_scene(), kFitted, rig_points(kPoints), 1);
   std::vector<PointPrediction> at;
   std::string why;
-  const std::vector<double> fitted = {out.calibration[0].fitted, out.calibration[1].fitted};
+  const std::vector<double> fitted = {fit.fitted[0].fitted, fit.fitted[1].fitted};
   ASSERT_TRUE(response.predict(fitted, true, at, why)) << why;
   Eigen::MatrixXd J(2 * long(kPoints.size()), 2);
   for (std::size_t i = 0; i < kPoints.size(); ++i)
@@ -158,13 +161,13 @@ TEST(Calibration, CovarianceIsTheInverseOfTheWeightedNormalMatrix) {
     }
   const Eigen::MatrixXd covariance = (J.transpose() * J).inverse();
   for (long j = 0; j < 2; ++j) {
-    ASSERT_TRUE(out.calibration[std::size_t(j)].sd.has_value());
+    ASSERT_TRUE(fit.fitted[std::size_t(j)].sd.has_value());
     // The same derivatives at the same inputs (the fit's own, from its last evaluation):
     // only the linear algebra's rounding differs.
-    EXPECT_NEAR(*out.calibration[std::size_t(j)].sd, std::sqrt(covariance(j, j)), 1e-6 * std::sqrt(covariance(j, j)));
+    EXPECT_NEAR(*fit.fitted[std::size_t(j)].sd, std::sqrt(covariance(j, j)), 1e-6 * std::sqrt(covariance(j, j)));
   }
-  ASSERT_EQ(out.correlations.size(), 3u);
-  EXPECT_NEAR(out.correlations[1].correlation, covariance(0, 1) / std::sqrt(covariance(0, 0) * covariance(1, 1)), 1e-6);
+  ASSERT_EQ(fit.correlations.size(), 3u);
+  EXPECT_NEAR(fit.correlations[1].correlation, covariance(0, 1) / std::sqrt(covariance(0, 0) * covariance(1, 1)), 1e-6);
 }
 
 // A fit stopped by study.max_iterations before it converged says so where a script
@@ -175,10 +178,11 @@ TEST(Calibration, AFitStoppedShortSaysSo) {
   const StudyOutcome out = calibrate(calibration_scene(data.path()) + "  max_iterations: 1\n", 1);
   ASSERT_FALSE(out.solver_failed) << out.message;
   EXPECT_NE(out.message.find("the calibration stopped before converging"), std::string::npos) << out.message;
-  ASSERT_EQ(out.calibration.size(), 2u);
+  const std::vector<CalibrationRow>& fitted = std::get<CalibrationOutcome>(out.own).fitted;
+  ASSERT_EQ(fitted.size(), 2u);
   // One step from the start: moved, and not yet at the truth.
-  EXPECT_NE(out.calibration[0].fitted, out.calibration[0].start);
-  EXPECT_GT(std::abs(out.calibration[0].fitted - kTruth[0]), 1e-4 * kTruth[0]);
+  EXPECT_NE(fitted[0].fitted, fitted[0].start);
+  EXPECT_GT(std::abs(fitted[0].fitted - kTruth[0]), 1e-4 * kTruth[0]);
 }
 
 // One torque reading cannot determine two inputs: the fit says which combination it
@@ -189,8 +193,9 @@ TEST(Calibration, OneReadingForTwoInputsIsNotIdentifiable) {
   const TempScene data(rig_data(rig_points({{120, 300}}), true, {kFitted[0].start, kFitted[1].start}), "", ".csv");
   const StudyOutcome out = calibrate(calibration_scene(data.path()), 1);
   ASSERT_FALSE(out.solver_failed) << out.message;
-  for (const CalibrationRow& r : out.calibration) EXPECT_FALSE(r.sd.has_value()) << r.parameter;
-  EXPECT_TRUE(out.correlations.empty());
+  const CalibrationOutcome& fit = std::get<CalibrationOutcome>(out.own);
+  for (const CalibrationRow& r : fit.fitted) EXPECT_FALSE(r.sd.has_value()) << r.parameter;
+  EXPECT_TRUE(fit.correlations.empty());
   EXPECT_TRUE(std::any_of(out.summary.begin(), out.summary.end(), [](const std::string& s) {
     return s.find("the data cannot determine the combination lubricant.viscosity.G0") != std::string::npos;
   })) << fmt::format("{}", fmt::join(out.summary, "\n"));
@@ -228,11 +233,12 @@ TEST(Calibration, EachReadingIsWeighedByItsOwnDeviation) {
   const TempScene loose(data_with(10.0), "_loose", ".csv"), tight(data_with(1e-4), "_tight", ".csv");
   const StudyOutcome out = calibrate(calibration_scene(loose.path()), 1);
   ASSERT_FALSE(out.solver_failed) << out.message;
-  ASSERT_EQ(out.calibration.size(), 2u);
+  const CalibrationOutcome& fit = std::get<CalibrationOutcome>(out.own);
+  ASSERT_EQ(fit.fitted.size(), 2u);
   for (std::size_t j = 0; j < 2; ++j)
-    EXPECT_NEAR(out.calibration[j].fitted, kTruth[j], 1e-4 * kTruth[j]) << out.calibration[j].parameter;
-  ASSERT_EQ(out.calibration_points.size(), 2 * points.size());
-  for (const CalibrationPointRow& r : out.calibration_points) {
+    EXPECT_NEAR(fit.fitted[j].fitted, kTruth[j], 1e-4 * kTruth[j]) << fit.fitted[j].parameter;
+  ASSERT_EQ(fit.points.size(), 2 * points.size());
+  for (const CalibrationPointRow& r : fit.points) {
     const bool torque = r.quantity == "torque_Nm";
     const double expected = !torque ? 0.01 : r.point == long(points.size()) ? 10.0 : 1e-4;  // points count from 1
     ASSERT_TRUE(r.sd.has_value());
@@ -240,7 +246,7 @@ TEST(Calibration, EachReadingIsWeighedByItsOwnDeviation) {
   }
   const StudyOutcome pulled = calibrate(calibration_scene(tight.path()), 1);
   ASSERT_FALSE(pulled.solver_failed) << pulled.message;
-  EXPECT_GT(std::abs(pulled.calibration[0].fitted - kTruth[0]), 10 * 1e-4 * kTruth[0]);
+  EXPECT_GT(std::abs(std::get<CalibrationOutcome>(pulled.own).fitted[0].fitted - kTruth[0]), 10 * 1e-4 * kTruth[0]);
 }
 
 // A measured point past the fold of the branch continued from the light load (on this

@@ -142,18 +142,19 @@ TEST(DistressCurve, StudyWritesTheCurveAndTheCusp) {
   Scene scene = speed_curve_scene();
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
-  ASSERT_FALSE(out.fold_curve.empty());
-  EXPECT_EQ(out.fold_curve_column, "speed_rad_s");
-  EXPECT_EQ(out.fold_curve.front().fold, FoldKind::distress);
+  const DistressCurveOutcome& curve = std::get<DistressCurveOutcome>(out.own);
+  ASSERT_FALSE(curve.rows.empty());
+  EXPECT_EQ(curve.column, "speed_rad_s");
+  EXPECT_EQ(curve.rows.front().fold, FoldKind::distress);
   const auto limit = [](const FoldCurveRow& r) {
     return r.fold == FoldKind::limit;
   };
-  const auto first_limit = std::find_if(out.fold_curve.begin(), out.fold_curve.end(), limit);
-  EXPECT_TRUE(std::all_of(first_limit, out.fold_curve.end(), limit));
-  ASSERT_NE(first_limit, out.fold_curve.begin());
+  const auto first_limit = std::find_if(curve.rows.begin(), curve.rows.end(), limit);
+  EXPECT_TRUE(std::all_of(first_limit, curve.rows.end(), limit));
+  ASSERT_NE(first_limit, curve.rows.begin());
   EXPECT_EQ((first_limit - 1)->fold, FoldKind::recovery);
-  const auto cusp = std::find_if(out.fold_curve.begin(), out.fold_curve.end(), [](const FoldCurveRow& r) { return r.fold == FoldKind::cusp; });
-  ASSERT_NE(cusp, out.fold_curve.end());
+  const auto cusp = std::find_if(curve.rows.begin(), curve.rows.end(), [](const FoldCurveRow& r) { return r.fold == FoldKind::cusp; });
+  ASSERT_NE(cusp, curve.rows.end());
   ASSERT_EQ(shared().curve.turns.size(), 1u);
   EXPECT_NEAR(cusp->parameter, shared().curve.turns.front().p, 1e-6 * cusp->parameter);
   ASSERT_FALSE(out.summary.empty());
@@ -171,9 +172,10 @@ TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
   curve_of(scene).error_bars = {.estimate = ErrorEstimate::richardson, .tolerance = 0.0};
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
-  ASSERT_FALSE(out.fold_curve.empty());
+  const DistressCurveOutcome& curve = std::get<DistressCurveOutcome>(out.own);
+  ASSERT_FALSE(curve.rows.empty());
   long distress = 0, recovery_with_bar = 0;
-  for (const FoldCurveRow& r : out.fold_curve) {
+  for (const FoldCurveRow& r : curve.rows) {
     if (r.fold == FoldKind::distress) {
       ++distress;
       ASSERT_TRUE(r.fine_load && r.extrapolated_load && r.discretization_error) << "at " << r.parameter;
@@ -189,7 +191,7 @@ TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
   EXPECT_GT(distress, 3);
   EXPECT_GT(recovery_with_bar, 0);
 
-  const FoldCurveRow& first = out.fold_curve.front();
+  const FoldCurveRow& first = curve.rows.front();
   Scene fine = refined_mesh(scene);
   fine.operating.speed = first.parameter;
   BearingModel refined(fine);
@@ -205,7 +207,8 @@ TEST(DistressCurve, EveryFoldOfTheCurveHasItsErrorBar) {
   curve_of(scene).error_bars.estimate = ErrorEstimate::none;
   BearingModel plain(scene);
   const StudyOutcome without = run_study(plain, {});
-  EXPECT_TRUE(std::none_of(without.fold_curve.begin(), without.fold_curve.end(),
+  const std::vector<FoldCurveRow>& plain_rows = std::get<DistressCurveOutcome>(without.own).rows;
+  EXPECT_TRUE(std::none_of(plain_rows.begin(), plain_rows.end(),
                            [](const FoldCurveRow& r) { return r.fine_load.has_value(); }));
 }
 
@@ -225,13 +228,14 @@ TEST(DistressCurve, ACurveToAToleranceGoesAlongTheMeshSequenceAtEveryPoint) {
   scene.mesh.max_refinements = 2;
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
+  const DistressCurveOutcome& curve = std::get<DistressCurveOutcome>(out.own);
   ASSERT_FALSE(out.distress.empty());
   const DistressRow& end = out.distress.front();
   ASSERT_EQ(end.speed, 2000.0);
   ASSERT_TRUE(end.extrapolated_load && end.discretization_error) << end.method;
   EXPECT_EQ(end.fold_convergence.meshes, "5x24 9x48 17x96");
   long distress = 0, limits = 0;
-  for (const FoldCurveRow& r : out.fold_curve) {
+  for (const FoldCurveRow& r : curve.rows) {
     if (r.fold == FoldKind::distress) {
       ++distress;
       ASSERT_TRUE(r.extrapolated_load && r.discretization_error) << "at " << r.parameter;
@@ -270,22 +274,24 @@ TEST(DistressCurve, FamilyOfCurvesByFrictionCoefficient) {
   curve_of(scene).axes = {MapAxis{.parameter = MapParameter::friction_coefficient, .path = {}, .unit = {}, .values = {0.1, 0.3}}};
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
+  const DistressCurveOutcome& curve = std::get<DistressCurveOutcome>(out.own);
   EXPECT_EQ(out.parameter_columns, std::vector<std::string>{"friction_coefficient"});
   std::vector<double> cusps;
   for (const double f : {0.1, 0.3}) {
-    const auto cusp = std::find_if(out.fold_curve.begin(), out.fold_curve.end(),
+    const auto cusp = std::find_if(curve.rows.begin(), curve.rows.end(),
                                    [&](const FoldCurveRow& r) { return r.fold == FoldKind::cusp && r.member == f; });
-    ASSERT_NE(cusp, out.fold_curve.end()) << "f = " << f;
+    ASSERT_NE(cusp, curve.rows.end()) << "f = " << f;
     cusps.push_back(cusp->parameter);
   }
   EXPECT_GT(cusps[0], cusps[1]);
-  EXPECT_EQ(std::count_if(out.fold_curve.begin(), out.fold_curve.end(), [](const FoldCurveRow& r) { return !r.member; }),
+  EXPECT_EQ(std::count_if(curve.rows.begin(), curve.rows.end(), [](const FoldCurveRow& r) { return !r.member; }),
             0);
   // The members on two threads: the same curves, row for row, to the last bit.
   BearingModel again(scene);
   const StudyOutcome parallel = run_study(again, {}, RunOptions{.threads = 2});
-  EXPECT_EQ(fold_curve_csv(parallel.fold_curve, parallel.fold_curve_column, parallel.parameter_columns.front()),
-            fold_curve_csv(out.fold_curve, out.fold_curve_column, out.parameter_columns.front()));
+  const DistressCurveOutcome& parallel_curve = std::get<DistressCurveOutcome>(parallel.own);
+  EXPECT_EQ(fold_curve_csv(parallel_curve.rows, parallel_curve.column, parallel.parameter_columns.front()),
+            fold_curve_csv(curve.rows, curve.column, out.parameter_columns.front()));
   EXPECT_EQ(distress_csv(parallel.distress, parallel.parameter_columns), distress_csv(out.distress, out.parameter_columns));
 }
 

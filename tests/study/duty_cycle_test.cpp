@@ -41,6 +41,9 @@ const std::vector<SchedulePoint>& schedule_of(const Scene& scene) {
   return std::get<DutyCycleSettings>(scene.study.settings).schedule;
 }
 
+// What only a duty cycle gives back: its events, end and heat balance.
+const DutyCycleOutcome& cycle_of(const StudyOutcome& out) { return std::get<DutyCycleOutcome>(out.own); }
+
 SchedulePoint point(double t, double load, double speed, double ambient, double tilt) {
   SchedulePoint p;
   p.time = t, p.load = load, p.speed = speed, p.ambient = ambient, p.tilt = tilt;
@@ -53,8 +56,8 @@ SchedulePoint point(double t, double load, double speed, double ambient, double 
 // (Without the ambient's rate on the bodies' rows, their content would jump with the
 // ambient with no heat to account for it.)
 void expect_heat_balance(const StudyOutcome& out) {
-  ASSERT_TRUE(out.cycle_heat);
-  const CycleHeat& h = *out.cycle_heat;
+  ASSERT_TRUE(cycle_of(out).heat);
+  const CycleHeat& h = *cycle_of(out).heat;
   EXPECT_GT(h.generated, 0.0);
   EXPECT_LT(std::abs(h.error()), 1e-5 * h.generated)
       << "generated " << h.generated << " J, to the ambient " << h.to_ambient << " J, carried " << h.carried
@@ -150,7 +153,7 @@ TEST(DutyCycle, HeldAtAPointItEndsAtThePointsSteadyState) {
   ASSERT_FALSE(held.out.trajectory.empty());
   EXPECT_NEAR(*held.out.trajectory.back().ambient, 303.15, 1e-12);
   // No criterion was crossed and the bearing did not run away.
-  for (const CycleEvent& e : held.out.cycle_events) EXPECT_TRUE(e.event == "end" || e.event == "worst") << e.event;
+  for (const CycleEvent& e : cycle_of(held.out).events) EXPECT_TRUE(e.event == "end" || e.event == "worst") << e.event;
 }
 
 // A washer starting from rest under load, the most common start there is: 100 N at rest,
@@ -219,10 +222,10 @@ TEST(DutyCycle, HeldUnloadedItEndsAtTheSteadyStateOnTheStop) {
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {});
   ASSERT_FALSE(out.solver_failed) << out.message;
-  ASSERT_TRUE(out.cycle_end);
+  ASSERT_TRUE(cycle_of(out).end);
   BearingModel point(scene);
   OperatingSchedule::apply(point, schedule_of(scene).back());
-  std::vector<double> u = out.cycle_end->unknowns;
+  std::vector<double> u = cycle_of(out).end->unknowns;
   ASSERT_TRUE(SteadySolver(point, newton_settings(scene)).solve(u).converged);
   EXPECT_LT(40.0 * slowest_relaxation_time(point, u, 20), 295.0) << "hold the point longer";
   const BearingState steady = point.describe(u);
@@ -245,7 +248,7 @@ TEST(DutyCycle, HeldUnloadedItEndsAtTheSteadyStateOnTheStop) {
 // `samples_at_rest`: how many samples at least have load and speed zero exactly.
 void expect_rest_between(const StudyOutcome& out, double rest, double resume, int samples_at_rest) {
   std::vector<const CycleEvent*> events;
-  for (const CycleEvent& e : out.cycle_events)
+  for (const CycleEvent& e : cycle_of(out).events)
     if (e.event == "rest" || e.event == "resume") events.push_back(&e);
   ASSERT_EQ(events.size(), 2u);
   EXPECT_EQ(events[0]->event, "rest");
@@ -309,7 +312,7 @@ TEST(DutyCycle, WhereTheMarchCannotFollowToTheZeroTheRestBeginsWhereItStops) {
   ASSERT_FALSE(out.trajectory.empty());
   EXPECT_DOUBLE_EQ(out.trajectory.back().time, 40.0);
   double rest = NAN, resume = NAN;
-  for (const CycleEvent& e : out.cycle_events) {
+  for (const CycleEvent& e : cycle_of(out).events) {
     if (e.event == "rest") rest = e.time;
     if (e.event == "resume") resume = e.time;
   }
@@ -381,22 +384,23 @@ TEST(DutyCycle, ARampPastDistressRunsAwayAndOneShortOfItDoesNot) {
     BearingModel model(scene);
     const StudyOutcome out = run_study(model, {});
     ASSERT_FALSE(out.solver_failed) << out.message;
-    const auto runaway = std::find_if(out.cycle_events.begin(), out.cycle_events.end(),
-                                      [](const CycleEvent& e) { return e.event == "runaway"; });
+    const std::vector<CycleEvent>& events = cycle_of(out).events;
+    const auto runaway =
+        std::find_if(events.begin(), events.end(), [](const CycleEvent& e) { return e.event == "runaway"; });
     if (top > w_d) {
-      ASSERT_NE(runaway, out.cycle_events.end());
+      ASSERT_NE(runaway, events.end());
       const double passes_w_d = ramp * (w_d - 100.0) / (top - 100.0);
       EXPECT_GT(runaway->time, passes_w_d);
       EXPECT_GT(runaway->load, w_d);
       // Held past W_d it ends on the hot branch, where the slow mode is stable again.
-      const auto settled = std::find_if(runaway, out.cycle_events.end(),
-                                        [](const CycleEvent& e) { return e.event == "settled"; });
-      ASSERT_NE(settled, out.cycle_events.end());
+      const auto settled =
+          std::find_if(runaway, events.end(), [](const CycleEvent& e) { return e.event == "settled"; });
+      ASSERT_NE(settled, events.end());
       EXPECT_GT(out.trajectory.back().state.contact_share, 0.5);
       expect_heat_balance(out);  // through the runaway, with much heat stored
     } else {
-      EXPECT_EQ(runaway, out.cycle_events.end()) << "at t = " << runaway->time;
-      for (const CycleEvent& e : out.cycle_events) EXPECT_NE(e.event, "crossing");
+      EXPECT_EQ(runaway, events.end()) << "at t = " << runaway->time;
+      for (const CycleEvent& e : events) EXPECT_NE(e.event, "crossing");
       EXPECT_GT(*out.trajectory.back().least_margin, 0.0);
     }
   }
@@ -434,9 +438,10 @@ TEST(DutyCycle, AStepPastDistressRunsAwayInTheTimeTheFoldsSlowModePredicts) {
     BearingModel cycle(scene);
     const StudyOutcome out = run_study(cycle, {});
     EXPECT_FALSE(out.solver_failed) << out.message;
-    const auto runaway = std::find_if(out.cycle_events.begin(), out.cycle_events.end(),
-                                      [](const CycleEvent& e) { return e.event == "runaway"; });
-    if (runaway == out.cycle_events.end()) {
+    const std::vector<CycleEvent>& events = cycle_of(out).events;
+    const auto runaway =
+        std::find_if(events.begin(), events.end(), [](const CycleEvent& e) { return e.event == "runaway"; });
+    if (runaway == events.end()) {
       ADD_FAILURE() << "no runaway " << share << " of W_d past it";
       return 1.0;
     }
@@ -493,11 +498,11 @@ TEST(DutyCycle, ACycleRunInTwoPartsEndsAsTheWholeCycle) {
   const Scene first_scene = cycle_scene("[" + a + "]");
   BearingModel first_model(first_scene);
   const StudyOutcome first = run_study(first_model, {});
-  ASSERT_TRUE(first.cycle_end);
+  ASSERT_TRUE(cycle_of(first).end);
   const std::string file = ::testing::TempDir() + "twb_cycle_end_state.json";
-  { std::ofstream(file) << cycle_state_json(*first.cycle_end); }
+  { std::ofstream(file) << cycle_state_json(*cycle_of(first).end); }
   const CycleState end = read_cycle_state(file);
-  EXPECT_EQ(end.unknowns, first.cycle_end->unknowns);
+  EXPECT_EQ(end.unknowns, cycle_of(first).end->unknowns);
 
   const Scene second_scene = cycle_scene("[" + b + "]");
   BearingModel second_model(second_scene);
@@ -509,7 +514,7 @@ TEST(DutyCycle, ACycleRunInTwoPartsEndsAsTheWholeCycle) {
   EXPECT_EQ(s.washer_mean_temperature, w.washer_mean_temperature);
   EXPECT_EQ(s.max_film_temperature, w.max_film_temperature);
   EXPECT_EQ(s.hmin_over_sigma, w.hmin_over_sigma);
-  EXPECT_EQ(second.cycle_end->unknowns, whole.cycle_end->unknowns);
+  EXPECT_EQ(cycle_of(second).end->unknowns, cycle_of(whole).end->unknowns);
 
   // Refused: a schedule that does not start where the end was, another bearing's state.
   const Scene elsewhere = cycle_scene("[{t: 10 s, load: 160 N, speed: 600 rad/s}, {t: 20 s}]");
@@ -580,7 +585,7 @@ TEST(DutyCycle, ALimitIsCrossedWhereTheStatesMarginIsZero) {
                                         fmt::format("limits.min_film_ratio={:.17g}", ratio)};
   const StudyOutcome whole = run(ramp + ", {t: 30 s}", limits);
   int crossings = 0;
-  for (const CycleEvent& e : whole.cycle_events) {
+  for (const CycleEvent& e : cycle_of(whole).events) {
     if (e.event != "crossing") continue;
     ++crossings;
     SCOPED_TRACE(fmt::format("{} at t = {:.12g} s", limit_name(*e.criterion), e.time));

@@ -39,9 +39,14 @@ Shared& shared() {
   return s;
 }
 
+// The rows of fold_curve.csv (a distress curve's study, so there).
+const std::vector<FoldCurveRow>& curve_rows(const StudyOutcome& out) {
+  return std::get<DistressCurveOutcome>(out.own).rows;
+}
+
 std::map<std::string, std::vector<const FoldCurveRow*>> limit_rows(const StudyOutcome& out) {
   std::map<std::string, std::vector<const FoldCurveRow*>> rows;
-  for (const FoldCurveRow& r : out.fold_curve)
+  for (const FoldCurveRow& r : curve_rows(out))
     for (LimitKind kind : kFailureCriteria)
       if (r.fold == FoldKind::limit && r.limit == kind) rows[fold_name(r)].push_back(&r);
   return rows;
@@ -121,7 +126,7 @@ TEST(LimitCurve, PointsAreCrossingsOfTheCoolBranch) {
 TEST(LimitCurve, NoPointLiesAboveTheDistressFold) {
   const StudyOutcome& out = shared().out;
   std::vector<std::pair<double, double>> folds;
-  for (const FoldCurveRow& r : out.fold_curve)
+  for (const FoldCurveRow& r : curve_rows(out))
     if (r.fold == FoldKind::distress) folds.emplace_back(r.parameter, r.state.load);
   ASSERT_GE(folds.size(), 2u) << "the washer has a distress fold at the high speeds";
   std::sort(folds.begin(), folds.end());
@@ -168,12 +173,14 @@ TEST(LimitCurve, TheSameCurvesOnOneThreadAndOnTwo) {
   BearingModel one(scene), two(scene);
   const StudyOutcome serial = run_study(one, {}, RunOptions{.threads = 1});
   const StudyOutcome parallel = run_study(two, {}, RunOptions{.threads = 2});
-  ASSERT_TRUE(std::any_of(serial.fold_curve.begin(), serial.fold_curve.end(),
+  const DistressCurveOutcome &serial_curve = std::get<DistressCurveOutcome>(serial.own),
+                             &parallel_curve = std::get<DistressCurveOutcome>(parallel.own);
+  ASSERT_TRUE(std::any_of(serial_curve.rows.begin(), serial_curve.rows.end(),
                           [](const FoldCurveRow& r) { return r.fine_load.has_value(); }))
       << "the fold's error bars are computed";
   EXPECT_EQ(limit_rows(serial).size(), 5u);
-  EXPECT_EQ(fold_curve_csv(parallel.fold_curve, parallel.fold_curve_column, ""),
-            fold_curve_csv(serial.fold_curve, serial.fold_curve_column, ""));
+  EXPECT_EQ(fold_curve_csv(parallel_curve.rows, parallel_curve.column, ""),
+            fold_curve_csv(serial_curve.rows, serial_curve.column, ""));
   EXPECT_EQ(distress_csv(parallel.distress, parallel.parameter_columns),
             distress_csv(serial.distress, serial.parameter_columns));
   EXPECT_EQ(parallel.summary, serial.summary);

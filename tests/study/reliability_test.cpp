@@ -184,9 +184,11 @@ TEST(ReliabilityStudy, SamplingIsTheSameOnOneAndTwoThreads) {
   for (const int threads : {1, 2}) {
     BearingModel model(scene);
     runs.push_back(run_study(model, {}, RunOptions{.threads = threads}));
-    ASSERT_EQ(runs.back().reliability.size(), 2u) << (runs.back().summary.empty() ? "" : runs.back().summary.back());
+    ASSERT_EQ(std::get<ReliabilityOutcome>(runs.back().own).rows.size(), 2u)
+        << (runs.back().summary.empty() ? "" : runs.back().summary.back());
   }
-  const ReliabilityRow &one = runs[0].reliability[1], &two = runs[1].reliability[1];
+  const ReliabilityRow &one = std::get<ReliabilityOutcome>(runs[0].own).rows[1],
+                       &two = std::get<ReliabilityOutcome>(runs[1].own).rows[1];
   EXPECT_EQ(one.samples, two.samples);
   EXPECT_EQ(one.failures, two.failures);
   EXPECT_EQ(one.probability, two.probability);
@@ -204,19 +206,20 @@ TEST(ReliabilityStudy, DesignPointsLieOnTheFailureSurfaceAndSamplingAgrees) {
                                    "monte_carlo: {cov: 0.1, max_samples: 1000}}"});
   BearingModel model(scene);
   const StudyOutcome out = run_study(model, {}, RunOptions{.threads = 2});
-  ASSERT_EQ(out.reliability.size(), 4u) << (out.summary.empty() ? "" : out.summary.back());
-  const ReliabilityRow& form = out.reliability[0];
-  const ReliabilityRow& mc = out.reliability[1];
-  const ReliabilityRow& inverse = out.reliability[2];
+  const ReliabilityOutcome& reliability = std::get<ReliabilityOutcome>(out.own);
+  ASSERT_EQ(reliability.rows.size(), 4u) << (out.summary.empty() ? "" : out.summary.back());
+  const ReliabilityRow& form = reliability.rows[0];
+  const ReliabilityRow& mc = reliability.rows[1];
+  const ReliabilityRow& inverse = reliability.rows[2];
   ASSERT_EQ(form.method, "form");
   ASSERT_EQ(mc.method, "monte_carlo");
   ASSERT_EQ(inverse.method, "inverse_form");
   EXPECT_TRUE(form.converged);
   EXPECT_TRUE(inverse.converged);
-  ASSERT_EQ(out.design_points.size(), 3u);
+  ASSERT_EQ(reliability.design_points.size(), 3u);
 
   // FORM: the design point's ambient fails the bearing at 150 N, and β is its distance.
-  const DesignPointRow& star = out.design_points[0];
+  const DesignPointRow& star = reliability.design_points[0];
   EXPECT_NEAR(fold_load_at(scene, star.design_value), 150.0, 1e-4 * 150.0 + 1e-6);
   EXPECT_NEAR(*form.beta, (star.design_value - scene.operating.ambient) / 3.0, 1e-9);
   EXPECT_NEAR(form.probability, failure_probability(*form.beta), 1e-15);
@@ -230,7 +233,7 @@ TEST(ReliabilityStudy, DesignPointsLieOnTheFailureSurfaceAndSamplingAgrees) {
 
   // Inverse FORM: at the load it gives, the inputs a β of 2.33 away fail (there by the
   // oil's peak temperature, crossed just below the fold).
-  const DesignPointRow& inverse_star = out.design_points[1];
+  const DesignPointRow& inverse_star = reliability.design_points[1];
   EXPECT_NEAR(inverse_star.u, reliability_index(1e-2), 1e-3 * reliability_index(1e-2));
   EXPECT_NEAR(settled_failure_load_at(scene, inverse_star.design_value), inverse.load, 1e-6 * inverse.load);
   EXPECT_LT(inverse.load, 150.0);
@@ -239,8 +242,8 @@ TEST(ReliabilityStudy, DesignPointsLieOnTheFailureSurfaceAndSamplingAgrees) {
   // no thermo-viscous distress there, and the bearing fails by the oil's peak temperature,
   // which Newton cannot follow the fold to; the search at those inputs finds it, to its
   // bracket width (0.002).
-  const ReliabilityRow& past_cusp = out.reliability[3];
-  const DesignPointRow& past_cusp_star = out.design_points[2];
+  const ReliabilityRow& past_cusp = reliability.rows[3];
+  const DesignPointRow& past_cusp_star = reliability.design_points[2];
   EXPECT_TRUE(past_cusp.converged);
   const DistressRow there = failure_at(scene, past_cusp_star.design_value);
   EXPECT_FALSE(there.distress_load.has_value()) << there.method;

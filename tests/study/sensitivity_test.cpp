@@ -73,7 +73,7 @@ DistressSearch search_of(const Scene& scene, double load_end) {
 }
 
 const SensitivityRow* find_row(const StudyOutcome& out, const std::string& quantity, const std::string& path) {
-  for (const SensitivityRow& r : out.sensitivity)
+  for (const SensitivityRow& r : std::get<SensitivityOutcome>(out.own).rows)
     if (r.quantity == quantity && r.parameter == path) return &r;
   return nullptr;
 }

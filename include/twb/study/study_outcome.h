@@ -1,6 +1,6 @@
-// What a study gives back: solved states, distress rows, the transient's trajectory,
-// fold curves, with what the run cost; how to run it (threads, resume journal); the
-// progress callback.
+// What a study gives back: solved states, distress rows, the transient's trajectory, and
+// what only its type gives (a fold curve, probabilities, a cycle's events, ...), with what
+// the run cost; how to run it (threads, resume journal); the progress callback.
 #pragma once
 
 #include <atomic>
@@ -8,8 +8,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
+#include "twb/error_family.h"
 #include "twb/results/calibration_table.h"
 #include "twb/results/cycle_state.h"
 #include "twb/results/cycle_table.h"
@@ -25,6 +27,48 @@
 
 namespace twb {
 
+// What a study type gives back beyond what every type shares, one struct per type that
+// has any (point, load_sweep, distress_map and transient have none).
+
+// sliding_choice: both configurations at every grid load.
+struct SlidingChoiceOutcome {
+  std::vector<SlidingRow> rows;
+};
+
+// distress_curve: the fold along the curve parameter (fold_curve.csv), and the column
+// that holds the parameter.
+struct DistressCurveOutcome {
+  std::vector<FoldCurveRow> rows;
+  std::string column;
+};
+
+// sensitivity: each quantity against each input.
+struct SensitivityOutcome {
+  std::vector<SensitivityRow> rows;
+};
+
+struct ReliabilityOutcome {
+  std::vector<ReliabilityRow> rows;           // each probability of failure
+  std::vector<DesignPointRow> design_points;  // the inputs at each design point
+};
+
+struct CalibrationOutcome {
+  std::vector<CalibrationRow> fitted;        // each fitted input
+  std::vector<CorrelationRow> correlations;  // each pair of fitted inputs
+  std::vector<CalibrationPointRow> points;   // each measured value
+};
+
+struct DutyCycleOutcome {
+  std::vector<CycleEvent> events;  // crossings, runaway, the worst moment, the end
+  std::optional<CycleState> end;   // where a completed cycle ended, to go on from
+  std::optional<CycleHeat> heat;   // the heat balance over the march
+};
+
+// The outcome of the type that ran, where it has one of its own (monostate for the
+// others): the alternative its runner made.
+using OwnOutcome = std::variant<std::monostate, SlidingChoiceOutcome, DistressCurveOutcome, SensitivityOutcome,
+                                ReliabilityOutcome, CalibrationOutcome, DutyCycleOutcome>;
+
 struct StudyOutcome {
   std::vector<SolvedState> states;
   std::vector<DistressRow> distress;  // load_sweep, distress_map, sliding_choice: one row per search
@@ -33,19 +77,10 @@ struct StudyOutcome {
   // transient; load_sweep, sliding_choice: the first step past distress of each search;
   // duty_cycle: the bearing along the cycle
   std::vector<TrajectorySample> trajectory;
-  std::vector<SlidingRow> sliding;    // sliding_choice: both configurations at every grid load
-  // distress_curve: the fold along the curve parameter (fold_curve.csv) and its column
-  std::vector<FoldCurveRow> fold_curve;
-  std::string fold_curve_column;
-  std::vector<SensitivityRow> sensitivity;  // sensitivity: each quantity against each input
-  std::vector<ReliabilityRow> reliability;   // reliability: each probability of failure
-  std::vector<DesignPointRow> design_points;  // reliability: the inputs at each design point
-  std::vector<CalibrationRow> calibration;             // calibration: each fitted input
-  std::vector<CorrelationRow> correlations;            // calibration: each pair of fitted inputs
-  std::vector<CalibrationPointRow> calibration_points;  // calibration: each measured value
-  std::vector<CycleEvent> cycle_events;  // duty_cycle: crossings, runaway, the worst moment, the end
-  std::optional<CycleState> cycle_end;   // duty_cycle: where a completed cycle ended, to go on from
-  std::optional<CycleHeat> cycle_heat;   // duty_cycle: the heat balance over the march
+  // What only the type that ran gives back. Code that knows the type reads it with
+  // std::get (its runner made it, so it is there); code that does not, with the
+  // accessors below.
+  OwnOutcome own;
   std::vector<std::string> summary;  // lines for the end of the run's output (e.g. the cusp)
   bool speeds_in_rpm = false;        // the scene gave its speeds in rpm: the summaries say rpm
   // The solvers' own words where a search went on regardless (twb run --verbose).
@@ -54,6 +89,24 @@ struct StudyOutcome {
   bool stopped = false;        // RunOptions::stop ended it early: some searches are missing
   std::string message;
   RunTimings timings;
+
+  // Each type's own outcome, nullptr for a study of another type.
+  const SlidingChoiceOutcome* sliding_choice() const { return std::get_if<SlidingChoiceOutcome>(&own); }
+  const DistressCurveOutcome* distress_curve() const { return std::get_if<DistressCurveOutcome>(&own); }
+  const SensitivityOutcome* sensitivity() const { return std::get_if<SensitivityOutcome>(&own); }
+  const ReliabilityOutcome* reliability() const { return std::get_if<ReliabilityOutcome>(&own); }
+  const CalibrationOutcome* calibration() const { return std::get_if<CalibrationOutcome>(&own); }
+  const DutyCycleOutcome* duty_cycle() const { return std::get_if<DutyCycleOutcome>(&own); }
+
+  // The type's own outcome, for its runner and the code it calls to fill: made empty by
+  // the first call (the runner's first step, so that a run that ends early still writes
+  // its type's tables), the same one after. Another type's already there is a bug.
+  template <class Own>
+  Own& own_part() {
+    if (std::holds_alternative<std::monostate>(own)) own.emplace<Own>();
+    if (Own* part = std::get_if<Own>(&own)) return *part;
+    throw InternalError("a study's outcome holds another type's own part");
+  }
 };
 
 using ProgressReport = std::function<void(const std::string&)>;
@@ -67,7 +120,7 @@ struct RunOptions {
   // with what it has and StudyOutcome::stopped. A search under way runs to its end, and
   // a study of one piece of work (point, transient, fold curve) is not stopped.
   const std::atomic<bool>* stop = nullptr;
-  // A duty cycle continued from where an earlier one ended (its StudyOutcome::cycle_end,
+  // A duty cycle continued from where an earlier one ended (its DutyCycleOutcome::end,
   // or twb run --continue-from DIR): the march starts from that state instead of the
   // steady state at the schedule's start, whose first point must be the end's time and
   // inputs (std::invalid_argument otherwise, for another bearing's state, or for a study

@@ -184,8 +184,9 @@ void add_fold_bars(const FoldCurveBars& bars, const FoldCurve& curve, const std:
                    const Study& st, const std::string& label, double tolerance, double seconds,
                    StudyOutcome& out, const std::function<void(const std::string&)>& say) {
   const std::size_t points = curve.points.size();
+  std::vector<FoldCurveRow>& rows = out.own_part<DistressCurveOutcome>().rows;
   for (std::size_t k = 0; k < points; ++k)
-    if (const auto& e = bars[k].estimate) put_bar(out.fold_curve[row_of[k]], *e);
+    if (const auto& e = bars[k].estimate) put_bar(rows[row_of[k]], *e);
   const BarsSummary summary = bars_summary(
       bars.first(points), tolerance, "folds", [&](std::size_t k) { return shown_parameter(st, curve.points[k].p); },
       "fold curve" + label);
@@ -217,6 +218,8 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   const Study& st = model.scene().study;
   const DistressCurveSettings& asked = std::get<DistressCurveSettings>(st.settings);
   const CurveParameter which = asked.curve_parameter;
+  // The rows this curve adds to fold_curve.csv.
+  std::vector<FoldCurveRow>& rows = out.own_part<DistressCurveOutcome>().rows;
   auto say = [&](const std::string& s) {
     if (progress) progress(s);
   };
@@ -250,7 +253,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
     for (const LimitCurveJob& job : jobs) add_limit_curve(job, st, member, label, asked.error_bars.tolerance, out, say);
   };
   auto limit_curves_alone = [&] {
-    limit_settings.fold_load = distress_fold_of(out, member);
+    limit_settings.fold_load = distress_fold_of(rows, member);
     run_pieces(jobs.size(), threads, out.timings, [&](std::size_t i) { trace_job(model.scene(), which, limit_settings, jobs[i]); });
     add_limit_curves();
   };
@@ -275,12 +278,12 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
   FoldCurve curve;
   const auto n = std::size_t(model.size());
   auto add_row = [&](double p, FoldKind fold, const BearingState& state) {
-    FoldCurveRow& row = out.fold_curve.emplace_back();
+    FoldCurveRow& row = rows.emplace_back();
     row.parameter = p;
     row.fold = fold;
     row.state = state;
     row.member = member;
-    return out.fold_curve.size() - 1;
+    return rows.size() - 1;
   };
   // Each point's fold kind (+1 distress, -1 recovery) and row.
   std::vector<int> kind_of;
@@ -325,7 +328,7 @@ void run_fold_curve(BearingModel& model, std::optional<double> member, const std
                                  t.lambda));
       }
     }
-    limit_settings.fold_load = distress_fold_of(out, member);
+    limit_settings.fold_load = distress_fold_of(rows, member);
   };
 
   // On `threads` threads: the curve; W_d's error bar all along it (fold_curve_bars.h:

@@ -15,9 +15,10 @@ namespace twb {
 
 // One curve, on `model` (the scene's bearing, or one member of the study's family);
 // `member` (the family parameter's value, if any) tags its rows. Rows and summary lines
-// are appended to `out`. Its independent pieces (the two ends' searches, the fold's error
-// bars, each limit curve) run on up to `threads` threads, each on models of its own: the
-// results are the same for any count.
+// are appended to `out` (the rows to its DistressCurveOutcome, made where there is none).
+// Its independent pieces (the two ends' searches, the fold's error bars, each limit
+// curve) run on up to `threads` threads, each on models of its own: the results are the
+// same for any count.
 void run_fold_curve(BearingModel& model, std::optional<double> member, const std::string& label, StudyOutcome& out,
                     const ProgressReport& progress, int threads = 1);
 

@@ -44,9 +44,10 @@ std::vector<LimitCurveJob> limit_curve_jobs(const DistressCurveSettings& curve,
   return jobs;
 }
 
-std::function<std::optional<double>(double)> distress_fold_of(const StudyOutcome& out, std::optional<double> member) {
+std::function<std::optional<double>(double)> distress_fold_of(const std::vector<FoldCurveRow>& rows,
+                                                              std::optional<double> member) {
   std::vector<std::pair<double, double>> folds;
-  for (const FoldCurveRow& r : out.fold_curve)
+  for (const FoldCurveRow& r : rows)
     if (r.member == member && (r.fold == FoldKind::distress || r.fold == FoldKind::cusp)) folds.emplace_back(r.parameter, r.state.load);
   std::sort(folds.begin(), folds.end());
   return [folds](double p) -> std::optional<double> {
@@ -121,9 +122,10 @@ void trace_job(const Scene& scene, CurveParameter which, const LimitCurveSetting
 void add_limit_curve(const LimitCurveJob& job, const Study& st, std::optional<double> member,
                      const std::string& label, double tolerance, StudyOutcome& out, const std::function<void(const std::string&)>& say) {
   const LimitCurve& curve = job.curve;
+  std::vector<FoldCurveRow>& rows = out.own_part<DistressCurveOutcome>().rows;
   for (std::size_t k = 0; k < curve.points.size(); ++k) {
     const LimitCurvePoint& pt = curve.points[k];
-    FoldCurveRow& row = out.fold_curve.emplace_back();
+    FoldCurveRow& row = rows.emplace_back();
     row.parameter = pt.p;
     row.fold = FoldKind::limit;
     row.limit = job.kind;

@@ -39,7 +39,8 @@ std::vector<LimitCurveJob> limit_curve_jobs(const DistressCurveSettings& curve,
                                             const std::vector<std::pair<double, Crossings>>& ends);
 // W_d along this curve's distress fold (the member's rows so far, sorted in the
 // parameter), interpolated linearly between its points; none outside the fold's range.
-std::function<std::optional<double>(double)> distress_fold_of(const StudyOutcome& out, std::optional<double> member);
+std::function<std::optional<double>(double)> distress_fold_of(const std::vector<FoldCurveRow>& rows,
+                                                              std::optional<double> member);
 // Traces a job's curve on a model of the scene, then with settings.error_bars each point's
 // bar; a failure ends the curve with its reason.
 void trace_job(const Scene& scene, CurveParameter which, const LimitCurveSettings& settings, LimitCurveJob& job);

@@ -61,10 +61,10 @@ void DutyCycleMarch::record_end(const std::string& bearing) {
   watch_.event("end", last.time, schedule_.at(last.time)).margin = last.least_margin;
   if (ended_.empty()) {
     const SchedulePoint at = schedule_.at(last.time);
-    out_.cycle_end = CycleState{last.time, at.load, at.speed, at.ambient, at.tilt, u_, bearing};
+    cycle_.end = CycleState{last.time, at.load, at.speed, at.ambient, at.tilt, u_, bearing};
   }
   heat_.stored = heat_content(model_, u_, schedule_.at(last.time).ambient) - content_at_start_;
-  out_.cycle_heat = heat_;
+  cycle_.heat = heat_;
   if (!ended_.empty()) {
     // A blow-up (IDA stopped by temperatures running away) is the runaway itself; any
     // other end is the solver's failure.
@@ -90,7 +90,7 @@ void DutyCycleMarch::worst_moment() {
   if (progress_) progress_(fmt::format("duty cycle: the failure load at the worst moment, t = {:.6g} s", worst.time));
   CycleEvent found = e;
   failure_at_worst(model_, out_, worst, largest_load, found);
-  out_.cycle_events.back() = found;
+  cycle_.events.back() = found;
 }
 
 }  // namespace twb

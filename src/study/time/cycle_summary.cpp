@@ -26,7 +26,8 @@ double hottest_at(const std::vector<TrajectorySample>& trajectory, double t) {
 void summarize_cycle(std::size_t segments, const OperatingSchedule& schedule,
                      std::chrono::steady_clock::time_point started, StudyOutcome& out) {
   const TrajectorySample& last = out.trajectory.back();
-  const CycleHeat& heat = *out.cycle_heat;
+  const DutyCycleOutcome& cycle = std::get<DutyCycleOutcome>(out.own);
+  const CycleHeat& heat = *cycle.heat;
   out.summary.push_back(fmt::format("duty cycle: {} segments, {:.6g} s to {:.6g} s, {} steps ({:.1f} s)", segments,
                                     schedule.start(), last.time,
                                     out.trajectory.size() - 1, elapsed_ms(started) / 1000.0));
@@ -35,7 +36,7 @@ void summarize_cycle(std::size_t segments, const OperatingSchedule& schedule,
       "the bodies, to {:.2g} J ({:.2g} of the generated)",
       heat.generated, heat.to_ambient, heat.carried, heat.stored, heat.error(),
       std::abs(heat.error()) / std::max(heat.generated, 1e-300)));
-  for (const CycleEvent& e : out.cycle_events) {
+  for (const CycleEvent& e : cycle.events) {
     if (e.event == "crossing" || e.event == "recovery")
       out.summary.push_back(fmt::format("duty cycle: {} {} at t = {:.6g} s ({:.6g} N, {:.6g} rad/s)",
                                         e.event == "crossing" ? "crosses" : "recovers from",

@@ -10,9 +10,9 @@
 
 namespace twb {
 
-// From out's trajectory, heat balance (out.cycle_heat, set) and events. `segments`: the
-// scene's schedule's (not counting the points the march adds where a washer rests);
-// `started`: when the study began (its wall time is the first line's).
+// From out's trajectory, and its DutyCycleOutcome's heat balance (set) and events.
+// `segments`: the scene's schedule's (not counting the points the march adds where a
+// washer rests); `started`: when the study began (its wall time is the first line's).
 void summarize_cycle(std::size_t segments, const OperatingSchedule& schedule,
                      std::chrono::steady_clock::time_point started, StudyOutcome& out);
 

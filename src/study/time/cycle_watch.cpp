@@ -58,7 +58,7 @@ void CycleWatch::sample(double t, const SchedulePoint& inputs, BearingState stat
 }
 
 CycleEvent& CycleWatch::event(std::string what, double t, const SchedulePoint& inputs) {
-  CycleEvent& e = out_.cycle_events.emplace_back();
+  CycleEvent& e = events_.emplace_back();
   e.time = t;
   e.event = std::move(what);
   e.load = inputs.load;

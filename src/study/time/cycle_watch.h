@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "model/bearing_model.h"
 #include "model/failure_margins.h"
@@ -27,7 +28,8 @@ class CycleWatch {
   // shrink an allowance to nothing just as the limit is crossed).
   CycleWatch(const BearingModel& model, StudyOutcome& out, double lowest_ambient, CrossingLocator locate)
       : limits_(OperatingLimits::of(model.scene())), thermal_(model.scene().effects.thermal), out_(out),
-        allowances_(allowances(limits_, lowest_ambient)), locate_(std::move(locate)) {}
+        events_(out.own_part<DutyCycleOutcome>().events), allowances_(allowances(limits_, lowest_ambient)),
+        locate_(std::move(locate)) {}
 
   // The sample at t (the model's inputs already those of t), its crossings since the
   // sample before.
@@ -46,7 +48,8 @@ class CycleWatch {
 
   OperatingLimits limits_;
   bool thermal_;
-  StudyOutcome& out_;
+  StudyOutcome& out_;                // the trajectory's samples
+  std::vector<CycleEvent>& events_;  // out_'s DutyCycleOutcome's
   PerCriterion<std::optional<double>> allowances_;
   std::optional<FailureMargins> last_margins_;
   std::optional<std::size_t> worst_;

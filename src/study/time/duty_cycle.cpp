@@ -18,6 +18,7 @@ namespace twb {
 
 // The cycle's steps are duty_cycle_march.h's.
 void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, const CycleState* start) {
+  out.own_part<DutyCycleOutcome>();  // first: cycle_events.csv is written (empty) where the cycle does not start
   const auto t0 = std::chrono::steady_clock::now();
   // The scene's schedule, with a point where an unloaded washer's speed turns back.
   const std::vector<SchedulePoint>& points = std::get<DutyCycleSettings>(model.scene().study.settings).schedule;

@@ -36,6 +36,7 @@ DutyCycleMarch::DutyCycleMarch(BearingModel& model, const OperatingSchedule& sch
       schedule_(schedule),
       u_(std::move(u)),
       out_(out),
+      cycle_(out.own_part<DutyCycleOutcome>()),
       progress_(progress),
       content_at_start_(heat_content(model, u_, schedule.points().front().ambient)),
       ida_(model, transient_settings()),
@@ -52,7 +53,7 @@ bool DutyCycleMarch::run(const std::string& bearing) {
   if (!check_started()) return false;
   record_end(bearing);
   worst_moment();
-  std::stable_sort(out_.cycle_events.begin(), out_.cycle_events.end(),
+  std::stable_sort(cycle_.events.begin(), cycle_.events.end(),
                    [](const CycleEvent& a, const CycleEvent& b) { return a.time < b.time; });
   return true;
 }

@@ -93,6 +93,7 @@ class DutyCycleMarch {
   const OperatingSchedule& schedule_;
   std::vector<double> u_;
   StudyOutcome& out_;
+  DutyCycleOutcome& cycle_;  // out_'s own part: the events, the end, the heat balance
   const ProgressReport& progress_;
 
   // The inputs on the segment being marched, set at every evaluation's time.

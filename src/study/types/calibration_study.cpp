@@ -7,9 +7,10 @@ namespace twb {
 namespace {
 
 void add_calibration_tables(const StudyOutcome& out, std::vector<NamedTable>& tables) {
-  tables.push_back({"calibration", calibration_table(out.calibration)});
-  tables.push_back({"calibration_correlation", correlation_table(out.correlations)});
-  tables.push_back({"calibration_points", calibration_points_table(out.calibration_points)});
+  const CalibrationOutcome& calibration = std::get<CalibrationOutcome>(out.own);
+  tables.push_back({"calibration", calibration_table(calibration.fitted)});
+  tables.push_back({"calibration_correlation", correlation_table(calibration.correlations)});
+  tables.push_back({"calibration_points", calibration_points_table(calibration.points)});
 }
 
 }  // namespace

@@ -21,7 +21,8 @@ namespace {
 void run_distress_curve(BearingModel& base, StudyOutcome& out, const StudyRun& run) {
   const int threads = run.threads;
   const std::vector<Variant> variants = parameter_variants(base.scene(), out.parameter_columns);
-  out.fold_curve_column = fold_curve_column(std::get<DistressCurveSettings>(base.scene().study.settings).curve_parameter);
+  DistressCurveOutcome& curves = out.own_part<DistressCurveOutcome>();
+  curves.column = fold_curve_column(std::get<DistressCurveSettings>(base.scene().study.settings).curve_parameter);
   std::vector<StudyOutcome> parts(variants.size());
   std::mutex lock;
   const ProgressReport say = one_line_at_a_time(run.progress, lock);
@@ -47,7 +48,9 @@ void run_distress_curve(BearingModel& base, StudyOutcome& out, const StudyRun& r
   for (StudyOutcome& part : parts) {
     out.states.insert(out.states.end(), part.states.begin(), part.states.end());
     out.distress.insert(out.distress.end(), part.distress.begin(), part.distress.end());
-    out.fold_curve.insert(out.fold_curve.end(), part.fold_curve.begin(), part.fold_curve.end());
+    // (none where the member's bearing could not be built)
+    if (const DistressCurveOutcome* curve = part.distress_curve())
+      curves.rows.insert(curves.rows.end(), curve->rows.begin(), curve->rows.end());
     out.summary.insert(out.summary.end(), part.summary.begin(), part.summary.end());
     out.diagnostics.insert(out.diagnostics.end(), part.diagnostics.begin(), part.diagnostics.end());
     out.timings.transients += part.timings.transients;
@@ -60,7 +63,8 @@ void run_distress_curve(BearingModel& base, StudyOutcome& out, const StudyRun& r
 void add_curve_tables(const StudyOutcome& out, std::vector<NamedTable>& tables) {
   add_distress_table(out, tables);
   const std::vector<std::string>& parameter = out.parameter_columns;
-  tables.push_back({"fold_curve", fold_curve_table(out.fold_curve, out.fold_curve_column,
+  const DistressCurveOutcome& curves = std::get<DistressCurveOutcome>(out.own);
+  tables.push_back({"fold_curve", fold_curve_table(curves.rows, curves.column,
                                                    parameter.empty() ? std::string() : parameter.front())});
 }
 

@@ -9,7 +9,7 @@ namespace {
 void add_cycle_tables(const StudyOutcome& out, std::vector<NamedTable>& tables) {
   add_distress_table_if_any(out, tables);
   tables.push_back({"trajectory", trajectory_table(out.trajectory, {}, false, true)});
-  tables.push_back({"cycle_events", cycle_events_table(out.cycle_events)});
+  tables.push_back({"cycle_events", cycle_events_table(std::get<DutyCycleOutcome>(out.own).events)});
 }
 
 }  // namespace

@@ -8,8 +8,9 @@ namespace {
 
 void add_reliability_tables(const StudyOutcome& out, std::vector<NamedTable>& tables) {
   add_distress_table_if_any(out, tables);
-  tables.push_back({"reliability", reliability_table(out.reliability)});
-  tables.push_back({"design_point", design_point_table(out.design_points)});
+  const ReliabilityOutcome& reliability = std::get<ReliabilityOutcome>(out.own);
+  tables.push_back({"reliability", reliability_table(reliability.rows)});
+  tables.push_back({"design_point", design_point_table(reliability.design_points)});
 }
 
 // Its Monte Carlo batches spread over the ranks of an MPI job (each batch shares what it

@@ -8,7 +8,7 @@ namespace {
 
 void add_sensitivity_tables(const StudyOutcome& out, std::vector<NamedTable>& tables) {
   add_distress_table_if_any(out, tables);
-  tables.push_back({"sensitivity", sensitivity_table(out.sensitivity)});
+  tables.push_back({"sensitivity", sensitivity_table(std::get<SensitivityOutcome>(out.own).rows)});
 }
 
 }  // namespace

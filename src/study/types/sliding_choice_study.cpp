@@ -15,6 +15,7 @@ namespace {
 
 void run_sliding_choice(BearingModel& base, StudyOutcome& out, const StudyRun& run) {
   const LoadGrid& requested = std::get<SlidingChoiceSettings>(base.scene().study.settings).grid;
+  SlidingChoiceOutcome& choice = out.own_part<SlidingChoiceOutcome>();
   out.sliding_column = true;
   std::vector<Variant> variants;
   for (SlidingFilm film : {SlidingFilm::carrier_washer, SlidingFilm::washer_gear}) {
@@ -46,13 +47,13 @@ void run_sliding_choice(BearingModel& base, StudyOutcome& out, const StudyRun& r
       });
       best->chosen = true;
       out.states.push_back(best->solved);
-      out.sliding.insert(out.sliding.end(), rows.begin(), rows.end());
+      choice.rows.insert(choice.rows.end(), rows.begin(), rows.end());
     }
 }
 
 void add_sliding_tables(const StudyOutcome& out, std::vector<NamedTable>& tables) {
   add_distress_table(out, tables);
-  tables.push_back({"sliding", sliding_table(out.sliding)});
+  tables.push_back({"sliding", sliding_table(std::get<SlidingChoiceOutcome>(out.own).rows)});
 }
 
 }  // namespace

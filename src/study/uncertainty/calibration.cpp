@@ -20,6 +20,7 @@ CalibrationSteps::CalibrationSteps(const BearingModel& model, StudyOutcome& out,
       study_(std::get<CalibrationSettings>(scene_.study.settings)),
       n_(study_.fitted.size()),
       out_(out),
+      calibrated_(out.own_part<CalibrationOutcome>()),
       progress_(progress),
       threads_(threads) {}
 

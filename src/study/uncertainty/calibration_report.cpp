@@ -29,7 +29,7 @@ std::string joined_quantities(const std::vector<CalibrationReading>& readings) {
 void CalibrationSteps::tables() {
   for (std::size_t j = 0; j < n_; ++j) {
     const FittedInput& f = study_.fitted[j];
-    CalibrationRow& row = out_.calibration.emplace_back();
+    CalibrationRow& row = calibrated_.fitted.emplace_back();
     row.parameter = f.path;
     row.parameter_unit = f.unit;
     row.start = f.start;
@@ -43,7 +43,7 @@ void CalibrationSteps::tables() {
     for (std::size_t a : free_)
       for (std::size_t b : free_) {
         if (b < a) continue;
-        CorrelationRow& c = out_.correlations.emplace_back();
+        CorrelationRow& c = calibrated_.correlations.emplace_back();
         c.parameter_a = study_.fitted[a].path;
         c.parameter_b = study_.fitted[b].path;
         c.covariance = (*covariance_)(long(a), long(b));
@@ -54,7 +54,7 @@ void CalibrationSteps::tables() {
   for (std::size_t k = 0; k < m_; ++k) {
     const CalibrationReading& r = readings_[k];
     const MeasuredPoint& point = study_.measurements[r.point];
-    CalibrationPointRow& row = out_.calibration_points.emplace_back();
+    CalibrationPointRow& row = calibrated_.points.emplace_back();
     row.point = long(r.point) + 1;
     row.line = point.line;
     row.load = point.load;
@@ -85,7 +85,7 @@ void CalibrationSteps::summarize() {
     out_.message += (out_.message.empty() ? "" : "; ") +
                     std::string("the calibration stopped before converging: ") + summary_.message;
   }
-  for (const CalibrationRow& row : out_.calibration)
+  for (const CalibrationRow& row : calibrated_.fitted)
     out_.summary.push_back(fmt::format("calibration: {} = {:.6g}{} {} (start {:.6g}){}", row.parameter, row.fitted,
                                        row.sd ? fmt::format(" ± {:.2g}", *row.sd) : "", row.parameter_unit, row.start,
                                        row.at_bound.empty() ? "" : fmt::format(", at its {} bound", row.at_bound)));

@@ -52,6 +52,8 @@ class CalibrationSteps {
   const CalibrationSettings& study_;
   const std::size_t n_;  // the fitted inputs
   StudyOutcome& out_;
+  // Its tables (step 4), made with the steps: written (empty) where the calibration stops early.
+  CalibrationOutcome& calibrated_;
   const ProgressReport& progress_;
   const int threads_;
   bool ran_ = false;  // run() is called once only

@@ -29,9 +29,10 @@ namespace {
 // Where the inputs stand at a design point, one row each.
 void add_design_point(StudyOutcome& out, const char* method, const DesignPoint& p,
                       const std::vector<UncertainInput>& inputs) {
+  std::vector<DesignPointRow>& rows = out.own_part<ReliabilityOutcome>().design_points;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     const UncertainInput& in = inputs[i];
-    DesignPointRow& r = out.design_points.emplace_back();
+    DesignPointRow& r = rows.emplace_back();
     r.method = method;
     r.load = p.load;
     r.probability = p.probability;
@@ -186,7 +187,7 @@ bool importance_sampling_check(FailureLoadAtInputs& failure, const DesignPoint& 
   // The other ranks of an MPI job leave the rest to the one that takes the results.
   if (scheduler && !scheduler->takes_results()) return false;
   const std::string first_why = unresolved_why.empty() ? std::string() : unresolved_why.begin()->second;
-  ReliabilityRow& mc = out.reliability.emplace_back();
+  ReliabilityRow& mc = out.own_part<ReliabilityOutcome>().rows.emplace_back();
   mc.method = "monte_carlo";
   mc.load = load;
   mc.speed = speed;
@@ -225,7 +226,7 @@ void loads_at_probabilities(const FailureLoadFunction& h, const std::vector<Unce
       out.summary.push_back(fmt::format("reliability: no load found at P_f = {:.3g}: {}", p, inverse.why));
       continue;
     }
-    ReliabilityRow& r = out.reliability.emplace_back();
+    ReliabilityRow& r = out.own_part<ReliabilityOutcome>().rows.emplace_back();
     r.method = "inverse_form";
     r.load = inverse.load;
     r.speed = speed;
@@ -244,6 +245,8 @@ void loads_at_probabilities(const FailureLoadFunction& h, const std::vector<Unce
 
 void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads,
                      SearchScheduler* scheduler) {
+  // First: reliability.csv and design_point.csv are written (empty) where the study ends early.
+  ReliabilityOutcome& reliability = out.own_part<ReliabilityOutcome>();
   const Scene& scene = model.scene();
   const ReliabilitySettings& st = std::get<ReliabilitySettings>(scene.study.settings);
   const std::vector<UncertainInput>& inputs = st.uncertain_inputs;
@@ -302,7 +305,7 @@ void run_reliability(BearingModel& model, StudyOutcome& out, const ProgressRepor
     out.summary.push_back("reliability: " + out.message);
     return;
   }
-  ReliabilityRow& row = out.reliability.emplace_back();
+  ReliabilityRow& row = reliability.rows.emplace_back();
   row.method = "form";
   row.load = load;
   row.speed = speed;

@@ -181,9 +181,10 @@ void sensitivity_rows(const Scene& scene, const BearingState& at_point, const st
   const double ambient = scene.operating.ambient;
   const double rise = at_point.washer_mean_temperature - ambient;
   const auto input_scale = [&](const SceneInput& in) { return in.unit == "K" ? std::max(rise, 0.0) : in.value; };
+  std::vector<SensitivityRow>& rows = out.own_part<SensitivityOutcome>().rows;
   auto row = [&](const std::string& name, double value, double reference, const SceneInput& in, double derivative,
                  double step) {
-    SensitivityRow& r = out.sensitivity.emplace_back();
+    SensitivityRow& r = rows.emplace_back();
     r.quantity = name;
     r.value = value;
     r.parameter = in.path;
@@ -211,11 +212,11 @@ void sensitivity_rows(const Scene& scene, const BearingState& at_point, const st
     failure_rows(criterion_column(failures.crossings[c].kind), failures.crossings[c].load, [c](const InputResponse& r) {
       return c < r.crossing_loads.size() ? r.crossing_loads[c] : std::nullopt;
     });
-  for (std::size_t k = 0, end = out.sensitivity.size(); k < end && !failures.setting.empty(); ++k)
-    if (out.sensitivity[k].quantity == failures.setting) {
-      SensitivityRow copy = out.sensitivity[k];
+  for (std::size_t k = 0, end = rows.size(); k < end && !failures.setting.empty(); ++k)
+    if (rows[k].quantity == failures.setting) {
+      SensitivityRow copy = rows[k];
       copy.quantity = "W_fail_N";
-      out.sensitivity.push_back(std::move(copy));
+      rows.push_back(std::move(copy));
     }
   for (std::size_t i = 0; i < inputs.size(); ++i)
     if (!response[i].why.empty())
@@ -226,11 +227,12 @@ void sensitivity_rows(const Scene& scene, const BearingState& at_point, const st
 
 // The inputs that matter most to the answer: W_fail's where there is one, else the torque's.
 void rank_inputs(const std::vector<SceneInput>& inputs, double rise, StudyOutcome& out) {
-  const bool has_failure = std::any_of(out.sensitivity.begin(), out.sensitivity.end(),
-                                       [](const SensitivityRow& r) { return r.quantity == "W_fail_N"; });
+  const std::vector<SensitivityRow>& rows = std::get<SensitivityOutcome>(out.own).rows;
+  const bool has_failure =
+      std::any_of(rows.begin(), rows.end(), [](const SensitivityRow& r) { return r.quantity == "W_fail_N"; });
   const char* headline = has_failure ? "W_fail_N" : "torque_Nm";
   std::vector<const SensitivityRow*> ranked;
-  for (const SensitivityRow& r : out.sensitivity)
+  for (const SensitivityRow& r : rows)
     if (r.quantity == headline && r.elasticity) ranked.push_back(&r);
   std::stable_sort(ranked.begin(), ranked.end(), [](const SensitivityRow* a, const SensitivityRow* b) {
     return std::abs(*a->elasticity) > std::abs(*b->elasticity);
@@ -253,6 +255,7 @@ void rank_inputs(const std::vector<SceneInput>& inputs, double rise, StudyOutcom
 }  // namespace
 
 void run_sensitivity(BearingModel& model, StudyOutcome& out, const ProgressReport& progress, int threads) {
+  out.own_part<SensitivityOutcome>();  // first: sensitivity.csv is written (empty) where the study ends early
   const Scene& scene = model.scene();
   const std::vector<SceneInput> inputs = differentiated_inputs(scene, out);
 
