@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "twb/model/unknown_block.h"
+#include "twb/results/results_directory.h"
 #include "twb/results/states_table.h"
 #include "twb/scene/scene.h"
 #include "twb/study/study_outcome.h"
@@ -19,6 +20,19 @@
 namespace twb {
 
 class BearingModel;
+
+// How a study runs into a results directory (Bearing::run_into).
+struct ResultsRun {
+  // Keep the searches a killed run of the same scene journaled in the directory and run
+  // only the others (twb run --resume); without, its journal is started afresh.
+  bool resume = false;
+  // Significant digits of every number in the general columns (17: each reads back as
+  // the very double twb computed).
+  int digits = 10;
+  // The results directories of a job array's slices (twb run --slice K/N) of this
+  // scene's study: their journaled searches are taken in and none runs here (twb merge).
+  std::vector<std::string> slices = {};
+};
 
 class Bearing {
  public:
@@ -56,7 +70,18 @@ class Bearing {
 
   // The study the scene names, as `twb run` runs it (the same numbers to the last bit),
   // without writing anything, at the scene's load and speed whatever solve() was asked.
+  // Its timings count the model's set-up (when this Bearing was built) and the study.
   StudyOutcome run_study(const ProgressReport& progress = {}, const RunOptions& options = {});
+  // The study run into a results directory claimed beforehand (so that a directory
+  // another run holds or that cannot be written is refused before the model is built), as
+  // twb run and twb.run(out=DIR) do: each finished search of a sweep, map or sliding
+  // choice journaled there at once (a killed run resumes from them), then every table,
+  // the states' fields, a duty cycle's end and run.json last, each file atomically. Not
+  // written: a study told to stop (RunOptions::stop), whose journal keeps the searches it
+  // finished, and one whose scheduler does not take the results (a slice: its journal is
+  // its result). std::invalid_argument for a journal or a slice of another scene's run.
+  StudyOutcome run_into(const ResultsDirectory& directory, const ResultsRun& run, const ProgressReport& progress = {},
+                        const RunOptions& options = {});
   // A study's results written into `directory` as `twb run` writes them there: the
   // directory made and locked against another run writing into it, an earlier run's files
   // removed, every table as CSV with `digits` significant digits, the states' fields,
@@ -71,6 +96,7 @@ class Bearing {
   std::vector<double> state_;
   double scene_load_ = 0.0, scene_speed_ = 0.0;  // where the scene puts the bearing
   double state_load_ = 0.0, state_speed_ = 0.0;  // where state_ was solved
+  double setup_ms_ = 0.0;                         // building the model
 };
 
 }  // namespace twb

@@ -190,11 +190,12 @@ class Scene:
     def study_type(self):
         return self._scene.study_type
 
-    def run(self, progress=None, threads=0, continue_from=None, out=None):
+    def run(self, progress=None, threads=0, continue_from=None, out=None, resume=False):
         """Runs the scene's study (see twb.run)."""
         directory = _results_directory(self, out)
         text, from_directory = _cycle_end(continue_from)
-        results = Results(_core().run(self._scene, progress, threads, text, from_directory, directory), self)
+        results = Results(_core().run(self._scene, progress, threads, text, from_directory, directory, resume),
+                          self)
         results.directory = directory
         return results
 
@@ -295,7 +296,7 @@ class Bearing:
         self._bearing.forget_state()
 
 
-def run(scene, overrides=None, progress=None, threads=0, continue_from=None, out=None):
+def run(scene, overrides=None, progress=None, threads=0, continue_from=None, out=None, resume=False):
     """Runs the study a scene names and returns its Results.
 
     scene: a path or a twb.Scene; overrides: as for twb.Scene (applied after the
@@ -306,16 +307,20 @@ def run(scene, overrides=None, progress=None, threads=0, continue_from=None, out
     --continue-from; the schedule's first point must be that end's time and inputs); out:
     the results directory, written as twb run writes it (the tables, fields, run.json;
     twb.plot draws from it): None for the scene's output.directory, as twb run, a path
-    for another, False for none (Results.directory says which, or None). The
-    GIL is released while solving. An exception from the callback, or Ctrl-C, stops the
-    study: the searches under way finish, no new one begins, and the exception is raised
-    then."""
+    for another, False for none (Results.directory says which, or None); the directory is
+    claimed (locked against another run, an earlier run's files removed) before any work,
+    and each finished search of a sweep, map or sliding choice is journaled there at once;
+    resume: keep the searches a run into the same directory journaled before it was
+    stopped or killed, and run only the others (as twb run --resume). The GIL is released
+    while solving. An exception from the callback, or Ctrl-C, stops the study: the
+    searches under way finish, no new one begins, nothing but the journal is written, and
+    the exception is raised then."""
     if isinstance(scene, Scene):
         if overrides:
             scene = scene.override(overrides)
     else:
         scene = Scene(scene, overrides)
-    return scene.run(progress=progress, threads=threads, continue_from=continue_from, out=out)
+    return scene.run(progress=progress, threads=threads, continue_from=continue_from, out=out, resume=resume)
 
 
 def _results_directory(scene, out):

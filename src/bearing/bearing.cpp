@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include "model/bearing_model.h"
-#include "results/results_directory.h"
+#include "twb/results/results_directory.h"
 #include "study/results_files.h"
+#include "study/parallel/search_journal.h"
+#include "study/parallel/search_scheduler.h"
 #include "study/searches/steady_solver.h"
 #include "study/study_runner.h"
 #include "study/study_support.h"
@@ -12,15 +14,19 @@
 #include "study/uncertainty/sensitivity.h"
 #include "solver/sparse_lu.h"
 #include "twb/scene/scene_inputs.h"
+#include "twb/scene/scene_loader.h"
 
+#include <chrono>
 #include <mutex>
 #include <stdexcept>
 
 namespace twb {
 
-Bearing::Bearing(const Scene& scene)
-    : model_(std::make_unique<BearingModel>(scene)), scene_load_(scene.operating.load),
-      scene_speed_(scene.operating.speed) {}
+Bearing::Bearing(const Scene& scene) : scene_load_(scene.operating.load), scene_speed_(scene.operating.speed) {
+  const auto t0 = std::chrono::steady_clock::now();
+  model_ = std::make_unique<BearingModel>(scene);
+  setup_ms_ = elapsed_ms(t0);
+}
 Bearing::~Bearing() = default;
 Bearing::Bearing(Bearing&&) noexcept = default;
 Bearing& Bearing::operator=(Bearing&&) noexcept = default;
@@ -95,7 +101,54 @@ std::vector<std::pair<std::string, double>> Bearing::sensitivity(const std::stri
 }
 
 StudyOutcome Bearing::run_study(const ProgressReport& progress, const RunOptions& options) {
-  return twb::run_study(*model_, progress, options);
+  const auto t0 = std::chrono::steady_clock::now();
+  StudyOutcome outcome = twb::run_study(*model_, progress, options);
+  outcome.timings.setup_ms = setup_ms_;
+  outcome.timings.total_ms = setup_ms_ + elapsed_ms(t0);
+  return outcome;
+}
+
+namespace {
+
+// A job array's slices into this run's journal: each must hold the journal of this
+// scene's run.
+void take_in_slices(const std::vector<std::string>& slices, const std::string& scene, const SearchJournal& journal) {
+  for (const std::string& dir : slices) {
+    const std::optional<std::string> text = SearchJournal::scene_of(dir);
+    if (!text)
+      throw std::invalid_argument(fmt::format("'{}' holds no journaled searches (the results directory of a twb "
+                                              "run --slice K/N is meant)",
+                                              dir));
+    if (!SearchJournal::same_scene(*text, scene))
+      throw std::invalid_argument(
+          fmt::format("'{}' belongs to another scene (or other --set values) than this run's", dir));
+    const SearchJournal slice(dir, *text, true);
+    for (std::size_t i : slice.entries()) journal.write_entry(i, slice.entry_bytes(i));
+  }
+}
+
+}  // namespace
+
+StudyOutcome Bearing::run_into(const ResultsDirectory& directory, const ResultsRun& run, const ProgressReport& progress,
+                               const RunOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Scene& scene = model_->scene();
+  const std::string scene_text = describe_scene(scene);
+  const SearchJournal journal(directory.path(), scene_text, run.resume && run.slices.empty());
+  RunOptions how = options;
+  JournalOnlyScheduler only_journaled;
+  if (!run.slices.empty()) {
+    take_in_slices(run.slices, scene_text, journal);
+    how.scheduler = &only_journaled;
+  }
+  StudyOutcome outcome = twb::run_study(*model_, progress, how, &journal);
+  outcome.timings.setup_ms = setup_ms_;
+  outcome.timings.total_ms = setup_ms_ + elapsed_ms(t0);
+  const bool stopped = options.stop && options.stop->load();
+  if (stopped || (how.scheduler && !how.scheduler->takes_results())) return outcome;
+  write_study_results(directory.path(), scene.source, scene, model_->layout(), outcome, run.digits);
+  journal.finish();
+  return outcome;
 }
 
 void Bearing::write_results(const std::string& directory, const StudyOutcome& outcome, int digits) const {

@@ -20,22 +20,19 @@
 
 #include "interruption.h"
 #include "mpi_searches.h"
-#include "results/results_directory.h"
-#include "model/bearing_model.h"
-#include "twb/results/limit_notes.h"
-#include "twb/results/states_table.h"
+#include "study/parallel/progress_heartbeat.h"
 #include "study/parallel/search_journal.h"
 #include "study/parallel/search_scheduler.h"
-#include "twb/results/state_quantities.h"
-#include "twb/study/result_columns.h"
+#include "study/study_support.h"
+#include "twb/bearing.h"
 #include "twb/error_family.h"
 #include "twb/input_error.h"
+#include "twb/results/limit_notes.h"
+#include "twb/results/results_directory.h"
+#include "twb/results/state_quantities.h"
+#include "twb/results/states_table.h"
 #include "twb/scene/scene_loader.h"
-#include "solver/sundials_context.h"
-#include "study/study_runner.h"
-#include "study/parallel/progress_heartbeat.h"
-#include "study/results_files.h"
-#include "study/study_support.h"
+#include "twb/study/result_columns.h"
 #include "twb/version.h"
 
 namespace {
@@ -43,11 +40,11 @@ namespace {
 constexpr int exit_invalid_input = int(twb::ErrorKind::input);
 constexpr int exit_solver_failure = int(twb::ErrorKind::solver);
 
-std::string unknowns_table(const twb::UnknownLayout& layout) {
+std::string unknowns_table(const twb::Bearing& bearing) {
   std::string out = "unknowns:\n";
-  for (const auto& b : layout.blocks())
+  for (const twb::UnknownBlock& b : bearing.unknowns())
     out += fmt::format("  {:<44} {:>6}   ({})\n", b.name, b.size, twb::effect_name(b.effect));
-  out += fmt::format("  {:<44} {:>6}\n", "total", layout.size());
+  out += fmt::format("  {:<44} {:>6}\n", "total", bearing.unknown_count());
   return out;
 }
 
@@ -99,10 +96,10 @@ void print_warnings(const twb::Scene& scene, std::ostream& out) {
 
 int check(const std::string& path, const std::vector<std::string>& overrides) {
   const twb::Scene scene = twb::load_scene(path, overrides);
-  const twb::BearingModel model(scene);
+  const twb::Bearing bearing(scene);
   std::cout << twb::describe_scene(scene) << "\n" << profile_table(scene.asperities)
-            << viscosity_fit_table(scene.lubricant) << inputs_table(scene) << unknowns_table(model.layout())
-            << fmt::format("jacobian nonzeros: {}\n", model.pattern().nnz());
+            << viscosity_fit_table(scene.lubricant) << inputs_table(scene) << unknowns_table(bearing)
+            << fmt::format("jacobian nonzeros: {}\n", bearing.jacobian_nonzeros());
   // A scene that extends others: where each value was written.
   const std::vector<twb::ValueSource> sources = twb::scene_value_sources(path, overrides);
   if (std::any_of(sources.begin(), sources.end(), [&](const twb::ValueSource& v) { return v.file != path; })) {
@@ -133,13 +130,8 @@ std::pair<int, int> parse_slice(const std::string& text) {
   return {k, n};
 }
 
-// The study's results: the tables, the fields, run.json last; then the summary on stdout.
-int write_results(const std::filesystem::path& dir, const std::string& scene_path, const twb::Scene& scene,
-                  const twb::BearingModel& model, const twb::StudyOutcome& outcome, const twb::SearchJournal& journal,
-                  bool verbose, int digits) {
-  twb::write_study_results(dir, scene_path, scene, model.layout(), outcome, digits);
-  journal.finish();
-  twb::cli::run_is_complete();
+// What a run ends with on stdout, once its results are written.
+int print_outcome(const std::filesystem::path& dir, const twb::StudyOutcome& outcome, bool verbose) {
   std::cout << twb::states_summary(outcome.states);
   for (const std::string& line : twb::summary_lines(outcome)) std::cout << line << "\n";
   for (const std::string& line : twb::limit_notes(outcome.states, outcome.distress, outcome.parameter_columns,
@@ -162,16 +154,15 @@ twb::ProgressReport progress_lines(bool quiet, const std::string& prefix = {}) {
 int run_as_worker(const RunRequest& r, const twb::cli::MpiJob& job) {
   const twb::Scene scene = twb::load_scene(r.path, r.overrides);
   if (!twb::spreads_over_ranks(scene.study)) return 0;  // rank 0 runs such a study alone
-  twb::BearingModel model(scene);
+  twb::Bearing bearing(scene);
   twb::cli::MpiScheduler scheduler(job);
-  twb::run_study(model, progress_lines(r.quiet || !r.verbose, fmt::format("twb[rank {}]: ", job.rank())),
-                 twb::RunOptions{.threads = 1}, twb::StudyPlumbing{.journal = nullptr, .scheduler = &scheduler});
+  bearing.run_study(progress_lines(r.quiet || !r.verbose, fmt::format("twb[rank {}]: ", job.rank())),
+                    twb::RunOptions{.threads = 1, .scheduler = &scheduler});
   return 0;
 }
 
 int run(RunRequest r, const twb::cli::MpiJob& job) {
   if (job.rank() != 0) return run_as_worker(r, job);
-  const auto t0 = std::chrono::steady_clock::now();
   const twb::Scene scene = twb::load_scene(r.path, r.overrides);
   print_warnings(scene, std::cerr);
   std::optional<twb::SliceScheduler> slice;
@@ -196,11 +187,10 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   // writing into, is the user's to fix now, not after the study.
   const twb::ResultsDirectory results(r.out_dir);
   twb::cli::end_cleanly_on_interruption(r.out_dir.c_str());
-  // Each finished search of the study is kept at once: a killed run resumes from them.
-  const twb::SearchJournal journal(r.out_dir, twb::describe_scene(scene), r.resume);
-  twb::BearingModel model(scene);
-  const double setup_ms = twb::elapsed_ms(t0);
-  if (!r.quiet) std::cerr << fmt::format("twb: {} unknowns, {} Jacobian nonzeros\n", model.size(), model.pattern().nnz());
+  twb::Bearing bearing(scene);
+  if (!r.quiet)
+    std::cerr << fmt::format("twb: {} unknowns, {} Jacobian nonzeros\n", bearing.unknown_count(),
+                             bearing.jacobian_nonzeros());
 
   std::optional<twb::cli::MpiScheduler> ranks;
   twb::SearchScheduler* scheduler = nullptr;
@@ -219,54 +209,41 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   // Under a terminal a quiet stretch of the study says it is still at work.
   std::optional<twb::ProgressHeartbeat> heartbeat;
   if (!r.quiet && isatty(STDERR_FILENO)) heartbeat.emplace(progress_lines(false), std::chrono::seconds(5));
-  twb::StudyOutcome outcome =
-      twb::run_study(model, heartbeat ? heartbeat->report() : progress_lines(r.quiet),
-                     twb::RunOptions{.threads = threads, .cycle_start = cycle_start ? &*cycle_start : nullptr},
-                     twb::StudyPlumbing{.journal = &journal, .scheduler = scheduler});
+  // Each finished search of the study is kept at once: a killed run resumes from them.
+  const twb::StudyOutcome outcome = bearing.run_into(
+      results, twb::ResultsRun{.resume = r.resume, .digits = r.full_precision ? 17 : 10},
+      heartbeat ? heartbeat->report() : progress_lines(r.quiet),
+      twb::RunOptions{.threads = threads, .cycle_start = cycle_start ? &*cycle_start : nullptr, .scheduler = scheduler});
   heartbeat.reset();  // the study is done: its summary follows, not a beat
-  outcome.timings.setup_ms = setup_ms;
-  outcome.timings.total_ms = twb::elapsed_ms(t0);
+  twb::cli::run_is_complete();
   if (slice) {
-    const std::size_t total = journal.entries().size();
-    twb::cli::run_is_complete();
+    const std::size_t total = twb::SearchJournal::entries_in(r.out_dir).size();
     std::cout << fmt::format("slice {}: {} searches journaled in {} ({:.1f} s); when every slice is done:\n"
                              "  twb merge --out RESULTS SLICE_DIR...\n",
                              r.slice, total, r.out_dir, outcome.timings.total_ms / 1000.0);
     return outcome.solver_failed ? exit_solver_failure : 0;
   }
-  return write_results(r.out_dir, r.path, scene, model, outcome, journal, r.verbose, r.full_precision ? 17 : 10);
+  return print_outcome(r.out_dir, outcome, r.verbose);
 }
 
 // twb merge: the slices' journals into one results directory, exactly as one run writes it.
 int merge(const std::vector<std::string>& slices, const std::string& out_dir, bool quiet, bool verbose,
           bool full_precision) {
-  const auto t0 = std::chrono::steady_clock::now();
-  std::optional<std::string> scene_text;
-  for (const std::string& dir : slices) {
-    const std::optional<std::string> text = twb::SearchJournal::scene_of(dir);
-    if (!text)
-      throw std::invalid_argument(fmt::format("'{}' holds no journaled searches (the results directory of a twb "
-                                              "run --slice K/N is meant)", dir));
-    if (scene_text && !twb::SearchJournal::same_scene(*text, *scene_text))
-      throw std::invalid_argument(fmt::format("'{}' belongs to another scene (or other --set values) than '{}'", dir,
-                                              slices.front()));
-    scene_text = text;
-  }
+  const std::optional<std::string> scene_text = twb::SearchJournal::scene_of(slices.front());
+  if (!scene_text)
+    throw std::invalid_argument(fmt::format("'{}' holds no journaled searches (the results directory of a twb "
+                                            "run --slice K/N is meant)",
+                                            slices.front()));
   const std::string scene_name = (std::filesystem::path(slices.front()) / ".twb-journal" / "scene.yaml").string();
   const twb::Scene scene = twb::load_scene_text(*scene_text, scene_name);
   const twb::ResultsDirectory results(out_dir);
   twb::cli::end_cleanly_on_interruption(out_dir.c_str());
-  const twb::SearchJournal journal(out_dir, twb::describe_scene(scene), false);
-  for (const std::string& dir : slices) {
-    const twb::SearchJournal slice(dir, *scene_text, true);
-    for (std::size_t i : slice.entries()) journal.write_entry(i, slice.entry_bytes(i));
-  }
-  twb::BearingModel model(scene);
-  twb::JournalOnlyScheduler only_journaled;
-  twb::StudyOutcome outcome = twb::run_study(model, progress_lines(quiet), twb::RunOptions{.threads = 1},
-                                             twb::StudyPlumbing{.journal = &journal, .scheduler = &only_journaled});
-  outcome.timings.total_ms = twb::elapsed_ms(t0);
-  return write_results(out_dir, scene_name, scene, model, outcome, journal, verbose, full_precision ? 17 : 10);
+  twb::Bearing bearing(scene);
+  const twb::StudyOutcome outcome =
+      bearing.run_into(results, twb::ResultsRun{.digits = full_precision ? 17 : 10, .slices = slices},
+                       progress_lines(quiet), twb::RunOptions{.threads = 1});
+  twb::cli::run_is_complete();
+  return print_outcome(out_dir, outcome, verbose);
 }
 
 }  // namespace

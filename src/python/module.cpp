@@ -9,7 +9,6 @@
 #include <pybind11/stl.h>
 
 #include <atomic>
-#include <chrono>
 #include <exception>
 #include <mutex>
 #include <optional>
@@ -141,11 +140,13 @@ class ProgressRelay {
 
 // continue_from: a duty cycle's end state to go on from, as its text (cycle_end_state.json's,
 // of a Results) or the results directory that holds it; directory: the results directory
-// to write as `twb run` does (none: nothing written; not written where the progress
-// callback raised or Ctrl-C stopped the study).
+// to run into as `twb run` does (none: nothing written; claimed before the model is built;
+// not written where the progress callback raised or Ctrl-C stopped the study, whose
+// finished searches its journal keeps); resume: keep the searches a killed run journaled
+// there (twb run --resume).
 py::dict run_scene(const twb::Scene& scene, py::object progress, int threads,
                    std::optional<std::string> continue_from_text, std::optional<std::string> continue_from,
-                   std::optional<std::string> directory) {
+                   std::optional<std::string> directory, bool resume) {
   std::optional<twb::CycleState> cycle_start;
   if (continue_from_text) {
     twb::check_continuable(scene.study, "continue_from");
@@ -153,19 +154,19 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads,
   } else if (continue_from) {
     cycle_start = twb::cycle_to_continue(scene.study, *continue_from, directory.value_or(""), "continue_from");
   }
+  if (resume && !directory) throw std::invalid_argument("resume=True needs out=DIR: the directory whose journal to resume");
   ProgressRelay relay(std::move(progress));
   const twb::ProgressReport report = relay.report();
+  const twb::RunOptions options{.threads = threads, .stop = relay.stop(),
+                                .cycle_start = cycle_start ? &*cycle_start : nullptr};
   twb::StudyOutcome outcome;
   {
     py::gil_scoped_release no_gil;
-    const auto t0 = std::chrono::steady_clock::now();
+    std::optional<twb::ResultsDirectory> results;
+    if (directory) results.emplace(*directory);
     twb::Bearing bearing(scene);
-    const double setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    outcome = bearing.run_study(report, twb::RunOptions{.threads = threads, .stop = relay.stop(),
-                                                        .cycle_start = cycle_start ? &*cycle_start : nullptr});
-    outcome.timings.setup_ms = setup_ms;
-    outcome.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if (directory && !relay.failed()) bearing.write_results(*directory, outcome);
+    outcome = results ? bearing.run_into(*results, twb::ResultsRun{.resume = resume}, report, options)
+                      : bearing.run_study(report, options);
   }
   relay.raise_if_failed();
 
@@ -273,7 +274,8 @@ PYBIND11_MODULE(_twb, m) {
       },
       py::arg("path"), py::arg("overrides") = std::vector<std::string>{});
   m.def("run", &run_scene, py::arg("scene"), py::arg("progress") = py::none(), py::arg("threads") = 0,
-        py::arg("continue_from_text") = py::none(), py::arg("continue_from") = py::none(), py::arg("out") = py::none());
+        py::arg("continue_from_text") = py::none(), py::arg("continue_from") = py::none(), py::arg("out") = py::none(),
+        py::arg("resume") = false);
 
   // One bearing for point after point (twb::Bearing): each state a mapping of states.csv's
   // columns to their values, unrounded.

@@ -1,4 +1,4 @@
-#include "results/results_directory.h"
+#include "twb/results/results_directory.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -39,7 +39,7 @@ void remove_earlier_run(const fs::path& dir) {
 
 }  // namespace
 
-ResultsDirectory::ResultsDirectory(const fs::path& dir) {
+ResultsDirectory::ResultsDirectory(const fs::path& dir) : dir_(dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))

@@ -22,13 +22,13 @@ using Clock = std::chrono::steady_clock;
 }  // namespace
 
 StudyOutcome run_study(BearingModel& model, const ProgressReport& progress, const RunOptions& options,
-                       const StudyPlumbing& plumbing) {
+                       const SearchJournal* journal) {
   // The public API's own check (the command line's option checks the same).
   if (options.threads < 0)
     throw std::invalid_argument(
         fmt::format("threads must be 0 (one per core) or a positive count, not {}", options.threads));
   const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  const Running how{threads, plumbing.journal, plumbing.scheduler, options.stop};
+  const Running how{threads, journal, options.scheduler, options.stop};
   const StudyKind& kind = study_kind(model.scene().study.type());
   if (options.cycle_start) check_continuable(model.scene().study, "RunOptions::cycle_start");
   StudyOutcome out;

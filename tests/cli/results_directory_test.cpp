@@ -1,4 +1,4 @@
-// The results directory's promises (src/results/results_directory.h, interruption.h),
+// The results directory's promises (twb/results/results_directory.h, interruption.h),
 // checked on the real binary: an earlier run's files are gone before a run writes, a
 // second run into a locked directory is refused, an unusable directory is an I/O error
 // before any work, and SIGTERM ends a run with a message and no partial run.
@@ -18,6 +18,8 @@
 #include <string>
 #include <thread>
 
+#include "../support/test_files.h"
+
 namespace twb {
 namespace {
 
@@ -28,18 +30,9 @@ struct Finished {
   std::string err;
 };
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("twb_results_directory_test_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return testing::fresh_directory("results_directory_test", name); }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::file_text;
 
 // twb run on the paper's scene with `extra` arguments, stderr kept; the exit status.
 Finished run_twb(const fs::path& out, const std::string& extra) {
@@ -48,7 +41,7 @@ Finished run_twb(const fs::path& out, const std::string& extra) {
                               "/configs/jackson_green_2006.yaml' -q --out '" + out.string() + "' " + extra + " > /dev/null 2> '" +
                               err.string() + "'";
   const int status = std::system(command.c_str());
-  Finished f{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(err)};
+  Finished f{WIFEXITED(status) ? WEXITSTATUS(status) : -1, file_text(err)};
   fs::remove(err);
   return f;
 }
@@ -81,7 +74,7 @@ TEST(ResultsDirectory, ASecondRunIntoALockedDirectoryIsRefused) {
   const Finished f = run_twb(dir, "--set 'study={type: point}'");
   EXPECT_EQ(f.status, 2);
   EXPECT_NE(f.err.find("another twb run"), std::string::npos) << f.err;
-  EXPECT_EQ(read(dir / "states.csv"), "the first run's states\n") << "the first run's files were touched";
+  EXPECT_EQ(file_text(dir / "states.csv"), "the first run's states\n") << "the first run's files were touched";
   close(fd);  // the first run ends: the directory is free again
   EXPECT_EQ(run_twb(dir, "--set 'study={type: point}'").status, 0);
   fs::remove_all(dir);
@@ -126,7 +119,7 @@ TEST(ResultsDirectory, SigtermEndsARunWithAMessageAndNoPartialRun) {
   ASSERT_EQ(waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
-  const std::string message = read(err);
+  const std::string message = file_text(err);
   EXPECT_NE(message.find("terminated (SIGTERM)"), std::string::npos) << message;
   EXPECT_FALSE(fs::exists(dir / "run.json")) << "an interrupted run must not look complete";
   for (const fs::directory_entry& e : fs::directory_iterator(dir))

@@ -19,17 +19,14 @@
 #include <thread>
 #include <vector>
 
+#include "../support/test_files.h"
+
 namespace twb {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::file_text;
 
 // The map on the paper's mesh, no error bars, one thread: four searches of about half a
 // second each.
@@ -96,9 +93,9 @@ TEST(Resume, AKilledMapFinishesAsAnUninterruptedOne) {
   const auto started = std::chrono::steady_clock::now();
   ASSERT_EQ(finish(start(map_arguments(whole))), 0);
   const auto whole_time = std::chrono::steady_clock::now() - started;
-  const std::string states = without_wall_times(read(whole / "states.csv"));
-  const std::string distress = read(whole / "distress.csv");
-  const std::string record = without_times(read(whole / "run.json"));
+  const std::string states = without_wall_times(file_text(whole / "states.csv"));
+  const std::string distress = file_text(whole / "distress.csv");
+  const std::string record = without_times(file_text(whole / "run.json"));
   ASSERT_FALSE(states.empty());
 
   int journaled = 0;  // searches a resume read instead of running them, over the kills
@@ -137,9 +134,9 @@ TEST(Resume, AKilledMapFinishesAsAnUninterruptedOne) {
     std::vector<std::string> resume = map_arguments(out);
     resume.push_back("--resume");
     ASSERT_EQ(finish(start(resume)), 0);
-    EXPECT_EQ(without_wall_times(read(out / "states.csv")), states);
-    EXPECT_EQ(read(out / "distress.csv"), distress);
-    EXPECT_EQ(without_times(read(out / "run.json")), record);
+    EXPECT_EQ(without_wall_times(file_text(out / "states.csv")), states);
+    EXPECT_EQ(file_text(out / "distress.csv"), distress);
+    EXPECT_EQ(without_times(file_text(out / "run.json")), record);
     EXPECT_FALSE(fs::exists(out / ".twb-journal")) << "the journal outlived the finished run";
   }
   // The seeded moments stop the map between searches too: resumes must have had

@@ -283,6 +283,37 @@ class Running(unittest.TestCase):
         # On one thread the first search's first line stops it: no other search begins.
         self.assertEqual([l for l in lines if l.startswith("[")], ["[1/4] 400 rad/s"])
 
+    def test_a_stopped_run_into_a_directory_resumes_there(self):
+        # Stopped once the first of three searches is done (one thread: no other has begun),
+        # the run writes only its journal; resume=True reads that search, runs the two
+        # others, and writes the numbers of a run never stopped.
+        overrides = dict(COARSE, study={"type": "distress_map", "speeds": ["400 rad/s", "545 rad/s", "700 rad/s"],
+                                        "load_start": "60 N", "load_end": "900 N", "error_estimate": "none"})
+
+        def stop(line):
+            if line.startswith("[1/3] done"):
+                raise LookupError("stop here")
+        with tempfile.TemporaryDirectory(prefix="twb_python_resume_") as out:
+            with self.assertRaises(LookupError):
+                twb.run(SCENE, overrides=overrides, progress=stop, threads=1, out=out)
+            self.assertFalse(os.path.exists(os.path.join(out, "run.json")))
+            self.assertFalse(os.path.exists(os.path.join(out, "distress.csv")))
+            lines = []
+            resumed = twb.run(SCENE, overrides=overrides, progress=lines.append, threads=1, out=out, resume=True)
+            self.assertEqual(sum("from the journal" in line for line in lines), 1, lines)
+            self.assertTrue(os.path.isfile(os.path.join(out, "run.json")))
+        whole = twb.run(SCENE, overrides=overrides, threads=1, out=False)
+        self.assertEqual(sorted(resumed.distress), sorted(whole.distress))
+        for name in whole.distress:
+            mine, theirs = list(resumed.distress[name]), list(whole.distress[name])
+            same = [a == b or (isinstance(a, float) and math.isnan(a) and math.isnan(b)) for a, b in zip(mine, theirs)]
+            self.assertTrue(len(mine) == len(theirs) and all(same), name)
+
+    def test_resume_without_a_directory_is_refused(self):
+        with self.assertRaises(ValueError) as caught:
+            twb.run(SCENE, overrides=dict(COARSE, **POINT), out=False, resume=True)
+        self.assertIn("resume=True needs out=DIR", str(caught.exception))
+
     def test_gil_is_released_while_solving(self):
         # Without a callback the solver never calls back into Python: were the GIL held, this
         # thread could not wake from a sleep until the run ended, and would count one or two

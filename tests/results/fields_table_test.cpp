@@ -9,6 +9,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "../support/test_files.h"
 #include "twb/results/fields_table.h"
 
 namespace twb {
@@ -29,12 +30,7 @@ FilmFields small_film(int number, bool sliding) {
   return f;
 }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using testing::file_text;
 
 TEST(FieldsTable, ColumnsAndOneRowPerNodeAndFilm) {
   const std::string csv = fields_csv({small_film(1, true), small_film(2, false)});
@@ -75,7 +71,7 @@ TEST(FieldsTable, WritesStatesWithFieldsAndRemovesStaleOnes) {
   for (SolvedState& r : rows) r.fields = {small_film(1, true), small_film(2, false)};
   EXPECT_EQ(write_state_fields(dir, rows), 3u);
   for (const char* name : {"state_0001.csv", "state_0002.csv", "state_0003.csv"})
-    EXPECT_EQ(read(dir / "fields" / name), fields_csv(rows[0].fields)) << name;
+    EXPECT_EQ(file_text(dir / "fields" / name), fields_csv(rows[0].fields)) << name;
   std::ofstream(dir / "fields" / "notes.txt") << "mine";
 
   // A later run into the same directory with one state: the others would not match

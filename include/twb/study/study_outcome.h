@@ -1,6 +1,6 @@
 // What a study gives back: solved states, distress rows, the transient's trajectory, and
 // what only its type gives (a fold curve, probabilities, a cycle's events, ...), with what
-// the run cost; how to run it (threads, resume journal); the progress callback.
+// the run cost; how to run it (threads, where its searches run); the progress callback.
 #pragma once
 
 #include <atomic>
@@ -26,6 +26,8 @@
 #include "twb/scene/scene.h"
 
 namespace twb {
+
+class SearchScheduler;
 
 // What a study type gives back beyond what every type shares, one struct per type that
 // has any (point, load_sweep, distress_map and transient have none).
@@ -126,6 +128,9 @@ struct RunOptions {
   // inputs (std::invalid_argument otherwise, for another bearing's state, or for a study
   // of another type: check_continuable).
   const CycleState* cycle_start = nullptr;
+  // Where the study's independent searches run (twb/study/search_scheduler.h): unset, on
+  // `threads` threads here. Studies of one piece of work run here whatever it says.
+  SearchScheduler* scheduler = nullptr;
 };
 
 // The tables a study writes, named by their file's stem ("states", "distress",

@@ -116,10 +116,13 @@ void SearchJournal::write_entry(std::size_t search, const std::string& entry) co
   }
 }
 
-std::vector<std::size_t> SearchJournal::entries() const {
+std::vector<std::size_t> SearchJournal::entries() const { return entries_in(dir_.parent_path()); }
+
+std::vector<std::size_t> SearchJournal::entries_in(const fs::path& results) {
+  const fs::path dir = results / ".twb-journal";
   std::vector<std::size_t> found;
-  if (!fs::is_directory(dir_)) return found;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir_)) {
+  if (!fs::is_directory(dir)) return found;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
     const std::string name = e.path().filename().string();
     if (name.rfind("search-", 0) == 0 && name.size() > 7 && name.find_first_not_of("0123456789", 7) == std::string::npos)
       found.push_back(std::size_t(std::stoull(name.substr(7))));

@@ -44,6 +44,8 @@ class SearchJournal {
   // The searches journaled so far, and one's entry as it is stored (twb merge).
   std::vector<std::size_t> entries() const;
   std::string entry_bytes(std::size_t search) const;
+  // The searches journaled in a results directory (none without a journal).
+  static std::vector<std::size_t> entries_in(const std::filesystem::path& results);
   // The resolved scene a results directory's journal belongs to; none without a journal.
   static std::optional<std::string> scene_of(const std::filesystem::path& results);
   // Whether two resolved scenes are the same run's (their comments, which name the file as

@@ -3,6 +3,8 @@
 // flock, which the kernel releases when the run dies, so a killed run leaves no stale
 // lock), and emptied of an earlier run's files, so that no table or figure mixes two
 // runs. run.json is written last: a directory without it holds no complete run.
+// twb run and twb.run(out=DIR) claim it before they build the model, then run into it
+// (Bearing::run_into).
 #pragma once
 
 #include <filesystem>
@@ -21,10 +23,12 @@ class ResultsDirectory {
  public:
   explicit ResultsDirectory(const std::filesystem::path& dir);
   ~ResultsDirectory();
+  const std::filesystem::path& path() const { return dir_; }
   ResultsDirectory(const ResultsDirectory&) = delete;
   ResultsDirectory& operator=(const ResultsDirectory&) = delete;
 
  private:
+  std::filesystem::path dir_;
   int lock_fd_ = -1;
 };
 
