@@ -209,6 +209,29 @@ TEST(Sensitivity, CrossingLoadDerivativesMatchTheCrossingSettledAgain) {
   }
 }
 
+// Newton on the margin's root starts from a search's bracket: started far from any
+// crossing (the bronze washer at 20 N, its oil peak's crossing hundreds of newtons above),
+// it steps out of the start's neighbourhood and says so, rather than going on to loads
+// the bearing cannot take (a step to a negative load ended a reliability study with an
+// input error); the model is given back at its load.
+TEST(Sensitivity, ACrossingStartedFarFromItsRootIsNotSettled) {
+  const Scene scene = load_scene(std::string(TWB_SOURCE_DIR) + "/configs/washers/bronze_cusn8.yaml",
+                                 {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24"});
+  BearingModel model(scene);
+  const double scene_load = model.load();
+  std::vector<double> u;
+  {
+    const ParameterScope light(model, 20.0);
+    SteadySolver solver(model, newton_settings(scene));
+    ASSERT_TRUE(solver.solve_cold(u).converged);
+  }
+  std::string why;
+  const std::optional<SettledCrossing> crossing = settle_crossing(model, LimitKind::oil_peak_temperature, 20.0, u, why);
+  EXPECT_FALSE(crossing) << "settled at " << crossing->load << " N";
+  EXPECT_NE(why.find("the margin's root is not near 20 N"), std::string::npos) << why;
+  EXPECT_EQ(model.load(), scene_load);
+}
+
 // An input at a bound of its range (a dry friction coefficient of zero, range >= 0): the
 // one-sided fourth-order stencil, against the one-sided second-order difference of whole
 // solves, (−3f(0) + 4f(Δ) − f(2Δ))/2Δ, whose truncation the same difference at 2Δ measures.

@@ -28,6 +28,7 @@ double margin_of(const BearingModel& m, LimitKind kind, std::span<const double> 
 std::optional<SettledCrossing> settle_crossing(BearingModel& model, LimitKind kind, double load,
                                                std::vector<double> u, std::string& why) {
   const ParameterScope keep(model);
+  const double start = load;
   SettledCrossing c;
   c.kind = kind;
   c.lu = std::make_unique<SparseLu>(model.pattern(), SparseLu::Ordering::minimum_degree);
@@ -69,6 +70,14 @@ std::optional<SettledCrossing> settle_crossing(BearingModel& model, LimitKind ki
       c.load = load;
       c.u = std::move(u);
       return c;
+    }
+    // Newton starts near the root (a search's bracket, a neighbour's crossing): a step
+    // out of the start's neighbourhood means that the margin is nearly flat in load here,
+    // not that the root is far, and may reach a load the bearing cannot take (≤ 0).
+    if (!(load + move > 0.5 * start && load + move < 2.0 * start)) {
+      why = fmt::format("the margin's root is not near {:.6g} N: Newton's step went from {:.6g} to {:.6g} N", start,
+                        load, load + move);
+      return std::nullopt;
     }
     load += move;
   }
