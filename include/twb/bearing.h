@@ -21,6 +21,12 @@ namespace twb {
 
 class BearingModel;
 
+// The results directories of a job array's slices (twb run --slice K/N) as
+// ResultsRun::slices takes them in: each must hold the journal of a run of `scene`;
+// std::invalid_argument naming the first that does not. Bearing::run_into checks them
+// too; a caller checks first to refuse them before it claims its own directory.
+void check_job_slices(const std::vector<std::string>& slices, const Scene& scene);
+
 // How a study runs into a results directory (Bearing::run_into).
 struct ResultsRun {
   // Keep the searches a killed run of the same scene journaled in the directory and run
@@ -93,6 +99,9 @@ class Bearing {
 
  private:
   std::unique_ptr<BearingModel> model_;
+  // The scene as given: a study moves the model's own (a curve's parameter, a duty
+  // cycle's speed, ambient and tilt), and the results record the scene that ran.
+  Scene scene_;
   std::vector<double> state_;
   double scene_load_ = 0.0, scene_speed_ = 0.0;  // where the scene puts the bearing
   double state_load_ = 0.0, state_speed_ = 0.0;  // where state_ was solved

@@ -18,11 +18,13 @@
 
 #include <chrono>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 
 namespace twb {
 
-Bearing::Bearing(const Scene& scene) : scene_load_(scene.operating.load), scene_speed_(scene.operating.speed) {
+Bearing::Bearing(const Scene& scene)
+    : scene_(scene), scene_load_(scene.operating.load), scene_speed_(scene.operating.speed) {
   const auto t0 = std::chrono::steady_clock::now();
   model_ = std::make_unique<BearingModel>(scene);
   setup_ms_ = elapsed_ms(t0);
@@ -31,7 +33,7 @@ Bearing::~Bearing() = default;
 Bearing::Bearing(Bearing&&) noexcept = default;
 Bearing& Bearing::operator=(Bearing&&) noexcept = default;
 
-const Scene& Bearing::scene() const { return model_->scene(); }
+const Scene& Bearing::scene() const { return scene_; }
 
 std::vector<UnknownBlock> Bearing::unknowns() const { return model_->layout().blocks(); }
 
@@ -80,7 +82,7 @@ void Bearing::forget_state() { state_.clear(); }
 
 std::vector<std::pair<std::string, double>> Bearing::sensitivity(const std::string& path) {
   // The path first: a misspelt one is the caller's first mistake whatever the state.
-  const SceneInput input = scene_input(model_->scene(), path);
+  const SceneInput input = scene_input(scene_, path);
   if (state_.empty())
     throw std::logic_error("Bearing::sensitivity: no state solved yet (call solve first; a solve that fails leaves "
                            "none)");
@@ -110,35 +112,39 @@ StudyOutcome Bearing::run_study(const ProgressReport& progress, const RunOptions
 
 namespace {
 
-// A job array's slices into this run's journal: each must hold the journal of this
-// scene's run.
-void take_in_slices(const std::vector<std::string>& slices, const std::string& scene, const SearchJournal& journal) {
+void take_in_slices(const std::vector<std::string>& slices, const SearchJournal& journal) {
   for (const std::string& dir : slices) {
-    const std::optional<std::string> text = SearchJournal::scene_of(dir);
-    if (!text)
-      throw std::invalid_argument(fmt::format("'{}' holds no journaled searches (the results directory of a twb "
-                                              "run --slice K/N is meant)",
-                                              dir));
-    if (!SearchJournal::same_scene(*text, scene))
-      throw std::invalid_argument(
-          fmt::format("'{}' belongs to another scene (or other --set values) than this run's", dir));
-    const SearchJournal slice(dir, *text, true);
+    const SearchJournal slice(dir, *SearchJournal::scene_of(dir), true);
     for (std::size_t i : slice.entries()) journal.write_entry(i, slice.entry_bytes(i));
   }
 }
 
 }  // namespace
 
+void check_job_slices(const std::vector<std::string>& slices, const Scene& scene) {
+  const std::string scene_text = describe_scene(scene);
+  for (const std::string& dir : slices) {
+    const std::optional<std::string> text = SearchJournal::scene_of(dir);
+    if (!text)
+      throw std::invalid_argument(fmt::format("'{}' holds no journaled searches (the results directory of a twb "
+                                              "run --slice K/N is meant)",
+                                              dir));
+    if (!SearchJournal::same_scene(*text, scene_text))
+      throw std::invalid_argument(
+          fmt::format("'{}' belongs to another scene (or other --set values) than this run's", dir));
+  }
+}
+
 StudyOutcome Bearing::run_into(const ResultsDirectory& directory, const ResultsRun& run, const ProgressReport& progress,
                                const RunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
-  const Scene& scene = model_->scene();
-  const std::string scene_text = describe_scene(scene);
+  const std::string scene_text = describe_scene(scene_);
+  check_job_slices(run.slices, scene_);
   const SearchJournal journal(directory.path(), scene_text, run.resume && run.slices.empty());
   RunOptions how = options;
   JournalOnlyScheduler only_journaled;
   if (!run.slices.empty()) {
-    take_in_slices(run.slices, scene_text, journal);
+    take_in_slices(run.slices, journal);
     how.scheduler = &only_journaled;
   }
   StudyOutcome outcome = twb::run_study(*model_, progress, how, &journal);
@@ -146,14 +152,14 @@ StudyOutcome Bearing::run_into(const ResultsDirectory& directory, const ResultsR
   outcome.timings.total_ms = setup_ms_ + elapsed_ms(t0);
   const bool stopped = options.stop && options.stop->load();
   if (stopped || (how.scheduler && !how.scheduler->takes_results())) return outcome;
-  write_study_results(directory.path(), scene.source, scene, model_->layout(), outcome, run.digits);
+  write_study_results(directory.path(), scene_.source, scene_, model_->layout(), outcome, run.digits);
   journal.finish();
   return outcome;
 }
 
 void Bearing::write_results(const std::string& directory, const StudyOutcome& outcome, int digits) const {
   const ResultsDirectory ready(directory);
-  write_study_results(directory, model_->scene().source, model_->scene(), model_->layout(), outcome, digits);
+  write_study_results(directory, scene_.source, scene_, model_->layout(), outcome, digits);
 }
 
 }  // namespace twb

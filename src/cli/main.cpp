@@ -236,6 +236,7 @@ int merge(const std::vector<std::string>& slices, const std::string& out_dir, bo
                                             slices.front()));
   const std::string scene_name = (std::filesystem::path(slices.front()) / ".twb-journal" / "scene.yaml").string();
   const twb::Scene scene = twb::load_scene_text(*scene_text, scene_name);
+  twb::check_job_slices(slices, scene);  // every slice, before --out is touched
   const twb::ResultsDirectory results(out_dir);
   twb::cli::end_cleanly_on_interruption(out_dir.c_str());
   twb::Bearing bearing(scene);

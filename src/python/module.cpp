@@ -155,6 +155,9 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads,
     cycle_start = twb::cycle_to_continue(scene.study, *continue_from, directory.value_or(""), "continue_from");
   }
   if (resume && !directory) throw std::invalid_argument("resume=True needs out=DIR: the directory whose journal to resume");
+  // Before the directory is claimed (and an earlier run's files in it removed).
+  if (threads < 0)
+    throw std::invalid_argument("threads must be 0 (one per core) or a positive count, not " + std::to_string(threads));
   ProgressRelay relay(std::move(progress));
   const twb::ProgressReport report = relay.report();
   const twb::RunOptions options{.threads = threads, .stop = relay.stop(),

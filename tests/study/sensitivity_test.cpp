@@ -209,26 +209,30 @@ TEST(Sensitivity, CrossingLoadDerivativesMatchTheCrossingSettledAgain) {
   }
 }
 
-// Newton on the margin's root starts from a search's bracket: started far from any
-// crossing (the bronze washer at 20 N, its oil peak's crossing hundreds of newtons above),
-// it steps out of the start's neighbourhood and says so, rather than going on to loads
-// the bearing cannot take (a step to a negative load ended a reliability study with an
-// input error); the model is given back at its load.
-TEST(Sensitivity, ACrossingStartedFarFromItsRootIsNotSettled) {
-  const Scene scene = load_scene(std::string(TWB_SOURCE_DIR) + "/configs/washers/bronze_cusn8.yaml",
-                                 {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24"});
+// Where a criterion's margin is nearly flat in load, Newton's step in load may reach a
+// load the bearing cannot take: with the oil's flash temperature at the ambient, the
+// oil's peak is past it at every load, by about as much at 100 N as at 10 N, and the
+// first step from 100 N goes far below zero. Such a step went to the model as a negative
+// load and ended a reliability study with the input error "load must be positive"; each
+// now goes half the way to zero, and the root not found is reported, the model given
+// back at its load.
+TEST(Sensitivity, ACrossingWhoseMarginIsFlatIsNotSettledAtANegativeLoad) {
+  Scene scene = load_scene(std::string(TWB_SOURCE_DIR) + "/configs/washers/bronze_cusn8.yaml",
+                           {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24"});
+  scene.lubricant.flash_temperature = scene.operating.ambient;
   BearingModel model(scene);
   const double scene_load = model.load();
   std::vector<double> u;
   {
-    const ParameterScope light(model, 20.0);
+    const ParameterScope at(model, 100.0);
     SteadySolver solver(model, newton_settings(scene));
     ASSERT_TRUE(solver.solve_cold(u).converged);
   }
   std::string why;
-  const std::optional<SettledCrossing> crossing = settle_crossing(model, LimitKind::oil_peak_temperature, 20.0, u, why);
+  std::optional<SettledCrossing> crossing;
+  ASSERT_NO_THROW(crossing = settle_crossing(model, LimitKind::oil_peak_temperature, 100.0, u, why));
   EXPECT_FALSE(crossing) << "settled at " << crossing->load << " N";
-  EXPECT_NE(why.find("the margin's root is not near 20 N"), std::string::npos) << why;
+  EXPECT_FALSE(why.empty()) << "a crossing not settled says why";
   EXPECT_EQ(model.load(), scene_load);
 }
 

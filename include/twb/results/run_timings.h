@@ -4,6 +4,8 @@
 namespace twb {
 
 struct RunTimings {
+  // setup: building the bearing's model; solve: the study; total: both, and writing the
+  // journal of a run into a directory (not reading the scene, nor writing the files).
   double total_ms = 0.0, setup_ms = 0.0, solve_ms = 0.0;
   int states = 0;
   long newton_iterations = 0, jacobian_evaluations = 0;

@@ -27,8 +27,8 @@ struct SettledCrossing {
 
 // The crossing near (load, u) (a search's, to its bracket; or another model's), settled on the margin's root by
 // Newton in load (each step the state solved again from the last): none, with the reason,
-// where the branch is lost, J is singular there, or Newton steps out of the start's
-// neighbourhood (half to twice its load). The model's load is given back.
+// where the branch is lost or J is singular there; a step towards a load that is not
+// positive goes half the way to zero instead. The model's load is given back.
 std::optional<SettledCrossing> settle_crossing(BearingModel& model, LimitKind kind, double load,
                                                std::vector<double> u, std::string& why);
 
