@@ -62,6 +62,14 @@ std::vector<double> BearingModel::heat_capacities() const {
 }
 
 std::vector<double> BearingModel::capacities() const {
+  // In slow time (docs/physics.md section 20, [W4]) the worn depths alone, in σ_ref per
+  // hour (their rows, wear_effect.cpp).
+  if (time_scale_ == TimeScale::wear) {
+    std::vector<double> c(std::size_t(size()), 0.0);
+    for (const UnknownBlock& b : layout_.blocks())
+      if (b.effect == BlockEffect::wear) std::fill(c.begin() + b.offset, c.begin() + b.offset + b.size, 1.0);
+    return c;
+  }
   std::vector<double> c = heat_capacities();
   for (std::size_t k = 0; k < c.size(); ++k)
     if (c[k] > 0.0) c[k] *= layout_.row_scale(Index(k));

@@ -287,7 +287,7 @@ SegregatedSystem::Blocks BearingModel::segregated_blocks() const {
     std::vector<Index>* into = block.effect == BlockEffect::mechanics       ? &b.rigid
                                : block.effect == BlockEffect::hydrodynamics ? &b.pressure
                                : block.effect == BlockEffect::thermal || block.effect == BlockEffect::thermal_deformation ||
-                                         block.effect == BlockEffect::asperity_contact
+                                         block.effect == BlockEffect::asperity_contact || block.effect == BlockEffect::wear
                                    ? &b.temperature
                                                                  : nullptr;
     if (!into) throw InternalError(std::string("segregated_blocks: unknown block of effect ") + effect_name(block.effect));

@@ -14,6 +14,7 @@
 #include <tuple>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/effect_assembler.h"
@@ -56,6 +57,12 @@ struct ComponentHeat {
 // As a SteadySystem the continuation parameter is the load (N) and the transient is
 // the paper's thermal one: component temperatures carry their heat capacity ρ c t,
 // everything else (pressures, film nodes, rigid body) is algebraic.
+// The time a transient of the model runs in (SteadySystem::capacities): the heat's
+// (docs/physics.md sections 7, 19: the bodies' temperatures have their capacities, the
+// worn depths are held) or the wear's slow time (section 20, [W4]: the worn depths are
+// the only differential unknowns, in hours, and everything else is quasi-steady).
+enum class TimeScale { heat, wear };
+
 class BearingModel final : public SegregatedSystem {
  public:
   // An effect beyond the scene's switches (a test's, a plugin's): made while the model is
@@ -83,6 +90,21 @@ class BearingModel final : public SegregatedSystem {
   void parameter_derivative_given(std::span<const double> u, std::span<const double> residual,
                                   std::span<double> derivative) const override;
   std::vector<double> capacities() const override;
+  // The time scale the capacities and the worn depths' rows are of (TimeScale above).
+  void set_time_scale(TimeScale scale) { time_scale_ = scale; }
+  TimeScale time_scale() const { return time_scale_; }
+  // The scene's effect of type T (effect_registry.cpp), nullptr where it is off: what a
+  // study sets of an effect's own (a worn washer's depths).
+  template <class T>
+  const T* effect() const {
+    for (const auto& e : effects_)
+      if (const auto* found = dynamic_cast<const T*>(e.get())) return found;
+    return nullptr;
+  }
+  template <class T>
+  T* effect() {
+    return const_cast<T*>(std::as_const(*this).effect<T>());
+  }
   // Each unknown's heat capacity ρ·c·t·A in J/K: a body node's; 0 for every other unknown
   // (the capacities above without the rows' scales).
   std::vector<double> heat_capacities() const;
@@ -281,6 +303,7 @@ class BearingModel final : public SegregatedSystem {
   Index rigid_offset_ = 0;
   std::vector<std::unique_ptr<EffectAssembler>> effects_;
   std::vector<EffectMaker> more_effects_;
+  TimeScale time_scale_ = TimeScale::heat;
   // One summit population for both films (scene.asperities; docs/physics.md section 4).
   std::shared_ptr<const StatisticalContact> contact_;  // shared with models of the same surfaces
   double contact_cutoff_ = 0.0;  // gap above which contact is negligible (p < 1e-20 p(0))

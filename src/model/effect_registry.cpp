@@ -13,6 +13,7 @@
 #include "model/film_loads_effect.h"
 #include "model/heat_effect.h"
 #include "model/reynolds_effect.h"
+#include "model/wear_effect.h"
 #include "twb/error_family.h"
 
 namespace twb {
@@ -35,6 +36,9 @@ void BearingModel::register_effects() {
     if (!effects_.back()) throw InternalError("register_effects: an effect maker made no effect");
   }
   if (fx.convection) effects_.push_back(std::make_unique<ConvectionEffect>(setup));  // rewrites the fed grooves' heat rows
+  // After convection, which adds no unknowns: the numbering of every scene without wear is
+  // as it was. It reads the friction power the film loads gathered.
+  if (fx.wear) effects_.push_back(std::make_unique<WearEffect>(setup));
   // Once every part of the gap is known: the contact force's own unknown, whose row the
   // film loads assemble (bearing_model.h, contact_force_unknown).
   if (gap_shaped(sliding_film()) && fx.asperity_contact && scene_.friction.law == FrictionLaw::empirical) {
@@ -47,8 +51,9 @@ std::span<const ReportedQuantity> effect_quantities() {
   // One line per effect that reports a quantity of its own: its kReported.
   static const std::vector<ReportedQuantity> quantities = [] {
     std::vector<ReportedQuantity> q;
-    for (std::span<const ReportedQuantity> of_effect : std::array<std::span<const ReportedQuantity>, 1>{
+    for (std::span<const ReportedQuantity> of_effect : std::array<std::span<const ReportedQuantity>, 2>{
              ConvectionEffect::kReported,
+             WearEffect::kReported,
          })
       q.insert(q.end(), of_effect.begin(), of_effect.end());
     return q;

@@ -64,6 +64,13 @@ inline constexpr Range roughness{.low = 1e-9, .high = 1e-4,
                                  .reason = "from polished (1 nm) to rough-turned (100 um) surfaces"};
 inline constexpr Range summit_radius{.low = 1e-8, .high = 1e-2, .reason = "10 nm to 10 mm"};
 inline constexpr Range summit_density{.low = 1e6, .high = 1e16, .reason = "1e6 to 1e16 summits per m^2"};
+// Archard's specific wear rate k = K/H (docs/physics.md section 20): lubricated steel and
+// bronze pairs lie about 1e-19 to 1e-15 m³/(N·m); outside 1e-21 to 1e-9 is a unit slip, not
+// a material. 0 is allowed: a face that does not wear.
+inline constexpr double kLeastWearRate = 1e-21;
+inline constexpr Range wear_rate{.low = 0.0, .high = 1e-9,
+                                 .reason = "0 (no wear) or a specific wear rate from 1e-21 to 1e-9 m^3/(N m), "
+                                           "e.g. 1e-16 m^3/(N m)"};
 inline constexpr Range eta_r_sigma{.low = 1e-4, .high = 10.0,
                                    .reason = "eta R sigma of real surfaces is 0.01 to 0.1; 1e-4 to 10 allowed"};
 

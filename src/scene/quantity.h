@@ -35,11 +35,15 @@ inline constexpr SiUnit areal_density{"1/m^2", "a number per unit area", "1e11 1
 inline constexpr SiUnit expansion{"1/K", "a thermal expansion coefficient", "1.2e-5 1/K"};
 inline constexpr SiUnit dimensionless{"1", "a dimensionless number", "0.296"};
 inline constexpr SiUnit pv{"Pa m/s", "a PV value (a pressure times a sliding speed)", "1.8 MPa m/s"};
+// Archard's specific wear rate: worn volume per unit of load and sliding distance.
+inline constexpr SiUnit wear_rate{"m^3/(N m)", "a specific wear rate (worn volume per load and sliding distance)",
+                                  "1e-16 m^3/(N m)"};
 // Every unit above, the angle before the pure number (udunits2 takes both for "rad").
 inline constexpr const SiUnit* all[] = {&length,        &angle,         &angular_speed, &force,         &torque,
                                         &time,          &temperature,   &stress,        &conductivity,
                                         &density,       &specific_heat, &viscosity,     &kinematic_viscosity,
-                                        &areal_density, &expansion,     &dimensionless, &pv};
+                                        &areal_density, &expansion,     &dimensionless, &pv,
+                                        &wear_rate};
 // The unit of a symbol above ("rad/s"); the pure number for any other.
 inline const SiUnit& of_symbol(std::string_view symbol) {
   for (const SiUnit* u : all)

@@ -105,9 +105,26 @@ Material read_material(const MapReader& materials, std::string_view component) {
   return m;
 }
 
-Roughness read_roughness(const MapReader& surfaces, std::string_view component) {
-  const MapReader face = surfaces.map(component, {"Ra", "Rq"});
+// Archard's k of a face (docs/physics.md section 20): 0 (the face does not wear) or a
+// rate of a real pair; below 1e-21 or above 1e-9 m³/(N·m) it is a unit slip.
+double read_wear_rate(const MapReader& face, const Effects& effects) {
+  const Node node = face.get("wear_rate", "");
+  if (!effects.wear)
+    node.fail(fmt::format("{}: a wear rate needs the effect 'wear' (without it no face wears); add wear to "
+                          "'effects' or leave the rate out",
+                          node.path()));
+  const double k = face.quantity("wear_rate", si::wear_rate, bounds::wear_rate);
+  if (k > 0.0 && k < bounds::kLeastWearRate)
+    node.fail(fmt::format("{}: {:.3g} m^3/(N m) is below any material's specific wear rate ({:g}): a unit slip? "
+                          "Allowed: {}",
+                          node.path(), k, bounds::kLeastWearRate, bounds::wear_rate.reason));
+  return k;
+}
+
+Roughness read_roughness(const MapReader& surfaces, std::string_view component, const Effects& effects) {
+  const MapReader face = surfaces.map(component, {"Ra", "Rq", "wear_rate"});
   Roughness r;
+  if (face.has("wear_rate")) r.wear_rate = read_wear_rate(face, effects);
   // Ra enters no equation (σ is Rq); a face given by one of the two keeps the default
   // texture's Ra/Rq for the other, so that Ra ≤ Rq holds as it does for any surface
   // (Ra is the mean |z|, Rq its root mean square).
@@ -247,9 +264,9 @@ void read_bodies(const MapReader& scene, Scene& out) {
   out.gear.material = read_material(materials, "gear");
 
   const MapReader surfaces = scene.map("surfaces", {"carrier", "washer", "gear", "asperities"});
-  out.carrier.roughness = read_roughness(surfaces, "carrier");
-  out.washer.roughness = read_roughness(surfaces, "washer");
-  out.gear.roughness = read_roughness(surfaces, "gear");
+  out.carrier.roughness = read_roughness(surfaces, "carrier", out.effects);
+  out.washer.roughness = read_roughness(surfaces, "washer", out.effects);
+  out.gear.roughness = read_roughness(surfaces, "gear", out.effects);
   out.asperities = read_asperities(surfaces, out);
 }
 

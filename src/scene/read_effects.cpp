@@ -86,6 +86,7 @@ Effects read_effects(const MapReader& scene) {
       if (effect.name == kFlowFactors) effects.flow_factors = true;
       if (effect.name == kAsperityContact) effects.asperity_contact = true;
       if (effect.name == kConvection) effects.convection = true;
+      if (effect.name == kWear) effects.wear = true;
     }
     listed.push_back(std::move(effect));
   }
@@ -113,6 +114,11 @@ Effects read_effects(const MapReader& scene) {
           "temperature); add {} to 'effects'",
           effect.item.path(),
           !effects.thermal && !effects.hydrodynamics ? "both" : effects.thermal ? "hydrodynamics" : "thermal"));
+    if (effect.name == kWear && !effects.asperity_contact)
+      effect.item.fail(fmt::format(
+          "{}: effect 'wear' needs 'asperity_contact' (only the asperities' contact pressure wears a face, "
+          "docs/physics.md section 20); add asperity_contact to 'effects'",
+          effect.item.path()));
   }
   return effects;
 }

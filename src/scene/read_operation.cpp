@@ -1,6 +1,8 @@
 // How the bearing is run: its oil (lubricant), load, speed and surroundings
 // (operating), and its boundary friction law (friction). docs/physics.md sections 2, 5, 6.
+#include <array>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -192,12 +194,44 @@ void read_operating(const MapReader& scene, Scene& out) {
 
 // limits: failure criteria besides the temperatures of the oil and the materials.
 void read_limits(const MapReader& scene, Scene& out) {
-  const MapReader limits = scene.map("limits", {"min_film_ratio", "scuffing_temperature"});
+  const MapReader limits = scene.map("limits", {"min_film_ratio", "scuffing_temperature", "wear_depth"});
   if (limits.has("min_film_ratio"))
     out.limits.min_film_ratio = limits.quantity("min_film_ratio", si::dimensionless, bounds::film_ratio);
   out.limits.scuffing_temperature = limits.quantity("scuffing_temperature", si::temperature,
                                                     bounds::absolute_temperature, out.limits.scuffing_temperature);
+  if (!limits.has("wear_depth")) return;
+  const Node allowance = limits.get("wear_depth", "");
+  if (!out.effects.wear)
+    allowance.fail(fmt::format("{}: a wear allowance needs the effect 'wear' (without it no face wears); add wear "
+                               "to 'effects' or leave the allowance out",
+                               allowance.path()));
+  // Depths far below the washer's thickness, which the model takes as unchanged
+  // (docs/physics.md section 20).
+  const std::string reason =
+      fmt::format("a depth above 0 and at most the washer's thickness, {:.4g} mm", 1e3 * out.washer.thickness);
+  out.limits.wear_depth = limits.quantity(
+      "wear_depth", si::length, Range{.low = 0.0, .low_open = true, .high = out.washer.thickness, .reason = reason});
 }
+
+// With `wear` on, both faces of the sliding film need Archard's k (docs/physics.md section
+// 20): twb ships no default, the rate belongs to the pair.
+void check_wear_rates(const MapReader& scene, const Scene& out) {
+  if (!out.effects.wear) return;
+  const bool carrier_slides = out.operating.sliding == SlidingFilm::carrier_washer;
+  const std::array<std::pair<std::string_view, const Component*>, 2> faces{
+      carrier_slides ? std::pair{std::string_view("carrier"), &out.carrier} : std::pair{std::string_view("washer"), &out.washer},
+      carrier_slides ? std::pair{std::string_view("washer"), &out.washer} : std::pair{std::string_view("gear"), &out.gear}};
+  for (const auto& [name, component] : faces) {
+    if (component->roughness.wear_rate) continue;
+    const MapReader surfaces = scene.map("surfaces", {"carrier", "washer", "gear", "asperities"});
+    const Node where = surfaces.has(name) ? surfaces.get(name, "") : surfaces.node();
+    where.fail(fmt::format("{}: with the effect 'wear' each face of the sliding film ({}) needs its specific wear "
+                           "rate, and surfaces.{} has none: add e.g. 'wear_rate: 1e-16 m^3/(N m)' (0: the face "
+                           "does not wear; docs/physics.md section 20)",
+                           where.path(), kSlidingFilms.name(out.operating.sliding), name));
+  }
+}
+
 
 void read_friction(const MapReader& scene, Scene& out) {
   const MapReader friction = scene.map("friction", {"law", "coefficient"});
@@ -217,6 +251,7 @@ void read_operation(const MapReader& scene, Scene& out) {
   read_limits(scene, out);
   read_operating(scene, out);
   read_friction(scene, out);
+  check_wear_rates(scene, out);
 }
 
 }  // namespace twb::scene_io

@@ -91,8 +91,10 @@ inline constexpr std::string_view kAsperityContact = "asperity_contact";
 inline constexpr std::string_view kThermal = "thermal";
 inline constexpr std::string_view kThermalDeformation = "thermal_deformation";
 inline constexpr std::string_view kConvection = "convection";
-inline constexpr std::array<std::string_view, 6> kEffectNames{kHydrodynamics, kFlowFactors, kAsperityContact,
-                                                              kThermal, kThermalDeformation, kConvection};
+inline constexpr std::string_view kWear = "wear";
+inline constexpr std::array<std::string_view, 7> kEffectNames{kHydrodynamics, kFlowFactors,        kAsperityContact,
+                                                              kThermal,       kThermalDeformation, kConvection,
+                                                              kWear};
 
 // The three bodies, in stacking order along z.
 inline constexpr std::array<std::string_view, 3> kComponentNames{"carrier", "washer", "gear"};

@@ -27,6 +27,7 @@ void write_effects(SceneText& w, const Effects& e) {
   if (e.thermal_deformation)
     w.line(1, fmt::format("- thermal_deformation: {{face_expansion: {}}}", kFaceExpansions.name(e.face_expansion)));
   if (e.convection) w.line(1, "- convection");
+  if (e.wear) w.line(1, "- wear");
 }
 
 // The width as the scene gave it, which the grid rounds again to the same whole cells (a
@@ -99,6 +100,7 @@ void write_surfaces(SceneText& w, const Scene& s) {
     w.line(1, fmt::format("{}:", name));
     w.entry(2, "Ra", quantity(component->roughness.ra, "m"));
     w.entry(2, "Rq", quantity(component->roughness.rq, "m"));
+    if (component->roughness.wear_rate) w.entry(2, "wear_rate", quantity(*component->roughness.wear_rate, "m^3/(N m)"));
   }
   const AsperityParameters& a = s.asperities;
   w.line(1, "asperities:");
@@ -137,6 +139,7 @@ void write_operation(SceneText& w, const Scene& s) {
   w.line(0, "limits:");
   if (s.limits.min_film_ratio) w.entry(1, "min_film_ratio", quantity(*s.limits.min_film_ratio, "1"));
   w.entry(1, "scuffing_temperature", quantity(s.limits.scuffing_temperature, "K"));
+  if (s.limits.wear_depth) w.entry(1, "wear_depth", quantity(*s.limits.wear_depth, "m"));
 
   const Operating& o = s.operating;
   w.line(0, "operating:");

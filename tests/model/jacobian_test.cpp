@@ -47,6 +47,7 @@ struct EffectSet {
   bool convection = false;
   bool dammed = false;   // the grooves closed at radial line 2 of 5, open at the bore
   bool worn = false;     // a part of film 1's gap from outside the model (support/prescribed_wear.h)
+  bool wear = false;     // the sliding film's faces worn (docs/physics.md section 20)
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -68,6 +69,7 @@ std::vector<double> random_state(const BearingModel& m, std::mt19937& rng) {
       // scene's load.
       else if (b.effect == BlockEffect::thermal_deformation) u[k] = b.name == "washer dishing curvature" ? 2.0 * unit(rng) - 1.0 : 0.2 + unit(rng);
       else if (b.effect == BlockEffect::asperity_contact) u[k] = 0.2 + unit(rng);
+      else if (b.effect == BlockEffect::wear) u[k] = 0.2 + unit(rng);
     }
   }
   return u;
@@ -99,6 +101,9 @@ std::unique_ptr<BearingModel> model_of(const EffectSet& e) {
   }
   if (e.fed) s.lubricant.supply = OilSupply{2e5, SupplyInlet::both, s.operating.ambient + 15.0};
   s.effects.convection = e.convection;
+  s.effects.wear = e.wear;
+  if (e.wear)
+    for (Component* c : {&s.carrier, &s.washer, &s.gear}) c->roughness.wear_rate = 1e-16;
   std::vector<BearingModel::EffectMaker> more;
   if (e.worn)
     more.push_back(testing::PrescribedWear::maker(
@@ -235,6 +240,30 @@ TEST_P(JacobianTest, MatchesCentralDifferences) {
     expect_differences_match(
         *m, u, [&](std::span<const double> x, std::span<double> r, std::span<double> jac) { m->evaluate(x, r, jac); },
         std::string(e.name) + " trial " + std::to_string(trial));
+  }
+}
+
+// In the wear's slow time (docs/physics.md section 20, [W4]) the worn depths' rows are
+// their rates, the friction power's slopes in every unknown of the gap: with wear on,
+// the same check of every entry.
+TEST(SlowTimeJacobian, MatchesCentralDifferences) {
+  const EffectSet worn[] = {
+      {"wear", true, true, true, true, 545.0, CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, false,
+       FrictionLaw::empirical, CavitationModel::reynolds, 0, false, false, false, false, true},
+      {"wear_deformation_fed_grooves_convection", true, true, true, true, 545.0, CarrierTemperature::load_frame,
+       CavitationRow::fischer_burmeister, true, FrictionLaw::empirical, CavitationModel::reynolds, 2, true, true,
+       false, false, true}};
+  std::mt19937 rng(97531);
+  for (const EffectSet& e : worn) {
+    auto m = model_of(e);
+    m->set_time_scale(TimeScale::wear);
+    for (int trial = 0; trial < 2; ++trial) {
+      const std::vector<double> u = random_state(*m, rng);
+      expect_differences_match(
+          *m, u,
+          [&](std::span<const double> x, std::span<double> r, std::span<double> jac) { m->evaluate(x, r, jac); },
+          std::string(e.name) + " in slow time, trial " + std::to_string(trial));
+    }
   }
 }
 
@@ -434,7 +463,15 @@ INSTANTIATE_TEST_SUITE_P(
                                 CavitationModel::reynolds, 0, false, false, false, true},
                       EffectSet{"prescribed_wear_deformation_fed_grooves_convection", true, true, true, true, 545.0,
                                 CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
-                                FrictionLaw::empirical, CavitationModel::reynolds, 2, true, true, false, true}),
+                                FrictionLaw::empirical, CavitationModel::reynolds, 2, true, true, false, true},
+                      // The worn faces' depths as a part of the sliding film's gap: on film 1,
+                      // and on film 2 summed with thermal deformation's, by fed grooves.
+                      EffectSet{"wear", true, true, true, true, 545.0, CarrierTemperature::load_frame,
+                                CavitationRow::fischer_burmeister, false, FrictionLaw::empirical,
+                                CavitationModel::reynolds, 0, false, false, false, false, true},
+                      EffectSet{"wear_deformation_fed_grooves_convection", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
+                                FrictionLaw::empirical, CavitationModel::reynolds, 2, true, true, false, false, true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

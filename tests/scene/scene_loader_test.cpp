@@ -41,6 +41,7 @@ void expect_same_component(const Component& a, const Component& b) {
   expect_same_material(a.material, b.material);
   EXPECT_EQ(a.roughness.ra, b.roughness.ra);
   EXPECT_EQ(a.roughness.rq, b.roughness.rq);
+  EXPECT_EQ(a.roughness.wear_rate, b.roughness.wear_rate);
   ASSERT_EQ(a.grooves.has_value(), b.grooves.has_value());
   if (!a.grooves) return;
   EXPECT_EQ(a.grooves->count, b.grooves->count);
@@ -129,6 +130,10 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.lubricant.density_expansion, b.lubricant.density_expansion);
   EXPECT_EQ(a.lubricant.specific_heat, b.lubricant.specific_heat);
   EXPECT_EQ(a.effects.convection, b.effects.convection);
+  EXPECT_EQ(a.effects.wear, b.effects.wear);
+  EXPECT_EQ(a.limits.min_film_ratio, b.limits.min_film_ratio);
+  EXPECT_EQ(a.limits.scuffing_temperature, b.limits.scuffing_temperature);
+  EXPECT_EQ(a.limits.wear_depth, b.limits.wear_depth);
   EXPECT_EQ(a.operating.load, b.operating.load);
   EXPECT_EQ(a.operating.speed, b.operating.speed);
   EXPECT_EQ(a.operating.sliding, b.operating.sliding);
@@ -422,6 +427,11 @@ INSTANTIATE_TEST_SUITE_P(
         RoundTripCase{"mass_conserving_cavitation",
                       std::string(kMinimalScene).replace(std::string(kMinimalScene).find("[hydrodynamics"), 14,
                                                          "[{hydrodynamics: {cavitation: jfo, cavity_pressure: -0.3 bar}}")},
+        RoundTripCase{"wear_with_its_rates_and_allowance",
+                      std::string(kMinimalScene).replace(std::string(kMinimalScene).find("asperity_contact]"), 17,
+                                                         "asperity_contact, wear]") +
+                          "surfaces: {carrier: {wear_rate: 2e-17 m^3/(N m)}, washer: {wear_rate: 0}, gear: {wear_rate: 3e-7 mm^3/(N m)}}\n"
+                          "limits: {wear_depth: 25 um}\n"},
         RoundTripCase{"distress_map_custom_surfaces_film_2",
                       std::string(testing::kSceneBodies) +
                           "study: {type: distress_map, speeds: [136 rad/s, 5200 rpm], load_start: 50 N, load_end: 3 kN,\n"

@@ -57,6 +57,9 @@ struct Effects {
   // docs/physics.md section 15 (needs thermal and hydrodynamics): the oil carries its
   // heat with the film's flow.
   bool convection = false;
+  // docs/physics.md section 20 (needs asperity_contact): the faces of the sliding film wear
+  // by Archard's law, their depths parts of its gap.
+  bool wear = false;
 };
 
 struct Material {
@@ -80,6 +83,9 @@ struct Material {
 struct Roughness {
   double ra = 0.45e-6;     // m, arithmetic mean roughness (delta in the paper)
   double rq = 0.515e-6;    // m, RMS roughness (sigma in the paper)
+  // m³/(N·m), the face's specific wear rate k of Archard's law (docs/physics.md section 20),
+  // with `wear` on. None: not given (a face of the sliding film then needs it).
+  std::optional<double> wear_rate;
 };
 
 // A land's shaped inlet (docs/physics.md section 14), from the edge the moving face drags
@@ -209,6 +215,9 @@ struct Limits {
   // default ISO/TR 13989-1's θ_S = 80 + (0.85 + 1.4 X_W)·X_L·S_FZG² degC for a mineral
   // oil (X_L = 1) on through-hardened steel (X_W = 1) of FZG failure load stage 8: 224 degC.
   double scuffing_temperature = 497.15;
+  // With `wear`: the deepest a face may wear (m), the wear allowance that ends a life
+  // (docs/physics.md section 20). None: no allowance.
+  std::optional<double> wear_depth;
 };
 
 struct Operating {
