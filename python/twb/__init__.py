@@ -224,7 +224,7 @@ class Table(dict):
 class Results:
     """What a study gives back. Tables (None where the study writes no such file):
     states, distress, trajectory, sliding, fold_curve, sensitivity, reliability, design_point,
-    calibration, calibration_correlation, calibration_points, cycle_events; fields: per state, its fields
+    calibration, calibration_correlation, calibration_points, cycle_events, life; fields: per state, its fields
     table (output.fields) or None; summary and limit_notes: the lines twb run prints at
     the end; message, solver_failed; timings: run.json's counts; directory: where twb.run
     wrote them (None where it wrote nothing)."""
@@ -256,6 +256,7 @@ class Results:
     calibration_correlation = property(lambda self: self.tables.get("calibration_correlation"))
     calibration_points = property(lambda self: self.tables.get("calibration_points"))
     cycle_events = property(lambda self: self.tables.get("cycle_events"))
+    life = property(lambda self: self.tables.get("life"))
 
     def __repr__(self):
         parts = ", ".join(f"{name}: {table.rows} rows" for name, table in self.tables.items())

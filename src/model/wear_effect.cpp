@@ -167,6 +167,19 @@ std::vector<double> WearEffect::turn_depths(std::span<const double> u) const {
   return d;
 }
 
+std::array<WearEffect::Worn, 2> WearEffect::worn(std::span<const double> u) const {
+  const FilmMesh& m = film().mesh;
+  const int nt = m.circumferential_nodes();
+  const std::vector<double> rest = rest_depths(u), turn = turn_depths(u);
+  Worn r{std::max(0.0, *std::max_element(rest.begin(), rest.end())), 0.0, 0.0};
+  Worn t{std::max(0.0, *std::max_element(turn.begin(), turn.end())), 0.0, 0.0};
+  for (std::size_t n = 0; n < rest.size(); ++n) r.volume += m.node_area(int(n) / nt) * rest[n];
+  for (std::size_t i = 0; i < turn.size(); ++i) t.volume += nt * m.node_area(int(i)) * turn[i];
+  r.mean = r.volume / m.area();
+  t.mean = t.volume / m.area();
+  return {r, t};
+}
+
 void WearEffect::report(std::span<const double> u, const AssemblyTotals& totals,
                         std::vector<ReportedValue>& out) const {
   constexpr double um = 1e6, per_hour = 3600.0, mm3 = 1e9;

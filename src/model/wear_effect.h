@@ -57,6 +57,13 @@ class WearEffect final : public EffectAssembler {
   // The depths of state u (m): the face at rest's per node, the turning face's per radial node.
   std::vector<double> rest_depths(std::span<const double> u) const;
   std::vector<double> turn_depths(std::span<const double> u) const;
+  // Each face's wear at state u: its deepest and area-mean depth (m) and the volume worn
+  // off (m³), the exact integral of the bilinear depths (Σ A_a·d_a); the face at rest's
+  // first.
+  struct Worn {
+    double deepest = 0.0, mean = 0.0, volume = 0.0;
+  };
+  std::array<Worn, 2> worn(std::span<const double> u) const;
   Index rest_offset() const { return rest_offset_; }
   Index turn_offset() const { return turn_offset_; }
   // k of the face at rest and of the turning face (m³/(N·m)).

@@ -109,6 +109,12 @@ inline constexpr Range march_tolerance{.low = 1e-10, .high = 1e-3,
 inline constexpr Range cold_start_film{.low = 0.0, .low_open = true, .high = 1e3,
                                        .reason = "h_min/sigma of the cold start, e.g. 3"};
 inline constexpr Range duration{.low = 0.0, .high = 1e7, .reason = "at most 1e7 s of pseudo-time"};
+// A life study (docs/physics.md section 20): a washer's life in slow time, up to a
+// century; its depths to a tolerance between an atom's size and a millimetre.
+inline constexpr Range life_duration{.low = 0.0, .low_open = true, .high = 3.2e9,
+                                     .reason = "a life above 0 and at most a century, e.g. 2000 h"};
+inline constexpr Range depth_tolerance{.low = 1e-10, .high = 1e-3,
+                                       .reason = "an absolute depth from 0.1 nm to 1 mm, e.g. 0.01 um"};
 inline constexpr int kMostRadialNodes = 1025, kMostCircumferentialNodes = 8192, kMostQuadraturePoints = 32;
 inline constexpr int kMostIterations = 100000;
 

@@ -42,7 +42,7 @@ inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start",
                                                    "parameters", "inputs", "probabilities", "monte_carlo",
                                                    "data", "fit", "sd", "max_iterations", "method",
                                                    "schedule", "failure_load_at_worst", "relative_tolerance",
-                                                   "tolerance", "search_past_failure"};
+                                                   "tolerance", "search_past_failure", "report_every"};
 inline constexpr std::string_view kOperatingKeys[] = {"load", "speed", "sliding", "ambient"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 
@@ -52,12 +52,12 @@ inline constexpr EnumNames<ViscosityModel, 2> kViscosityModels{
 inline constexpr EnumNames<FrictionLaw, 2> kFrictionLaws{
     {"empirical", "constant"}, {FrictionLaw::empirical, FrictionLaw::constant}};
 
-inline constexpr EnumNames<StudyType, 10> kStudyTypes{
+inline constexpr EnumNames<StudyType, 11> kStudyTypes{
     {"point", "load_sweep", "distress_map", "transient", "sliding_choice", "distress_curve", "sensitivity",
-     "reliability", "calibration", "duty_cycle"},
+     "reliability", "calibration", "duty_cycle", "life"},
     {StudyType::point, StudyType::load_sweep, StudyType::distress_map, StudyType::transient,
      StudyType::sliding_choice, StudyType::distress_curve, StudyType::sensitivity, StudyType::reliability,
-     StudyType::calibration, StudyType::duty_cycle}};
+     StudyType::calibration, StudyType::duty_cycle, StudyType::life}};
 // A calibration's measured quantities: their names in the scene's `sd` and the data
 // file's header (MeasuredQuantity's order).
 inline constexpr std::string_view kMeasuredNames[] = {"torque", "f_eff", "T_mean", "T_max"};

@@ -67,6 +67,7 @@ StudySettings default_settings(StudyType type) {
     case StudyType::reliability: return ReliabilitySettings{};
     case StudyType::calibration: return CalibrationSettings{};
     case StudyType::duty_cycle: return DutyCycleSettings{};
+    case StudyType::life: return LifeSettings{};
   }
   throw InternalError("default_settings: a study type without its settings");
 }

@@ -194,7 +194,8 @@ IdaTransient::IdaTransient(const SteadySystem& system, TransientSettings setting
   // microseconds; an index-one DAE's algebraic unknowns follow the differential ones
   // through the constraints, so their error needs no test of its own (on the
   // speed-through-zero cycle: 1461 steps instead of 6384).
-  if (settings_.real_time) check_flag(IDASetSuppressAlg(ida_.get(), SUNTRUE), "IDASetSuppressAlg");
+  if (settings_.real_time || !settings_.algebraic_error_test)
+    check_flag(IDASetSuppressAlg(ida_.get(), SUNTRUE), "IDASetSuppressAlg");
   if (settings_.quadrature_count > 0) {
     if (!settings_.quadrature_rates) throw InternalError("IdaTransient: quadratures without their rates");
     quadrature_.reset(N_VNew_Serial(settings_.quadrature_count, ctx_.get()));

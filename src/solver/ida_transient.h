@@ -51,6 +51,11 @@ struct TransientSettings {
   // they read are differential. A pseudo-time transient, which only decides which steady
   // state a step reaches, leaves them off.
   bool real_time = false;
+  // Whether IDA's error test reads the algebraic unknowns too. Off in real time (below),
+  // and where the error that matters is the differential unknowns' alone (a washer's
+  // worn depths in slow time, docs/physics.md section 20), the algebraic ones following
+  // them through the constraints.
+  bool algebraic_error_test = true;
   // Integrals of functions of the state along the march (IDAS's quadratures: the same
   // BDF formula as the state, kept out of the error test, so they are as accurate as the
   // state is): `count` of them, whose rates at (t, u) `rates` writes (the inputs set at t

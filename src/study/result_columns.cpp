@@ -54,6 +54,7 @@ std::string result_columns_json() {
   tables["trajectory"] =
       columns(trajectory_table({reporting}, {parameter}, true, true), trajectory_table({}, {}, false));
   tables["cycle_events"] = columns(cycle_events_table({}), cycle_events_table({}));
+  tables["life"] = columns(life_table({}), life_table({}));
   tables["fields"] = columns(fields_table({}), fields_table({}));
   tables["sensitivity"] = columns(sensitivity_table({}), sensitivity_table({}));
   tables["reliability"] = columns(reliability_table({}), reliability_table({}));

@@ -6,7 +6,7 @@
 namespace twb {
 
 extern const StudyKind kPointStudy, kLoadSweepStudy, kDistressMapStudy, kTransientStudy, kSlidingChoiceStudy,
-    kDistressCurveStudy, kSensitivityStudy, kReliabilityStudy, kCalibrationStudy, kDutyCycleStudy;
+    kDistressCurveStudy, kSensitivityStudy, kReliabilityStudy, kCalibrationStudy, kDutyCycleStudy, kLifeStudy;
 
 const StudyKind& study_kind(StudyType type) {
   switch (type) {
@@ -20,6 +20,7 @@ const StudyKind& study_kind(StudyType type) {
     case StudyType::reliability: return kReliabilityStudy;
     case StudyType::calibration: return kCalibrationStudy;
     case StudyType::duty_cycle: return kDutyCycleStudy;
+    case StudyType::life: return kLifeStudy;
   }
   throw InternalError("a study type without a descriptor");
 }

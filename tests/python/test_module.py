@@ -20,6 +20,7 @@ import twb
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 SCENE = os.path.join(ROOT, "configs", "jackson_green_2006.yaml")
+LIFE = os.path.join(ROOT, "configs", "studies", "life.yaml")
 TWB = os.environ.get("TWB_BINARY", "twb")
 COARSE = {"mesh.radial_nodes": 5, "mesh.circumferential_nodes": 24}
 POINT = {"operating.load": "150 N", "study": {"type": "point"}}
@@ -59,15 +60,15 @@ class CommandComparison(unittest.TestCase):
     of every table, formatted as the CSV file formats it, is the same text, so the
     module's numbers are the command's to the last bit."""
 
-    def compare(self, overrides):
+    def compare(self, overrides, scene=SCENE):
         with tempfile.TemporaryDirectory(prefix="twb_python_") as out:
             # 17 significant digits: each number reads back as the very double the command
             # computed, so equal text is equal bits.
-            args = [TWB, "run", SCENE, "--out", out, "--quiet", "--full-precision"]
+            args = [TWB, "run", scene, "--out", out, "--quiet", "--full-precision"]
             for o in twb.override_texts(overrides):
                 args += ["--set", o]
             subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
-            result = twb.run(SCENE, overrides=overrides, threads=2)
+            result = twb.run(scene, overrides=overrides, threads=2)
             written = sorted(f[:-4] for f in os.listdir(out) if f.endswith(".csv"))
             self.assertEqual(written, sorted(result.tables))
             for name, table in result.tables.items():
@@ -120,6 +121,16 @@ class CommandComparison(unittest.TestCase):
         self.assertEqual([p["speed"] for p in twb.schedule(t=[0, 1], speed="3000 rpm")], ["3000 rpm"] * 2)
         with self.assertRaises(ValueError):
             twb.schedule(t=5, load=[100])
+
+    def test_life_as_its_table(self):
+        """A washer's life (study type life): life.csv as the command writes it, a row at
+        the start and at every reported time, the last saying how the life ended."""
+        result = self.compare(dict(COARSE, study={"type": "life", "duration": "200 h", "report_every": "100 h"}),
+                              scene=LIFE)
+        self.assertEqual(list(result.life["event"]), ["", "", "end"])
+        self.assertEqual(list(result.life["t_h"]), [0.0, 100.0, 200.0])
+        self.assertGreater(result.life["worn_depth_rest_max_um"][-1], 0.0)
+        self.assertEqual(result.states.rows, 3)
 
     def test_duty_cycle_continued_from_its_results(self):
         """A cycle run in two parts, the second continued from the first's Results (and

@@ -202,6 +202,9 @@ inline const std::vector<MalformedCase>& malformed_cases() {
     {"wear_rate_wrong_dimension", 11, 24, {"surfaces.carrier.wear_rate: '1e-16 m^3' has the dimension of volume", "convertible to m^3/(N m)"}},
     {"wear_allowance_through_the_washer", 14, 15, {"limits.wear_depth: '1 mm'", "at most the washer's thickness, 0.635 mm"}},
     {"wear_allowance_without_wear", 11, 15, {"limits.wear_depth: a wear allowance needs the effect 'wear'"}},
+    {"life_without_wear", 11, 9, {"study.type: a life study wears the washer", "add 'wear' to effects"}},
+    {"life_reported_after_its_end", 16, 17, {"study.report_every: '200 h'", "at most the life's duration"}},
+    {"life_without_duration", 14, 3, {"missing required key 'duration' in 'study'"}},
     {"supply_into_grooves_of_the_standing_film", 13, 33, {"lubricant.supply.at: oil supplied at 'both'", "sliding film's face"}},
   };
   return cases;

@@ -83,7 +83,7 @@ TEST(StudySection, ShippedScenesAreWrittenBackAsBefore) {
     expected << in.rdbuf();
     EXPECT_EQ(section, expected.str());
   }
-  EXPECT_EQ(types.size(), 10u);  // point, load_sweep, ..., duty_cycle: each type's writer is checked
+  EXPECT_EQ(types.size(), 11u);  // point, load_sweep, ..., duty_cycle, life: each type's writer is checked
 }
 
 

@@ -18,7 +18,7 @@ namespace twb {
 // friction torque kept (docs/physics.md section 2, the paper's "Component Rotational Speed").
 enum class StudyType {
   point, load_sweep, distress_map, transient, sliding_choice, distress_curve, sensitivity, reliability, calibration,
-  duty_cycle
+  duty_cycle, life
 };
 
 // The optional second axis of a distress map or load sweep (besides speed).
@@ -268,10 +268,20 @@ struct DutyCycleSettings {
   bool operator==(const DutyCycleSettings&) const = default;
 };
 
+// life: the washer worn at the operating point over `duration` in the wear's slow time
+// (docs/physics.md section 20, [W4]), its depths integrated to `tolerance`, the bearing
+// reported every `report_every`.
+struct LifeSettings {
+  double duration = 0.0;         // s
+  double tolerance = 0.01e-6;    // m, IDA's absolute error on every worn depth
+  double report_every = 0.0;     // s; 0: a twentieth of the duration
+  bool operator==(const LifeSettings&) const = default;
+};
+
 // One type's settings, the alternative at its StudyType's index.
 using StudySettings = std::variant<PointSettings, LoadSweepSettings, DistressMapSettings, LoadStepSettings,
                                    SlidingChoiceSettings, DistressCurveSettings, SensitivitySettings,
-                                   ReliabilitySettings, CalibrationSettings, DutyCycleSettings>;
+                                   ReliabilitySettings, CalibrationSettings, DutyCycleSettings, LifeSettings>;
 
 // The settings type of a study type.
 template <StudyType type>
@@ -286,8 +296,9 @@ static_assert(std::is_same_v<SettingsOf<StudyType::sensitivity>, SensitivitySett
 static_assert(std::is_same_v<SettingsOf<StudyType::reliability>, ReliabilitySettings>);
 static_assert(std::is_same_v<SettingsOf<StudyType::calibration>, CalibrationSettings>);
 static_assert(std::is_same_v<SettingsOf<StudyType::duty_cycle>, DutyCycleSettings>);
-// (duty_cycle is the last type: none is without its settings)
-static_assert(std::variant_size_v<StudySettings> == static_cast<std::size_t>(StudyType::duty_cycle) + 1);
+static_assert(std::is_same_v<SettingsOf<StudyType::life>, LifeSettings>);
+// (life is the last type: none is without its settings)
+static_assert(std::variant_size_v<StudySettings> == static_cast<std::size_t>(StudyType::life) + 1);
 
 struct Study {
   // The scene gave its speeds (study.speeds, or operating.speed where the study names

@@ -17,6 +17,7 @@
 #include "twb/results/cycle_table.h"
 #include "twb/results/distress_table.h"
 #include "twb/results/fold_curve_table.h"
+#include "twb/results/life_table.h"
 #include "twb/results/reliability_table.h"
 #include "twb/results/run_timings.h"
 #include "twb/results/sensitivity_table.h"
@@ -66,10 +67,16 @@ struct DutyCycleOutcome {
   std::optional<CycleHeat> heat;   // the heat balance over the march
 };
 
+// life: the washer at every reported time of its slow time, the last row saying how its
+// life ended (the duration, the wear allowance or distress).
+struct LifeOutcome {
+  std::vector<LifeRow> rows;
+};
+
 // The outcome of the type that ran, where it has one of its own (monostate for the
 // others): the alternative its runner made.
 using OwnOutcome = std::variant<std::monostate, SlidingChoiceOutcome, DistressCurveOutcome, SensitivityOutcome,
-                                ReliabilityOutcome, CalibrationOutcome, DutyCycleOutcome>;
+                                ReliabilityOutcome, CalibrationOutcome, DutyCycleOutcome, LifeOutcome>;
 
 struct StudyOutcome {
   std::vector<SolvedState> states;
@@ -99,6 +106,7 @@ struct StudyOutcome {
   const ReliabilityOutcome* reliability() const { return std::get_if<ReliabilityOutcome>(&own); }
   const CalibrationOutcome* calibration() const { return std::get_if<CalibrationOutcome>(&own); }
   const DutyCycleOutcome* duty_cycle() const { return std::get_if<DutyCycleOutcome>(&own); }
+  const LifeOutcome* life() const { return std::get_if<LifeOutcome>(&own); }
 
   // The type's own outcome, for its runner and the code it calls to fill: made empty by
   // the first call (the runner's first step, so that a run that ends early still writes

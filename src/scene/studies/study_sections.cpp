@@ -7,7 +7,7 @@
 namespace twb::scene_io {
 
 extern const StudySection kPointKeys, kLoadSweepKeys, kDistressMapKeys, kTransientKeys, kSlidingChoiceKeys,
-    kDistressCurveKeys, kSensitivityKeys, kReliabilityKeys, kCalibrationKeys, kDutyCycleKeys;
+    kDistressCurveKeys, kSensitivityKeys, kReliabilityKeys, kCalibrationKeys, kDutyCycleKeys, kLifeKeys;
 
 const StudySection& study_section(StudyType type) {
   switch (type) {
@@ -21,6 +21,7 @@ const StudySection& study_section(StudyType type) {
     case StudyType::reliability: return kReliabilityKeys;
     case StudyType::calibration: return kCalibrationKeys;
     case StudyType::duty_cycle: return kDutyCycleKeys;
+    case StudyType::life: return kLifeKeys;
   }
   throw InternalError("a study type without its scene section");
 }

@@ -1,0 +1,38 @@
+// A washer's life (study type life, docs/physics.md section 20), life.csv: the washer as
+// it wears, at every reported time of the slow time,
+//   t_h, worn_depth_rest_max_um, worn_depth_rest_mean_um, worn_volume_rest_mm3,
+//   worn_depth_turn_max_um, worn_depth_turn_mean_um, worn_volume_turn_mm3,
+//   wear_rate_rest_um_h, wear_rate_turn_um_h, torque_Nm, f_eff, T_max_C,
+//   hmin_over_sigma, contact_share, event
+// for the face at rest in the load frame and the turning face of the sliding film (the
+// deepest depth, the area mean and the volume worn off; the fastest rate), and how it
+// ended: "end" (the duration reached), "wear_allowance" (a face reached
+// limits.wear_depth) or "distress" (the steady bearing lost at the operating load: the
+// march cannot go on).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "twb/results/result_table.h"
+
+namespace twb {
+
+// One face's wear at a time: deepest and mean depth (m) and the volume worn off (m³).
+struct FaceWear {
+  double deepest = 0.0, mean = 0.0, volume = 0.0;
+};
+
+struct LifeRow {
+  double time = 0.0;  // s
+  FaceWear rest, turn;
+  double rest_rate = 0.0, turn_rate = 0.0;  // m/s, where each face wears fastest
+  double torque = 0.0, f_eff = 0.0;
+  double max_temperature = 0.0;  // K, the hottest film node
+  double hmin_over_sigma = 0.0, contact_share = 0.0;
+  std::string event;  // empty, or how the life ended there
+};
+
+ResultTable life_table(const std::vector<LifeRow>& rows);
+
+}  // namespace twb

@@ -1,0 +1,194 @@
+#include "study/time/life_march.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "model/wear_effect.h"
+#include "solver/ida_transient.h"
+#include "study/searches/operating_point.h"
+#include "study/study_support.h"
+
+namespace twb {
+namespace {
+
+constexpr double kHour = 3600.0;  // IDA's time in slow time is in hours (the rows' σ_ref per hour)
+
+// The rate of a face as the state reports it (µm/h), in m/s.
+double reported_rate(const BearingState& s, const char* column) {
+  return s.reported_value(column).value_or(0.0) * 1e-6 / kHour;
+}
+
+class LifeMarch {
+ public:
+  LifeMarch(BearingModel& model, StudyOutcome& out, const ProgressReport& progress)
+      : model_(model),
+        out_(out),
+        progress_(progress),
+        settings_(std::get<LifeSettings>(model.scene().study.settings)),
+        wear_(*model.effect<WearEffect>()) {}
+
+  void run(std::vector<double> u);
+
+ private:
+  // Records the washer at state u, time t_h (hours), with how the life ended there: its
+  // state (states.csv) and its row (life.csv), the row from the state described as `s`.
+  void record(std::span<const double> u, double t_h, const std::string& event);
+  void add_row(std::span<const double> u, double t_h, const std::string& event, const BearingState& s);
+  // The state at t_h within IDA's last step, the bearing solved again at its depths
+  // (the interpolated algebraic unknowns only start Newton).
+  std::vector<double> settled_at(const IdaTransient& ida, double t_h) const;
+  double deepest(std::span<const double> u) const {
+    const auto worn = wear_.worn(u);
+    return std::max(worn[0].deepest, worn[1].deepest);
+  }
+  TransientSettings march_settings() const;
+  void summarize(const std::string& ending);
+
+  BearingModel& model_;
+  StudyOutcome& out_;
+  const ProgressReport& progress_;
+  const LifeSettings& settings_;
+  WearEffect& wear_;
+};
+
+// The depths' error is IDA's to control, in σ_ref (the unknowns' scale): the study's
+// tolerance, absolute, and a relative millionth, which a depth of the washer's thickness
+// would still keep below a tenth of a micrometre. The algebraic unknowns follow the depths
+// through the steady equations and are left out of the error test.
+TransientSettings LifeMarch::march_settings() const {
+  TransientSettings t;
+  t.relative_tolerance = 1e-6;
+  t.absolute_tolerances.assign(std::size_t(model_.size()), t.absolute_tolerance);
+  for (const UnknownBlock& b : model_.layout().blocks())
+    if (b.effect == BlockEffect::wear)
+      std::fill(t.absolute_tolerances.begin() + b.offset, t.absolute_tolerances.begin() + b.offset + b.size,
+                settings_.tolerance / model_.clearance_scale());
+  t.algebraic_error_test = false;
+  return t;
+}
+
+void LifeMarch::record(std::span<const double> u, double t_h, const std::string& event) {
+  SolvedState solved = solved_state(model_, u);
+  solved.converged = true;
+  out_.states.push_back(std::move(solved));
+  add_row(u, t_h, event, out_.states.back().state);
+}
+
+void LifeMarch::add_row(std::span<const double> u, double t_h, const std::string& event, const BearingState& s) {
+  const auto worn = wear_.worn(u);
+  LifeRow row;
+  row.time = t_h * kHour;
+  row.rest = {worn[0].deepest, worn[0].mean, worn[0].volume};
+  row.turn = {worn[1].deepest, worn[1].mean, worn[1].volume};
+  row.rest_rate = reported_rate(s, "wear_rate_rest_um_h");
+  row.turn_rate = reported_rate(s, "wear_rate_turn_um_h");
+  row.torque = s.torque;
+  row.f_eff = s.f_eff;
+  row.max_temperature = s.max_film_temperature;
+  row.hmin_over_sigma = s.hmin_over_sigma;
+  row.contact_share = s.contact_share;
+  row.event = event;
+  out_.own_part<LifeOutcome>().rows.push_back(row);
+  if (progress_)
+    progress_(fmt::format("life: {:.6g} h of {:.6g} h, deepest wear {:.4g} um", t_h, settings_.duration / kHour,
+                          1e6 * std::max(row.rest.deepest, row.turn.deepest)));
+}
+
+std::vector<double> LifeMarch::settled_at(const IdaTransient& ida, double t_h) const {
+  std::vector<double> u(std::size_t(model_.size()));
+  if (!ida.state_at(t_h, u)) throw InternalError("life: a time outside IDA's last step");
+  wear_.hold(wear_.rest_depths(u), wear_.turn_depths(u));
+  model_.set_time_scale(TimeScale::heat);
+  std::vector<double> settled = u;
+  const NewtonReport rep = KinsolNewton(model_).solve(settled, newton_settings(model_.scene()));
+  out_.timings.newton_iterations += rep.iterations;
+  model_.set_time_scale(TimeScale::wear);
+  return rep.converged ? settled : u;
+}
+
+void LifeMarch::run(std::vector<double> u) {
+  add_row(u, 0.0, "", out_.states.back().state);  // the new washer, solved and recorded
+  model_.set_time_scale(TimeScale::wear);
+  IdaTransient ida(model_, march_settings());
+  TransientStatus status = ida.start(0.0, u);
+  if (!status.ok) {
+    out_.solver_failed = true;
+    out_.message = "life: the march in slow time did not start: " + status.message;
+    model_.set_time_scale(TimeScale::heat);
+    return;
+  }
+  const double end = settings_.duration / kHour;
+  const double every = (settings_.report_every > 0.0 ? settings_.report_every : settings_.duration / 20.0) / kHour;
+  const std::optional<double> allowance = model_.scene().limits.wear_depth;
+  double next = std::min(every, end), before = 0.0;
+  std::string ending;
+  while (ending.empty()) {
+    status = ida.step(next);
+    if (!status.ok) {
+      // The bearing's steady state lost at the operating load as the faces wore (the fold
+      // come down to it): distress in slow time, between the last step and the one IDA
+      // could not take.
+      record(ida.state(), ida.time(), "distress");
+      ending = fmt::format("ends by distress after {:.6g} h: the steady bearing is lost at the operating load as "
+                           "the faces wear (IDA: {})",
+                           ida.time(), status.flag_name);
+      break;
+    }
+    if (allowance && deepest(ida.state()) >= *allowance) {
+      // The deepest depth grows monotonically within the step: bisection on IDA's
+      // interpolant to a millionth of the step.
+      double low = before, high = ida.time();
+      std::vector<double> at(std::size_t(model_.size()));
+      while (high - low > 1e-6 * (ida.time() - before)) {
+        const double mid = 0.5 * (low + high);
+        ida.state_at(mid, at);
+        (deepest(at) >= *allowance ? high : low) = mid;
+      }
+      record(settled_at(ida, high), high, "wear_allowance");
+      ending = fmt::format("ends at {:.6g} h, where a face reaches the wear allowance of {:.4g} um", high,
+                           1e6 * *allowance);
+      break;
+    }
+    before = ida.time();
+    if (!status.reached_stop) continue;
+    const bool last = next >= end;
+    record(ida.state(), next, last ? "end" : "");
+    if (last) ending = fmt::format("lasts its {:.6g} h", end);
+    next = std::min(next + every, end);
+  }
+  const TransientStatistics stats = ida.statistics();
+  out_.timings.transients += 1;
+  out_.timings.ida_steps += stats.steps;
+  out_.timings.ida_factorizations += stats.linear_setups;
+  model_.set_time_scale(TimeScale::heat);
+  summarize(ending);
+}
+
+void LifeMarch::summarize(const std::string& ending) {
+  const LifeRow& last = out_.own_part<LifeOutcome>().rows.back();
+  out_.message = "life: " + ending;
+  out_.summary.push_back(fmt::format(
+      "life at {:.6g} N: {}; the face at rest worn {:.4g} um deep (mean {:.4g} um, {:.4g} mm^3), the turning face "
+      "{:.4g} um (mean {:.4g} um, {:.4g} mm^3)",
+      model_.load(), ending, 1e6 * last.rest.deepest, 1e6 * last.rest.mean, 1e9 * last.rest.volume,
+      1e6 * last.turn.deepest, 1e6 * last.turn.mean, 1e9 * last.turn.volume));
+}
+
+}  // namespace
+
+void run_life(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
+  out.own_part<LifeOutcome>();  // first: life.csv is written (empty) where the life does not start
+  if (!model.effect<WearEffect>()) throw InternalError("run_life: a life study of a scene without wear");
+  // The new washer's steady state, the depths held at zero: the life's first state.
+  std::vector<double> u;
+  if (!solve_operating_point(model, out, u)) return;
+  LifeMarch(model, out, progress).run(std::move(u));
+}
+
+}  // namespace twb

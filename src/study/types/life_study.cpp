@@ -1,0 +1,14 @@
+// life: the washer worn at its operating point over its life in the wear's slow time
+// (life_march.h).
+#include "study/study_kind.h"
+#include "study/time/life_march.h"
+
+namespace twb {
+
+extern const StudyKind kLifeStudy{
+    .run = [](BearingModel& model, StudyOutcome& out, const StudyRun& run) { run_life(model, out, run.progress); },
+    .add_tables = [](const StudyOutcome& out, std::vector<NamedTable>& tables) {
+      tables.push_back({"life", life_table(std::get<LifeOutcome>(out.own).rows)});
+    }};
+
+}  // namespace twb

@@ -1,0 +1,99 @@
+// A washer's life in the wear's slow time (study type life, docs/physics.md section 20):
+// the disc clutch's uniform wear reached from the new washer's uniform pressure, the
+// wear allowance located where the deepest face reaches it, and the depths' error under
+// IDA's control.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "model/bearing_model.h"
+#include "study/study_runner.h"
+#include "twb/scene/scene_loader.h"
+
+namespace twb {
+namespace {
+
+// The paper's washer with wear (configs/effects/wear.yaml) on a coarse mesh, as a life.
+Scene life_scene(const std::string& study, const std::vector<std::string>& more = {}) {
+  std::vector<std::string> overrides{"mesh.radial_nodes=5", "mesh.circumferential_nodes=24", "study=" + study};
+  overrides.insert(overrides.end(), more.begin(), more.end());
+  return load_scene(std::string(TWB_SOURCE_DIR) + "/configs/effects/wear.yaml", overrides);
+}
+
+const std::vector<LifeRow>& rows_of(const StudyOutcome& out) { return std::get<LifeOutcome>(out.own).rows; }
+
+StudyOutcome lived(const Scene& s) {
+  BearingModel model(s);
+  StudyOutcome out = run_study(model, {});
+  EXPECT_FALSE(out.solver_failed) << out.message;
+  EXPECT_FALSE(rows_of(out).empty());
+  return out;
+}
+
+// A flat washer on its asperities alone (no tilt, no film pressure, a constant friction
+// coefficient): new, it presses uniformly and its friction torque is
+// (2/3)·f·W·(r_o³ − r_i³)/(r_o² − r_i²); worn in, every radius wears at the same rate, so
+// p·r is constant and the torque f·W·(r_o + r_i)/2, the uniform wear of disc clutches
+// (physics §20's check). What else acts: the oil's shear at the least viscosity a scene
+// takes (1e-6 Pa·s) adds about 2e-5 of the torque, and the depths' lumped rates err by
+// O(Δr²), about 5e-6 of it on 5 radial nodes: 5e-5 bounds both.
+TEST(Life, AFlatWasherInContactWearsFromUniformPressureToUniformWear) {
+  const Scene s = life_scene("{type: life, duration: 20 h, tolerance: 0.001 um, report_every: 2 h}",
+                             {"effects=[asperity_contact, wear]", "geometry.gear.tilt=0 mrad",
+                              "friction={law: constant, coefficient: 0.1}",
+                              "lubricant.viscosity={model: constant, value: 1e-6 Pa s}", "operating.load=300 N",
+                              "surfaces.carrier.wear_rate=1e-15 m^3/(N m)", "surfaces.washer.wear_rate=1e-15 m^3/(N m)",
+                              "limits.wear_depth=0.5 mm"});
+  const StudyOutcome out = lived(s);
+  const std::vector<LifeRow>& rows = rows_of(out);
+  const double ri = s.washer.inner_radius, ro = s.washer.outer_radius, fw = 0.1 * s.operating.load;
+  const double uniform_pressure = fw * 2.0 / 3.0 * (ro * ro * ro - ri * ri * ri) / (ro * ro - ri * ri);
+  const double uniform_wear = fw * (ro + ri) / 2.0;
+  EXPECT_NEAR(rows.front().torque, uniform_pressure, 5e-5 * uniform_pressure);
+  EXPECT_NEAR(rows.back().torque, uniform_wear, 5e-5 * uniform_wear);
+  EXPECT_EQ(rows.back().event, "end");
+  // Worn in, the deepest point wears as fast as the mean: the shape no longer changes.
+  const LifeRow& before = rows[rows.size() - 2];
+  const double deepest_rate = (rows.back().rest.deepest - before.rest.deepest);
+  const double mean_rate = (rows.back().rest.mean - before.rest.mean);
+  EXPECT_NEAR(deepest_rate, mean_rate, 1e-6 * mean_rate);
+}
+
+// The life ends where the deepest face reaches limits.wear_depth: located between IDA's
+// steps on its interpolant (to a millionth of the step) and the bearing solved again
+// there, so the deepest depth is the allowance to a millionth of a step's wear.
+TEST(Life, EndsWhereAFaceReachesTheWearAllowance) {
+  const Scene s = life_scene("{type: life, duration: 1000 h, tolerance: 0.001 um}",
+                             {"operating.load=150 N", "limits.wear_depth=0.5 um"});
+  const StudyOutcome out = lived(s);
+  const LifeRow& last = rows_of(out).back();
+  EXPECT_EQ(last.event, "wear_allowance");
+  EXPECT_LT(last.time, 1000 * 3600.0);
+  EXPECT_NEAR(std::max(last.rest.deepest, last.turn.deepest), 0.5e-6, 1e-9);
+  for (std::size_t k = 0; k + 1 < rows_of(out).size(); ++k) EXPECT_LT(rows_of(out)[k].rest.deepest, 0.5e-6);
+  EXPECT_EQ(out.states.size(), rows_of(out).size());
+}
+
+// IDA controls the depths' local error to study.tolerance: the depths at the end of the
+// life are within ten tolerances of a reference a hundred times tighter than the looser
+// run, and a tolerance ten times tighter moves them by several times less (the global
+// error of a variable-order BDF is not exactly proportional to its tolerance: on this
+// life 30 nm at 10 nm, 4 nm at 1 nm). The tilted washer runs in (its rim wears fastest,
+// then slower), so the rate changes by a hundred times over the life.
+TEST(Life, TheDepthsConvergeWithTheirTolerance) {
+  auto depth_at_end = [](const char* tolerance) {
+    const StudyOutcome out =
+        lived(life_scene(std::string("{type: life, duration: 500 h, report_every: 500 h, tolerance: ") + tolerance + "}",
+                         {"operating.load=150 N"}));
+    return rows_of(out).back().rest.deepest;
+  };
+  const double reference = depth_at_end("0.1 nm");
+  const double loose = std::abs(depth_at_end("10 nm") - reference), tight = std::abs(depth_at_end("1 nm") - reference);
+  EXPECT_LT(loose, 10 * 10e-9);
+  EXPECT_LT(tight, loose / 3.0);
+}
+
+}  // namespace
+}  // namespace twb
