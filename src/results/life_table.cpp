@@ -22,7 +22,8 @@ ResultTable life_table(const std::vector<LifeRow>& rows) {
   const auto rest_rate = t.number("wear_rate_rest_um_h"), turn_rate = t.number("wear_rate_turn_um_h");
   const auto torque = t.number("torque_Nm"), f_eff = t.number("f_eff"), t_max = t.number("T_max_C"),
              hmin = t.number("hmin_over_sigma"), contact = t.number("contact_share");
-  const auto event = t.text("event");
+  const auto failure_load = t.number("W_fail_N");
+  const auto failure_criterion = t.text("failure_criterion"), event = t.text("event");
   for (const LifeRow& r : rows) {
     t.put_number(time, r.time / hour);
     for (const auto& [columns, wear] : {std::pair{rest, r.rest}, std::pair{turn, r.turn}}) {
@@ -37,6 +38,8 @@ ResultTable life_table(const std::vector<LifeRow>& rows) {
     t.put_number(t_max, r.max_temperature - kelvin_offset);
     t.put_number(hmin, r.hmin_over_sigma);
     t.put_number(contact, r.contact_share);
+    t.put_number(failure_load, r.failure_load);
+    t.put_text(failure_criterion, r.failure_criterion ? criterion_name(*r.failure_criterion) : std::string());
     t.put_text(event, r.event);
   }
   return t;

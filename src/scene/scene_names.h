@@ -42,7 +42,8 @@ inline constexpr std::string_view kStudyKeys[] = {"type",          "load_start",
                                                    "parameters", "inputs", "probabilities", "monte_carlo",
                                                    "data", "fit", "sd", "max_iterations", "method",
                                                    "schedule", "failure_load_at_worst", "relative_tolerance",
-                                                   "tolerance", "search_past_failure", "report_every"};
+                                                   "tolerance", "search_past_failure", "report_every",
+                                                   "failure_load"};
 inline constexpr std::string_view kOperatingKeys[] = {"load", "speed", "sliding", "ambient"};
 inline constexpr std::string_view kSupplyKeys[] = {"pressure", "at", "temperature", "carry_over"};
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/bearing_model.h"
+#include "study/searches/distress_search.h"
 #include "study/study_runner.h"
 #include "twb/scene/scene_loader.h"
 
@@ -40,7 +41,7 @@ StudyOutcome lived(const Scene& s) {
 // takes (1e-6 Pa·s) adds about 2e-5 of the torque, and the depths' lumped rates err by
 // O(Δr²), about 5e-6 of it on 5 radial nodes: 5e-5 bounds both.
 TEST(Life, AFlatWasherInContactWearsFromUniformPressureToUniformWear) {
-  const Scene s = life_scene("{type: life, duration: 20 h, tolerance: 0.001 um, report_every: 2 h}",
+  const Scene s = life_scene("{type: life, duration: 20 h, tolerance: 0.001 um, report_every: 2 h, failure_load: false}",
                              {"effects=[asperity_contact, wear]", "geometry.gear.tilt=0 mrad",
                               "friction={law: constant, coefficient: 0.1}",
                               "lubricant.viscosity={model: constant, value: 1e-6 Pa s}", "operating.load=300 N",
@@ -65,7 +66,7 @@ TEST(Life, AFlatWasherInContactWearsFromUniformPressureToUniformWear) {
 // steps on its interpolant (to a millionth of the step) and the bearing solved again
 // there, so the deepest depth is the allowance to a millionth of a step's wear.
 TEST(Life, EndsWhereAFaceReachesTheWearAllowance) {
-  const Scene s = life_scene("{type: life, duration: 1000 h, tolerance: 0.001 um}",
+  const Scene s = life_scene("{type: life, duration: 1000 h, tolerance: 0.001 um, failure_load: false}",
                              {"operating.load=150 N", "limits.wear_depth=0.5 um"});
   const StudyOutcome out = lived(s);
   const LifeRow& last = rows_of(out).back();
@@ -85,7 +86,8 @@ TEST(Life, EndsWhereAFaceReachesTheWearAllowance) {
 TEST(Life, TheDepthsConvergeWithTheirTolerance) {
   auto depth_at_end = [](const char* tolerance) {
     const StudyOutcome out =
-        lived(life_scene(std::string("{type: life, duration: 500 h, report_every: 500 h, tolerance: ") + tolerance + "}",
+        lived(life_scene(std::string("{type: life, duration: 500 h, report_every: 500 h, failure_load: false, "
+                                     "tolerance: ") + tolerance + "}",
                          {"operating.load=150 N"}));
     return rows_of(out).back().rest.deepest;
   };
@@ -93,6 +95,33 @@ TEST(Life, TheDepthsConvergeWithTheirTolerance) {
   const double loose = std::abs(depth_at_end("10 nm") - reference), tight = std::abs(depth_at_end("1 nm") - reference);
   EXPECT_LT(loose, 10 * 10e-9);
   EXPECT_LT(tight, loose / 3.0);
+}
+
+// The failure load along the life (study.failure_load): each reported time has its
+// search, distress.csv's row with its time, and the first is the new washer's: a search
+// of the same bearing without the wear effect (the depths held at zero are its gap) finds
+// it too, both located to the search's bracket width, 0.2 %.
+TEST(Life, EachReportedTimeHasItsFailureLoadAndTheFirstIsTheNewWashers) {
+  const StudyOutcome out =
+      lived(life_scene("{type: life, duration: 200 h, report_every: 100 h}", {"operating.load=150 N"}));
+  const std::vector<LifeRow>& rows = rows_of(out);
+  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(out.distress.size(), rows.size());
+  EXPECT_EQ(out.parameter_columns, std::vector<std::string>{"t_h"});
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    ASSERT_TRUE(rows[k].failure_load) << k;
+    EXPECT_EQ(out.distress[k].parameters, std::vector<double>{rows[k].time / 3600.0});
+    EXPECT_EQ(out.distress[k].failure_load, rows[k].failure_load);
+  }
+  BearingModel unworn(load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
+                                 {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24", "operating.load=150 N"}));
+  DistressSearchSettings search;
+  search.load_start = 0.25 * 150.0;
+  search.load_end = 20.0 * 150.0;
+  search.march_past_distress = false;
+  const DistressSearch found = search_distress(unworn, search, {});
+  ASSERT_TRUE(found.row.failure_load);
+  EXPECT_NEAR(*rows.front().failure_load, *found.row.failure_load, 0.002 * *found.row.failure_load);
 }
 
 }  // namespace

@@ -3,17 +3,21 @@
 //   t_h, worn_depth_rest_max_um, worn_depth_rest_mean_um, worn_volume_rest_mm3,
 //   worn_depth_turn_max_um, worn_depth_turn_mean_um, worn_volume_turn_mm3,
 //   wear_rate_rest_um_h, wear_rate_turn_um_h, torque_Nm, f_eff, T_max_C,
-//   hmin_over_sigma, contact_share, event
+//   hmin_over_sigma, contact_share, W_fail_N, failure_criterion, event
 // for the face at rest in the load frame and the turning face of the sliding film (the
-// deepest depth, the area mean and the volume worn off; the fastest rate), and how it
+// deepest depth, the area mean and the volume worn off; the fastest rate), the failure
+// load of the washer worn so far at the operating speed and its criterion (with
+// study.failure_load; its search is distress.csv's row of that time), and how it
 // ended: "end" (the duration reached), "wear_allowance" (a face reached
-// limits.wear_depth) or "distress" (the steady bearing lost at the operating load: the
-// march cannot go on).
+// limits.wear_depth), "failure" (the failure load come down to the operating load) or
+// "distress" (the steady bearing lost at the operating load: the march cannot go on).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "twb/results/distress_table.h"
 #include "twb/results/result_table.h"
 
 namespace twb {
@@ -30,6 +34,8 @@ struct LifeRow {
   double torque = 0.0, f_eff = 0.0;
   double max_temperature = 0.0;  // K, the hottest film node
   double hmin_over_sigma = 0.0, contact_share = 0.0;
+  std::optional<double> failure_load;  // N, W_fail at that time
+  std::optional<FailureCriterion> failure_criterion;
   std::string event;  // empty, or how the life ended there
 };
 

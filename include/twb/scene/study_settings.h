@@ -275,6 +275,9 @@ struct LifeSettings {
   double duration = 0.0;         // s
   double tolerance = 0.01e-6;    // m, IDA's absolute error on every worn depth
   double report_every = 0.0;     // s; 0: a twentieth of the duration
+  // The failure load at every reported time (every criterion, on the scene's mesh: a
+  // search of the worn washer at the operating speed).
+  bool failure_load = true;
   bool operator==(const LifeSettings&) const = default;
 };
 

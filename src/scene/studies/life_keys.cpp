@@ -9,7 +9,7 @@
 namespace twb::scene_io {
 namespace {
 
-constexpr std::string_view kKeys[] = {"type", "duration", "tolerance", "report_every"};
+constexpr std::string_view kKeys[] = {"type", "duration", "tolerance", "report_every", "failure_load"};
 
 void read(const MapReader& study, Scene& out) {
   LifeSettings& s = std::get<LifeSettings>(out.study.settings);
@@ -21,6 +21,7 @@ void read(const MapReader& study, Scene& out) {
   }
   s.duration = study.quantity("duration", si::time, bounds::life_duration);
   s.tolerance = study.quantity("tolerance", si::length, bounds::depth_tolerance, s.tolerance);
+  s.failure_load = study.boolean("failure_load", s.failure_load);
   if (!study.has("report_every")) return;
   const std::string reason = fmt::format("a time above 0 and at most the life's duration, {:g} s", s.duration);
   s.report_every = study.quantity("report_every", si::time,
@@ -32,6 +33,7 @@ void write(SceneText& w, const Study& study) {
   w.entry(1, "duration", quantity(s.duration, "s"), fmt::format("{:g} h", s.duration / 3600.0));
   w.entry(1, "tolerance", quantity(s.tolerance, "m"));
   if (s.report_every > 0.0) w.entry(1, "report_every", quantity(s.report_every, "s"));
+  w.entry(1, "failure_load", s.failure_load ? "true" : "false");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "model/wear_effect.h"
 #include "solver/ida_transient.h"
+#include "study/searches/distress_search.h"
 #include "study/searches/operating_point.h"
 #include "study/study_support.h"
 
@@ -48,7 +49,11 @@ class LifeMarch {
     return std::max(worn[0].deepest, worn[1].deepest);
   }
   TransientSettings march_settings() const;
+  // The failure load of the washer worn to state u (study.failure_load), into the last
+  // row and distress.csv.
+  void failure_at(std::span<const double> u, double t_h);
   void summarize(const std::string& ending);
+  void count_work(const IdaTransient& ida);
 
   BearingModel& model_;
   StudyOutcome& out_;
@@ -76,6 +81,7 @@ TransientSettings LifeMarch::march_settings() const {
 void LifeMarch::record(std::span<const double> u, double t_h, const std::string& event) {
   SolvedState solved = solved_state(model_, u);
   solved.converged = true;
+  if (settings_.failure_load) solved.parameters = {t_h};
   out_.states.push_back(std::move(solved));
   add_row(u, t_h, event, out_.states.back().state);
 }
@@ -100,6 +106,34 @@ void LifeMarch::add_row(std::span<const double> u, double t_h, const std::string
                           1e6 * std::max(row.rest.deepest, row.turn.deepest)));
 }
 
+// A search of the model itself, its depths held at u's on the heat's time scale, from a
+// quarter of the operating load up (a worn washer's refined meshes would not have its
+// depths: the failure load is the scene's mesh's, without an error bar).
+void LifeMarch::failure_at(std::span<const double> u, double t_h) {
+  if (!settings_.failure_load) return;
+  if (progress_) progress_(fmt::format("life: the failure load at {:.6g} h", t_h));
+  wear_.hold(wear_.rest_depths(u), wear_.turn_depths(u));
+  model_.set_time_scale(TimeScale::heat);
+  DistressSearchSettings search;
+  search.load_start = 0.25 * model_.load();
+  search.load_end = 20.0 * model_.load();
+  search.march_past_distress = false;
+  LifeRow& row = out_.own_part<LifeOutcome>().rows.back();
+  try {
+    DistressSearch found = search_distress(model_, search, {});
+    add_search_work(out_.timings, found.counts);
+    found.row.parameters = {t_h};
+    row.failure_load = found.row.failure_load;
+    row.failure_criterion = found.row.criterion;
+    out_.distress.push_back(std::move(found.row));
+  } catch (const InternalError&) {
+    throw;
+  } catch (const std::exception& e) {
+    out_.summary.push_back(fmt::format("life: no failure load at {:.6g} h: {}", t_h, e.what()));
+  }
+  model_.set_time_scale(TimeScale::wear);
+}
+
 std::vector<double> LifeMarch::settled_at(const IdaTransient& ida, double t_h) const {
   std::vector<double> u(std::size_t(model_.size()));
   if (!ida.state_at(t_h, u)) throw InternalError("life: a time outside IDA's last step");
@@ -114,7 +148,10 @@ std::vector<double> LifeMarch::settled_at(const IdaTransient& ida, double t_h) c
 
 void LifeMarch::run(std::vector<double> u) {
   add_row(u, 0.0, "", out_.states.back().state);  // the new washer, solved and recorded
+  if (settings_.failure_load) out_.parameter_columns = {"t_h"};
+  if (settings_.failure_load) out_.states.back().parameters = {0.0};
   model_.set_time_scale(TimeScale::wear);
+  failure_at(u, 0.0);
   IdaTransient ida(model_, march_settings());
   TransientStatus status = ida.start(0.0, u);
   if (!status.ok) {
@@ -150,7 +187,9 @@ void LifeMarch::run(std::vector<double> u) {
         ida.state_at(mid, at);
         (deepest(at) >= *allowance ? high : low) = mid;
       }
-      record(settled_at(ida, high), high, "wear_allowance");
+      const std::vector<double> settled = settled_at(ida, high);
+      record(settled, high, "wear_allowance");
+      failure_at(settled, high);
       ending = fmt::format("ends at {:.6g} h, where a face reaches the wear allowance of {:.4g} um", high,
                            1e6 * *allowance);
       break;
@@ -158,16 +197,39 @@ void LifeMarch::run(std::vector<double> u) {
     before = ida.time();
     if (!status.reached_stop) continue;
     const bool last = next >= end;
-    record(ida.state(), next, last ? "end" : "");
+    const std::vector<double> reached(ida.state().begin(), ida.state().end());
+    record(reached, next, last ? "end" : "");
+    failure_at(reached, next);
+    if (const LifeRow& row = out_.own_part<LifeOutcome>().rows.back();
+        row.failure_load && *row.failure_load <= model_.load()) {
+      out_.own_part<LifeOutcome>().rows.back().event = "failure";
+      ending = fmt::format("ends by {:.6g} h, where its failure load has come down to the operating load", next);
+      break;
+    }
     if (last) ending = fmt::format("lasts its {:.6g} h", end);
+    const double reached_at = next;
     next = std::min(next + every, end);
+    // The search moved the model's inputs and back: IDA starts again from where it was.
+    if (settings_.failure_load && !last) {
+      count_work(ida);
+      status = ida.start(reached_at, reached);
+      if (!status.ok) {
+        out_.solver_failed = true;
+        ending = "stopped: the march in slow time did not start again after a failure search: " + status.message;
+      }
+    }
   }
-  const TransientStatistics stats = ida.statistics();
+  count_work(ida);
   out_.timings.transients += 1;
-  out_.timings.ida_steps += stats.steps;
-  out_.timings.ida_factorizations += stats.linear_setups;
   model_.set_time_scale(TimeScale::heat);
   summarize(ending);
+}
+
+// IDA's counts since its last start (a start sets them to zero).
+void LifeMarch::count_work(const IdaTransient& ida) {
+  const TransientStatistics stats = ida.statistics();
+  out_.timings.ida_steps += stats.steps;
+  out_.timings.ida_factorizations += stats.linear_setups;
 }
 
 void LifeMarch::summarize(const std::string& ending) {
@@ -178,6 +240,13 @@ void LifeMarch::summarize(const std::string& ending) {
       "{:.4g} um (mean {:.4g} um, {:.4g} mm^3)",
       model_.load(), ending, 1e6 * last.rest.deepest, 1e6 * last.rest.mean, 1e9 * last.rest.volume,
       1e6 * last.turn.deepest, 1e6 * last.turn.mean, 1e9 * last.turn.volume));
+  const LifeRow& first = out_.own_part<LifeOutcome>().rows.front();
+  if (first.failure_load && last.failure_load && &first != &last)
+    out_.summary.push_back(fmt::format("life: the failure load went from {:.6g} N by {} new to {:.6g} N by {} at "
+                                       "{:.6g} h (on the scene's mesh)",
+                                       *first.failure_load, criterion_name(*first.failure_criterion),
+                                       *last.failure_load, criterion_name(*last.failure_criterion),
+                                       last.time / kHour));
 }
 
 }  // namespace

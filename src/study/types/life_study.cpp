@@ -8,6 +8,7 @@ namespace twb {
 extern const StudyKind kLifeStudy{
     .run = [](BearingModel& model, StudyOutcome& out, const StudyRun& run) { run_life(model, out, run.progress); },
     .add_tables = [](const StudyOutcome& out, std::vector<NamedTable>& tables) {
+      add_distress_table_if_any(out, tables);  // the failure searches along the life
       tables.push_back({"life", life_table(std::get<LifeOutcome>(out.own).rows)});
     }};
 
