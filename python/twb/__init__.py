@@ -193,7 +193,7 @@ class Scene:
     def run(self, progress=None, threads=0, continue_from=None, out=None, resume=False):
         """Runs the scene's study (see twb.run)."""
         directory = _results_directory(self, out)
-        text, from_directory = _cycle_end(continue_from)
+        text, from_directory = _continued(self, continue_from)
         results = Results(_core().run(self._scene, progress, threads, text, from_directory, directory, resume),
                           self)
         results.directory = directory
@@ -224,7 +224,8 @@ class Table(dict):
 class Results:
     """What a study gives back. Tables (None where the study writes no such file):
     states, distress, trajectory, sliding, fold_curve, sensitivity, reliability, design_point,
-    calibration, calibration_correlation, calibration_points, cycle_events, life; fields: per state, its fields
+    calibration, calibration_correlation, calibration_points, cycle_events, life, worn_profile; fields: per
+    state, its fields
     table (output.fields) or None; summary and limit_notes: the lines twb run prints at
     the end; message, solver_failed; timings: run.json's counts; directory: where twb.run
     wrote them (None where it wrote nothing)."""
@@ -243,6 +244,9 @@ class Results:
         # A duty cycle's end state (cycle_end_state.json's text) where it ran to its end:
         # twb.run(..., continue_from=these results) goes on from it.
         self.cycle_end = raw.get("cycle_end")
+        # The washer a life wore (worn_washer.json's text): twb.run(..., continue_from=these
+        # results) goes on from it, a life from its time, any other study with its depths held.
+        self.worn_washer = raw.get("worn_washer")
 
     states = property(lambda self: self.tables.get("states"))
     distress = property(lambda self: self.tables.get("distress"))
@@ -257,6 +261,7 @@ class Results:
     calibration_points = property(lambda self: self.tables.get("calibration_points"))
     cycle_events = property(lambda self: self.tables.get("cycle_events"))
     life = property(lambda self: self.tables.get("life"))
+    worn_profile = property(lambda self: self.tables.get("worn_profile"))
 
     def __repr__(self):
         parts = ", ".join(f"{name}: {table.rows} rows" for name, table in self.tables.items())
@@ -303,9 +308,11 @@ def run(scene, overrides=None, progress=None, threads=0, continue_from=None, out
     scene: a path or a twb.Scene; overrides: as for twb.Scene (applied after the
     scene's own); progress: called with each progress line twb run would print (from
     the solving threads, one at a time); threads: for the study's independent searches,
-    0 = one per core (the results do not depend on it); continue_from: a duty cycle goes
-    on from where an earlier one ended, its Results or its results directory (as twb run
-    --continue-from; the schedule's first point must be that end's time and inputs); out:
+    0 = one per core (the results do not depend on it); continue_from: an earlier run's
+    Results or results directory to go on from (as twb run --continue-from): a duty cycle
+    from where the earlier cycle ended (the schedule's first point must be that end's time
+    and inputs), any other study from the washer an earlier life wore (a life from its
+    time to study.duration, the others with its depths held); out:
     the results directory, written as twb run writes it (the tables, fields, run.json;
     twb.plot draws from it): None for the scene's output.directory, as twb run, a path
     for another, False for none (Results.directory says which, or None); the directory is
@@ -334,15 +341,20 @@ def _results_directory(scene, out):
     return os.fspath(out)
 
 
-def _cycle_end(continue_from):
-    """A duty cycle's end state to go on from: its JSON text (of Results) or the results
-    directory that holds it (which twb's core reads and checks as twb run --continue-from
-    does), as (text, directory); (None, None) for none."""
+def _continued(scene, continue_from):
+    """What a run goes on from: a duty cycle's end state, or the washer a life wore, as the
+    JSON text of Results or the results directory that holds it (which twb's core reads
+    and checks as twb run --continue-from does), as (text, directory); (None, None) for none."""
     if continue_from is None:
         return None, None
     if isinstance(continue_from, Results):
-        if continue_from.cycle_end is None:
-            raise ValueError("continue_from: these results hold no cycle's end (not a duty cycle, "
-                             "or one that did not run to its end)")
-        return continue_from.cycle_end, None
+        if scene.study_type == "duty_cycle" and continue_from.worn_washer is None:
+            if continue_from.cycle_end is None:
+                raise ValueError("continue_from: these results hold no cycle's end (not a duty cycle, "
+                                 "or one that did not run to its end)")
+            return continue_from.cycle_end, None
+        if continue_from.worn_washer is None:
+            raise ValueError("continue_from: these results hold no worn washer (not a life study); a "
+                             f"{scene.study_type} study goes on from the washer a life wore")
+        return continue_from.worn_washer, None
     return None, os.fspath(continue_from)

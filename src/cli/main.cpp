@@ -152,8 +152,11 @@ twb::ProgressReport progress_lines(bool quiet, const std::string& prefix = {}) {
 
 // Another rank of an MPI job: the same scene and model, its share of the searches, no files.
 int run_as_worker(const RunRequest& r, const twb::cli::MpiJob& job) {
-  const twb::Scene scene = twb::load_scene(r.path, r.overrides);
+  twb::Scene scene = twb::load_scene(r.path, r.overrides);
   if (!twb::spreads_over_ranks(scene.study)) return 0;  // rank 0 runs such a study alone
+  // The same worn washer as rank 0's (a duty cycle, which would take an end state, runs
+  // on rank 0 alone).
+  if (!r.continue_from.empty()) twb::continue_from(scene, r.continue_from, {}, "--continue-from");
   twb::Bearing bearing(scene);
   twb::cli::MpiScheduler scheduler(job);
   bearing.run_study(progress_lines(r.quiet || !r.verbose, fmt::format("twb[rank {}]: ", job.rank())),
@@ -163,7 +166,7 @@ int run_as_worker(const RunRequest& r, const twb::cli::MpiJob& job) {
 
 int run(RunRequest r, const twb::cli::MpiJob& job) {
   if (job.rank() != 0) return run_as_worker(r, job);
-  const twb::Scene scene = twb::load_scene(r.path, r.overrides);
+  twb::Scene scene = twb::load_scene(r.path, r.overrides);
   print_warnings(scene, std::cerr);
   std::optional<twb::SliceScheduler> slice;
   if (!r.slice.empty()) {
@@ -181,8 +184,12 @@ int run(RunRequest r, const twb::cli::MpiJob& job) {
   }
   if (r.out_dir.empty()) r.out_dir = scene.output.directory;
   std::optional<twb::CycleState> cycle_start;
-  if (!r.continue_from.empty())
-    cycle_start = twb::cycle_to_continue(scene.study, r.continue_from, r.out_dir, "--continue-from");
+  if (!r.continue_from.empty()) cycle_start = twb::continue_from(scene, r.continue_from, r.out_dir, "--continue-from");
+  // (`twb merge` reads the scene back from the slices' journal, which holds the scene's
+  // file, not the washer it was worn to)
+  if (slice && scene.worn)
+    throw std::invalid_argument("--slice with --continue-from a worn washer: its slices cannot be merged yet; run "
+                                "the study whole (threads or MPI ranks share its searches)");
   // Before any work: a directory this run cannot write into, or one another run is
   // writing into, is the user's to fix now, not after the study.
   const twb::ResultsDirectory results(r.out_dir);
@@ -273,8 +280,10 @@ int main(int argc, char** argv) {
                       "(under mpirun: one per rank). The results are the same for any number")
       ->check(CLI::NonNegativeNumber);
   run_cmd->add_option("--continue-from", request.continue_from,
-                      "DIR: a duty cycle goes on from where the one whose results are in DIR ended (its "
-                      "cycle_end_state.json): the schedule's first point must be that end's time and inputs");
+                      "DIR: go on from an earlier run's results in DIR. A duty cycle goes on from where the cycle "
+                      "there ended (its cycle_end_state.json: the schedule's first point must be that end's time "
+                      "and inputs); any other study from the washer a life study there wore (worn_washer.json): a "
+                      "life goes on from its time to study.duration, every other study holds its worn depths");
   run_cmd->add_flag("--resume", request.resume,
                     "finish a run that was killed: the searches it finished are read from the results directory's "
                     "journal, the others run (the same scene and --set values)");

@@ -9,6 +9,8 @@
 
 #include "model/assembly_totals.h"
 #include "model/bearing_model.h"
+#include "model/grid_map.h"
+#include "twb/scene/worn_washer.h"
 #include "twb/error_family.h"
 
 namespace twb {
@@ -61,7 +63,24 @@ WearEffect::WearEffect(ModelSetup& setup) : model_(setup.model) {
                                   f.mesh.radial_nodes());
   held_rest_.assign(std::size_t(f.mesh.node_count()), 0.0);
   held_turn_.assign(std::size_t(f.mesh.radial_nodes()), 0.0);
+  if (scene.worn) hold_worn(*scene.worn, f.mesh);
   setup.gap_parts.push_back(std::make_unique<WornFaces>(f.number, rest_offset_, turn_offset_));
+}
+
+// The worn washer's grid spans this film's annulus (set_worn_washer checked it): its
+// depths interpolated onto this mesh, held.
+void WearEffect::hold_worn(const WornWasher& worn, const FilmMesh& m) {
+  const int nr = m.radial_nodes(), nt = m.circumferential_nodes();
+  const GridMap map{worn.radial_nodes, worn.circumferential_nodes, nr, nt};
+  const GridMap radial{worn.radial_nodes, 1, nr, 1};
+  const double scale = model_.clearance_scale();
+  for (int i = 0; i < nr; ++i) {
+    for (int j = 0; j < nt; ++j)
+      held_rest_[std::size_t(i * nt + j)] =
+          map.at(i, j, [&](int a, int b) { return worn.rest[std::size_t(a * worn.circumferential_nodes + b)]; }) /
+          scale;
+    held_turn_[std::size_t(i)] = radial.at(i, 0, [&](int a, int) { return worn.turn[std::size_t(a)]; }) / scale;
+  }
 }
 
 const Film& WearEffect::film() const { return model_.films()[film_index_]; }
@@ -178,6 +197,19 @@ std::array<WearEffect::Worn, 2> WearEffect::worn(std::span<const double> u) cons
   r.mean = r.volume / m.area();
   t.mean = t.volume / m.area();
   return {r, t};
+}
+
+WornWasher WearEffect::worn_washer(std::span<const double> u, double time) const {
+  const Film& f = film();
+  return WornWasher{.time = time,
+                    .film = f.number,
+                    .inner_radius = f.mesh.inner_radius(),
+                    .outer_radius = f.mesh.outer_radius(),
+                    .radial_nodes = f.mesh.radial_nodes(),
+                    .circumferential_nodes = f.mesh.circumferential_nodes(),
+                    .rest = rest_depths(u),
+                    .turn = turn_depths(u),
+                    .source = {}};
 }
 
 void WearEffect::report(std::span<const double> u, const AssemblyTotals& totals,

@@ -22,6 +22,8 @@
 namespace twb {
 
 struct FilmTotals;
+struct WornWasher;
+class FilmMesh;
 
 class WearEffect final : public EffectAssembler {
  public:
@@ -64,6 +66,8 @@ class WearEffect final : public EffectAssembler {
     double deepest = 0.0, mean = 0.0, volume = 0.0;
   };
   std::array<Worn, 2> worn(std::span<const double> u) const;
+  // The washer worn to state u at `time` (s) of its life, on this mesh's grid.
+  WornWasher worn_washer(std::span<const double> u, double time) const;
   Index rest_offset() const { return rest_offset_; }
   Index turn_offset() const { return turn_offset_; }
   // k of the face at rest and of the turning face (m³/(N·m)).
@@ -72,6 +76,7 @@ class WearEffect final : public EffectAssembler {
 
  private:
   const Film& film() const;
+  void hold_worn(const WornWasher& worn, const FilmMesh& mesh);
   // Adds weight × the rates [W1]-[W2] in σ_ref per hour to the depth rows, with their
   // derivatives through the film's friction power (its rigid and shape slopes).
   void add_rates(const FilmTotals& sliding, double weight, Assembler& a) const;

@@ -139,20 +139,25 @@ class ProgressRelay {
 };
 
 // continue_from: a duty cycle's end state to go on from, as its text (cycle_end_state.json's,
-// of a Results) or the results directory that holds it; directory: the results directory
+// of a Results), or for any other study the washer a life wore (worn_washer.json's), or
+// the results directory that holds either; directory: the results directory
 // to run into as `twb run` does (none: nothing written; claimed before the model is built;
 // not written where the progress callback raised or Ctrl-C stopped the study, whose
 // finished searches its journal keeps); resume: keep the searches a killed run journaled
 // there (twb run --resume).
-py::dict run_scene(const twb::Scene& scene, py::object progress, int threads,
+py::dict run_scene(const twb::Scene& given, py::object progress, int threads,
                    std::optional<std::string> continue_from_text, std::optional<std::string> continue_from,
                    std::optional<std::string> directory, bool resume) {
+  twb::Scene scene = given;
   std::optional<twb::CycleState> cycle_start;
-  if (continue_from_text) {
-    twb::check_continuable(scene.study, "continue_from");
+  // (The text of a Results: a duty cycle's end state where the Results have one, else a
+  // worn washer; twb.run picks.)
+  if (continue_from_text && continue_from_text->find("twb-cycle-state") != std::string::npos) {
     cycle_start = twb::cycle_state_of(*continue_from_text, "continue_from");
+  } else if (continue_from_text) {
+    twb::set_worn_washer(scene, twb::worn_washer_of(*continue_from_text, "the worn washer"), "continue_from");
   } else if (continue_from) {
-    cycle_start = twb::cycle_to_continue(scene.study, *continue_from, directory.value_or(""), "continue_from");
+    cycle_start = twb::continue_from(scene, *continue_from, directory.value_or(""), "continue_from");
   }
   if (resume && !directory) throw std::invalid_argument("resume=True needs out=DIR: the directory whose journal to resume");
   // Before the directory is claimed (and an earlier run's files in it removed).
@@ -200,6 +205,9 @@ py::dict run_scene(const twb::Scene& scene, py::object progress, int threads,
   out["timings"] = timings_dict(outcome.timings);
   const twb::DutyCycleOutcome* cycle = outcome.duty_cycle();
   out["cycle_end"] = cycle && cycle->end ? py::object(py::str(twb::cycle_state_json(*cycle->end))) : py::none();
+  const twb::LifeOutcome* life = outcome.life();
+  out["worn_washer"] = life && !life->worn.empty() ? py::object(py::str(twb::worn_washer_json(life->worn.back())))
+                                                   : py::none();
   return out;
 }
 

@@ -25,7 +25,7 @@ void remove_earlier_run(const fs::path& dir) {
   for (const char* name : {"run.json", "states.csv", "distress.csv", "sliding.csv", "fold_curve.csv", "trajectory.csv",
                            "sensitivity.csv", "reliability.csv", "design_point.csv", "calibration.csv",
                            "calibration_correlation.csv", "calibration_points.csv", "cycle_events.csv",
-                           "cycle_end_state.json", "life.csv"})
+                           "cycle_end_state.json", "life.csv", "worn_profile.csv", "worn_washer.json"})
     fs::remove(dir / name);
   static const std::regex field_file(R"(state_[0-9]{4,}\.csv)");
   static const std::regex figure_file(R"(.+\.(png|svg|pdf))");

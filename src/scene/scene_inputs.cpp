@@ -102,10 +102,16 @@ Scene with_inputs(const Scene& scene, std::span<const std::pair<std::string, dou
     if (std::optional<std::string> companion = roughness_companion(scene, path, value, values))
       overrides.push_back(std::move(*companion));
   }
-  if (!keep_study) return load_scene_text(scene.written, scene.source, overrides);
-  overrides.push_back("study={type: point}");
+  if (keep_study) overrides.push_back("study={type: point}");
   Scene out = load_scene_text(scene.written, scene.source, overrides);
-  out.study = scene.study;
+  if (keep_study) out.study = scene.study;
+  out.worn = scene.worn;
+  return out;
+}
+
+Scene bearing_scene(const Scene& scene) {
+  Scene out = load_scene_text(scene.written, scene.source, {"study={type: point}"});
+  out.worn = scene.worn;
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include "scene_names.h"
 #include "scene_text.h"
 #include "studies/study_section.h"
+#include "twb/scene/worn_washer.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {
@@ -189,6 +190,9 @@ std::string describe_scene(const Scene& scene) {
   SceneText w;
   w.line(0, "# The resolved scene: every default filled in, every value in SI.");
   if (!scene.source.empty()) w.line(0, fmt::format("# Read from {}", scene.source));
+  if (scene.worn)
+    w.line(0, fmt::format("# The washer as a life wore it: {:.6g} h ({}), its depths held", scene.worn->time / 3600.0,
+                          scene.worn->source));
   write_effects(w, scene.effects);
   write_geometry(w, scene);
   write_materials(w, scene);

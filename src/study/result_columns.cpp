@@ -8,6 +8,7 @@
 #include "study/searches/distress_curve.h"
 #include "study/searches/study_searches.h"
 #include "twb/results/fields_table.h"
+#include "twb/results/worn_washer.h"
 #include "twb/scene/scene_loader.h"
 #include "twb/study/study_outcome.h"
 
@@ -55,6 +56,7 @@ std::string result_columns_json() {
       columns(trajectory_table({reporting}, {parameter}, true, true), trajectory_table({}, {}, false));
   tables["cycle_events"] = columns(cycle_events_table({}), cycle_events_table({}));
   tables["life"] = columns(life_table({}), life_table({}));
+  tables["worn_profile"] = columns(worn_profile_table({}), worn_profile_table({}));
   tables["fields"] = columns(fields_table({}), fields_table({}));
   tables["sensitivity"] = columns(sensitivity_table({}), sensitivity_table({}));
   tables["reliability"] = columns(reliability_table({}), reliability_table({}));

@@ -4,6 +4,7 @@
 #include "results/run_record.h"
 #include "twb/results/cycle_state.h"
 #include "twb/results/fields_table.h"
+#include "twb/results/worn_washer.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {
@@ -19,6 +20,11 @@ void write_study_results(const std::filesystem::path& dir, const std::string& sc
     write_file_atomically(dir / "cycle_end_state.json", cycle_state_json(*cycle->end));
   else
     std::filesystem::remove(dir / "cycle_end_state.json");
+  // The washer a life wore, for a life to go on or another study of it (--continue-from).
+  if (const LifeOutcome* life = outcome.life(); life && !life->worn.empty())
+    write_file_atomically(dir / "worn_washer.json", worn_washer_json(life->worn.back()));
+  else
+    std::filesystem::remove(dir / "worn_washer.json");
   const std::string verdict = outcome.solver_failed ? "solver failure: " + outcome.message
                                                     : (outcome.message.empty() ? "ok" : outcome.message);
   write_file_atomically(dir / "run.json",

@@ -132,6 +132,36 @@ class CommandComparison(unittest.TestCase):
         self.assertGreater(result.life["worn_depth_rest_max_um"][-1], 0.0)
         self.assertEqual(result.states.rows, 3)
 
+    def test_life_continued_and_its_worn_washer_studied(self):
+        """A life run in two parts, the second continued from the first's Results (and from
+        the command's results directory), ends where the whole life ends (tests/study/
+        life_test.cpp: to far below its tolerance); a point study of the worn washer holds
+        the depths the life ended with."""
+        def life(hours):
+            return dict(COARSE, study={"type": "life", "duration": f"{hours} h", "report_every": "100 h",
+                                       "tolerance": "1 nm", "failure_load": False})
+
+        whole = twb.run(LIFE, overrides=life(200), out=False)
+        part = twb.run(LIFE, overrides=life(100), out=False)
+        self.assertIsNotNone(part.worn_washer)
+        self.assertEqual(part.worn_profile.rows, 2 * 5 * 24)
+        rest = twb.run(LIFE, overrides=life(200), continue_from=part, out=False)
+        self.assertEqual(list(rest.life["t_h"]), [100.0, 200.0])
+        deepest = "worn_depth_rest_max_um"
+        # The whole life's IDA goes on at 100 h where the continued one starts again: they
+        # differ by the march's error, measured at about 4 tolerances (life_test.cpp); 10 nm.
+        self.assertAlmostEqual(rest.life[deepest][-1], whole.life[deepest][-1], delta=0.01)
+        with tempfile.TemporaryDirectory(prefix="twb_python_") as out:
+            args = [TWB, "run", LIFE, "--out", out, "--quiet"]
+            for o in twb.override_texts(life(100)):
+                args += ["--set", o]
+            subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
+            point = twb.run(LIFE, overrides=dict(COARSE, study={"type": "point"}), continue_from=out, out=False)
+            self.assertAlmostEqual(point.states["worn_depth_rest_um"][-1], part.life[deepest][-1], delta=1e-9)
+        with self.assertRaises(ValueError):  # a point study's results hold no worn washer
+            twb.run(LIFE, overrides=dict(COARSE, study={"type": "point"}),
+                    continue_from=twb.run(LIFE, overrides=dict(COARSE, study={"type": "point"}), out=False))
+
     def test_duty_cycle_continued_from_its_results(self):
         """A cycle run in two parts, the second continued from the first's Results (and
         from the command's results directory), ends as the whole cycle does, to the last bit

@@ -930,6 +930,44 @@ class TwbPlotTest(unittest.TestCase):
         self.assertEqual(broken.returncode, 2)
         self.assertIn("cycle_events.csv: line 3", broken.stderr)
 
+    def test_life_figure(self):
+        """life.csv and worn_profile.csv of a life study: the depths and the failure load
+        against time, the face at rest's map and the turning face's profiles; a failure
+        load not searched is drawn as a gap; a malformed row is located."""
+        d = self.results_dir("life")
+        header = ("t_h,worn_depth_rest_max_um,worn_depth_rest_mean_um,worn_volume_rest_mm3,worn_depth_turn_max_um,"
+                  "worn_depth_turn_mean_um,worn_volume_turn_mm3,wear_rate_rest_um_h,wear_rate_turn_um_h,torque_Nm,"
+                  "f_eff,T_max_C,hmin_over_sigma,contact_share,W_fail_N,failure_criterion,event")
+        rows = [header]
+        for k in range(3):
+            fail = "" if k == 1 else f"{190 + 10 * k}"
+            rows.append(f"{100 * k},{0.5 * k},{0.01 * k},{0.001 * k},{0.05 * k},{0.01 * k},{0.001 * k},0.01,0.001,"
+                        f"0.04,0.03,35,5,0.001,{fail},{'distress' if fail else ''},{'end' if k == 2 else ''}")
+        profile = ["t_h,r_m,theta_rad,worn_rest_um,worn_turn_um"]
+        for k in range(3):
+            for i in range(3):
+                for j in range(4):
+                    profile.append(f"{100 * k},{0.0055 + 0.003 * i},{1.5707963267948966 * j},{0.1 * k * i * (j == 0)},"
+                                   f"{0.02 * k * i}")
+        write(os.path.join(d, "life.csv"), rows)
+        write(os.path.join(d, "worn_profile.csv"), profile)
+        result = plot(d, "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        out_dir = os.path.join(d, "figures")
+        self.assert_figures(out_dir, ("life",), formats=("svg",))
+        text = self.svg_text(os.path.join(out_dir, "life.svg"))
+        for label in ("face at rest, deepest", "turning face, mean", "failure load", "200 h: lasts its duration",
+                      "face at rest, worn at 200 h"):
+            self.assertIn(label, text)
+        read = tp.read_life(os.path.join(d, "life.csv"))
+        self.assertEqual([r["event"] for r in read], ["", "", "end"])
+        self.assertIsNone(read[1]["W_fail_N"])
+        self.assertEqual(tp.read_worn_profile(os.path.join(d, "worn_profile.csv"))["r_m"].size, 36)
+        write(os.path.join(d, "life.csv"), rows[:2] + ["oops" + rows[2][1:]])
+        broken = plot(d, "--format", "svg")
+        self.assertEqual(broken.returncode, 2)
+        self.assertIn("life.csv: line 3", broken.stderr)
+
     def write_calibration(self, d, calibration=None, correlation=None, points=None):
         """A calibration study's three tables, by default those of a real run (two inputs
         fitted to torques and a mean temperature, a relative fit: no readings' sd)."""

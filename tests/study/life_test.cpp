@@ -5,13 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
 #include "model/bearing_model.h"
 #include "study/searches/distress_search.h"
 #include "study/study_runner.h"
+#include "twb/results/worn_washer.h"
 #include "twb/scene/scene_loader.h"
+#include "twb/study/study_outcome.h"
 
 namespace twb {
 namespace {
@@ -122,6 +125,82 @@ TEST(Life, EachReportedTimeHasItsFailureLoadAndTheFirstIsTheNewWashers) {
   const DistressSearch found = search_distress(unworn, search, {});
   ASSERT_TRUE(found.row.failure_load);
   EXPECT_NEAR(*rows.front().failure_load, *found.row.failure_load, 0.002 * *found.row.failure_load);
+}
+
+// Archard's worn volume is the contact's friction work times k (physics §20): each face's
+// worn volume at the end of the life equals the integral over the life of the volume rate
+// its states report, k·∫P_c dt, P_c the contact's friction power. The flat washer in
+// contact of the test above, wearing a hundred times slower, so that its friction power
+// moves from uniform pressure to uniform wear (by 4 %) over about an hour (the paper's
+// washer runs in within minutes, faster than reported times can follow). The integral by the trapezoid rule over the reported
+// times, every quarter and every half hour, extrapolated (Richardson, the rule's error
+// O(Δt²) removed): the extrapolation errs by far less than the finer rule's own error
+// estimate, |T_¼ − T_½|/3, which bounds it here; IDA's error in the volume adds, at most the depths'
+// global error (measured at about four tolerances: TheDepthsConvergeWithTheirTolerance)
+// over the whole film's area.
+TEST(Life, EachFacesWornVolumeIsTheIntegralOfItsContactsFrictionPower) {
+  const Scene s = life_scene("{type: life, duration: 10 h, tolerance: 0.1 nm, report_every: 0.25 h, failure_load: false}",
+                             {"effects=[asperity_contact, wear]", "geometry.gear.tilt=0 mrad",
+                              "friction={law: constant, coefficient: 0.1}",
+                              "lubricant.viscosity={model: constant, value: 1e-6 Pa s}", "operating.load=300 N",
+                              "surfaces.carrier.wear_rate=1e-17 m^3/(N m)", "surfaces.washer.wear_rate=2e-17 m^3/(N m)",
+                              "limits.wear_depth=0.5 mm"});
+  const double ida_error = 4.0 * 0.1e-9 * std::numbers::pi *
+                           (s.washer.outer_radius * s.washer.outer_radius - s.washer.inner_radius * s.washer.inner_radius);
+  const StudyOutcome out = lived(s);
+  const std::vector<LifeRow>& rows = rows_of(out);
+  ASSERT_EQ(rows.size(), 41u);
+  ASSERT_EQ(out.states.size(), rows.size());
+  EXPECT_EQ(rows.back().event, "end");
+  for (const char* face : {"rest", "turn"}) {
+    const std::string column = std::string("wear_volume_rate_") + face + "_mm3_h";
+    std::vector<double> rate;  // m³/h
+    for (const SolvedState& s : out.states) rate.push_back(1e-9 * s.state.reported_value(column).value_or(NAN));
+    auto trapezoid = [&](std::size_t stride) {
+      double sum = 0.0;
+      for (std::size_t k = 0; k + stride < rate.size(); k += stride)
+        sum += 0.5 * (rate[k] + rate[k + stride]) * (rows[k + stride].time - rows[k].time) / 3600.0;
+      return sum;
+    };
+    const double fine = trapezoid(1), coarse = trapezoid(2), extrapolated = (4.0 * fine - coarse) / 3.0;
+    const double volume = std::string(face) == "rest" ? rows.back().rest.volume : rows.back().turn.volume;
+    ASSERT_GT(volume, 0.0);
+    EXPECT_NEAR(extrapolated, volume, std::abs(fine - coarse) / 3.0 + ida_error) << face;
+    EXPECT_LT(std::abs(fine - coarse), 0.01 * volume) << face;  // the rule resolves the life
+  }
+}
+
+// A life split in two (twb run --continue-from) ends where the whole does. With
+// study.failure_load, IDA starts again at every reported time in the whole life too, from
+// the state it reached; the continued life starts from the bearing solved with the same
+// depths (read back exactly), whose other unknowns agree with IDA's state to Newton's
+// tolerance (1e-10 of their scales), and IDA's steps after that point are the same: the
+// depths at the end agree to far below the life's tolerance (1 nm), the failure loads
+// to the searches' bracket (0.2 %; both searches are of the same washer and should agree
+// much closer).
+TEST(Life, AContinuedLifeEndsWhereTheWholeDoes) {
+  const StudyOutcome whole = lived(life_scene("{type: life, duration: 200 h, report_every: 100 h, tolerance: 1 nm}",
+                                              {"operating.load=150 N"}));
+  const StudyOutcome first = lived(life_scene("{type: life, duration: 100 h, report_every: 100 h, tolerance: 1 nm}",
+                                              {"operating.load=150 N"}));
+  Scene rest = life_scene("{type: life, duration: 200 h, report_every: 100 h, tolerance: 1 nm}",
+                          {"operating.load=150 N"});
+  const std::vector<WornWasher>& worn = std::get<LifeOutcome>(first.own).worn;
+  ASSERT_EQ(worn.size(), rows_of(first).size());
+  set_worn_washer(rest, worn_washer_of(worn_washer_json(worn.back()), "the first part"), "the test");
+  const StudyOutcome second = lived(rest);
+  ASSERT_EQ(rows_of(second).size(), 2u);
+  EXPECT_EQ(rows_of(second).front().time, 100 * 3600.0);
+  const LifeRow &a = rows_of(whole).back(), &b = rows_of(second).back();
+  EXPECT_EQ(b.time, a.time);
+  EXPECT_EQ(b.event, "end");
+  EXPECT_NEAR(b.rest.deepest, a.rest.deepest, 1e-3 * 1e-9);
+  EXPECT_NEAR(b.turn.deepest, a.turn.deepest, 1e-3 * 1e-9);
+  EXPECT_NEAR(b.rest.volume, a.rest.volume, 1e-6 * a.rest.volume);
+  ASSERT_TRUE(a.failure_load && b.failure_load);
+  EXPECT_NEAR(*b.failure_load, *a.failure_load, 0.002 * *a.failure_load);
+  // The worn profile at every reported time, the last the washer the life ends with.
+  EXPECT_EQ(std::get<LifeOutcome>(second.own).worn.back().time, b.time);
 }
 
 }  // namespace

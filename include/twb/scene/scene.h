@@ -4,11 +4,16 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "twb/scene/study_settings.h"
+
+namespace twb {
+struct WornWasher;  // twb/scene/worn_washer.h
+}
 
 namespace twb {
 
@@ -292,6 +297,11 @@ struct Scene {
   SolverSettings solver;
   Study study;
   Output output;
+  // The washer as a life wore it (twb run --continue-from DIR; docs/scenes.md, "A worn
+  // washer"): its depths held in every study, a life going on from its time. Not part of
+  // the scene's file: the scenes read again with an input changed keep it (with_inputs).
+  // Null: a new washer.
+  std::shared_ptr<const WornWasher> worn;
   // What is legal but doubtful in the scene (e.g. a profile's band too narrow for
   // McCool's relations): said by `twb check` and `twb run`, never an error.
   std::vector<std::string> warnings;

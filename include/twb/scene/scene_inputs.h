@@ -40,6 +40,11 @@ SceneInput scene_input(const Scene& scene, const std::string& path);
 Scene with_inputs(const Scene& scene, std::span<const std::pair<std::string, double>> values,
                   bool keep_study = false);
 
+// The scene read again from Scene::written as a point study: the bearing alone, whose
+// copies at other inputs read it again without a study to check round the moved inputs.
+// Both keep the scene's worn washer (Scene::worn).
+Scene bearing_scene(const Scene& scene);
+
 // The override text that sets an input: "geometry.gear.tilt=0.001 rad".
 std::string input_override(const std::string& path, double value, std::string_view unit);
 

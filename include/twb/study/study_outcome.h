@@ -24,6 +24,7 @@
 #include "twb/results/sliding_table.h"
 #include "twb/results/states_table.h"
 #include "twb/results/trajectory_table.h"
+#include "twb/results/worn_washer.h"
 #include "twb/scene/scene.h"
 
 namespace twb {
@@ -71,6 +72,8 @@ struct DutyCycleOutcome {
 // life ended (the duration, the wear allowance or distress).
 struct LifeOutcome {
   std::vector<LifeRow> rows;
+  // The washer at each row's time (worn_profile.csv); the last is worn_washer.json.
+  std::vector<WornWasher> worn;
 };
 
 // The outcome of the type that ran, where it has one of its own (monostate for the
@@ -177,5 +180,19 @@ void check_continuable(const Study& study, std::string_view asked_by);
 // would replace the one it starts from), and for a directory without an end state.
 CycleState cycle_to_continue(const Study& study, const std::string& from, const std::string& out,
                              std::string_view asked_by);
+// Where a run goes on from when asked by a results directory (twb run --continue-from DIR,
+// twb.run(continue_from=DIR), named by `asked_by`): a duty cycle from the end state an
+// earlier cycle wrote into `from` (cycle_to_continue, returned); any study, a duty cycle
+// too, from the washer a life wore (`from`/worn_washer.json, set as scene.worn by
+// set_worn_washer): a life goes on from its time, every other study holds its depths. std::invalid_argument
+// where `from` holds neither, is `out` itself (the results it starts from would be
+// replaced), or its washer does not fit the scene.
+std::optional<CycleState> continue_from(Scene& scene, const std::string& from, const std::string& out,
+                                        std::string_view asked_by);
+// Sets scene.worn, checked: the scene has the wear effect (the depths are its unknowns)
+// and slides on the film the washer was worn in, of the same annulus (its mesh may
+// differ: the depths are interpolated). std::invalid_argument naming `asked_by` and
+// where the washer was read from otherwise.
+void set_worn_washer(Scene& scene, WornWasher worn, std::string_view asked_by);
 
 }  // namespace twb

@@ -1,7 +1,7 @@
 """Figures of twb results in the layout of Jackson & Green (2006), Figs. 6-15, and of the
 solver's own: the distress map (and a grid's small multiples), the fold curve, the
-transient, the sliding choice, the studies' sensitivity, reliability, calibration and duty
-cycle, and
+transient, the sliding choice, the studies' sensitivity, reliability, calibration, duty
+cycle and life, and
 polar maps of a state's fields (docs/figures.md).
 
 The plotting part of the twb Python module. It reads results directories only, with
@@ -28,12 +28,12 @@ from .runs import Data, Run, merge, read_run  # noqa: E402
 from .tables import (DistressRow, InputError, fields_path, read_calibration,  # noqa: E402
                      read_calibration_correlation, read_calibration_points, read_cycle, read_cycle_events,
                      read_design_point, read_distress,
-                     read_fields, read_fold_curve, read_reliability, read_sensitivity, read_sliding,
-                     read_states, read_trajectory)
+                     read_fields, read_fold_curve, read_life, read_reliability, read_sensitivity, read_sliding,
+                     read_states, read_trajectory, read_worn_profile)
 
 __all__ = [
     "Data", "DistressRow", "InputError", "Run", "default_state", "fields_path", "main",
     "make_field_maps", "make_figures", "merge", "read_calibration", "read_calibration_correlation",
     "read_calibration_points", "read_cycle", "read_cycle_events", "read_design_point", "read_distress", "read_fields",
-    "read_fold_curve", "read_reliability", "read_run", "read_sensitivity", "read_sliding", "read_states", "read_trajectory", "select_fields",
+    "read_fold_curve", "read_life", "read_reliability", "read_run", "read_sensitivity", "read_sliding", "read_states", "read_trajectory", "read_worn_profile", "select_fields",
 ]

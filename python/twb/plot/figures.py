@@ -6,6 +6,7 @@ import sys
 
 from .calibration import figure_calibration
 from .cycle import figure_cycle
+from .life import figure_life
 from .distress import figure_distress_grid, figure_distress_map, figure_fold_curve, grid_rows
 from .reliability import figure_failure_probability
 from .sensitivity import figure_tornado
@@ -72,6 +73,7 @@ def make_figures(data, out_dir, formats):
         (data.calibrations, "calibration", figure_calibration,
          "calibration_points.csv has no measured value to draw"),
         (data.cycles, "duty_cycle", figure_cycle, "trajectory.csv has no step of the cycle to draw"),
+        (data.lives, "life", figure_life, "life.csv has no row to draw"),
     )
     for runs, base, draw, nothing in studies:
         for k, (name, *tables) in enumerate(runs):

@@ -13,7 +13,7 @@ import numpy as np
 from .style import Style, axis_label, parameter_label, show_speeds_in_rpm, speed_key, speed_label
 from .tables import (SLIDING_LABELS, STATE_COLUMNS, InputError, read_calibration, read_calibration_correlation,
                      read_calibration_points, read_cycle, read_cycle_events, read_design_point, read_distress,
-                     read_fold_curve,
+                     read_fold_curve, read_life, read_worn_profile,
                      read_reliability, read_sensitivity, read_sliding, read_states, read_trajectory,
                      run_axes, STATE_ERROR_COLUMNS)
 
@@ -73,6 +73,8 @@ class Run:
     calibration_points: list = field(default_factory=list)  # rows of calibration_points.csv
     cycle: object = None  # a duty cycle's trajectory.csv columns
     cycle_events: list = field(default_factory=list)  # rows of cycle_events.csv
+    life: list = field(default_factory=list)  # rows of life.csv
+    worn_profile: object = None  # worn_profile.csv's columns
 
 
 def read_run(directory):
@@ -96,6 +98,12 @@ def read_run(directory):
             run.cycle = read_cycle(trajectory_path)
     elif os.path.isfile(trajectory_path):
         run.trajectory, run.trajectory_tags = read_trajectory(trajectory_path)
+    life_path = os.path.join(directory, "life.csv")
+    if os.path.isfile(life_path):
+        run.life = read_life(life_path)
+        profile_path = os.path.join(directory, "worn_profile.csv")
+        if os.path.isfile(profile_path):
+            run.worn_profile = read_worn_profile(profile_path)
     sliding_path = os.path.join(directory, "sliding.csv")
     if os.path.isfile(sliding_path):
         run.sliding = read_sliding(sliding_path)
@@ -148,6 +156,8 @@ class Data:
     # (run name, rows of calibration.csv, rows of calibration_points.csv)
     calibrations: list = field(default_factory=list)
     cycles: list = field(default_factory=list)  # (run name, trajectory columns, rows of cycle_events.csv)
+    # (run name, rows of life.csv, worn_profile.csv's columns or None, the operating load or None)
+    lives: list = field(default_factory=list)
     rpm: bool = False       # speeds drawn in rpm
 
 
@@ -218,5 +228,8 @@ def merge(runs, rpm=None):
     data.calibrations = [(r.name, r.calibration, r.calibration_points) for r in runs
                          if r.calibration or r.calibration_points]
     data.cycles = [(r.name, r.cycle, r.cycle_events) for r in runs if r.cycle is not None]
+    # (a life's states are the bearing at its operating load)
+    data.lives = [(r.name, r.life, r.worn_profile, r.states["load_N"][0] if r.states["load_N"].size else None)
+                  for r in runs if r.life]
     data.rpm = rpm
     return data

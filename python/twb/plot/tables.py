@@ -66,6 +66,10 @@ CYCLE_COLUMNS = _written("trajectory", (
     "t_s", "load_N", "speed_rad_s", "ambient_C", "T_mean_C", "T_max_C", "hmin_over_sigma", "least_margin"))
 CYCLE_EVENT_COLUMNS = tuple(_TABLES["cycle_events"]["columns"])
 CYCLE_EVENT_TEXTS = tuple(_TABLES["cycle_events"]["texts"])
+# A life study's life.csv and worn_profile.csv.
+LIFE_COLUMNS = tuple(_TABLES["life"]["columns"])
+LIFE_TEXTS = tuple(_TABLES["life"]["texts"])
+WORN_PROFILE_COLUMNS = tuple(_TABLES["worn_profile"]["columns"])
 RELIABILITY_COLUMNS = tuple(_TABLES["reliability"]["columns"])
 RELIABILITY_TEXTS = tuple(_TABLES["reliability"]["texts"])
 DESIGN_POINT_COLUMNS = tuple(_TABLES["design_point"]["columns"])
@@ -368,6 +372,19 @@ def read_cycle_events(path):
     worst, end); a value an event does not have (a crossing's failure load) None."""
     return _read_rows(path, CYCLE_EVENT_COLUMNS, CYCLE_EVENT_TEXTS, "cycle_events.csv",
                       lambda c: c in ("margin", "failure_load_N"))
+
+
+def read_life(path):
+    """life.csv: one dict per reported time; the failure load None where it was not
+    searched (study.failure_load: false) or not found."""
+    return _read_rows(path, LIFE_COLUMNS, LIFE_TEXTS, "life.csv", lambda c: c == "W_fail_N")
+
+
+def read_worn_profile(path):
+    """worn_profile.csv: its columns as float arrays, one row per node of the sliding film
+    at each reported time."""
+    columns, _ = _read_table(path, WORN_PROFILE_COLUMNS, "worn_profile.csv")
+    return columns
 
 
 def read_reliability(path):

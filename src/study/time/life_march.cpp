@@ -101,6 +101,7 @@ void LifeMarch::add_row(std::span<const double> u, double t_h, const std::string
   row.contact_share = s.contact_share;
   row.event = event;
   out_.own_part<LifeOutcome>().rows.push_back(row);
+  out_.own_part<LifeOutcome>().worn.push_back(wear_.worn_washer(u, row.time));
   if (progress_)
     progress_(fmt::format("life: {:.6g} h of {:.6g} h, deepest wear {:.4g} um", t_h, settings_.duration / kHour,
                           1e6 * std::max(row.rest.deepest, row.turn.deepest)));
@@ -147,13 +148,15 @@ std::vector<double> LifeMarch::settled_at(const IdaTransient& ida, double t_h) c
 }
 
 void LifeMarch::run(std::vector<double> u) {
-  add_row(u, 0.0, "", out_.states.back().state);  // the new washer, solved and recorded
+  // A new washer, or the washer an earlier life wore (--continue-from), from its time on.
+  const double start = model_.scene().worn ? model_.scene().worn->time / kHour : 0.0;
+  add_row(u, start, "", out_.states.back().state);  // solved and recorded
   if (settings_.failure_load) out_.parameter_columns = {"t_h"};
-  if (settings_.failure_load) out_.states.back().parameters = {0.0};
+  if (settings_.failure_load) out_.states.back().parameters = {start};
   model_.set_time_scale(TimeScale::wear);
-  failure_at(u, 0.0);
+  failure_at(u, start);
   IdaTransient ida(model_, march_settings());
-  TransientStatus status = ida.start(0.0, u);
+  TransientStatus status = ida.start(start, u);
   if (!status.ok) {
     out_.solver_failed = true;
     out_.message = "life: the march in slow time did not start: " + status.message;
@@ -163,7 +166,8 @@ void LifeMarch::run(std::vector<double> u) {
   const double end = settings_.duration / kHour;
   const double every = (settings_.report_every > 0.0 ? settings_.report_every : settings_.duration / 20.0) / kHour;
   const std::optional<double> allowance = model_.scene().limits.wear_depth;
-  double next = std::min(every, end), before = 0.0;
+  // Reported at whole multiples of report_every, a continued life's as the whole one's.
+  double next = std::min(end, every * (std::floor(start / every + 1e-9) + 1.0)), before = start;
   std::string ending;
   while (ending.empty()) {
     status = ida.step(next);
@@ -242,11 +246,11 @@ void LifeMarch::summarize(const std::string& ending) {
       1e6 * last.turn.deepest, 1e6 * last.turn.mean, 1e9 * last.turn.volume));
   const LifeRow& first = out_.own_part<LifeOutcome>().rows.front();
   if (first.failure_load && last.failure_load && &first != &last)
-    out_.summary.push_back(fmt::format("life: the failure load went from {:.6g} N by {} new to {:.6g} N by {} at "
+    out_.summary.push_back(fmt::format("life: the washer fails at {:.6g} N by {} at {:.6g} h{}, at {:.6g} N by {} at "
                                        "{:.6g} h (on the scene's mesh)",
                                        *first.failure_load, criterion_name(*first.failure_criterion),
-                                       *last.failure_load, criterion_name(*last.failure_criterion),
-                                       last.time / kHour));
+                                       first.time / kHour, first.time > 0.0 ? "" : " (new)", *last.failure_load,
+                                       criterion_name(*last.failure_criterion), last.time / kHour));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@ extern const StudyKind kLifeStudy{
     .add_tables = [](const StudyOutcome& out, std::vector<NamedTable>& tables) {
       add_distress_table_if_any(out, tables);  // the failure searches along the life
       tables.push_back({"life", life_table(std::get<LifeOutcome>(out.own).rows)});
+      tables.push_back({"worn_profile", worn_profile_table(std::get<LifeOutcome>(out.own).worn)});
     }};
 
 }  // namespace twb

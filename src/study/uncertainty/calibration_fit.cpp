@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "twb/scene/scene_inputs.h"
 #include "twb/scene/scene_loader.h"
 
 namespace twb {
@@ -65,7 +66,7 @@ bool CalibrationSteps::fit() {
     scale_[j] = std::max(std::abs(f.start), 1e-3 * (f.upper - f.lower));
     x_[j] = f.start / scale_[j];
   }
-  response_.emplace(load_scene_text(scene_.written, scene_.source, {"study={type: point}"}), study_.fitted,
+  response_.emplace(bearing_scene(scene_), study_.fitted,
                     study_.measurements, threads_);
   cost_ = new MeasurementsCost(*response_, readings_, scale_, study_.fitted);
   problem_.AddResidualBlock(cost_, nullptr, x_.data());

@@ -97,7 +97,7 @@ FailureLoadAtInputs::FailureLoadAtInputs(const Scene& scene, std::vector<std::st
                                          DistressSearchSettings search, int threads)
     // The bearing's scene without its study: every bearing at other inputs reads it again,
     // and a study read again would check its own inputs round the moved ones.
-    : scene_(load_scene_text(scene.written, scene.source, {"study={type: point}"})),
+    : scene_(bearing_scene(scene)),
       paths_(std::move(paths)),
       scales_(std::move(scales)),
       search_(std::move(search)),
