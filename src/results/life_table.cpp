@@ -9,7 +9,7 @@ using cells::kelvin_offset;
 ResultTable life_table(const std::vector<LifeRow>& rows) {
   constexpr double um = 1e6, mm3 = 1e9, hour = 3600.0;
   ResultTable t;
-  const auto time = t.number("t_h");
+  const auto time = t.number(kLifeTimeColumn);
   struct Face {
     ResultTable::Column deepest, mean, volume;
   };

@@ -69,6 +69,7 @@ std::string result_columns_json() {
   for (MapParameter p : {MapParameter::friction_coefficient, MapParameter::gear_tilt, MapParameter::roughness,
                          MapParameter::groove_count, MapParameter::groove_width, MapParameter::groove_depth})
     run_parameters.push_back(parameter_column(p));
+  run_parameters.push_back(kLifeTimeColumn);  // a life's states and searches, by its time
   Json curve_parameters = Json::array();
   for (CurveParameter p : {CurveParameter::speed, CurveParameter::friction_coefficient, CurveParameter::gear_tilt,
                            CurveParameter::ambient_temperature, CurveParameter::viscosity_scale,

@@ -956,7 +956,7 @@ class TwbPlotTest(unittest.TestCase):
         out_dir = os.path.join(d, "figures")
         self.assert_figures(out_dir, ("life",), formats=("svg",))
         text = self.svg_text(os.path.join(out_dir, "life.svg"))
-        for label in ("face at rest, deepest", "turning face, mean", "failure load", "200 h: lasts its duration",
+        for label in ("face at rest, deepest", "turning face, mean", "failure load", "the life ends at 200 h: lasts its duration",
                       "face at rest, worn at 200 h"):
             self.assertIn(label, text)
         read = tp.read_life(os.path.join(d, "life.csv"))

@@ -22,6 +22,10 @@
 
 namespace twb {
 
+// The time column of life.csv, and the parameter column (run_axes.h) of a life's states
+// and failure searches.
+inline constexpr const char* kLifeTimeColumn = "t_h";
+
 // One face's wear at a time: deepest and mean depth (m) and the volume worn off (m³).
 struct FaceWear {
   double deepest = 0.0, mean = 0.0, volume = 0.0;

@@ -29,6 +29,7 @@ PARAMETER_FORMATS = {
     "groove_count": "{:g} grooves",
     "groove_width_rad": "grooves {:.3g} rad wide",
     "groove_depth_m": "grooves {:g} m deep",
+    "t_h": "worn {:g} h",
 }
 
 

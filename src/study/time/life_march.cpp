@@ -151,7 +151,7 @@ void LifeMarch::run(std::vector<double> u) {
   // A new washer, or the washer an earlier life wore (--continue-from), from its time on.
   const double start = model_.scene().worn ? model_.scene().worn->time / kHour : 0.0;
   add_row(u, start, "", out_.states.back().state);  // solved and recorded
-  if (settings_.failure_load) out_.parameter_columns = {"t_h"};
+  if (settings_.failure_load) out_.parameter_columns = {kLifeTimeColumn};
   if (settings_.failure_load) out_.states.back().parameters = {start};
   model_.set_time_scale(TimeScale::wear);
   failure_at(u, start);
