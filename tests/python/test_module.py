@@ -134,8 +134,8 @@ class CommandComparison(unittest.TestCase):
 
     def test_life_continued_and_its_worn_washer_studied(self):
         """A life run in two parts, the second continued from the first's Results (and from
-        the command's results directory), ends where the whole life ends (tests/study/
-        life_test.cpp: to far below its tolerance); a point study of the worn washer holds
+        the command's results directory), ends where the whole life ends (to its tolerance);
+        a point study of the worn washer holds
         the depths the life ended with."""
         def life(hours):
             return dict(COARSE, study={"type": "life", "duration": f"{hours} h", "report_every": "100 h",
@@ -148,9 +148,9 @@ class CommandComparison(unittest.TestCase):
         rest = twb.run(LIFE, overrides=life(200), continue_from=part, out=False)
         self.assertEqual(list(rest.life["t_h"]), [100.0, 200.0])
         deepest = "worn_depth_rest_max_um"
-        # The whole life's IDA goes on at 100 h where the continued one starts again: they
-        # differ by the march's error, measured at about 4 tolerances (life_test.cpp); 10 nm.
-        self.assertAlmostEqual(rest.life[deepest][-1], whole.life[deepest][-1], delta=0.01)
+        # The whole life's IDA goes on at 100 h where the continued one starts afresh: each
+        # within its tolerance (1 nm) of the true depth, so within two of each other.
+        self.assertAlmostEqual(rest.life[deepest][-1], whole.life[deepest][-1], delta=0.002)
         with tempfile.TemporaryDirectory(prefix="twb_python_") as out:
             args = [TWB, "run", LIFE, "--out", out, "--quiet"]
             for o in twb.override_texts(life(100)):
