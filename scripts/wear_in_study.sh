@@ -1,20 +1,21 @@
 #!/bin/sh
 # The wear-in study of docs/validation.md ("Wear-in: what running in does to the failure
-# load"): the paper's washer with wear (configs/studies/life.yaml: 545 rad/s, 150 N, k =
-# 1.4e-17 m^3/(N m) on both faces) run in for 2000 h at each of six gear tilts, each life
-# searching the failure load (every criterion) new and worn on 9x66; then at the paper's
-# tilt (2 mrad) the distress load with its error bar, new and worn (a load sweep of
-# configs/effects/wear.yaml, --continue-from that life).
+# load"): the paper's washer with wear (configs/studies/life.yaml: 545 rad/s, k = 1.4e-17
+# m^3/(N m) on both faces) new, its failure load (every criterion) against the gear's tilt
+# (a distress map of configs/effects/wear.yaml); then at each tilt run in for 2000 h at
+# three quarters of that failure load, each life searching the failure load again when
+# worn; then at the paper's tilt (2 mrad, run in at the scene's 150 N) the distress load
+# with its error bar, new and worn (load sweeps, --continue-from that life).
 #
 #   scripts/wear_in_study.sh [--twb PATH] [--out DIR]
 #
 #   --twb PATH   the twb binary (default: build-rel/twb, else build/twb)
 #   --out DIR    where results go (default: results/wear_in)
 #
-# Writes DIR/life_<tilt>/ (life.csv, worn_profile.csv, ...), DIR/new_sweep/,
-# DIR/worn_sweep/ and DIR/summary.csv (tilt, W_fail new and worn and their criteria, the
-# deepest depth of each face). About a minute on one core. Exit status: 0 every run
-# succeeded; 1 a run failed (see DIR/<run>.log); 2 bad usage.
+# Writes DIR/new_map/, DIR/life_<tilt>/ (life.csv, worn_profile.csv, ...), DIR/life_paper/,
+# DIR/new_sweep/, DIR/worn_sweep/ and DIR/summary.csv (tilt, the load run in at, W_fail new
+# and worn and their criteria, each face's deepest depth). About two minutes on one core.
+# Exit status: 0 every run succeeded; 1 a run failed (see DIR/<run>.log); 2 bad usage.
 set -u
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -22,24 +23,36 @@ twb=""
 out="results/wear_in"
 
 . "$root/scripts/find_twb.sh"
-study_options wear_in_study.sh 9,12 "$@"
+study_options wear_in_study.sh 10,13 "$@"
 
 mkdir -p "$out"
 status=0
+tilts="0.25 0.5 1 2 4 8"
+echo "wear_in_study.sh: the new washer's failure load against the tilt" >&2
+"$twb" run "$root/configs/effects/wear.yaml" --quiet --out "$out/new_map" \
+  --set "study={type: distress_map, speeds: [545 rad/s], load_start: 10 N, load_end: 2000 N, error_estimate: none,
+         parameter: {name: geometry.gear.tilt, values: [$(echo $tilts | sed 's/ / mrad, /g') mrad]}}" \
+  > "$out/new_map.log" 2>&1 || status=1
 summary="$out/summary.csv"
-echo "tilt_mrad,W_fail_new_N,criterion_new,W_fail_worn_N,criterion_worn,worn_rest_um,worn_turn_um" > "$summary"
-for tilt in 0.25 0.5 1 2 4 8; do
-  echo "wear_in_study.sh: life at $tilt mrad" >&2
+echo "tilt_mrad,load_N,W_fail_new_N,criterion_new,W_fail_worn_N,criterion_worn,worn_rest_um,worn_turn_um" > "$summary"
+for tilt in $tilts; do
+  # distress.csv: speed, the tilt (rad), W_fail_N, criterion, ...
+  load=$(awk -F, -v t="$tilt" 'NR > 1 && sprintf("%.6g", 1000 * $2) == sprintf("%.6g", t) { printf "%.4g", 0.75 * $3 }' \
+    "$out/new_map/distress.csv")
+  [ -n "$load" ] || { status=1; continue; }
+  echo "wear_in_study.sh: life at $tilt mrad, $load N" >&2
   run="$out/life_$tilt"
   "$twb" run "$root/configs/studies/life.yaml" --quiet --out "$run" --set "geometry.gear.tilt=$tilt mrad" \
-    --set "study.report_every=2000 h" > "$out/life_$tilt.log" 2>&1 || status=1
-  # life.csv: t_h, rest max, ..., turn max (5th), ..., W_fail_N (15th), failure_criterion (16th)
-  awk -F, -v tilt="$tilt" 'NR == 2 { wn = $15; cn = $16 } NR > 2 { ww = $15; cw = $16; r = $2; t = $5 }
-    END { printf "%s,%s,%s,%s,%s,%s,%s\n", tilt, wn, cn, ww, cw, r, t }' "$run/life.csv" >> "$summary" || status=1
+    --set "operating.load=$load N" --set "study.report_every=2000 h" > "$out/life_$tilt.log" 2>&1 || status=1
+  # life.csv: t_h, rest max (2), ..., turn max (5), ..., W_fail_N (15), failure_criterion (16)
+  awk -F, -v tilt="$tilt" -v load="$load" 'NR == 2 { wn = $15; cn = $16 } NR > 2 { ww = $15; cw = $16; r = $2; t = $5 }
+    END { printf "%s,%s,%s,%s,%s,%s,%s,%s\n", tilt, load, wn, cn, ww, cw, r, t }' "$run/life.csv" >> "$summary" \
+    || status=1
 done
-echo "wear_in_study.sh: the distress load new and worn in at 2 mrad" >&2
+echo "wear_in_study.sh: the distress load new and run in at 150 N, 2 mrad" >&2
+"$twb" run "$root/configs/studies/life.yaml" --quiet --out "$out/life_paper" > "$out/life_paper.log" 2>&1 || status=1
 "$twb" run "$root/configs/effects/wear.yaml" --quiet --out "$out/new_sweep" > "$out/new_sweep.log" 2>&1 || status=1
-"$twb" run "$root/configs/effects/wear.yaml" --quiet --out "$out/worn_sweep" --continue-from "$out/life_2" \
+"$twb" run "$root/configs/effects/wear.yaml" --quiet --out "$out/worn_sweep" --continue-from "$out/life_paper" \
   > "$out/worn_sweep.log" 2>&1 || status=1
 cat "$summary"
 exit $status

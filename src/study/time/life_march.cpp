@@ -52,6 +52,8 @@ class LifeMarch {
   // The state at t_h within IDA's last step, the bearing solved again at its depths
   // (the interpolated algebraic unknowns only start Newton).
   std::vector<double> settled_at(const IdaTransient& ida, double t_h) const;
+  // The steady bearing at state u's depths, Newton from u; none where it finds none.
+  std::optional<std::vector<double>> steady_at_depths(std::span<const double> u) const;
   double deepest(std::span<const double> u) const {
     const auto worn = wear_.worn(u);
     return std::max(worn[0].deepest, worn[1].deepest);
@@ -166,13 +168,19 @@ void LifeMarch::failure_at(std::span<const double> u, double t_h) {
 std::vector<double> LifeMarch::settled_at(const IdaTransient& ida, double t_h) const {
   std::vector<double> u(std::size_t(model_.size()));
   if (!ida.state_at(t_h, u)) throw InternalError("life: a time outside IDA's last step");
+  std::optional<std::vector<double>> settled = steady_at_depths(u);
+  return settled ? std::move(*settled) : u;
+}
+
+std::optional<std::vector<double>> LifeMarch::steady_at_depths(std::span<const double> u) const {
   wear_.hold(wear_.rest_depths(u), wear_.turn_depths(u));
   model_.set_time_scale(TimeScale::heat);
-  std::vector<double> settled = u;
+  std::vector<double> settled(u.begin(), u.end());
   const NewtonReport rep = KinsolNewton(model_).solve(settled, newton_settings(model_.scene()));
   out_.timings.newton_iterations += rep.iterations;
   model_.set_time_scale(TimeScale::wear);
-  return rep.converged ? settled : u;
+  if (!rep.converged) return std::nullopt;
+  return settled;
 }
 
 void LifeMarch::run(std::vector<double> u) {
@@ -204,12 +212,26 @@ void LifeMarch::run(std::vector<double> u) {
   // Reported at whole multiples of report_every, a continued life's as the whole one's.
   double next = std::min(end, every * (std::floor(start / every + 1e-9) + 1.0)), before = start;
   std::string ending;
+  int fresh_starts = 0;  // IDA started afresh where it last stopped, since it last got on
+  double stopped_at = -1.0;
   while (ending.empty()) {
     status = ida.step(next);
     if (!status.ok) {
-      // The bearing's steady state lost at the operating load as the faces wore (the fold
-      // come down to it): distress in slow time, between the last step and the one IDA
-      // could not take.
+      // IDA could not go on. Where the steady bearing is lost at the operating load as
+      // the faces wore (the fold come down to it), Newton finds no state at the depths
+      // IDA reached: distress in slow time, between its last step and the one it could
+      // not take. Where Newton finds one, IDA's trouble was its own (its Newton iterations
+      // with an old Jacobian across a cavitation boundary): it starts afresh there, up to
+      // three times at one place, and a fourth failure there is taken as the fold's.
+      fresh_starts = ida.time() > stopped_at ? 0 : fresh_starts;
+      stopped_at = ida.time();
+      if (fresh_starts < 3) {
+        if (std::optional<std::vector<double>> steady = steady_at_depths(ida.state())) {
+          ++fresh_starts;
+          count_work(ida);
+          if (ida.start(stopped_at, *steady).ok) continue;
+        }
+      }
       record(ida.state(), ida.time(), "distress");
       ending = fmt::format("ends by distress after {:.6g} h: the steady bearing is lost at the operating load as "
                            "the faces wear (IDA: {})",
