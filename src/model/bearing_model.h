@@ -137,6 +137,9 @@ class BearingModel final : public SegregatedSystem {
   bool resolves_grooves_on(int radial_nodes, int circumferential_nodes) const;
 
   BearingState describe(std::span<const double> u) const;
+  // What an assembly at state u gathers into `totals` (each film's forces and powers per
+  // node, assembly_totals.h), for a study that needs a film's per node.
+  void gather_totals(std::span<const double> u, AssemblyTotals& totals) const;
   // The fields of state u on every film's grid, film 1 first (film_fields.cpp).
   std::vector<FilmFields> fields(std::span<const double> u) const;
 

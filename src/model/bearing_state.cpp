@@ -41,6 +41,12 @@ BodiesHeat bodies_heat(const std::vector<ComponentHeat>& components, std::span<c
 
 }  // namespace
 
+void BearingModel::gather_totals(std::span<const double> u, AssemblyTotals& totals) const {
+  std::vector<double> residual(size());
+  Assembler a(&pattern_, residual, {});
+  assemble(u, a, &totals);
+}
+
 BearingState BearingModel::describe(std::span<const double> u) const {
   std::vector<double> residual(size());
   Assembler a(&pattern_, residual, {});

@@ -169,6 +169,12 @@ WearEffect::Rates WearEffect::rates(const FilmTotals& sliding) const {
   return r;
 }
 
+WearEffect::Rates WearEffect::rates_at(std::span<const double> u) const {
+  AssemblyTotals totals;
+  model_.gather_totals(u, totals);
+  return rates(totals.film[film_index_]);
+}
+
 std::array<double, 2> WearEffect::volume_rates(const FilmTotals& sliding) const {
   const double power = std::accumulate(sliding.contact_power.begin(), sliding.contact_power.end(), 0.0);
   return {k_rest_ * power, k_turn_ * power};

@@ -53,6 +53,8 @@ class WearEffect final : public EffectAssembler {
     std::vector<double> rest, turn;
   };
   Rates rates(const FilmTotals& sliding) const;
+  // The same at state u (an assembly of the model).
+  Rates rates_at(std::span<const double> u) const;
   // The worn volume per second of each face, k·∫ p_c·|V| dA (m³/s).
   std::array<double, 2> volume_rates(const FilmTotals& sliding) const;
 

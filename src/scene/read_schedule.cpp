@@ -287,14 +287,13 @@ std::vector<SchedulePoint> schedule_in_file(const std::string& path, const Scene
 
 }  // namespace
 
-void read_schedule(const MapReader& scene, Scene& out) {
-  DutyCycleSettings& s = std::get<DutyCycleSettings>(out.study.settings);
+Node read_schedule_into(const MapReader& scene, Scene& out, DutyCycleSettings& s) {
   const MapReader study = scene.map("study", {std::begin(kStudyKeys), std::end(kStudyKeys)});
   const Node schedule = study.get("schedule", "a list of points, e.g. [{t: 0 s, load: 100 N, speed: 3000 rpm}, "
                                               "{t: 60 s, load: 300 N}], or the path of a CSV file");
   if (!schedule.yaml().IsScalar()) {
     s.schedule = schedule_in_scene(schedule, out);
-    return;
+    return schedule;
   }
   s.schedule_file = named_file_path(schedule, "the path of a schedule file (CSV), e.g. cycle.csv");
   // A file that is not there is a fault of the scene, at its key; what is wrong inside
@@ -305,6 +304,25 @@ void read_schedule(const MapReader& scene, Scene& out) {
                               "file's directory)",
                               schedule.path(), s.schedule_file));
   s.schedule = schedule_in_file(s.schedule_file, out);
+  return schedule;
+}
+
+void read_schedule(const MapReader& scene, Scene& out) {
+  read_schedule_into(scene, out, std::get<DutyCycleSettings>(out.study.settings));
+}
+
+void check_marched_in_real_time(const MapReader& study, const Scene& scene, std::string_view what) {
+  const Node type = study.get("type", "");
+  if (!scene.effects.thermal)
+    type.fail(fmt::format("{}: {} marches the bodies' heat in time (docs/physics.md section 19), so it needs the "
+                          "thermal effect; add 'thermal' to effects",
+                          type.path(), what));
+  if (scene.effects.hydrodynamics && scene.effects.cavitation == CavitationModel::jfo)
+    type.fail(fmt::format("{}: {} solves the film's squeeze (docs/physics.md section 19) with the Reynolds "
+                          "cavitation condition only: the mass-conserving model's film content would be a "
+                          "differential unknown held at 1 wherever the film is full (a DAE of index two, not "
+                          "solved); use hydrodynamics: {{cavitation: reynolds}}",
+                          type.path(), what));
 }
 
 }  // namespace twb::scene_io

@@ -65,6 +65,11 @@ std::vector<InputEntry> input_entries(const Node& map, const Scene& out, std::st
 void read_calibration(const MapReader& scene, Scene& out);
 // study type duty_cycle: its schedule, in the scene or a CSV file it names (read_schedule.cpp).
 void read_schedule(const MapReader& scene, Scene& out);
+// The same into the settings of a cycle (a life's repeated one); the node `study.schedule`.
+Node read_schedule_into(const MapReader& scene, Scene& out, DutyCycleSettings& s);
+// A study marched in real time (`what`: "a duty cycle") needs the thermal effect and the
+// Reynolds cavitation condition: refused at study.type otherwise.
+void check_marched_in_real_time(const MapReader& study, const Scene& scene, std::string_view what);
 // A reliability study's uncertain inputs: `study.inputs`, each an input of the scene with
 // a distribution the scene accepts (read once the scene's inputs are known).
 void read_uncertain_inputs(const MapReader& scene, Scene& out);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -268,16 +269,20 @@ struct DutyCycleSettings {
   bool operator==(const DutyCycleSettings&) const = default;
 };
 
-// life: the washer worn at the operating point over `duration` in the wear's slow time
-// (docs/physics.md section 20, [W4]), its depths integrated to `tolerance`, the bearing
-// reported every `report_every`.
+// life: the washer worn at the operating point, or through a duty cycle repeated, over
+// `duration` in the wear's slow time (docs/physics.md section 20, [W4]), its depths
+// integrated to `tolerance`, the bearing reported every `report_every`.
 struct LifeSettings {
   double duration = 0.0;         // s
-  double tolerance = 0.01e-6;    // m, IDA's absolute error on every worn depth
+  double tolerance = 0.01e-6;    // m, the depths' error at the end of the life
   double report_every = 0.0;     // s; 0: a twentieth of the duration
   // The failure load at every reported time (every criterion, on the scene's mesh: a
-  // search of the worn washer at the operating speed).
+  // search of the worn washer at the operating speed, or at a cycle's worst moment).
   bool failure_load = true;
+  // The duty cycle repeated (study.schedule, its march's study.relative_tolerance; its
+  // failure_load_at_worst unused: the life's failure_load decides), none at one
+  // operating point.
+  std::optional<DutyCycleSettings> cycle;
   bool operator==(const LifeSettings&) const = default;
 };
 

@@ -298,4 +298,12 @@ void write_tolerance(SceneText& w, const ErrorBarSettings& bars) {
     w.entry(1, "tolerance", bars.tolerance > 0.0 ? quantity(bars.tolerance, "1") : std::string("none"));
 }
 
+void write_schedule(SceneText& w, const DutyCycleSettings& cycle) {
+  w.line(1, "schedule:");
+  for (const SchedulePoint& p : cycle.schedule)
+    w.line(2, fmt::format("- {{t: {}, load: {}, speed: {}, ambient: {}, tilt: {}}}", quantity(p.time, "s"),
+                          quantity(p.load, "N"), quantity(p.speed, "rad/s"), quantity(p.ambient, "K"),
+                          quantity(p.tilt, "rad")));
+}
+
 }  // namespace twb::scene_io

@@ -47,5 +47,8 @@ void write_load_grid(SceneText& w, const LoadGrid& grid, std::span<const MapAxis
 void write_error_estimate(SceneText& w, const ErrorBarSettings& bars);
 // The tolerance, where an error bar is asked for.
 void write_tolerance(SceneText& w, const ErrorBarSettings& bars);
+// A cycle's schedule, every point with every field (the resolved scene needs no schedule
+// file).
+void write_schedule(SceneText& w, const DutyCycleSettings& cycle);
 
 }  // namespace twb::scene_io

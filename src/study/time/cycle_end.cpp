@@ -86,7 +86,7 @@ void DutyCycleMarch::worst_moment() {
   CycleEvent& e = watch_.event("worst", worst.time, schedule_.at(worst.time));
   e.criterion = worst.least_criterion;
   e.margin = worst.least_margin;
-  if (!std::get<DutyCycleSettings>(model_.scene().study.settings).failure_load_at_worst) return;
+  if (!settings_.failure_load_at_worst) return;
   if (progress_) progress_(fmt::format("duty cycle: the failure load at the worst moment, t = {:.6g} s", worst.time));
   CycleEvent found = e;
   failure_at_worst(model_, out_, worst, largest_load, found);

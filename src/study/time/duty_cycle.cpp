@@ -21,7 +21,8 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   out.own_part<DutyCycleOutcome>();  // first: cycle_events.csv is written (empty) where the cycle does not start
   const auto t0 = std::chrono::steady_clock::now();
   // The scene's schedule, with a point where an unloaded washer's speed turns back.
-  const std::vector<SchedulePoint>& points = std::get<DutyCycleSettings>(model.scene().study.settings).schedule;
+  const DutyCycleSettings& settings = std::get<DutyCycleSettings>(model.scene().study.settings);
+  const std::vector<SchedulePoint>& points = settings.schedule;
   const OperatingSchedule schedule(OperatingSchedule::with_rests(points));
   const NewtonSettings newton = newton_settings(model.scene());
   const std::string bearing = bearing_of(describe_scene(model.scene()));
@@ -30,7 +31,7 @@ void run_duty_cycle(BearingModel& model, StudyOutcome& out, const ProgressReport
   // from ended.
   std::optional<std::vector<double>> begun = cycle_start(model, schedule, newton, start, bearing, out, progress);
   if (!begun) return;
-  DutyCycleMarch march(model, schedule, std::move(*begun), out, progress);
+  DutyCycleMarch march(model, schedule, settings, std::move(*begun), out, progress);
   if (!march.run(bearing)) return;
   summarize_cycle(points.size() - 1, schedule, t0, out);
   out.timings.transients += 1;

@@ -22,6 +22,10 @@ namespace {
 // failure to go on is read as the trajectory's end.
 constexpr int kRestarts = 3;
 
+// The cycle's heat integrals (generated, to the ambient, carried off), the quadratures'
+// first; the integrands' follow.
+constexpr std::size_t kHeatIntegrals = 3;
+
 double lowest_ambient(const OperatingSchedule& schedule) {
   double lowest = schedule.points().front().ambient;
   for (const SchedulePoint& p : schedule.points()) lowest = std::min(lowest, p.ambient);
@@ -30,14 +34,18 @@ double lowest_ambient(const OperatingSchedule& schedule) {
 
 }  // namespace
 
-DutyCycleMarch::DutyCycleMarch(BearingModel& model, const OperatingSchedule& schedule, std::vector<double> u,
-                               StudyOutcome& out, const ProgressReport& progress)
+DutyCycleMarch::DutyCycleMarch(BearingModel& model, const OperatingSchedule& schedule,
+                               const DutyCycleSettings& settings, std::vector<double> u, StudyOutcome& out,
+                               const ProgressReport& progress, CycleIntegrands integrands)
     : model_(model),
       schedule_(schedule),
       u_(std::move(u)),
       out_(out),
       cycle_(out.own_part<DutyCycleOutcome>()),
       progress_(progress),
+      settings_(settings),
+      integrands_(std::move(integrands)),
+      integrals_(integrands_.count, 0.0),
       content_at_start_(heat_content(model, u_, schedule.points().front().ambient)),
       ida_(model, transient_settings()),
       march_form_(std::in_place, model),
@@ -64,18 +72,19 @@ bool DutyCycleMarch::run(const std::string& bearing) {
 TransientSettings DutyCycleMarch::transient_settings() {
   TransientSettings settings;
   settings.real_time = true;
-  settings.relative_tolerance = std::get<DutyCycleSettings>(model_.scene().study.settings).march_tolerance;
+  settings.relative_tolerance = settings_.march_tolerance;
   settings.inputs_at = [this](double t) {
     OperatingSchedule::apply(model_, schedule_.on_segment(segment_, t));
     model_.set_imposed_tilt_rate(schedule_.tilt_rate(segment_));
     return schedule_.ambient_rate(segment_);
   };
-  settings.quadrature_count = 3;
+  settings.quadrature_count = int(kHeatIntegrals + integrands_.count);
   settings.quadrature_rates = [this](double t, std::span<const double> state, std::span<double> rates) {
     const BearingState& s = describe_at(t, state);
     rates[0] = s.heat_generated;
     rates[1] = s.heat_to_ambient;
     rates[2] = s.reported_value(ConvectionEffect::kHeatCarried).value_or(0.0);
+    if (integrands_.count > 0) integrands_.rates(state, rates.subspan(kHeatIntegrals));
   };
   return settings;
 }
@@ -164,6 +173,7 @@ void DutyCycleMarch::bank() {
   heat_.generated += q[0];
   heat_.to_ambient += q[1];
   heat_.carried += q[2];
+  for (std::size_t k = 0; k < integrals_.size(); ++k) integrals_[k] += q[kHeatIntegrals + k];
   const TransientStatistics s = ida_.statistics();
   out_.timings.ida_steps += s.steps;
   out_.timings.ida_factorizations += s.linear_setups;

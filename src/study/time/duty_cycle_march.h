@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -31,12 +32,22 @@
 
 namespace twb {
 
+// What a march integrates along the cycle besides its heat: `count` functions of the state
+// (a life's wear rate at every depth node: cycle_life.h), integrated as the heat is, by
+// IDA's own formula on its steps, from the cycle's start.
+struct CycleIntegrands {
+  std::size_t count = 0;
+  std::function<void(std::span<const double> u, std::span<double> rates)> rates;
+};
+
 class DutyCycleMarch {
  public:
-  // From u, the state at the schedule's first point, the model set to its inputs. The
-  // march keeps references to model, schedule, out and progress: they must outlive it.
-  DutyCycleMarch(BearingModel& model, const OperatingSchedule& schedule, std::vector<double> u, StudyOutcome& out,
-                 const ProgressReport& progress);
+  // From u, the state at the schedule's first point, the model set to its inputs, as
+  // `settings` say (the study's, or a life's repeated cycle's). The march keeps
+  // references to model, schedule, settings, out and progress: they must outlive it.
+  DutyCycleMarch(BearingModel& model, const OperatingSchedule& schedule, const DutyCycleSettings& settings,
+                 std::vector<double> u, StudyOutcome& out, const ProgressReport& progress,
+                 CycleIntegrands integrands = {});
   // The washer's balances given back, however the march ended.
   ~DutyCycleMarch() { model_.hold_at_rest({}); }
   DutyCycleMarch(const DutyCycleMarch&) = delete;
@@ -48,6 +59,8 @@ class DutyCycleMarch {
   // one's, for the state the cycle ends in). False where the march did not start (out
   // says so).
   bool run(const std::string& bearing);
+  // The integrands' integrals over the march (CycleIntegrands), once run.
+  const std::vector<double>& integrals() const { return integrals_; }
 
  private:
   // Steps 1-3: every segment in turn, until the schedule's end or a segment that ends
@@ -95,6 +108,9 @@ class DutyCycleMarch {
   StudyOutcome& out_;
   DutyCycleOutcome& cycle_;  // out_'s own part: the events, the end, the heat balance
   const ProgressReport& progress_;
+  const DutyCycleSettings& settings_;
+  const CycleIntegrands integrands_;
+  std::vector<double> integrals_;
 
   // The inputs on the segment being marched, set at every evaluation's time.
   std::size_t segment_ = 0;

@@ -16,6 +16,7 @@
 #include "study/searches/distress_search.h"
 #include "study/searches/operating_point.h"
 #include "study/study_support.h"
+#include "study/time/cycle_life.h"
 
 namespace twb {
 namespace {
@@ -298,27 +299,35 @@ void LifeMarch::count_work(const IdaTransient& ida) {
 }
 
 void LifeMarch::summarize(const std::string& ending) {
-  const LifeRow& last = out_.own_part<LifeOutcome>().rows.back();
-  out_.message = "life: " + ending;
-  out_.summary.push_back(fmt::format(
-      "life at {:.6g} N: {}; the face at rest worn {:.4g} um deep (mean {:.4g} um, {:.4g} mm^3), the turning face "
-      "{:.4g} um (mean {:.4g} um, {:.4g} mm^3)",
-      model_.load(), ending, 1e6 * last.rest.deepest, 1e6 * last.rest.mean, 1e9 * last.rest.volume,
-      1e6 * last.turn.deepest, 1e6 * last.turn.mean, 1e9 * last.turn.volume));
-  const LifeRow& first = out_.own_part<LifeOutcome>().rows.front();
-  if (first.failure_load && last.failure_load && &first != &last)
-    out_.summary.push_back(fmt::format("life: the washer fails at {:.6g} N by {} at {:.6g} h{}, at {:.6g} N by {} at "
-                                       "{:.6g} h (on the scene's mesh)",
-                                       *first.failure_load, criterion_name(*first.failure_criterion),
-                                       first.time / kHour, first.time > 0.0 ? "" : " (new)", *last.failure_load,
-                                       criterion_name(*last.failure_criterion), last.time / kHour));
+  summarize_life(out_, fmt::format("life at {:.6g} N", model_.load()), ending);
 }
 
 }  // namespace
 
+void summarize_life(StudyOutcome& out, const std::string& subject, const std::string& ending) {
+  const LifeRow& last = out.own_part<LifeOutcome>().rows.back();
+  out.message = "life: " + ending;
+  out.summary.push_back(fmt::format(
+      "{}: {}; the face at rest worn {:.4g} um deep (mean {:.4g} um, {:.4g} mm^3), the turning face {:.4g} um (mean "
+      "{:.4g} um, {:.4g} mm^3)",
+      subject, ending, 1e6 * last.rest.deepest, 1e6 * last.rest.mean, 1e9 * last.rest.volume, 1e6 * last.turn.deepest,
+      1e6 * last.turn.mean, 1e9 * last.turn.volume));
+  const LifeRow& first = out.own_part<LifeOutcome>().rows.front();
+  if (first.failure_load && last.failure_load && &first != &last)
+    out.summary.push_back(fmt::format("life: the washer fails at {:.6g} N by {} at {:.6g} h{}, at {:.6g} N by {} at "
+                                      "{:.6g} h (on the scene's mesh)",
+                                      *first.failure_load, criterion_name(*first.failure_criterion),
+                                      first.time / kHour, first.time > 0.0 ? "" : " (new)", *last.failure_load,
+                                      criterion_name(*last.failure_criterion), last.time / kHour));
+}
+
 void run_life(BearingModel& model, StudyOutcome& out, const ProgressReport& progress) {
   out.own_part<LifeOutcome>();  // first: life.csv is written (empty) where the life does not start
   if (!model.effect<WearEffect>()) throw InternalError("run_life: a life study of a scene without wear");
+  if (std::get<LifeSettings>(model.scene().study.settings).cycle) {
+    run_cycle_life(model, out, progress);
+    return;
+  }
   // The new washer's steady state, the depths held at zero: the life's first state.
   std::vector<double> u;
   if (!solve_operating_point(model, out, u)) return;

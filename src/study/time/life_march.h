@@ -5,11 +5,18 @@
 // bearing lost as the faces wear: IDA cannot go on).
 #pragma once
 
+#include <string>
+
 #include "model/bearing_model.h"
 #include "twb/study/study_outcome.h"
 
 namespace twb {
 
+// At one operating point, or through the scene's repeated duty cycle (cycle_life.h).
 void run_life(BearingModel& model, StudyOutcome& out, const ProgressReport& progress);
+
+// The life's message and summary from its rows: `subject` ("life at 150 N"), how it
+// ended, each face's wear at the end, the failure load new and at the end.
+void summarize_life(StudyOutcome& out, const std::string& subject, const std::string& ending);
 
 }  // namespace twb
