@@ -140,7 +140,8 @@ StudyOutcome Bearing::run_into(const ResultsDirectory& directory, const ResultsR
   const auto t0 = std::chrono::steady_clock::now();
   const std::string scene_text = describe_scene(scene_);
   check_job_slices(run.slices, scene_);
-  const SearchJournal journal(directory.path(), scene_text, run.resume && run.slices.empty());
+  const SearchJournal journal(directory.path(), scene_text, run.resume && run.slices.empty(),
+                              scene_.worn ? SearchJournal::worn_identity(*scene_.worn) : std::string());
   RunOptions how = options;
   JournalOnlyScheduler only_journaled;
   if (!run.slices.empty()) {

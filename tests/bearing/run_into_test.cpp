@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -147,6 +148,36 @@ TEST_F(RunInto, WithoutResumeAnEarlierJournalIsNotRead) {
   ProgressLines progress;
   bearing.run_into(ResultsDirectory(dir), ResultsRun{}, progress.report());
   EXPECT_EQ(progress.containing("from the journal"), 0);
+  fs::remove_all(dir);
+}
+
+// A worn washer (--continue-from) is named in its scene's text by a comment only, which
+// the journal's comparison leaves out (it names the file as typed): the journal keeps the
+// washer's depths beside the scene, and a resume with another washer, or none, is
+// refused rather than mixing the two washers' searches.
+TEST(SearchJournal, AWornWashersRunResumesOnlyWithThatWasher) {
+  const fs::path dir = fresh_dir("worn");
+  const std::string scene = "study:\n  type: load_sweep\n";
+  WornWasher worn{.time = 3600.0, .film = 1, .inner_radius = 0.01, .outer_radius = 0.02, .radial_nodes = 2,
+                  .circumferential_nodes = 2, .rest = {0.0, 1e-7, 2e-7, 3e-7}, .turn = {1e-8, 2e-8}, .source = {}};
+  const std::string identity = SearchJournal::worn_identity(worn);
+  const SearchJournal written(dir, scene, false, identity);
+  EXPECT_NO_THROW(SearchJournal(dir, scene, true, identity));
+  auto refusal = [&](const std::string& other) {
+    try {
+      const SearchJournal resumed(dir, scene, true, other);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("resumed");
+  };
+  EXPECT_NE(refusal("").find("written for a worn washer (--continue-from) and this run is of a new washer"),
+            std::string::npos)
+      << refusal("");
+  worn.rest[1] *= 1.0 + 1e-15;
+  EXPECT_NE(refusal(SearchJournal::worn_identity(worn)).find("this run is of another worn washer"), std::string::npos);
+  const SearchJournal fresh(dir, scene, false);  // a new washer's run
+  EXPECT_NE(refusal(identity).find("written for a new washer and this run is of a worn washer"), std::string::npos);
   fs::remove_all(dir);
 }
 

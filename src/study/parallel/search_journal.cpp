@@ -53,18 +53,35 @@ fs::path entry_path(const fs::path& dir, std::size_t search) { return dir / fmt:
 
 }  // namespace
 
-SearchJournal::SearchJournal(const fs::path& results, const std::string& scene, bool resume)
+SearchJournal::SearchJournal(const fs::path& results, const std::string& scene, bool resume, const std::string& worn)
     : dir_(results / ".twb-journal") {
-  const fs::path name = dir_ / "scene.yaml";
+  const fs::path name = dir_ / "scene.yaml", washer = dir_ / "worn_washer.txt";
   if (resume && fs::exists(name)) {
     if (without_comments(read_file(name)) != without_comments(scene))
       throw std::invalid_argument(fmt::format("cannot resume: the journal in '{}' belongs to another scene (or other "
                                               "--set values); run without --resume to start afresh",
                                               results.string()));
+    // (a journal from before worn washers were journaled has none: a new washer's)
+    const std::string journaled = fs::exists(washer) ? read_file(washer) : std::string();
+    if (journaled != worn)
+      throw std::invalid_argument(fmt::format(
+          "cannot resume: the journal in '{}' was written for {} and this run is of {}: give the same "
+          "--continue-from as the run it resumes, or run without --resume to start afresh",
+          results.string(), journaled.empty() ? "a new washer" : "a worn washer (--continue-from)",
+          worn.empty() ? "a new washer" : journaled.empty() ? "a worn washer" : "another worn washer"));
     return;
   }
   fs::remove_all(dir_);
   write_file_atomically(name, scene);
+  if (!worn.empty()) write_file_atomically(washer, worn);
+}
+
+std::string SearchJournal::worn_identity(const WornWasher& worn) {
+  std::string text = fmt::format("{:.17g} {} {:.17g} {:.17g} {} {}\n", worn.time, worn.film, worn.inner_radius,
+                                 worn.outer_radius, worn.radial_nodes, worn.circumferential_nodes);
+  for (const double d : worn.rest) text += fmt::format("{:.17g}\n", d);
+  for (const double d : worn.turn) text += fmt::format("{:.17g}\n", d);
+  return text;
 }
 
 std::string journal_entry(const DistressSearch& found, long klu_factorizations) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "study/searches/distress_search.h"
+#include "twb/scene/worn_washer.h"
 
 namespace twb {
 
@@ -32,10 +33,16 @@ std::optional<JournaledSearch> read_journal_entry(const std::string& entry);
 
 class SearchJournal {
  public:
-  // The journal in `results`; `scene` (the resolved scene's text) names the run. With
-  // resume, an existing journal of this scene is kept and read (std::invalid_argument
-  // for another scene's); without, any journal there is discarded.
-  SearchJournal(const std::filesystem::path& results, const std::string& scene, bool resume);
+  // The journal in `results`; `scene` (the resolved scene's text) names the run, and
+  // `worn` the worn washer it holds (worn_identity(); empty for a new one: the scene's
+  // text only names it in a comment). With resume, an existing journal of this scene and
+  // washer is kept and read (std::invalid_argument for another's); without, any journal
+  // there is discarded.
+  SearchJournal(const std::filesystem::path& results, const std::string& scene, bool resume,
+                const std::string& worn = {});
+  // A worn washer (--continue-from) as the journal tells runs apart: every depth to 17
+  // digits, with its time, film and grid.
+  static std::string worn_identity(const WornWasher& worn);
 
   std::optional<JournaledSearch> read(std::size_t search) const;
   void write(std::size_t search, const DistressSearch& found, long klu_factorizations) const;
