@@ -225,7 +225,8 @@ void WearEffect::report(std::span<const double> u, const AssemblyTotals& totals,
   const FilmTotals& sliding = totals.film[film_index_];
   const Rates r = rates(sliding);
   const std::array<double, 2> volume = volume_rates(sliding);
-  const double values[] = {um * deepest(rest_depths(u)),      um * deepest(turn_depths(u)),
+  const std::array<Worn, 2> w = worn(u);
+  const double values[] = {um * w[0].deepest,                 um * w[1].deepest,
                            um * per_hour * deepest(r.rest),   um * per_hour * deepest(r.turn),
                            mm3 * per_hour * volume[0],        mm3 * per_hour * volume[1]};
   static_assert(std::size(values) == std::size(kReported));

@@ -15,6 +15,7 @@
 #include "model/bearing_model.h"
 #include "study/searches/distress_search.h"
 #include "study/study_runner.h"
+#include "study/time/life_march.h"
 #include "twb/results/worn_washer.h"
 #include "twb/scene/scene_loader.h"
 #include "twb/study/study_outcome.h"
@@ -127,10 +128,7 @@ TEST(Life, EachReportedTimeHasItsFailureLoadAndTheFirstIsTheNewWashers) {
   }
   BearingModel unworn(load_scene(std::string(TWB_SOURCE_DIR) + "/configs/jackson_green_2006.yaml",
                                  {"mesh.radial_nodes=5", "mesh.circumferential_nodes=24", "operating.load=150 N"}));
-  DistressSearchSettings search;
-  search.load_start = 0.25 * 150.0;
-  search.load_end = 20.0 * 150.0;
-  search.march_past_distress = false;
+  const DistressSearchSettings search = life_failure_search(150.0);
   const DistressSearch found = search_distress(unworn, search, {});
   ASSERT_TRUE(found.row.failure_load);
   EXPECT_NEAR(*rows.front().failure_load, *found.row.failure_load, 0.002 * *found.row.failure_load);
@@ -230,10 +228,7 @@ TEST(Life, EndsByDistressWhereTheFoldHasComeDownToTheOperatingLoad) {
   Scene worn = life_scene("{type: point}", scene);
   set_worn_washer(worn, std::get<LifeOutcome>(out.own).worn.back(), "the test");
   BearingModel model(worn);
-  DistressSearchSettings search;
-  search.load_start = 0.25 * 450.0;
-  search.load_end = 20.0 * 450.0;
-  search.march_past_distress = false;
+  const DistressSearchSettings search = life_failure_search(450.0);
   const DistressSearch found = search_distress(model, search, {});
   ASSERT_TRUE(found.row.failure_load);
   EXPECT_NEAR(*found.row.failure_load, 450.0, 0.005 * 450.0);

@@ -139,18 +139,14 @@ void LifeMarch::add_row(std::span<const double> u, double t_h, const std::string
                           1e6 * std::max(row.rest.deepest, row.turn.deepest)));
 }
 
-// A search of the model itself, its depths held at u's on the heat's time scale, from a
-// quarter of the operating load up (a worn washer's refined meshes would not have its
-// depths: the failure load is the scene's mesh's, without an error bar).
+// A search of a copy of the model, its depths held at u's on the heat's time scale
+// (life_failure_search).
 void LifeMarch::failure_at(std::span<const double> u, double t_h) {
   if (!settings_.failure_load) return;
   if (progress_) progress_(fmt::format("life: the failure load at {:.6g} h", t_h));
   if (!searched_) searched_.emplace(model_.scene());
   searched_->effect<WearEffect>()->hold(wear_.rest_depths(u), wear_.turn_depths(u));
-  DistressSearchSettings search;
-  search.load_start = 0.25 * model_.load();
-  search.load_end = 20.0 * model_.load();
-  search.march_past_distress = false;
+  const DistressSearchSettings search = life_failure_search(model_.load());
   LifeRow& row = out_.own_part<LifeOutcome>().rows.back();
   try {
     DistressSearch found = search_distress(*searched_, search, {});
@@ -303,6 +299,14 @@ void LifeMarch::summarize(const std::string& ending) {
 }
 
 }  // namespace
+
+DistressSearchSettings life_failure_search(double operating_load) {
+  DistressSearchSettings search;
+  search.load_start = 0.25 * operating_load;
+  search.load_end = 20.0 * operating_load;
+  search.march_past_distress = false;
+  return search;
+}
 
 void summarize_life(StudyOutcome& out, const std::string& subject, const std::string& ending) {
   const LifeRow& last = out.own_part<LifeOutcome>().rows.back();

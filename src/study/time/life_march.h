@@ -8,12 +8,18 @@
 #include <string>
 
 #include "model/bearing_model.h"
+#include "study/searches/distress_search.h"
 #include "twb/study/study_outcome.h"
 
 namespace twb {
 
 // At one operating point, or through the scene's repeated duty cycle (cycle_life.h).
 void run_life(BearingModel& model, StudyOutcome& out, const ProgressReport& progress);
+
+// The failure search along a life at the operating load: from a quarter of it up to twenty
+// times it, not marched past distress (a worn washer's refined meshes would not have its
+// depths: the failure load is the scene's mesh's, without an error bar).
+DistressSearchSettings life_failure_search(double operating_load);
 
 // The life's message and summary from its rows: `subject` ("life at 150 N"), how it
 // ended, each face's wear at the end, the failure load new and at the end.
