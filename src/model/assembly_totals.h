@@ -15,6 +15,14 @@ struct ShapeTerm {
   double coefficient = 0;
 };
 
+// A film node's friction power's slope in one unknown (where the faces run in: a depth,
+// through the Rq it sets, film_roughness.h).
+struct DepthTerm {
+  int node = 0;
+  Index column = -1;
+  double coefficient = 0;
+};
+
 struct FilmTotals {
   double fluid_force = 0, contact_force = 0;
   std::array<double, 3> contact_force_rigid{};  // d(contact force)/d(ĉ, γ̂x, γ̂y)
@@ -27,6 +35,7 @@ struct FilmTotals {
   std::vector<double> contact_power;
   std::vector<std::array<double, 3>> contact_power_rigid;
   std::vector<ShapeTerm> contact_power_shape;  // where the gap has a part only
+  std::vector<DepthTerm> contact_power_depth;  // where the faces run in only
   double friction_coefficient = 0, friction_slope = 0;
   bool friction_clamped = false;
   double friction_heat = 0;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "model/assembly_totals.h"
+#include "model/wear_effect.h"
 #include "physics/asperity_contact.h"
 #include "physics/contact_table_cache.h"
 #include "twb/error_family.h"
@@ -82,6 +83,8 @@ BearingModel::BearingModel(const Scene& scene, std::vector<EffectMaker> more_eff
 
   // The effects declare their unknowns in the order they are registered.
   register_effects();
+  if (const WearEffect* wear = effect<WearEffect>(); wear && wear->runs_in())
+    scaled_contact_ = shared_scaled_contact(contact_key_, wear->run_in_sigma() / sliding_film().sigma);
 
   // The viscosity temperature's and the shapes' gradients: grids and unknowns only.
   viscosity_forms_.resize(films_.size());
@@ -135,8 +138,9 @@ void BearingModel::build_contact() {
                                                                m2.youngs_modulus, m2.poisson_ratio);
   // The softer material yields first (docs/physics.md section 4).
   const Material& soft = (m1.yield_strength <= m2.yield_strength) ? m1 : m2;
-  contact_ = shared_contact_table({e_eff, soft.yield_strength, soft.poisson_ratio, scene_.asperities.summit_radius,
-                                   scene_.asperities.summit_density, scene_.asperities.summit_sigma});
+  contact_key_ = {e_eff, soft.yield_strength, soft.poisson_ratio, scene_.asperities.summit_radius,
+                  scene_.asperities.summit_density, scene_.asperities.summit_sigma};
+  contact_ = shared_contact_table(contact_key_);
   contact_cutoff_ = contact_->cutoff_gap(1e-20);
 }
 
@@ -186,6 +190,9 @@ void BearingModel::set_curve_parameter(CurveParameter p, double value) {
     case CurveParameter::roughness:
       // The films' σ and the summit population follow; the clearance scale σ_ref stays.
       if (!(value > 0)) throw std::invalid_argument("the roughness must be positive");
+      // A face that runs in has its Rq from its worn depth: one value is not its roughness.
+      if (scaled_contact_)
+        throw std::invalid_argument("the roughness is not a curve parameter of faces that run in (surfaces.run_in_rq)");
       // Rebuilding the summit population costs; the fold curve sets the same value at
       // every evaluation.
       if (uniform_roughness_ == value) break;

@@ -27,6 +27,7 @@
 #include "model/sparse_assembly.h"
 #include "model/unknown_layout.h"
 #include "physics/roelands_viscosity.h"
+#include "physics/scaled_contact.h"
 #include "physics/statistical_contact.h"
 #include "twb/scene/scene.h"
 #include "system/segregated_system.h"
@@ -282,6 +283,9 @@ class BearingModel final : public SegregatedSystem {
   // contact, and the gap above which its pressure is negligible (p < 1e-20 p(0)).
   const StatisticalContact* contact() const { return contact_.get(); }
   double contact_cutoff() const { return contact_cutoff_; }
+  // Where the sliding film's faces run in (docs/physics.md section 20): the same population
+  // scaled by k = σ/σ0 of the film, for k from the run-in faces' to 1 ([W8]); null else.
+  const ScaledContact* scaled_contact() const { return scaled_contact_.get(); }
 
  private:
   // The effects of the scene, in the order they add their terms (effect_registry.cpp).
@@ -310,6 +314,8 @@ class BearingModel final : public SegregatedSystem {
   // One summit population for both films (scene.asperities; docs/physics.md section 4).
   std::shared_ptr<const StatisticalContact> contact_;  // shared with models of the same surfaces
   double contact_cutoff_ = 0.0;  // gap above which contact is negligible (p < 1e-20 p(0))
+  ContactTableKey contact_key_{};
+  std::shared_ptr<const ScaledContact> scaled_contact_;
   RoelandsViscosity roelands_{};
   double viscosity_scale_ = 1.0;  // CurveParameter::viscosity_scale
   double deformation_scale_ = 1.0;  // set_deformation_scale

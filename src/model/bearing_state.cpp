@@ -8,6 +8,7 @@
 #include "model/limit_thresholds.h"
 #include "model/assembly_totals.h"
 #include "model/film_point.h"
+#include "model/film_roughness.h"
 #include "model/located_maximum.h"
 
 namespace twb {
@@ -39,6 +40,28 @@ BodiesHeat bodies_heat(const std::vector<ComponentHeat>& components, std::span<c
   return out;
 }
 
+// Where the sliding film's faces run in (docs/physics.md section 20) σ and the summits vary
+// over it: its least h/σ and largest contact pressure, each over its nodes.
+struct RunInExtremes {
+  double least_ratio = INFINITY, greatest_pressure = 0.0;
+};
+RunInExtremes run_in_extremes(const BearingModel& model, std::span<const double> u, const Film& film,
+                              const FilmRoughness& roughness) {
+  RunInExtremes out;
+  const FilmGap gap(model, u, film);
+  const FilmMesh& m = film.mesh;
+  for (int i = 0; i < m.radial_nodes(); ++i)
+    for (int j = 0; j < m.circumferential_nodes(); ++j) {
+      const double h = gap.smooth(i, j) + (film.relief.flat() ? 0.0 : film.relief.least_at_node(i, j));
+      const double sigma = roughness.at_node(m.node(i, j)).sigma;
+      out.least_ratio = std::min(out.least_ratio, h / sigma);
+      if (h <= model.contact_cutoff())
+        out.greatest_pressure = std::max(
+            out.greatest_pressure, model.scaled_contact()->pressure(h, sigma / roughness.uniform().sigma).value);
+    }
+  return out;
+}
+
 }  // namespace
 
 void BearingModel::gather_totals(std::span<const double> u, AssemblyTotals& totals) const {
@@ -63,6 +86,9 @@ BearingState BearingModel::describe(std::span<const double> u) const {
 
   const double sliding_least_gap = least_gap(u, film);
   s.hmin_over_sigma = sliding_least_gap / film.sigma;
+  const FilmRoughness roughness(*this, u, film);
+  const RunInExtremes run_in = roughness.varies() ? run_in_extremes(*this, u, film, roughness) : RunInExtremes{};
+  if (roughness.varies()) s.hmin_over_sigma = run_in.least_ratio;
   const double tilt = scene_.gear.tilt > 0 ? scene_.gear.tilt : 1.0;
   s.gamma_x_ratio = s.position.gamma_x / tilt;
   s.gamma_y_ratio = s.position.gamma_y / tilt;
@@ -160,7 +186,9 @@ BearingState BearingModel::describe(std::span<const double> u) const {
   if (contact_)
     for (const Film& f : films_) {
       const double least = f.number == film.number ? sliding_least_gap : least_gap(u, f);
-      if (least <= contact_cutoff_)
+      if (f.number == film.number && roughness.varies())
+        s.max_contact_pressure = std::max(s.max_contact_pressure, run_in.greatest_pressure);
+      else if (least <= contact_cutoff_)
         s.max_contact_pressure = std::max(s.max_contact_pressure, contact_->pressure(least).value);
     }
   // Each body's hottest face, its material's temperature (physics §8): its hottest node,

@@ -1,7 +1,9 @@
 // Asperity contact on one cell of a film (docs/physics.md sections 4, 6): the contact
 // force and its moments on the high-order rule at the points within the cutoff, and on
 // the sliding film the friction power per corner node (friction heat is f times it,
-// added once the film's total contact force sets f: FilmLoadPass::friction).
+// added once the film's total contact force sets f: FilmLoadPass::friction). Where the
+// sliding film's faces run in (section 20), the summits at a point are the population
+// scaled by k = σ/σ0 of its Rqs ([W8]), with p's slopes in each corner's Rqs.
 #include <cmath>
 
 #include "model/film_load_pass.h"
@@ -27,7 +29,9 @@ void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotal
   // carries the load by contact (film 2) is nearly parallel, and all its cells are
   // flat: 36 points each instead of 64. (p(least) > 0 within the cutoff, so a
   // greatest gap where p underflows to 0 is never flat.)
-  const bool flat = !structural && flat_rule_is_cheaper &&
+  const bool runs_in = roughness.varies();
+  // (The flat rule's test reads one population: not where the summits vary over the cell.)
+  const bool flat = !structural && !runs_in && flat_rule_is_cheaper &&
                     asperities.pressure(cell.gap.range.least).value <=
                         std::exp(0.5) * asperities.pressure(cell.gap.range.greatest).value;
   const CellRule& rule = flat ? flat_rule : contact_rule;
@@ -45,7 +49,20 @@ void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotal
     }
   }
   contact_p.resize(contact_h.size());
-  asperities.pressure(contact_h, contact_p);
+  if (!runs_in) {
+    asperities.pressure(contact_h, contact_p);
+  } else {
+    // p(h, k) with k = σ/σ0 at the point, its Rqs bilinear in the corners' (film_roughness.h).
+    const ScaledContact& scaled = *model.scaled_contact();
+    const double sigma0 = roughness.uniform().sigma;
+    contact_by_rq.resize(contact_h.size());
+    for (std::size_t q = 0; q < contact_h.size(); ++q) {
+      const PointRoughness pr = roughness.in_cell(cell.node, contact_points[q].s, contact_points[q].t);
+      const ScaledContact::Pressure p = scaled.pressure(contact_h[q], pr.sigma / sigma0);
+      contact_p[q] = {p.value, p.dh};
+      contact_by_rq[q] = {p.dk * pr.sigma_by_rest / sigma0, p.dk * pr.sigma_by_turn / sigma0};
+    }
+  }
   // The same sums with and without the gradients (a residual alone, as IDA's
   // Newton iterations ask for most of the time, needs none of them).
   auto integrate = [&]<bool gradients>(std::bool_constant<gradients>) {
@@ -71,6 +88,18 @@ void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotal
             l.load_shape[2][m] -= k * N[m] * x;
           }
         }
+        if (runs_in) {
+          const std::array<double, 4> N = corner_hats(s, tt);
+          const double kr = w * contact_by_rq[q][0], kt = w * contact_by_rq[q][1];
+          for (int m = 0; m < 4; ++m) {
+            l.load_rest[0][m] += kr * N[m];
+            l.load_rest[1][m] += kr * N[m] * y;
+            l.load_rest[2][m] -= kr * N[m] * x;
+            l.load_turn[0][m] += kt * N[m];
+            l.load_turn[1][m] += kt * N[m] * y;
+            l.load_turn[2][m] -= kt * N[m] * x;
+          }
+        }
       }
       if (!film.sliding) continue;
       // Friction opposes the sliding whichever way it goes: its power and torque
@@ -88,6 +117,11 @@ void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotal
           power_rigid[n][2] -= kn * x;
           if (shaped)
             for (int m = 0; m < 4; ++m) l.power_shape[n][m] += kn * N[m];
+          if (runs_in)
+            for (int m = 0; m < 4; ++m) {
+              l.power_rest[n][m] += w * contact_by_rq[q][0] * nv * N[m];
+              l.power_turn[n][m] += w * contact_by_rq[q][1] * nv * N[m];
+            }
         }
       }
     }

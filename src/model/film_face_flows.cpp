@@ -10,9 +10,15 @@ namespace twb {
 
 namespace {
 
-// Poiseuille conductance φ·max(h, 0)³/(12 μ) at a face, and its slopes in h and T.
+// Poiseuille conductance φ·max(h, 0)³/(12 μ) at a face, and its slopes in h, T and σ.
 struct Conductance {
-  double g, dg_dh, dg_dt;
+  double g, dg_dh, dg_dt, dg_dsigma = 0.0;
+};
+
+// The gap the moving face carries across a circumferential face and its slopes in h, σ
+// and the shear term ψ.
+struct CarriedGap {
+  double value, slope, by_sigma = 0.0, by_shear = 0.0;
 };
 
 }  // namespace
@@ -23,6 +29,7 @@ FilmFaceFlows::FilmFaceFlows(const BearingModel& model, const Film& film, std::s
       u_(u),
       op_(film.mesh),
       gap_(model, u, film),
+      roughness_(model, u, film),
       jfo_(film.content_offset >= 0) {
   const FilmMesh& m = film.mesh;
   // A node on a fed groove holds the supply's pressure, full of oil: like an edge node,
@@ -48,27 +55,40 @@ FaceFlow FilmFaceFlows::evaluate(const ReynoldsFace& f) const {
   const FilmMesh& m = film_.mesh;
   const double omega = scene.operating.speed;
   const bool factors = scene.effects.flow_factors;
-  const double sigma = film_.sigma;
+  const int a_node = m.node(f.ia, f.ja), b_node = m.node(f.ib, f.jb);
+  // Where the faces run in, σ and ψ at the midpoint from the two nodes' Rqs.
+  const bool varies = factors && roughness_.varies();
+  const PointRoughness rough = varies ? roughness_.between(a_node, b_node) : roughness_.uniform();
+  const double sigma = varies ? rough.sigma : film_.sigma;
 
   auto conductance = [&](double h, double t_face) {
     const double hp = std::max(h, 0.0);
     const ValueSlope mu = model_.viscosity(t_face);
     ValueSlope phi{1.0, 0.0};
+    double phi_by_sigma = 0.0;
     if (factors) {
       const ValueSlope fp = pressure_flow_factor(h / sigma);
       phi = {fp.value, fp.slope / sigma};
+      phi_by_sigma = -fp.slope * h / (sigma * sigma);
     }
     const double g = phi.value * hp * hp * hp / (12.0 * mu.value);
     const double dg_dh = (phi.slope * hp * hp * hp + phi.value * 3.0 * hp * hp) / (12.0 * mu.value);
-    return Conductance{g, dg_dh, -g * mu.slope / mu.value};
+    return Conductance{g, dg_dh, -g * mu.slope / mu.value, phi_by_sigma * hp * hp * hp / (12.0 * mu.value)};
   };
   // The gap the moving surface drags across a circumferential face: h̄T + σ φs with flow
-  // factors, h without (docs/physics.md section 3); its slope in h.
+  // factors, h without (docs/physics.md section 3); its slope in h (and, where the faces
+  // run in, in σ and in ψ = σ·w).
   auto carried_gap = [&](double h) {
-    if (!factors) return ValueSlope{h, 1.0};
+    if (!factors) return CarriedGap{h, 1.0};
     const ValueSlope gap = average_gap(h, sigma);
     const ValueSlope phis = shear_flow_factor_Phi_s(h / sigma);
-    return ValueSlope{gap.value + sigma * film_.shear_weight * phis.value, gap.slope + film_.shear_weight * phis.slope};
+    if (!varies)
+      return CarriedGap{gap.value + sigma * film_.shear_weight * phis.value,
+                        gap.slope + film_.shear_weight * phis.slope};
+    const double x = h / sigma;
+    return CarriedGap{gap.value + rough.shear * phis.value, gap.slope + rough.shear / sigma * phis.slope,
+                      average_gap_by_sigma(h, sigma) - rough.shear * phis.slope * x / sigma,
+                      phis.value};
   };
 
   FaceFlow out;
@@ -88,14 +108,16 @@ FaceFlow FilmFaceFlows::evaluate(const ReynoldsFace& f) const {
   out.dh = film_.gap_gradient(x, y);
   const double t_face = 0.5 * (node_t_[std::size_t(out.na)] + node_t_[std::size_t(out.nb)]);
   Conductance g = conductance(h, t_face);
-  ValueSlope carried = out.circumferential ? carried_gap(h) : ValueSlope{0.0, 0.0};
+  CarriedGap carried = out.circumferential ? carried_gap(h) : CarriedGap{0.0, 0.0};
   if (relief.after != relief.before) {
     const double outer = gap.outer_share, inner = 1.0 - outer;
     const Conductance other = conductance(smooth + relief.after, t_face);
-    g = {outer * g.g + inner * other.g, outer * g.dg_dh + inner * other.dg_dh, outer * g.dg_dt + inner * other.dg_dt};
+    g = {outer * g.g + inner * other.g, outer * g.dg_dh + inner * other.dg_dh, outer * g.dg_dt + inner * other.dg_dt,
+         outer * g.dg_dsigma + inner * other.dg_dsigma};
     if (out.circumferential) {
-      const ValueSlope moved = carried_gap(smooth + relief.after);
-      carried = {inner * carried.value + outer * moved.value, inner * carried.slope + outer * moved.slope};
+      const CarriedGap moved = carried_gap(smooth + relief.after);
+      carried = {inner * carried.value + outer * moved.value, inner * carried.slope + outer * moved.slope,
+                 inner * carried.by_sigma + outer * moved.by_sigma, inner * carried.by_shear + outer * moved.by_shear};
     }
   }
   // Mass-conserving cavitation (docs/physics.md section 12): the Couette flux carries the
@@ -106,6 +128,12 @@ FaceFlow FilmFaceFlows::evaluate(const ReynoldsFace& f) const {
   out.dq_dh = out.flux.dq_dg * g.dg_dh + out.flux.dq_dcarried * theta * carried.slope;
   out.dq_dt = out.flux.dq_dg * g.dg_dt * 0.5;
   out.dq_dtheta = out.flux.dq_dcarried * carried.value;
+  if (varies) {
+    const double by_sigma = out.flux.dq_dg * g.dg_dsigma + out.flux.dq_dcarried * theta * carried.by_sigma;
+    const double by_shear = out.flux.dq_dcarried * theta * carried.by_shear;
+    out.dq_drest = by_sigma * rough.sigma_by_rest + by_shear * rough.shear_by_rest;
+    out.dq_dturn = by_sigma * rough.sigma_by_turn + by_shear * rough.shear_by_turn;
+  }
   return out;
 }
 
@@ -120,6 +148,13 @@ void FilmFaceFlows::add_gradient(Assembler& a, Index row, double c, const FaceFl
   a.add_form(row, c * flow.dq_dh * 0.5, model_.shape_form(film_, flow.na));
   a.add_form(row, c * flow.dq_dh * 0.5, model_.shape_form(film_, flow.nb));
   if (jfo_ && flow.circumferential) a.add_derivative(row, content_column(flow.upwind), c * flow.dq_dtheta);
+  if (flow.dq_drest != 0.0 || flow.dq_dturn != 0.0) {
+    // (the midpoint's Rqs are the mean of the two nodes')
+    for (const int n : {flow.na, flow.nb}) {
+      roughness_.add_rest(a, row, 0.5 * c * flow.dq_drest, n);
+      roughness_.add_turn(a, row, 0.5 * c * flow.dq_dturn, n);
+    }
+  }
 }
 
 }  // namespace twb

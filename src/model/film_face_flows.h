@@ -11,6 +11,7 @@
 
 #include "model/bearing_model.h"
 #include "model/film_gap.h"
+#include "model/film_roughness.h"
 #include "model/reynolds_operator.h"
 
 namespace twb {
@@ -23,6 +24,8 @@ struct FaceFlow {
   double dq_dh = 0;      // in the gap at the face midpoint
   double dq_dt = 0;      // in each node's viscosity temperature (μ at the mean of theirs)
   double dq_dtheta = 0;  // in the upwind node's film content (circumferential faces, JFO)
+  // In each face's Rq at the midpoint (the mean of the two nodes'), where the faces run in.
+  double dq_drest = 0, dq_dturn = 0;
   std::array<double, 3> dh{};  // the gap's slopes in the rigid unknowns at the midpoint
   int upwind = -1;             // interior ordinal whose content the Couette flow carries
   bool circumferential = false;
@@ -55,6 +58,8 @@ class FilmFaceFlows {
   }
   // The film's gap as the fluxes read it.
   const FilmGap& gap() const { return gap_; }
+  // Its roughness as they read it (film_roughness.h).
+  const FilmRoughness& roughness() const { return roughness_; }
   // d(row) += c · ∇Q of a face, in the order the Reynolds rows have always summed it.
   void add_gradient(Assembler& a, Index row, double c, const FaceFlow& flow) const;
 
@@ -68,6 +73,7 @@ class FilmFaceFlows {
   std::span<const double> u_;
   ReynoldsOperator op_;
   FilmGap gap_;
+  FilmRoughness roughness_;
   bool jfo_;
   std::vector<char> fed_;  // per interior node; empty where no groove is fed
   std::vector<double> node_t_;

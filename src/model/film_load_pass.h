@@ -15,6 +15,7 @@
 
 #include "model/assembly_totals.h"
 #include "model/film_gap.h"
+#include "model/film_roughness.h"
 #include "model/film_loads_effect.h"
 
 namespace twb {
@@ -84,6 +85,10 @@ struct CellLoads {
   // The same against the corner shapes δ_k (the parts of the gap, gap_contribution.h).
   std::array<std::array<double, 4>, 3> load_shape{};
   std::array<std::array<double, 4>, 4> vheat_shape{};
+  // The same against each face's Rq at the corners, where the faces run in (film_roughness.h).
+  std::array<std::array<double, 4>, 4> vheat_rest{}, vheat_turn{};
+  std::array<std::array<double, 4>, 3> load_rest{}, load_turn{};
+  std::array<std::array<double, 4>, 4> power_rest{}, power_turn{};  // friction power per corner
   std::array<std::array<double, 4>, 4> power_shape{};  // friction power per corner, against δ
   double contact_force = 0;                            // the cell's contact force
   std::array<double, 3> contact_rigid{};               // its gradient against the arms
@@ -102,6 +107,11 @@ struct FilmLoadPass {
   void contact_on_cell(const FilmCell& cell, CellLoads& loads, FilmTotals& tot);  // contact_cell.cpp
   void fluid_on_cell(const FilmCell& cell, CellLoads& loads, FilmTotals& tot);    // fluid_cell.cpp
   void scatter(const FilmCell& cell, const CellLoads& loads, Assembler& a) const;
+  // The cell's friction power's slopes in the corners' shapes and Rqs into the film's totals.
+  void keep_power_slopes(const FilmCell& cell, const CellLoads& loads, FilmTotals& tot) const;
+  // row += c·(slopes in the corners' Rqs), where the faces run in.
+  void add_roughness_slopes(const FilmCell& cell, Index row, double c, const std::array<double, 4>& by_rest,
+                            const std::array<double, 4>& by_turn, Assembler& a) const;
   // Boundary friction f·p_cont into the heat rows, once the film's totals are complete.
   void friction(FilmTotals& tot, Assembler& a) const;
 
@@ -112,6 +122,7 @@ struct FilmLoadPass {
   bool structural, jac, hydro, heat, contact;
   double omega, cutoff;
   FilmGap gap;
+  FilmRoughness roughness;
   bool shaped;  // the gap has a shape δ: its slopes in the corner shapes are gathered
   PlaneOverCells plane;
   std::array<Index, 3> rigid_cols;
@@ -129,8 +140,10 @@ struct FilmLoadPass {
   std::vector<CellPoint> contact_points;
   std::vector<double> contact_h;
   std::vector<ValueSlope> contact_p;
+  std::vector<std::array<double, 2>> contact_by_rq;  // ∂p/∂Rq of each face, where they run in
   std::vector<double> point_t, point_h;
   std::vector<ValueSlope> point_mu, point_gap;
+  std::vector<PointRoughness> point_rough;  // where the faces run in
 };
 
 }  // namespace twb

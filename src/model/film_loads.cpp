@@ -52,6 +52,7 @@ FilmLoadPass::FilmLoadPass(const BearingModel& model, const FilmLoadRules& rules
       omega(film.sliding ? model.scene().operating.speed : 0.0),
       cutoff(model.contact_cutoff()),
       gap(model, u, film),
+      roughness(model, u, film),
       shaped(gap.shaped()),
       plane(gap.plane()),
       rigid_cols(film.rigid_columns()),
@@ -120,6 +121,7 @@ void FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& l, Assembler& 
       if (shaped)
         for (int k = 0; k < 4; ++k)
           a.add_form(rs.row, coef[qd] * l.load_shape[qd][k], model.shape_form(film, cell.node[k]));
+      add_roughness_slopes(cell, rs.row, coef[qd], l.load_rest[qd], l.load_turn[qd], a);
     }
   }
   // The sliding film's contact force into its own row (F_c/F_ref, add_terms).
@@ -129,6 +131,7 @@ void FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& l, Assembler& 
     if (jac) {
       for (int d = 0; d < 3; ++d) a.add_derivative(force_row, rigid_cols[d], g[d] * l.contact_rigid[d] / ref);
       for (int k = 0; k < 4; ++k) a.add_form(force_row, l.load_shape[0][k] / ref, model.shape_form(film, cell.node[k]));
+      add_roughness_slopes(cell, force_row, 1.0 / ref, l.load_rest[0], l.load_turn[0], a);
     }
   }
   // Viscous heat into the film-node rows (friction heat is added once f is known).
@@ -143,7 +146,34 @@ void FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& l, Assembler& 
       a.add_form(row, sc * l.vheat_t[k][m], model.viscosity_temperature_form(film, cell.node[m]));
     if (shaped)
       for (int m = 0; m < 4; ++m) a.add_form(row, sc * l.vheat_shape[k][m], model.shape_form(film, cell.node[m]));
+    add_roughness_slopes(cell, row, sc, l.vheat_rest[k], l.vheat_turn[k], a);
   }
+}
+
+void FilmLoadPass::add_roughness_slopes(const FilmCell& cell, Index row, double c, const std::array<double, 4>& by_rest,
+                                        const std::array<double, 4>& by_turn, Assembler& a) const {
+  if (!roughness.varies()) return;
+  for (int m = 0; m < 4; ++m) {
+    roughness.add_rest(a, row, c * by_rest[m], cell.node[m]);
+    roughness.add_turn(a, row, c * by_turn[m], cell.node[m]);
+  }
+}
+
+void FilmLoadPass::keep_power_slopes(const FilmCell& cell, const CellLoads& l, FilmTotals& tot) const {
+  // Every cell's terms, zero or not, so that every pass adds the same entries in the
+  // same order (the slot tape, sparse_assembly.h).
+  if (!film.sliding || !contact) return;
+  if (shaped)
+    for (int n = 0; n < 4; ++n)
+      for (int m = 0; m < 4; ++m) tot.contact_power_shape.push_back({cell.node[n], cell.node[m], l.power_shape[n][m]});
+  if (!roughness.varies()) return;
+  for (int n = 0; n < 4; ++n)
+    for (int m = 0; m < 4; ++m) {
+      const auto [rest, rest_slope] = roughness.rest_column(cell.node[m]);
+      const auto [turn, turn_slope] = roughness.turn_column(cell.node[m]);
+      tot.contact_power_depth.push_back({cell.node[n], rest, l.power_rest[n][m] * rest_slope});
+      tot.contact_power_depth.push_back({cell.node[n], turn, l.power_turn[n][m] * turn_slope});
+    }
 }
 
 // Boundary friction f·p_cont (docs/physics.md section 6). The empirical law [18] depends on
@@ -183,6 +213,10 @@ void FilmLoadPass::friction(FilmTotals& tot, Assembler& a) const {
     a.add_form(film.temperature_row(term.node),
                model.layout().row_scale(film.temperature_row(term.node)) * tot.friction_coefficient * term.coefficient,
                model.shape_form(film, term.corner));
+  for (const DepthTerm& term : tot.contact_power_depth)
+    a.add_derivative(film.temperature_row(term.node), term.column,
+                     model.layout().row_scale(film.temperature_row(term.node)) * tot.friction_coefficient *
+                         term.coefficient);
 }
 
 FilmLoadsEffect::FilmLoadsEffect(ModelSetup& setup)
@@ -215,11 +249,7 @@ void FilmLoadsEffect::add_film(std::span<const double> u, const Film& film, Asse
       const FilmCell cell = pass.cell(i, j);
       CellLoads loads;
       if (pass.near_contact(cell)) pass.contact_on_cell(cell, loads, tot);
-      // Every cell's terms, zero or not, so that every pass adds the same entries in the
-      // same order (the slot tape, sparse_assembly.h).
-      if (pass.shaped && film.sliding && pass.contact)
-        for (int n = 0; n < 4; ++n)
-          for (int l = 0; l < 4; ++l) tot.contact_power_shape.push_back({cell.node[n], cell.node[l], loads.power_shape[n][l]});
+      pass.keep_power_slopes(cell, loads, tot);
       pass.fluid_on_cell(cell, loads, tot);
       pass.scatter(cell, loads, a);
       if (film.sliding)

@@ -45,6 +45,7 @@ FilmPointReader::FilmPointReader(const BearingModel& model, std::span<const doub
   for (std::size_t f = 0; f < films.size(); ++f)
     if (films[f].sliding && f < totals.size()) friction_coefficient_ = totals[f].friction_coefficient;
   for (const Film& film : films) gaps_.emplace_back(model, u, film);
+  for (const Film& film : films) roughness_.emplace_back(model, u, film);
   const Scene& scene = model.scene();
   const std::array<const Material*, 3> materials{&scene.carrier.material, &scene.washer.material, &scene.gear.material};
   for (std::size_t b = 0; b < 3; ++b) yield_strength_[b] = materials[b]->yield_strength;
@@ -69,12 +70,19 @@ FilmPoint FilmPointReader::at(const Film& film, double r, double theta) const {
   FilmPoint p;
   const double h = gaps_[std::size_t(film.number - 1)].at_point(r, theta, c.i, c.j, c.s, c.t);
   p.gap = h;
-  p.mean_gap = average_gap(h, film.sigma).value;
-  if (model_.contact() && h <= model_.contact_cutoff()) p.contact_pressure = model_.contact()->pressure(h).value;
+  // σ at the point, bilinear in its cell's corners' Rqs where the faces run in (section 20).
+  const FilmRoughness& roughness = roughness_[std::size_t(film.number - 1)];
+  const PointRoughness rough = roughness.in_cell(
+      {m.node(c.i, c.j), m.node(c.i + 1, c.j), m.node(c.i, c.j + 1), m.node(c.i + 1, c.j + 1)}, c.s, c.t);
+  const double scale = rough.sigma / roughness.uniform().sigma;
+  p.mean_gap = average_gap(h, rough.sigma).value;
+  if (model_.contact() && h <= model_.contact_cutoff())
+    p.contact_pressure = roughness.varies() ? model_.scaled_contact()->pressure(h, scale).value
+                                            : model_.contact()->pressure(h).value;
 
   const Scene& scene = model_.scene();
   p.sliding_speed = film.sliding ? std::abs(scene.operating.speed) * r : 0.0;
-  p.flash_rise = flash_rise(film, h, p.contact_pressure, p.sliding_speed);
+  p.flash_rise = flash_rise(film, h, scale, p.contact_pressure, p.sliding_speed);
   const double ambient = scene.operating.ambient;
   if (!scene.effects.thermal) {
     p.film_temperature = ambient;
@@ -130,9 +138,12 @@ FilmPoint FilmPointReader::at(const Film& film, double r, double theta) const {
 // sqrt(A_r/(π n)) and the mean real pressure p_cont/A_r, and its friction heat is
 // f·(p_cont/A_r)·V per unit of real area. The junction rides on the softer face's summits
 // (a stationary source there) and sweeps over the other face at V.
-double FilmPointReader::flash_rise(const Film& film, double gap, double contact_pressure, double sliding_speed) const {
+double FilmPointReader::flash_rise(const Film& film, double gap, double scale, double contact_pressure,
+                                   double sliding_speed) const {
   if (!film.sliding || !(contact_pressure > 0.0) || !(sliding_speed > 0.0)) return 0.0;
-  const StatisticalContact::SummitContacts c = model_.contact()->contacts(gap);
+  const StatisticalContact::SummitContacts c = roughness_[std::size_t(film.number - 1)].varies()
+                                                   ? model_.scaled_contact()->contacts(gap, scale)
+                                                   : model_.contact()->contacts(gap);
   if (!(c.count > 0.0) || !(c.area_fraction > 0.0)) return 0.0;
   const double radius = std::sqrt(c.area_fraction / (std::numbers::pi * c.count));
   const double flux = friction_coefficient_ * contact_pressure / c.area_fraction * sliding_speed;
@@ -160,12 +171,13 @@ std::vector<double> FilmPointReader::node_advection(const Film& film, const Film
       const FilmGap& gap = gaps_[std::size_t(film.number - 1)];
       const double smooth = gap.smooth(i, j);
       const FaceRelief::NodeParts parts = gap.parts(i, j);
+      const double sigma = roughness_[std::size_t(film.number - 1)].at_node(n).sigma;
       const double tf = model_.temperature_of(u_, film.temperature_row(n));
       double conducted = 0.0;
       for (std::size_t k = 0; k < 2; ++k) {
         const double body = model_.face_temperature(u_, sides[k], m.radius(i), j, nullptr);
         for (int part = 0; part < parts.count; ++part) {
-          const double gap = average_gap(smooth + parts.relief[std::size_t(part)], film.sigma).value;
+          const double gap = average_gap(smooth + parts.relief[std::size_t(part)], sigma).value;
           conducted += area * parts.share[std::size_t(part)] * (tf - body) / model_.heat_path(gap, sides[k]);
         }
       }

@@ -14,6 +14,7 @@
 
 #include "model/bearing_model.h"
 #include "model/film_gap.h"
+#include "model/film_roughness.h"
 #include "physics/flash_temperature.h"
 
 namespace twb {
@@ -54,11 +55,13 @@ class FilmPointReader {
   // node's balance gives the advection (physics §15); empty without convection.
   std::vector<std::vector<double>> advected_;
   std::vector<FilmGap> gaps_;  // each film's gap at u
+  std::vector<FilmRoughness> roughness_;  // and its roughness (where its faces run in, per node)
   // The bodies a film's contacts heat, by ComponentId (carrier, washer, gear): their
   // conductivity and diffusivity; the softer one carries the summits' junctions with it.
   std::array<FlashBody, 3> flash_bodies_{};
   std::array<double, 3> yield_strength_{};
-  double flash_rise(const Film& film, double gap, double contact_pressure, double sliding_speed) const;
+  // `scale`: the summits' k = σ/σ0 at the point where the faces run in (section 20), else 1.
+  double flash_rise(const Film& film, double gap, double scale, double contact_pressure, double sliding_speed) const;
   std::vector<double> node_advection(const Film& film, const FilmTotals& totals) const;
 };
 

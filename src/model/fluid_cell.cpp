@@ -23,7 +23,18 @@ void FilmLoadPass::fluid_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals&
       }
     }
     model.viscosity(point_t, point_mu);
-    average_gap(point_h, film.sigma, point_gap);
+    if (!roughness.varies()) {
+      average_gap(point_h, film.sigma, point_gap);
+    } else {
+      // The faces run in: σ at each point from its corners' Rqs (film_roughness.h).
+      point_rough.resize(point_h.size());
+      for (std::size_t gs = 0, q = 0; gs < smooth_points; ++gs)
+        for (std::size_t gt = 0; gt < smooth_points; ++gt, ++q) {
+          const auto [s, tt, r, x, y, w] = smooth_rule.point(cell.i, cell.j, gs, gt);
+          point_rough[q] = roughness.in_cell(cell.node, s, tt);
+          point_gap[q] = average_gap(point_h[q], point_rough[q].sigma);
+        }
+    }
   }
   const double p_ref = model.pressure_scale();
   auto integrate = [&]<bool gradients>(std::bool_constant<gradients>) {
@@ -65,6 +76,14 @@ void FilmLoadPass::fluid_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals&
             for (int m = 0; m < 4; ++m) l.vheat_t[k][m] += wn * dqv_dt * N[m];
             if (shaped)
               for (int m = 0; m < 4; ++m) l.vheat_shape[k][m] += qn * N[m];
+            if (roughness.varies()) {
+              const PointRoughness& pr = point_rough[q];
+              const double by_sigma = -wn * qv / gap.value * average_gap_by_sigma(point_h[q], pr.sigma);
+              for (int m = 0; m < 4; ++m) {
+                l.vheat_rest[k][m] += by_sigma * pr.sigma_by_rest * N[m];
+                l.vheat_turn[k][m] += by_sigma * pr.sigma_by_turn * N[m];
+              }
+            }
           }
         }
       }

@@ -16,6 +16,7 @@
 
 #include "model/assembly_totals.h"
 #include "model/film_gap.h"
+#include "model/film_roughness.h"
 #include "physics/average_gap.h"
 
 namespace twb {
@@ -131,6 +132,7 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
     const std::array<Index, 3> rigid_cols = film.rigid_columns();
     const std::array<ComponentId, 2> sides{film.lower, film.upper};
     const FilmGap gaps(model, u, film);
+    const FilmRoughness roughness(model, u, film);
     for (int i = 0; i < m.radial_nodes(); ++i) {
       const double area = m.node_area(i);
       for (int j = 0; j < m.circumferential_nodes(); ++j) {
@@ -146,8 +148,15 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
         const std::array<double, 3> dh = gaps.rigid_slope(x, y);
         const LinearForm& shape = gaps.shape_form(n);
         std::array<ValueSlope, 4> part_gap{};
-        for (int p = 0; p < relief.count; ++p)
-          part_gap[std::size_t(p)] = average_gap(smooth + relief.relief[std::size_t(p)], film.sigma);
+        // Where the faces run in, σ is the node's (film_roughness.h).
+        const PointRoughness rough = roughness.at_node(n);
+        const double sigma = roughness.varies() ? rough.sigma : film.sigma;
+        std::array<double, 4> part_by_sigma{};
+        for (int p = 0; p < relief.count; ++p) {
+          const double hp = smooth + relief.relief[std::size_t(p)];
+          part_gap[std::size_t(p)] = average_gap(hp, sigma);
+          if (roughness.varies()) part_by_sigma[std::size_t(p)] = average_gap_by_sigma(hp, sigma);
+        }
         const ValueSlope gap = part_gap[0];
         const bool straddles = relief.count > 1;
         const double tf = model.temperature_of(u, row);
@@ -159,19 +168,27 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
           const double res = model.heat_path(gap.value, sides[side]);
           double flow = area * (tf - ts) / res;  // W from the film node into the component
           double dflow_dh = -flow / res * gap.slope / (2.0 * k_oil);
+          double dflow_dsigma = -flow / res * part_by_sigma[0] / (2.0 * k_oil);
           double conductance = area / res;
           if (straddles) {
-            double per_area = 0.0, slope = 0.0;  // Σ share/R and Σ share·(dh̄T/dh)/R²
+            double per_area = 0.0, slope = 0.0, by_sigma = 0.0;  // Σ share/R and Σ share·(dh̄T/dh)/R²
             for (int p = 0; p < relief.count; ++p) {
               const ValueSlope& part = part_gap[std::size_t(p)];
               const double r = model.heat_path(part.value, sides[side]), share = relief.share[std::size_t(p)];
               per_area += share / r;
               slope += share * (part.slope / (r * r));
+              by_sigma += share * (part_by_sigma[std::size_t(p)] / (r * r));
             }
             conductance = area * per_area;
             flow = conductance * (tf - ts);
             dflow_dh = -area * (tf - ts) * slope / (2.0 * k_oil);
+            dflow_dsigma = -area * (tf - ts) * by_sigma / (2.0 * k_oil);
           }
+          // c·∂flow/∂(each face's Rq at the node) into a row, where the faces run in.
+          const auto add_roughness = [&](Index to, double c) {
+            roughness.add_rest(a, to, c * dflow_dsigma * rough.sigma_by_rest, n);
+            roughness.add_turn(a, to, c * dflow_dsigma * rough.sigma_by_turn, n);
+          };
           a.add_residual(row, -scale * flow);
           if (jac) {
             a.add_derivative(row, row, -scale * conductance);
@@ -179,6 +196,7 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
               a.add_derivative(row, face.column[std::size_t(t)], scale * conductance * face.weight[std::size_t(t)]);
             for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], -scale * dflow_dh * dh[d]);
             a.add_form(row, -scale * dflow_dh, shape);
+            add_roughness(row, -scale);
           }
           // The heat crossing the washer dishes it (docs/physics.md section 11, film_shape.cpp).
           if (deforms && sides[side] == ComponentId::washer) {
@@ -191,6 +209,7 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
                                  -cw * conductance * face.weight[std::size_t(t)]);
               for (int d = 0; d < 3; ++d) a.add_derivative(dishing_row, rigid_cols[d], cw * dflow_dh * dh[d]);
               a.add_form(dishing_row, cw * dflow_dh, shape);
+              add_roughness(dishing_row, cw);
             }
           }
           for (int t = 0; t < face.terms; ++t) {
@@ -203,6 +222,7 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
               a.add_derivative(k, face.column[std::size_t(t2)], -cw * conductance * face.weight[std::size_t(t2)]);
             for (int d = 0; d < 3; ++d) a.add_derivative(k, rigid_cols[d], cw * dflow_dh * dh[d]);
             a.add_form(k, cw * dflow_dh, shape);
+            add_roughness(k, cw);
           }
         }
       }

@@ -82,6 +82,7 @@ void ReynoldsEffect::add_squeeze(const StateRates& rates, const Film& film,
   const bool factors = model.scene().effects.flow_factors;
   const bool jac = a.wants_jacobian();
   const FilmGap& gap = flows.gap();
+  const FilmRoughness& roughness = flows.roughness();
   const std::array<Index, 3> cols = film.rigid_columns();
   const double tilt_rate = film.upper == ComponentId::gear ? rates.imposed_tilt_rate : 0.0;
   for (int i = 1; i < m.radial_nodes() - 1; ++i) {
@@ -97,11 +98,16 @@ void ReynoldsEffect::add_squeeze(const StateRates& rates, const Film& film,
       const int node = m.node(i, j);
       const double h = gap.smooth_on_plane(node, x, y);
       const FaceRelief::NodeParts parts = gap.parts(i, j);
-      double slope = 0.0, curvature = 0.0;
+      // σ the node's where the faces run in (film_roughness.h), with the content's slope's
+      // own slope in it.
+      const PointRoughness rough = roughness.at_node(node);
+      double slope = 0.0, curvature = 0.0, slope_by_sigma = 0.0;
       for (int p = 0; p < parts.count; ++p) {
         const double part_h = h + parts.relief[std::size_t(p)], share = parts.share[std::size_t(p)];
-        slope += share * (factors ? average_gap(part_h, film.sigma).slope : 1.0);
-        if (factors) curvature += share * average_gap_curvature(part_h, film.sigma);
+        slope += share * (factors ? average_gap(part_h, rough.sigma).slope : 1.0);
+        if (!factors) continue;
+        curvature += share * average_gap_curvature(part_h, rough.sigma);
+        if (roughness.varies()) slope_by_sigma += share * average_gap_slope_by_sigma(part_h, rough.sigma);
       }
       const double area = m.node_area(i);  // the control volume's, r_i·Δr·Δθ
       a.add_residual(row, area * slope * h_rate);
@@ -109,6 +115,8 @@ void ReynoldsEffect::add_squeeze(const StateRates& rates, const Film& film,
       for (std::size_t d = 0; d < 3; ++d)
         a.add_derivative(row, cols[d], area * dh[d] * (curvature * h_rate + slope * rates.cj));
       a.add_form(row, area * curvature * h_rate, model.shape_form(film, node));
+      roughness.add_rest(a, row, area * h_rate * slope_by_sigma * rough.sigma_by_rest, node);
+      roughness.add_turn(a, row, area * h_rate * slope_by_sigma * rough.sigma_by_turn, node);
     }
   }
 }

@@ -3,6 +3,7 @@
 #include "model/wear_effect.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <numeric>
 #include <stdexcept>
@@ -45,12 +46,18 @@ std::array<const Component*, 2> resting_and_turning(const Scene& scene) {
   return {&scene.washer, &scene.gear};
 }
 
+RunningIn running_in_of(const Component& face) { return RunningIn(face.roughness.rq, face.roughness.run_in_rq); }
+
 }  // namespace
 
-WearEffect::WearEffect(ModelSetup& setup) : model_(setup.model) {
+WearEffect::WearEffect(ModelSetup& setup)
+    : model_(setup.model),
+      rest_running_in_(running_in_of(*resting_and_turning(setup.model.scene())[0])),
+      turn_running_in_(running_in_of(*resting_and_turning(setup.model.scene())[1])) {
   const Scene& scene = setup.model.scene();
   if (!scene.effects.asperity_contact) throw std::invalid_argument("wear needs the asperity_contact effect");
   const auto [rest, turn] = resting_and_turning(scene);
+  runs_in_ = rest->roughness.run_in_rq.has_value() || turn->roughness.run_in_rq.has_value();
   if (!rest->roughness.wear_rate || !turn->roughness.wear_rate)
     throw std::invalid_argument("wear: a face of the sliding film has no wear rate");
   k_rest_ = *rest->roughness.wear_rate;
@@ -135,6 +142,11 @@ void WearEffect::add_rates(const FilmTotals& sliding, double weight, Assembler& 
     a.add_form(rest_offset_ + term.node, rest_scale[i] * term.coefficient, shape);
     a.add_form(turn_offset_ + Index(i), turn_scale[i] * term.coefficient, shape);
   }
+  for (const DepthTerm& term : sliding.contact_power_depth) {
+    const std::size_t i = std::size_t(term.node / nt);
+    a.add_derivative(rest_offset_ + term.node, term.column, rest_scale[i] * term.coefficient);
+    a.add_derivative(turn_offset_ + Index(i), term.column, turn_scale[i] * term.coefficient);
+  }
 }
 
 void WearEffect::hold(std::span<const double> rest, std::span<const double> turn) {
@@ -169,6 +181,17 @@ WearEffect::Rates WearEffect::rates(const FilmTotals& sliding) const {
   return r;
 }
 
+WearEffect::FaceRoughness WearEffect::roughness(std::span<const double> u) const {
+  FaceRoughness r;
+  for (const double d : rest_depths(u)) r.rest.push_back(rest_running_in_.rq(d));
+  for (const double d : turn_depths(u)) r.turn.push_back(turn_running_in_.rq(d));
+  return r;
+}
+
+double WearEffect::run_in_sigma() const {
+  return std::hypot(rest_running_in_.rq_run_in(), turn_running_in_.rq_run_in());
+}
+
 WearEffect::Rates WearEffect::rates_at(std::span<const double> u) const {
   AssemblyTotals totals;
   model_.gather_totals(u, totals);
@@ -196,12 +219,23 @@ std::array<WearEffect::Worn, 2> WearEffect::worn(std::span<const double> u) cons
   const FilmMesh& m = film().mesh;
   const int nt = m.circumferential_nodes();
   const std::vector<double> rest = rest_depths(u), turn = turn_depths(u);
-  Worn r{std::max(0.0, *std::max_element(rest.begin(), rest.end())), 0.0, 0.0};
-  Worn t{std::max(0.0, *std::max_element(turn.begin(), turn.end())), 0.0, 0.0};
-  for (std::size_t n = 0; n < rest.size(); ++n) r.volume += m.node_area(int(n) / nt) * rest[n];
-  for (std::size_t i = 0; i < turn.size(); ++i) t.volume += nt * m.node_area(int(i)) * turn[i];
+  Worn r{std::max(0.0, *std::max_element(rest.begin(), rest.end())), 0.0, 0.0, 0.0};
+  Worn t{std::max(0.0, *std::max_element(turn.begin(), turn.end())), 0.0, 0.0, 0.0};
+  double rest_square = 0.0, turn_square = 0.0;
+  for (std::size_t n = 0; n < rest.size(); ++n) {
+    const double area = m.node_area(int(n) / nt), rq = rest_running_in_.rq(rest[n]).value;
+    r.volume += area * rest[n];
+    rest_square += area * rq * rq;
+  }
+  for (std::size_t i = 0; i < turn.size(); ++i) {
+    const double area = nt * m.node_area(int(i)), rq = turn_running_in_.rq(turn[i]).value;
+    t.volume += area * turn[i];
+    turn_square += area * rq * rq;
+  }
   r.mean = r.volume / m.area();
   t.mean = t.volume / m.area();
+  r.rq = std::sqrt(rest_square / m.area());
+  t.rq = std::sqrt(turn_square / m.area());
   return {r, t};
 }
 

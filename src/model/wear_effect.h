@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "model/effect_assembler.h"
+#include "physics/running_in.h"
 
 namespace twb {
 
@@ -62,10 +63,10 @@ class WearEffect final : public EffectAssembler {
   std::vector<double> rest_depths(std::span<const double> u) const;
   std::vector<double> turn_depths(std::span<const double> u) const;
   // Each face's wear at state u: its deepest and area-mean depth (m) and the volume worn
-  // off (m³), the exact integral of the bilinear depths (Σ A_a·d_a); the face at rest's
-  // first.
+  // off (m³), the exact integral of the bilinear depths (Σ A_a·d_a), and its Rq (m), the
+  // root of the area mean of its nodes' Rq² (lumped as the volume); the face at rest's first.
   struct Worn {
-    double deepest = 0.0, mean = 0.0, volume = 0.0;
+    double deepest = 0.0, mean = 0.0, volume = 0.0, rq = 0.0;
   };
   std::array<Worn, 2> worn(std::span<const double> u) const;
   // The washer worn to state u at `time` (s) of its life, on this mesh's grid.
@@ -75,6 +76,18 @@ class WearEffect final : public EffectAssembler {
   // k of the face at rest and of the turning face (m³/(N·m)).
   double rest_rate() const { return k_rest_; }
   double turn_rate() const { return k_turn_; }
+
+  // Running-in (docs/physics.md section 20, [W5]-[W6]): whether a face of the sliding film
+  // has a run-in Rq (else both keep their Rq and nothing below is needed).
+  bool runs_in() const { return runs_in_; }
+  // Each face's Rq (m) at state u's depths and its slope in the depth: the face at rest's
+  // per node, the turning face's per radial node.
+  struct FaceRoughness {
+    std::vector<ValueSlope> rest, turn;
+  };
+  FaceRoughness roughness(std::span<const double> u) const;
+  // The faces' combined Rq once both have run in (m): the least the sliding film's σ reaches.
+  double run_in_sigma() const;
 
  private:
   const Film& film() const;
@@ -86,6 +99,8 @@ class WearEffect final : public EffectAssembler {
   const BearingModel& model_;
   std::size_t film_index_ = 0;  // the sliding film's
   double k_rest_ = 0, k_turn_ = 0;
+  RunningIn rest_running_in_, turn_running_in_;
+  bool runs_in_ = false;
   Index rest_offset_ = -1, turn_offset_ = -1;
   // The depths the steady rows hold, in σ_ref: a new washer's zeros.
   std::vector<double> held_rest_, held_turn_;

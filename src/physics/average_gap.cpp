@@ -71,4 +71,14 @@ void average_gap(std::span<const double> h, double sigma, std::span<ValueSlope> 
   }
 }
 
+double average_gap_by_sigma(double h, double sigma) {
+  const double x = h / sigma;
+  return std::exp(-0.5 * x * x) / std::sqrt(2.0 * std::numbers::pi);
+}
+
+double average_gap_slope_by_sigma(double h, double sigma) {
+  const double x = h / sigma;
+  return -x * std::exp(-0.5 * x * x) / (sigma * std::sqrt(2.0 * std::numbers::pi));
+}
+
 }  // namespace twb

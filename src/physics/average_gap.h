@@ -17,6 +17,12 @@ ValueSlope average_gap(double h, double sigma);
 // the gap (the film's squeeze, docs/physics.md section 19); 0 where average_gap returns
 // {h, 1} (below 1e-16/σ there).
 double average_gap_curvature(double h, double sigma);
+// ∂h_T/∂σ = exp(−h²/(2σ²))/√(2π) (dimensionless): h_T = σ·A(h/σ), so its slope in σ is
+// A(x) − x·A'(x) (a face's roughness that changes as it runs in, docs/physics.md section 20).
+double average_gap_by_sigma(double h, double sigma);
+// ∂²h_T/∂h∂σ = −(h/σ)·G(h) (1/m): the slope's own slope in σ (the squeeze's content where
+// the faces run in).
+double average_gap_slope_by_sigma(double h, double sigma);
 // The same at every gap of a batch, into out (same size), with exp and erfc vectorized
 // (physics/batch_math.h): equal to the scalar values to a few ulp.
 void average_gap(std::span<const double> h, double sigma, std::span<ValueSlope> out);

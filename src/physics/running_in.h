@@ -45,6 +45,8 @@ class RunningIn {
   // without one (the face keeps σ0 at every depth).
   std::optional<double> run_in_depth() const { return run_in_depth_; }
   double rq_new() const { return rq_new_; }
+  // The face's Rq once run in: its run-in Rq, or σ0 without one.
+  double rq_run_in() const { return rq_run_in_.value_or(rq_new_); }
 
  private:
   double rq_new_;

@@ -49,24 +49,35 @@ ScaledContact::ScaledContact(const ContactTableKey& key, double k_low, double sp
   }
 }
 
-ScaledContact::Reduced ScaledContact::reduced(double x, double lnk) const {
+ScaledContact::Stencil ScaledContact::stencil(double lnk) const {
   const int nodes = int(lnk_.size());
   // The (up to) four nodes nearest ln k: the interval holding it and one on each side,
   // shifted inward at the ends.
   const int interval = std::clamp(int(std::floor((lnk - lnk_.front()) / step_)), 0, std::max(0, nodes - 2));
-  const int count = std::min(4, nodes);
-  const int first = std::clamp(interval - 1, 0, nodes - count);
-  Reduced r;
-  for (int m = first; m < first + count; ++m) {
+  Stencil st;
+  st.count = std::min(4, nodes);
+  st.first = std::clamp(interval - 1, 0, nodes - st.count);
+  for (int m = st.first; m < st.first + st.count; ++m) {
     // Lagrange's basis polynomial of node m over the stencil, and its slope in ln k.
     double w = 1.0, dw = 0.0;
-    for (int o = first; o < first + count; ++o) {
+    for (int o = st.first; o < st.first + st.count; ++o) {
       if (o == m) continue;
       const double denominator = lnk_[std::size_t(m)] - lnk_[std::size_t(o)];
       const double factor = (lnk - lnk_[std::size_t(o)]) / denominator;
       dw = dw * factor + w / denominator;
       w *= factor;
     }
+    st.w[std::size_t(m - st.first)] = w;
+    st.dw[std::size_t(m - st.first)] = dw;
+  }
+  return st;
+}
+
+ScaledContact::Reduced ScaledContact::reduced(double x, double lnk) const {
+  const Stencil st = stencil(lnk);
+  Reduced r;
+  for (int m = st.first; m < st.first + st.count; ++m) {
+    const double w = st.w[std::size_t(m - st.first)], dw = st.dw[std::size_t(m - st.first)];
     const double k = std::exp(lnk_[std::size_t(m)]);
     const ValueSlope p = tables_[std::size_t(m)]->pressure(k * x);
     if (!(p.value > 0.0)) {
@@ -79,6 +90,24 @@ ScaledContact::Reduced ScaledContact::reduced(double x, double lnk) const {
     r.dlnk += dw * g;
   }
   return r;
+}
+
+// The count of summits in contact depends on their heights alone, which scale with k: it
+// is the new population's at h/k. The real area is interpolated as the pressure is:
+// ln A_r(h, k) = cubic in ln k of ln A_r,j(k_j·h/k), invariant for summits that do not yield.
+StatisticalContact::SummitContacts ScaledContact::contacts(double h, double k) const {
+  const double scale = std::clamp(k, k_low_, 1.0), x = h / scale;
+  StatisticalContact::SummitContacts c;
+  c.count = tables_.back()->contacts(x).count;
+  const Stencil st = stencil(std::log(scale));
+  double log_area = 0.0;
+  for (int m = st.first; m < st.first + st.count; ++m) {
+    const double area = tables_[std::size_t(m)]->contacts(std::exp(lnk_[std::size_t(m)]) * x).area_fraction;
+    if (!(area > 0.0)) return {};
+    log_area += st.w[std::size_t(m - st.first)] * std::log(area);
+  }
+  c.area_fraction = std::exp(log_area);
+  return c;
 }
 
 ScaledContact::Pressure ScaledContact::pressure(double h, double k) const {

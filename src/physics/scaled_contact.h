@@ -17,6 +17,7 @@
 // error is.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -37,6 +38,9 @@ class ScaledContact {
   // p(h, k) and its slopes; k is held within [k_low, 1] (beyond them, the nearest end's,
   // with no slope in k).
   Pressure pressure(double h, double k) const;
+  // The summits in contact at (h, k): their count per unit area and the real area's share
+  // (the flash temperature's junctions, docs/physics.md section 8).
+  StatisticalContact::SummitContacts contacts(double h, double k) const;
 
   // The largest relative error of p found at the midpoints in ln k between the tables,
   // over the separations where p is above 1e-30 of its value at contact (the model's
@@ -53,6 +57,12 @@ class ScaledContact {
     bool zero = false;  // p underflows at a table: no contact
   };
   Reduced reduced(double x, double lnk) const;
+  // The Lagrange cubic's nodes nearest ln k (first, count) and its weights and their slopes.
+  struct Stencil {
+    int first = 0, count = 0;
+    std::array<double, 4> w{}, dw{};
+  };
+  Stencil stencil(double lnk) const;
 
   double k_low_, step_;
   std::vector<double> lnk_;  // the nodes, from ln k_low to 0

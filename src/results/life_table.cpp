@@ -11,12 +11,12 @@ ResultTable life_table(const std::vector<LifeRow>& rows) {
   ResultTable t;
   const auto time = t.number(kLifeTimeColumn);
   struct Face {
-    ResultTable::Column deepest, mean, volume;
+    ResultTable::Column deepest, mean, volume, rq;
   };
   auto face = [&](const char* name) {
     return Face{t.number(std::string("worn_depth_") + name + "_max_um"),
                 t.number(std::string("worn_depth_") + name + "_mean_um"),
-                t.number(std::string("worn_volume_") + name + "_mm3")};
+                t.number(std::string("worn_volume_") + name + "_mm3"), t.number(std::string("rq_") + name + "_um")};
   };
   const Face rest = face("rest"), turn = face("turn");
   const auto rest_rate = t.number("wear_rate_rest_um_h"), turn_rate = t.number("wear_rate_turn_um_h");
@@ -30,6 +30,7 @@ ResultTable life_table(const std::vector<LifeRow>& rows) {
       t.put_number(columns.deepest, um * wear.deepest);
       t.put_number(columns.mean, um * wear.mean);
       t.put_number(columns.volume, mm3 * wear.volume);
+      t.put_number(columns.rq, um * wear.rq);
     }
     t.put_number(rest_rate, um * hour * r.rest_rate);
     t.put_number(turn_rate, um * hour * r.turn_rate);

@@ -122,7 +122,7 @@ double read_wear_rate(const MapReader& face, const Effects& effects) {
 }
 
 Roughness read_roughness(const MapReader& surfaces, std::string_view component, const Effects& effects) {
-  const MapReader face = surfaces.map(component, {"Ra", "Rq", "wear_rate"});
+  const MapReader face = surfaces.map(component, {"Ra", "Rq", "wear_rate", "run_in_rq"});
   Roughness r;
   if (face.has("wear_rate")) r.wear_rate = read_wear_rate(face, effects);
   // Ra enters no equation (σ is Rq); a face given by one of the two keeps the default
@@ -139,6 +139,18 @@ Roughness read_roughness(const MapReader& surfaces, std::string_view component, 
     node.fail(fmt::format("{}: Ra {:.4g} m is larger than Rq {:.4g} m; no surface has one: Ra (the mean |z|) is at "
                           "most Rq (the root mean square of z)",
                           node.path(), r.ra, r.rq));
+  }
+  if (face.has("run_in_rq")) {
+    const Node node = face.get("run_in_rq", "");
+    if (!effects.wear)
+      node.fail(fmt::format("{}: a face runs in as it wears (docs/physics.md section 20): add the effect 'wear', or "
+                            "leave run_in_rq out",
+                            node.path()));
+    r.run_in_rq = face.quantity("run_in_rq", si::length, bounds::roughness);
+    if (*r.run_in_rq > r.rq)
+      node.fail(fmt::format("{}: {:.4g} m is above the face's Rq {:.4g} m: running-in smooths a face (the Rq it "
+                            "runs in to is at most its Rq new)",
+                            node.path(), *r.run_in_rq, r.rq));
   }
   return r;
 }

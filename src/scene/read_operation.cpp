@@ -221,6 +221,16 @@ void check_wear_rates(const MapReader& scene, const Scene& out) {
   const std::array<std::pair<std::string_view, const Component*>, 2> faces{
       carrier_slides ? std::pair{std::string_view("carrier"), &out.carrier} : std::pair{std::string_view("washer"), &out.washer},
       carrier_slides ? std::pair{std::string_view("washer"), &out.washer} : std::pair{std::string_view("gear"), &out.gear}};
+  // A face that does not slide does not wear, and so does not run in.
+  for (const auto& [name, component] :
+       {std::pair{std::string_view("carrier"), &out.carrier}, std::pair{std::string_view("gear"), &out.gear}}) {
+    if (!component->roughness.run_in_rq || faces[0].second == component || faces[1].second == component) continue;
+    const MapReader surfaces = scene.map("surfaces", {"carrier", "washer", "gear", "asperities"});
+    const Node where = surfaces.map(name, {"Ra", "Rq", "wear_rate", "run_in_rq"}).get("run_in_rq", "");
+    where.fail(fmt::format("{}: the {}'s face is not on the sliding film ({}): it does not wear, and so does not run "
+                           "in; leave run_in_rq out",
+                           where.path(), name, kSlidingFilms.name(out.operating.sliding)));
+  }
   for (const auto& [name, component] : faces) {
     if (component->roughness.wear_rate) continue;
     const MapReader surfaces = scene.map("surfaces", {"carrier", "washer", "gear", "asperities"});

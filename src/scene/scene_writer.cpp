@@ -102,6 +102,7 @@ void write_surfaces(SceneText& w, const Scene& s) {
     w.entry(2, "Ra", quantity(component->roughness.ra, "m"));
     w.entry(2, "Rq", quantity(component->roughness.rq, "m"));
     if (component->roughness.wear_rate) w.entry(2, "wear_rate", quantity(*component->roughness.wear_rate, "m^3/(N m)"));
+    if (component->roughness.run_in_rq) w.entry(2, "run_in_rq", quantity(*component->roughness.run_in_rq, "m"));
   }
   const AsperityParameters& a = s.asperities;
   w.line(1, "asperities:");

@@ -48,6 +48,7 @@ struct EffectSet {
   bool dammed = false;   // the grooves closed at radial line 2 of 5, open at the bore
   bool worn = false;     // a part of film 1's gap from outside the model (support/prescribed_wear.h)
   bool wear = false;     // the sliding film's faces worn (docs/physics.md section 20)
+  bool running_in = false;  // and their roughness run in, to 0.3 of its Rq new
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -104,6 +105,8 @@ std::unique_ptr<BearingModel> model_of(const EffectSet& e) {
   s.effects.wear = e.wear;
   if (e.wear)
     for (Component* c : {&s.carrier, &s.washer, &s.gear}) c->roughness.wear_rate = 1e-16;
+  if (e.running_in)
+    for (Component* c : {&s.carrier, &s.washer, &s.gear}) c->roughness.run_in_rq = 0.3 * c->roughness.rq;
   std::vector<BearingModel::EffectMaker> more;
   if (e.worn)
     more.push_back(testing::PrescribedWear::maker(
@@ -252,7 +255,10 @@ TEST(SlowTimeJacobian, MatchesCentralDifferences) {
        FrictionLaw::empirical, CavitationModel::reynolds, 0, false, false, false, false, true},
       {"wear_deformation_fed_grooves_convection", true, true, true, true, 545.0, CarrierTemperature::load_frame,
        CavitationRow::fischer_burmeister, true, FrictionLaw::empirical, CavitationModel::reynolds, 2, true, true,
-       false, false, true}};
+       false, false, true},
+      {"wear_running_in", true, true, true, true, 545.0, CarrierTemperature::load_frame,
+       CavitationRow::fischer_burmeister, false, FrictionLaw::empirical, CavitationModel::reynolds, 0, false, false,
+       false, false, true, true}};
   std::mt19937 rng(97531);
   for (const EffectSet& e : worn) {
     auto m = model_of(e);
@@ -471,7 +477,11 @@ INSTANTIATE_TEST_SUITE_P(
                                 CavitationModel::reynolds, 0, false, false, false, false, true},
                       EffectSet{"wear_deformation_fed_grooves_convection", true, true, true, true, 545.0,
                                 CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
-                                FrictionLaw::empirical, CavitationModel::reynolds, 2, true, true, false, false, true}),
+                                FrictionLaw::empirical, CavitationModel::reynolds, 2, true, true, false, false, true},
+                      // Their roughness run in ([W5]-[W6]): σ per node from the depths.
+                      EffectSet{"wear_running_in", true, true, true, true, 545.0, CarrierTemperature::load_frame,
+                                CavitationRow::fischer_burmeister, false, FrictionLaw::empirical,
+                                CavitationModel::reynolds, 0, false, false, false, false, true, true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

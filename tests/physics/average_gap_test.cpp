@@ -101,3 +101,30 @@ TEST(AverageGap, OpenShortcutIsTheClosedFormToTheLastBit) {
 }
 
 }  // namespace
+
+namespace twb {
+namespace {
+
+// ∂h_T/∂σ against central differences in σ (step 1e-6 σ: truncation O(step²) ~1e-12,
+// rounding ε·h_T/step ~ 1e-10 of σ's scale), across contact and the open film.
+TEST(AverageGapBySigma, IsTheSlopeInTheRoughness) {
+  const double sigma = 0.7e-6, step = 1e-6 * sigma;
+  for (const double x : {-3.0, -1.0, 0.0, 0.5, 2.0, 4.0}) {
+    const double h = x * sigma;
+    const double by_diff = (average_gap(h, sigma + step).value - average_gap(h, sigma - step).value) / (2.0 * step);
+    EXPECT_NEAR(average_gap_by_sigma(h, sigma), by_diff, 1e-8) << x;
+  }
+}
+
+// ∂(∂h_T/∂h)/∂σ the same way: the slope is O(1), so rounding is ε/step ~ 2e-10 of 1/σ.
+TEST(AverageGapBySigma, IsTheSlopesSlopeInTheRoughness) {
+  const double sigma = 0.7e-6, step = 1e-6 * sigma;
+  for (const double x : {-3.0, -1.0, 0.0, 0.5, 2.0, 4.0}) {
+    const double h = x * sigma;
+    const double by_diff = (average_gap(h, sigma + step).slope - average_gap(h, sigma - step).slope) / (2.0 * step);
+    EXPECT_NEAR(average_gap_slope_by_sigma(h, sigma) * sigma, by_diff * sigma, 1e-8) << x;
+  }
+}
+
+}  // namespace
+}  // namespace twb

@@ -97,6 +97,26 @@ TEST(ScaledContact, ElasticSummitsAreScaleInvariant) {
   }
 }
 
+// The summits in contact at (h, k), the flash temperature's junctions: their count depends
+// on the heights alone (the new population's at h/k, to its table's error), the real area
+// is interpolated in ln k as p is, and both change with k only through the summits'
+// plastic share: within twice p's measured bound, as p is (measured: 1.9e-6 against p's 6.7e-6).
+TEST(ScaledContact, ItsSummitsInContactAreTheScaledPopulations) {
+  const ContactTableKey key = paper_population();
+  const ScaledContact scaled(key, 1.0 / 3.0);
+  for (const double k : {0.41, 0.5, 0.77, 0.93}) {
+    SCOPED_TRACE(k);
+    const StatisticalContact direct = table_at(key, k);
+    across_contact(direct, [&](double h) {
+      const StatisticalContact::SummitContacts exact = direct.contacts(h);
+      if (!(exact.area_fraction > 0.0)) return;
+      const StatisticalContact::SummitContacts c = scaled.contacts(h, k);
+      EXPECT_NEAR(c.count, exact.count, 1e-8 * exact.count);
+      EXPECT_NEAR(c.area_fraction, exact.area_fraction, 2.0 * scaled.error_bound() * exact.area_fraction);
+    });
+  }
+}
+
 // Beyond its range a scale is held at the nearest end, without a slope in k.
 TEST(ScaledContact, AScaleBeyondItsRangeIsHeldAtTheEnd) {
   const ContactTableKey key = paper_population();

@@ -42,6 +42,7 @@ void expect_same_component(const Component& a, const Component& b) {
   EXPECT_EQ(a.roughness.ra, b.roughness.ra);
   EXPECT_EQ(a.roughness.rq, b.roughness.rq);
   EXPECT_EQ(a.roughness.wear_rate, b.roughness.wear_rate);
+  EXPECT_EQ(a.roughness.run_in_rq, b.roughness.run_in_rq);
   ASSERT_EQ(a.grooves.has_value(), b.grooves.has_value());
   if (!a.grooves) return;
   EXPECT_EQ(a.grooves->count, b.grooves->count);
@@ -430,7 +431,8 @@ INSTANTIATE_TEST_SUITE_P(
         RoundTripCase{"wear_with_its_rates_and_allowance",
                       std::string(kMinimalScene).replace(std::string(kMinimalScene).find("asperity_contact]"), 17,
                                                          "asperity_contact, wear]") +
-                          "surfaces: {carrier: {wear_rate: 2e-17 m^3/(N m)}, washer: {wear_rate: 0}, gear: {wear_rate: 3e-7 mm^3/(N m)}}\n"
+                          "surfaces: {carrier: {wear_rate: 2e-17 m^3/(N m), run_in_rq: 0.2 um}, washer: {wear_rate: 0},\n"
+                          "           gear: {wear_rate: 3e-7 mm^3/(N m)}}\n"
                           "limits: {wear_depth: 25 um}\n"},
         RoundTripCase{"distress_map_custom_surfaces_film_2",
                       std::string(testing::kSceneBodies) +

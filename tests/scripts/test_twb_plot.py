@@ -935,14 +935,17 @@ class TwbPlotTest(unittest.TestCase):
         against time, the face at rest's map and the turning face's profiles; a failure
         load not searched is drawn as a gap; a malformed row is located."""
         d = self.results_dir("life")
-        header = ("t_h,worn_depth_rest_max_um,worn_depth_rest_mean_um,worn_volume_rest_mm3,worn_depth_turn_max_um,"
-                  "worn_depth_turn_mean_um,worn_volume_turn_mm3,wear_rate_rest_um_h,wear_rate_turn_um_h,torque_Nm,"
-                  "f_eff,T_max_C,hmin_over_sigma,contact_share,W_fail_N,failure_criterion,event")
+        header = ("t_h,worn_depth_rest_max_um,worn_depth_rest_mean_um,worn_volume_rest_mm3,rq_rest_um,"
+                  "worn_depth_turn_max_um,worn_depth_turn_mean_um,worn_volume_turn_mm3,rq_turn_um,wear_rate_rest_um_h,"
+                  "wear_rate_turn_um_h,torque_Nm,f_eff,T_max_C,hmin_over_sigma,contact_share,W_fail_N,"
+                  "failure_criterion,event")
         rows = [header]
         for k in range(3):
             fail = "" if k == 1 else f"{190 + 10 * k}"
-            rows.append(f"{100 * k},{0.5 * k},{0.01 * k},{0.001 * k},{0.05 * k},{0.01 * k},{0.001 * k},0.01,0.001,"
-                        f"0.04,0.03,35,5,0.001,{fail},{'distress' if fail else ''},{'end' if k == 2 else ''}")
+            # (the faces run in: their Rq falls)
+            rows.append(f"{100 * k},{0.5 * k},{0.01 * k},{0.001 * k},{0.4 - 0.1 * k},{0.05 * k},{0.01 * k},{0.001 * k},"
+                        f"{0.3 - 0.05 * k},0.01,0.001,0.04,0.03,35,5,0.001,{fail},{'distress' if fail else ''},"
+                        f"{'end' if k == 2 else ''}")
         profile = ["t_h,r_m,theta_rad,worn_rest_um,worn_turn_um"]
         for k in range(3):
             for i in range(3):
@@ -956,7 +959,8 @@ class TwbPlotTest(unittest.TestCase):
         out_dir = os.path.join(d, "figures")
         self.assert_figures(out_dir, ("life",), formats=("svg",))
         text = self.svg_text(os.path.join(out_dir, "life.svg"))
-        for label in ("face at rest, deepest", "turning face, mean", "failure load", "the life ends at 200 h: lasts its duration",
+        for label in ("face at rest, deepest", "turning face, mean", "Rq, face at rest", "failure load",
+                      "the life ends at 200 h: lasts its duration",
                       "face at rest, worn at 200 h"):
             self.assertIn(label, text)
         read = tp.read_life(os.path.join(d, "life.csv"))

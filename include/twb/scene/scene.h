@@ -91,6 +91,10 @@ struct Roughness {
   // m³/(N·m), the face's specific wear rate k of Archard's law (docs/physics.md section 20),
   // with `wear` on. None: not given (a face of the sliding film then needs it).
   std::optional<double> wear_rate;
+  // m, the face's Rq once run in (docs/physics.md section 20, running-in): with `wear` on,
+  // a face of the sliding film that wears runs in from Rq to it by truncation. None: it
+  // keeps its Rq as it wears.
+  std::optional<double> run_in_rq;
 };
 
 // A land's shaped inlet (docs/physics.md section 14), from the edge the moving face drags

@@ -1,7 +1,7 @@
-"""A washer's life (study type life): how deep each face wore and how its failure load
-moved over the life (left), and the faces worn where the life ends (right): the face at
-rest in the load frame over the annulus, the turning face against the radius at every
-reported time."""
+"""A washer's life (study type life): how deep each face wore (with each face's Rq where
+the faces run in) and how its failure load moved over the life (left), and the faces worn
+where the life ends (right): the face at rest in the load frame over the annulus, the
+turning face against the radius at every reported time."""
 
 import math
 
@@ -37,6 +37,15 @@ def _draw_depths(ax, rows):
                 linewidth=1.2, label=f"{name}, mean")
     ax.set_ylabel("worn depth (µm)")
     ax.legend(fontsize="small", loc="upper left")
+    # Each face's Rq on its own axis, where a face runs in (a face that does not keeps its Rq).
+    if any(row[f"rq_{face}_um"] != rows[0][f"rq_{face}_um"] for row in rows for face in ("rest", "turn")):
+        rq_ax = ax.twinx()
+        for face, color, name in (("rest", "tab:red", "face at rest"), ("turn", "tab:blue", "turning face")):
+            rq_ax.plot(t, [row[f"rq_{face}_um"] for row in rows], color=color, linestyle=":", linewidth=1.2,
+                       label=f"Rq, {name}")
+        rq_ax.set_ylabel("Rq (µm)")
+        rq_ax.set_ylim(bottom=0.0)
+        rq_ax.legend(fontsize="small", loc="lower right")
 
 
 def _draw_failure_load(ax, rows, load):

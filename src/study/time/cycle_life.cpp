@@ -225,8 +225,8 @@ void CycleLife::record(const std::vector<double>& d, const std::vector<double>& 
   const auto worn = wear_.worn(u);
   LifeRow row;
   row.time = t_h * kHour;
-  row.rest = {worn[0].deepest, worn[0].mean, worn[0].volume};
-  row.turn = {worn[1].deepest, worn[1].mean, worn[1].volume};
+  row.rest = face_wear(worn[0]);
+  row.turn = face_wear(worn[1]);
   row.rest_rate = c.rest_rate;
   row.turn_rate = c.turn_rate;
   row.torque = c.torque;

@@ -122,8 +122,8 @@ void LifeMarch::add_row(std::span<const double> u, double t_h, const std::string
   const auto worn = wear_.worn(u);
   LifeRow row;
   row.time = t_h * kHour;
-  row.rest = {worn[0].deepest, worn[0].mean, worn[0].volume};
-  row.turn = {worn[1].deepest, worn[1].mean, worn[1].volume};
+  row.rest = face_wear(worn[0]);
+  row.turn = face_wear(worn[1]);
   row.rest_rate = reported_rate(s, "wear_rate_rest_um_h");
   row.turn_rate = reported_rate(s, "wear_rate_turn_um_h");
   row.torque = s.torque;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "model/bearing_model.h"
+#include "model/wear_effect.h"
 #include "study/searches/distress_search.h"
 #include "twb/study/study_outcome.h"
 
@@ -20,6 +21,9 @@ void run_life(BearingModel& model, StudyOutcome& out, const ProgressReport& prog
 // times it, not marched past distress (a worn washer's refined meshes would not have its
 // depths: the failure load is the scene's mesh's, without an error bar).
 DistressSearchSettings life_failure_search(double operating_load);
+
+// A face's wear as life.csv reports it.
+inline FaceWear face_wear(const WearEffect::Worn& w) { return {w.deepest, w.mean, w.volume, w.rq}; }
 
 // The life's message and summary from its rows: `subject` ("life at 150 N"), how it
 // ended, each face's wear at the end, the failure load new and at the end.
