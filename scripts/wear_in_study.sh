@@ -44,8 +44,10 @@ for tilt in $tilts; do
   run="$out/life_$tilt"
   "$twb" run "$root/configs/studies/life.yaml" --quiet --out "$run" --set "geometry.gear.tilt=$tilt mrad" \
     --set "operating.load=$load N" --set "study.report_every=2000 h" > "$out/life_$tilt.log" 2>&1 || status=1
-  # life.csv: t_h, rest max (2), ..., turn max (5), ..., W_fail_N (15), failure_criterion (16)
-  awk -F, -v tilt="$tilt" -v load="$load" 'NR == 2 { wn = $15; cn = $16 } NR > 2 { ww = $15; cw = $16; r = $2; t = $5 }
+  # life.csv's columns by their names (docs/results.md): the first row is the new washer's
+  awk -F, -v tilt="$tilt" -v load="$load" 'NR == 1 { for (k = 1; k <= NF; ++k) at[$k] = k; next }
+    { w = $(at["W_fail_N"]); c = $(at["failure_criterion"]) }
+    NR == 2 { wn = w; cn = c } NR > 2 { ww = w; cw = c; r = $(at["worn_depth_rest_max_um"]); t = $(at["worn_depth_turn_max_um"]) }
     END { printf "%s,%s,%s,%s,%s,%s,%s,%s\n", tilt, load, wn, cn, ww, cw, r, t }' "$run/life.csv" >> "$summary" \
     || status=1
 done
