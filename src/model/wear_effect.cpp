@@ -48,6 +48,12 @@ std::array<const Component*, 2> resting_and_turning(const Scene& scene) {
 
 RunningIn running_in_of(const Component& face) { return RunningIn(face.roughness.rq, face.roughness.run_in_rq); }
 
+std::vector<double> face_rq(const RunningIn& face, const std::vector<double>& depths) {
+  std::vector<double> rq;
+  for (const double d : depths) rq.push_back(face.rq(d).value);
+  return rq;
+}
+
 }  // namespace
 
 WearEffect::WearEffect(ModelSetup& setup)
@@ -249,6 +255,8 @@ WornWasher WearEffect::worn_washer(std::span<const double> u, double time) const
                     .circumferential_nodes = f.mesh.circumferential_nodes(),
                     .rest = rest_depths(u),
                     .turn = turn_depths(u),
+                    .rest_rq = face_rq(rest_running_in_, rest_depths(u)),
+                    .turn_rq = face_rq(turn_running_in_, turn_depths(u)),
                     .source = {}};
 }
 

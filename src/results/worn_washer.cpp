@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "twb/error_family.h"
+
 namespace twb {
 namespace {
 
@@ -109,8 +111,11 @@ ResultTable worn_profile_table(const std::vector<WornWasher>& along_life) {
   ResultTable t;
   const auto time = t.number("t_h"), r = t.number("r_m"), theta = t.number("theta_rad");
   const auto rest = t.number("worn_rest_um"), turn = t.number("worn_turn_um");
+  const auto rest_rq = t.number("rq_rest_um"), turn_rq = t.number("rq_turn_um");
   for (const WornWasher& w : along_life) {
     const int nr = w.radial_nodes, nt = w.circumferential_nodes;
+    if (w.rest_rq.size() != w.rest.size() || w.turn_rq.size() != w.turn.size())
+      throw InternalError("worn_profile_table: a worn washer without its faces' Rq");
     const double dr = (w.outer_radius - w.inner_radius) / (nr - 1);
     for (int i = 0; i < nr; ++i)
       for (int j = 0; j < nt; ++j) {
@@ -119,6 +124,8 @@ ResultTable worn_profile_table(const std::vector<WornWasher>& along_life) {
         t.put_number(theta, 2.0 * std::numbers::pi * j / nt);
         t.put_number(rest, um * w.rest[std::size_t(i * nt + j)]);
         t.put_number(turn, um * w.turn[std::size_t(i)]);
+        t.put_number(rest_rq, um * w.rest_rq[std::size_t(i * nt + j)]);
+        t.put_number(turn_rq, um * w.turn_rq[std::size_t(i)]);
       }
   }
   return t;

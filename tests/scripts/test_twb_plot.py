@@ -946,12 +946,12 @@ class TwbPlotTest(unittest.TestCase):
             rows.append(f"{100 * k},{0.5 * k},{0.01 * k},{0.001 * k},{0.4 - 0.1 * k},{0.05 * k},{0.01 * k},{0.001 * k},"
                         f"{0.3 - 0.05 * k},0.01,0.001,0.04,0.03,35,5,0.001,{fail},{'distress' if fail else ''},"
                         f"{'end' if k == 2 else ''}")
-        profile = ["t_h,r_m,theta_rad,worn_rest_um,worn_turn_um"]
+        profile = ["t_h,r_m,theta_rad,worn_rest_um,worn_turn_um,rq_rest_um,rq_turn_um"]
         for k in range(3):
             for i in range(3):
                 for j in range(4):
                     profile.append(f"{100 * k},{0.0055 + 0.003 * i},{1.5707963267948966 * j},{0.1 * k * i * (j == 0)},"
-                                   f"{0.02 * k * i}")
+                                   f"{0.02 * k * i},{0.4 - 0.05 * k * (j == 0)},0.3")
         write(os.path.join(d, "life.csv"), rows)
         write(os.path.join(d, "worn_profile.csv"), profile)
         result = plot(d, "--format", "svg")

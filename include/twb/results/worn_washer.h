@@ -19,8 +19,8 @@ WornWasher read_worn_washer(const std::string& path);
 WornWasher worn_washer_of(const std::string& json, const std::string& where);
 
 // worn_profile.csv: the depths at every reported time, one row per node of the sliding
-// film (radius outer loop, angle inner):
-//   t_h, r_m, theta_rad, worn_rest_um, worn_turn_um
+// film (radius outer loop, angle inner), with each face's Rq there:
+//   t_h, r_m, theta_rad, worn_rest_um, worn_turn_um, rq_rest_um, rq_turn_um
 ResultTable worn_profile_table(const std::vector<WornWasher>& along_life);
 
 }  // namespace twb

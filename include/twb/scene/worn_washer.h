@@ -19,6 +19,10 @@ struct WornWasher {
   // m: the face at rest in the load frame, per node (radius outer loop, angle inner);
   // the turning face, per radial node (each radius's circumferential mean).
   std::vector<double> rest, turn;
+  // m: each face's Rq there as it runs in (the same layout; its Rq new where it does not),
+  // reported in worn_profile.csv; not in worn_washer.json (a scene's run_in_rq gives it
+  // from the depths), so empty in a washer read back.
+  std::vector<double> rest_rq, turn_rq;
   std::string source;  // where it was read from, for messages (not written)
 };
 
