@@ -64,6 +64,27 @@ TEST(CycleLife, ACycleThatDoesNotChangeWearsAsTheOperatingPoint) {
   EXPECT_LT(largest_difference(worn_at_end(point), worn_at_end(cycle)), 2e-9);
 }
 
+// A cycle that starts at rest under load has no film to start a march from, and each
+// later cycle would start from the last one's end at rest: the life marches it from its
+// first point where the washer turns, the same periodic cycle shifted. So it is, to the
+// last bit, the life of that shifted schedule written out; and it lasts its duration where
+// a march from rest does not start.
+TEST(CycleLife, ACycleFromRestIsMarchedFromWhereTheWasherTurns) {
+  const std::string common = "duration: 100 s, report_every: 100 s, tolerance: 1 nm, failure_load: false";
+  const StudyOutcome from_rest = lived(cycle_scene(
+      "{type: life, " + common +
+      ", schedule: [{t: 0 s, load: 60 N, speed: 0 rad/s}, {t: 2 s, speed: 545 rad/s}, {t: 8 s}, {t: 10 s, speed: 0 rad/s}]}"));
+  const StudyOutcome shifted = lived(cycle_scene(
+      "{type: life, " + common +
+      ", schedule: [{t: 0 s, load: 60 N, speed: 545 rad/s}, {t: 6 s}, {t: 8 s, speed: 0 rad/s}, {t: 10 s, speed: 545 rad/s}]}"));
+  const std::vector<LifeRow>& rows = std::get<LifeOutcome>(from_rest.own).rows;
+  ASSERT_FALSE(rows.empty());
+  EXPECT_EQ(rows.back().event, "end");
+  EXPECT_GT(rows.back().rest.deepest, 0.0);
+  EXPECT_EQ(worn_at_end(from_rest).rest, worn_at_end(shifted).rest);
+  EXPECT_EQ(worn_at_end(from_rest).turn, worn_at_end(shifted).turn);
+}
+
 // The cycles jumped (Heun's steps of many cycles) against every cycle marched: the
 // reference's tolerance, 0.1 nm, is below what one cycle wears, so it marches every one
 // (its summary says how many: the 18 cycles and the one after the last, whose march gives

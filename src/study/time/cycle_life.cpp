@@ -74,6 +74,30 @@ CycleMeans means_of(const std::vector<TrajectorySample>& samples) {
   return {m.torque / span, m.f_eff / span, m.contact_share / span};
 }
 
+// A washer at rest under load has no film a march can start from (cycle_start.h): the new
+// washer's first cycle could start a millionth into the first segment, but every later
+// cycle starts from the last one's end, at rest with the cycle's heat in the bodies. A
+// schedule that starts so is marched from its first point where the washer turns instead:
+// the same periodic cycle, shifted by that point's time, so that each march starts and
+// ends on a turning film. Returns the points and the shift (s).
+std::pair<std::vector<SchedulePoint>, double> from_turning(const std::vector<SchedulePoint>& points) {
+  const SchedulePoint& first = points.front();
+  if (!(first.speed == 0.0 && first.load > 0.0)) return {points, 0.0};
+  const auto turning = std::find_if(points.begin(), points.end(), [](const SchedulePoint& p) { return p.speed != 0.0; });
+  if (turning == points.end()) return {points, 0.0};
+  const double shift = turning->time - first.time, period = points.back().time - first.time;
+  std::vector<SchedulePoint> shifted;
+  for (auto p = turning; p != points.end(); ++p) {
+    shifted.push_back(*p);
+    shifted.back().time -= shift;
+  }
+  for (auto p = points.begin() + 1; p <= turning; ++p) {
+    shifted.push_back(*p);
+    shifted.back().time += period - shift;
+  }
+  return {shifted, shift};
+}
+
 class CycleLife {
  public:
   CycleLife(BearingModel& model, StudyOutcome& out, const ProgressReport& progress)
@@ -82,7 +106,8 @@ class CycleLife {
         progress_(progress),
         settings_(std::get<LifeSettings>(model.scene().study.settings)),
         wear_(*model.effect<WearEffect>()),
-        schedule_(OperatingSchedule::with_rests(settings_.cycle->schedule)),
+        phase_(from_turning(settings_.cycle->schedule).second),
+        schedule_(OperatingSchedule::with_rests(from_turning(settings_.cycle->schedule).first)),
         period_(schedule_.end() - schedule_.start()),
         bearing_(bearing_of(describe_scene(model.scene()))),
         rest_nodes_(wear_.rest_depths(std::vector<double>(std::size_t(model.size()))).size()) {}
@@ -121,6 +146,7 @@ class CycleLife {
   const ProgressReport& progress_;
   const LifeSettings& settings_;
   WearEffect& wear_;
+  const double phase_;  // s: where in the scene's schedule the marched cycle starts (from_turning)
   const OperatingSchedule schedule_;
   const double period_;
   const std::string bearing_;
@@ -279,9 +305,12 @@ std::pair<long, MarchedCycle> CycleLife::first_failing(const std::vector<double>
 }
 
 std::string CycleLife::ended_by(const MarchedCycle& c, double cycles) const {
-  return fmt::format("ends {} in cycle {:.0f}, {:.6g} s into it ({:.6g} h): {}",
+  const std::string phase =
+      phase_ > 0.0 ? fmt::format(", the cycles marched from the schedule's first turning point, t = {:.6g} s", phase_)
+                   : std::string();
+  return fmt::format("ends {} in cycle {:.0f}, {:.6g} s into it ({:.6g} h{}): {}",
                      c.failure == "distress" ? "by distress" : "by failure", cycles + 1.0, *c.failed_at,
-                     hours(cycles) + *c.failed_at / kHour, c.why);
+                     hours(cycles) + *c.failed_at / kHour, phase, c.why);
 }
 
 void CycleLife::run() {
