@@ -148,12 +148,12 @@ void FilmFaceFlows::add_gradient(Assembler& a, Index row, double c, const FaceFl
   a.add_form(row, c * flow.dq_dh * 0.5, model_.shape_form(film_, flow.na));
   a.add_form(row, c * flow.dq_dh * 0.5, model_.shape_form(film_, flow.nb));
   if (jfo_ && flow.circumferential) a.add_derivative(row, content_column(flow.upwind), c * flow.dq_dtheta);
-  if (flow.dq_drest != 0.0 || flow.dq_dturn != 0.0) {
-    // (the midpoint's Rqs are the mean of the two nodes')
-    for (const int n : {flow.na, flow.nb}) {
-      roughness_.add_rest(a, row, 0.5 * c * flow.dq_drest, n);
-      roughness_.add_turn(a, row, 0.5 * c * flow.dq_dturn, n);
-    }
+  // The midpoint's Rqs are the mean of the two nodes'. Added whatever their values (a
+  // radial face's are zero where its two pressures are equal, as in the structure pass),
+  // so that every pass adds the same entries (nothing where the faces do not run in).
+  for (const int n : {flow.na, flow.nb}) {
+    roughness_.add_rest(a, row, 0.5 * c * flow.dq_drest, n);
+    roughness_.add_turn(a, row, 0.5 * c * flow.dq_dturn, n);
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include "model/bearing_model.h"
 #include "model/film_gap.h"
+#include "model/film_roughness.h"
 
 namespace twb {
 
@@ -15,6 +16,7 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
   for (const Film& film : films_) {
     const FilmMesh& m = film.mesh;
     const FilmGap gaps(*this, u, film);
+    const FilmRoughness roughness(*this, u, film);  // where the faces run in, the summits per node
     const std::size_t n = std::size_t(m.node_count());
     FilmFields f{film.number, film.sliding, m, {}, {}, {}, {}, {}, {}};
     for (auto* v : {&f.gap, &f.pressure, &f.contact_pressure, &f.film_temperature, &f.surface_temperature,
@@ -33,7 +35,10 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
         // changes within a fraction of a cell, so film_loads.cpp integrates it over each
         // cell with a high-order rule. Beyond the cutoff (p < 1e-20 p(0)) the model
         // counts no contact, and neither does the map.
-        if (contact_ && h <= contact_cutoff_) f.contact_pressure[k] = contact_->pressure(h).value;
+        if (contact_ && h <= contact_cutoff_)
+          f.contact_pressure[k] = roughness.varies()
+                                      ? scaled_contact_->pressure(h, roughness.at_node(int(k)).sigma / film.sigma).value
+                                      : contact_->pressure(h).value;
         f.film_temperature[k] =
             thermal ? temperature_of(u, film.temperature_row(int(k))) : ambient;
         f.surface_temperature[k] = 0.5 * (face_temperature(u, film.lower, r, j, nullptr) +

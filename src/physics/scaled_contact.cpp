@@ -111,7 +111,9 @@ StatisticalContact::SummitContacts ScaledContact::contacts(double h, double k) c
 }
 
 ScaledContact::Pressure ScaledContact::pressure(double h, double k) const {
-  const bool held = !(k > k_low_ && k < 1.0);
+  // At the range's ends themselves the interpolant's own slope (a new face, k = 1, is
+  // where running-in starts: its Rq's slope in the depth is finite there, running_in.h).
+  const bool held = k > 1.0 || k < k_low_;
   const double scale = std::clamp(k, k_low_, 1.0), lnk = std::log(scale), x = h / scale;
   const Reduced r = reduced(x, lnk);
   if (r.zero) return {};

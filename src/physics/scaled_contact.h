@@ -36,7 +36,7 @@ class ScaledContact {
     double value = 0.0, dh = 0.0, dk = 0.0;  // p (Pa), ∂p/∂h (Pa/m), ∂p/∂k (Pa)
   };
   // p(h, k) and its slopes; k is held within [k_low, 1] (beyond them, the nearest end's,
-  // with no slope in k).
+  // with no slope in k; at the ends themselves, the interpolant's one-sided slope).
   Pressure pressure(double h, double k) const;
   // The summits in contact at (h, k): their count per unit area and the real area's share
   // (the flash temperature's junctions, docs/physics.md section 8).
