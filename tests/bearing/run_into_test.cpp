@@ -159,7 +159,8 @@ TEST(SearchJournal, AWornWashersRunResumesOnlyWithThatWasher) {
   const fs::path dir = fresh_dir("worn");
   const std::string scene = "study:\n  type: load_sweep\n";
   WornWasher worn{.time = 3600.0, .film = 1, .inner_radius = 0.01, .outer_radius = 0.02, .radial_nodes = 2,
-                  .circumferential_nodes = 2, .rest = {0.0, 1e-7, 2e-7, 3e-7}, .turn = {1e-8, 2e-8}, .rest_rq = {}, .turn_rq = {}, .source = {}};
+                  .circumferential_nodes = 2, .rest = {0.0, 1e-7, 2e-7, 3e-7}, .turn = {1e-8, 2e-8},
+                  .rest_rq = {}, .turn_rq = {}, .source = {}};
   const std::string identity = SearchJournal::worn_identity(worn);
   const SearchJournal written(dir, scene, false, identity);
   EXPECT_NO_THROW(SearchJournal(dir, scene, true, identity));
