@@ -88,4 +88,17 @@ std::vector<double> BearingModel::step_weights() const {
   return d;
 }
 
+// The washer's plate answers its loads at once (docs/physics.md section 21): its mixed
+// form [E1]-[E3] is a constraint, not a relaxation (relaxed in pseudo-time, the curvature
+// sum's rows drive an unstable mode at the free edges).
+std::vector<char> BearingModel::held_in_pseudo_time() const {
+  std::vector<char> held;
+  for (const UnknownBlock& b : layout_.blocks()) {
+    if (b.effect != BlockEffect::elastic_washer) continue;
+    held.resize(std::size_t(size()), 0);
+    std::fill(held.begin() + b.offset, held.begin() + b.offset + b.size, 1);
+  }
+  return held;
+}
+
 }  // namespace twb

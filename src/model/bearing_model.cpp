@@ -104,6 +104,7 @@ BearingModel::BearingModel(const Scene& scene, std::vector<EffectMaker> more_eff
   Assembler structure(layout_.size());
   assemble(cold_start(), structure, nullptr);
   pattern_ = structure.finish_structure(&slot_tape_);
+  pattern_.prefers_nested_dissection = plate_.elastic();
 }
 
 const Film& BearingModel::sliding_film() const { return films_[0].sliding ? films_[0] : films_[1]; }
@@ -291,7 +292,8 @@ double BearingModel::viscosity_temperature(std::span<const double> u, const Film
 SegregatedSystem::Blocks BearingModel::segregated_blocks() const {
   Blocks b;
   for (const UnknownBlock& block : layout_.blocks()) {
-    std::vector<Index>* into = block.effect == BlockEffect::mechanics       ? &b.rigid
+    std::vector<Index>* into = block.effect == BlockEffect::mechanics || block.effect == BlockEffect::elastic_washer
+                                   ? &b.rigid
                                : block.effect == BlockEffect::hydrodynamics ? &b.pressure
                                : block.effect == BlockEffect::thermal || block.effect == BlockEffect::thermal_deformation ||
                                          block.effect == BlockEffect::asperity_contact || block.effect == BlockEffect::wear

@@ -119,6 +119,7 @@ class BearingModel final : public SegregatedSystem {
   void set_imposed_tilt_rate(double rate) { imposed_tilt_rate_ = rate; }
   double imposed_tilt_rate() const { return imposed_tilt_rate_; }
   std::vector<double> step_weights() const override;
+  std::vector<char> held_in_pseudo_time() const override;
   std::string block_name(Index k) const override { return layout_.block_of(k).name; }
   std::string describe_row(Index k) const override;  // row_meaning.cpp
 
@@ -238,6 +239,8 @@ class BearingModel final : public SegregatedSystem {
   Index contact_force_unknown() const { return contact_force_unknown_; }
   double contact_force_scale() const { return contact_force_scale_; }
   const WasherDishing& washer_dishing() const { return dishing_; }
+  // The washer's plate (docs/physics.md section 21): elastic() with the effect elastic_washer.
+  const WasherPlate& washer_plate() const { return plate_; }
   // The washer's area-mean dishing curvature κ̄ (1/m) of state u; 0 without the effect.
   double dishing_curvature(std::span<const double> u) const;
   // The dishing row's weight of a heat flow (W) from a film node into the washer: the
@@ -340,6 +343,7 @@ class BearingModel final : public SegregatedSystem {
   std::vector<std::vector<LinearForm>> shape_forms_;
   void build_shape_forms();
   WasherDishing dishing_;
+  WasherPlate plate_;
   Index contact_force_unknown_ = -1;
   double contact_force_scale_ = 0.0;
 };

@@ -101,6 +101,25 @@ void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotal
           }
         }
       }
+      if (plate) {
+        // Each corner's share of the force, its load on the washer's plate (film_loads.cpp).
+        const std::array<double, 4> N = corner_hats(s, tt);
+        for (int n = 0; n < 4; ++n) {
+          l.corner_force[n] += f * N[n];
+          if constexpr (gradients) {
+            const double kn = k * N[n];
+            l.corner_force_rigid[n][0] += kn;
+            l.corner_force_rigid[n][1] += kn * y;
+            l.corner_force_rigid[n][2] -= kn * x;
+            for (int m = 0; m < 4; ++m) l.corner_force_shape[n][m] += kn * N[m];
+            if (runs_in)
+              for (int m = 0; m < 4; ++m) {
+                l.corner_force_rest[n][m] += w * contact_by_rq[q][0] * N[n] * N[m];
+                l.corner_force_turn[n][m] += w * contact_by_rq[q][1] * N[n] * N[m];
+              }
+          }
+        }
+      }
       if (!film.sliding) continue;
       // Friction opposes the sliding whichever way it goes: its power and torque
       // take the speed's magnitude (the sign of ω only turns the Couette flow).

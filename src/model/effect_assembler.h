@@ -14,6 +14,7 @@
 // viscosity, the gap's shape, row scales) is BearingModel's public interface.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <span>
 #include <string>
@@ -41,10 +42,33 @@ struct WasherDishing {
   double curvature_ref = 0;
 };
 
+// The washer as an elastic plate (docs/physics.md section 21, elastic_washer_effect.h):
+// where its unknowns lie and how each film's nodes sit on its grid (film 1's: the
+// washer's annulus at the scene's mesh sizes). Without the effect, deflection is -1.
+struct WasherPlate {
+  // A film's radial node i moves by Σ weight·w over these radial nodes of the washer's
+  // grid, at the same angle: film 1 by +w at its own ring, film 2 by −w interpolated
+  // linearly to its radius. The same weights spread the film's force at a node onto the
+  // washer's nodes (virtual work: the load's slopes are the gap's transposed).
+  struct Share {
+    int ring = 0;
+    double weight = 0;
+  };
+  Index deflection = -1;  // ŵ = w/deflection_ref (m) at every node of the washer's grid
+  Index moment = -1;      // m̂ = m·rigidity/load_ref (m = ∇²w − (1 + ν)κ_T) at every node
+  double deflection_ref = 0, load_ref = 0;
+  int circumferential_nodes = 0;
+  std::array<std::vector<std::vector<Share>>, 2> shares;  // per film, per radial node
+  bool elastic() const { return deflection >= 0; }
+  const std::vector<Share>& of(const Film& film, int ring) const {
+    return shares[std::size_t(film.number - 1)][std::size_t(ring)];
+  }
+};
+
 // What an effect's constructor may extend while the model is being built: the
 // unknowns (blocks and their row scales), the films' columns, the heat-conducting
 // bodies, the parts of the films' gap it moves (gap_contribution.h), the washer's
-// dishing. The model reads only what is already declared.
+// dishing or its plate. The model reads only what is already declared.
 struct ModelSetup {
   const BearingModel& model;
   UnknownLayout& layout;
@@ -52,6 +76,7 @@ struct ModelSetup {
   std::vector<ComponentHeat>& components;
   std::vector<std::unique_ptr<GapContribution>>& gap_parts;
   WasherDishing& dishing;
+  WasherPlate& plate;
 };
 
 // A film's block name, e.g. "film 1 pressure".

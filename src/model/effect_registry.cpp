@@ -10,6 +10,7 @@
 #include "model/bearing_model.h"
 #include "model/convection_effect.h"
 #include "model/deformation_effect.h"
+#include "model/elastic_washer_effect.h"
 #include "model/film_loads_effect.h"
 #include "model/heat_effect.h"
 #include "model/reynolds_effect.h"
@@ -22,7 +23,7 @@ std::string fmt_film_block(int number, const char* what) { return "film " + std:
 
 void BearingModel::register_effects() {
   // A stack local: an effect or a part keeps what it needs of it, never a reference to it.
-  ModelSetup setup{*this, layout_, films_, components_, gap_parts_, dishing_};
+  ModelSetup setup{*this, layout_, films_, components_, gap_parts_, dishing_, plate_};
   const Effects& fx = scene_.effects;
   if (fx.hydrodynamics) effects_.push_back(std::make_unique<ReynoldsEffect>(setup));
   effects_.push_back(std::make_unique<FilmLoadsEffect>(setup));  // contact, fluid force, shear and friction heat
@@ -39,6 +40,8 @@ void BearingModel::register_effects() {
   // After convection, which adds no unknowns: the numbering of every scene without wear is
   // as it was. It reads the friction power the film loads gathered.
   if (fx.wear) effects_.push_back(std::make_unique<WearEffect>(setup));
+  // After wear, for the same reason: the washer's plate (its loads gathered with the films').
+  if (fx.elastic_washer) effects_.push_back(std::make_unique<ElasticWasherEffect>(setup));
   // Once every part of the gap is known: the contact force's own unknown, whose row the
   // film loads assemble (bearing_model.h, contact_force_unknown).
   if (gap_shaped(sliding_film()) && fx.asperity_contact && scene_.friction.law == FrictionLaw::empirical) {
@@ -51,9 +54,10 @@ std::span<const ReportedQuantity> effect_quantities() {
   // One line per effect that reports a quantity of its own: its kReported.
   static const std::vector<ReportedQuantity> quantities = [] {
     std::vector<ReportedQuantity> q;
-    for (std::span<const ReportedQuantity> of_effect : std::array<std::span<const ReportedQuantity>, 2>{
+    for (std::span<const ReportedQuantity> of_effect : std::array<std::span<const ReportedQuantity>, 3>{
              ConvectionEffect::kReported,
              WearEffect::kReported,
+             ElasticWasherEffect::kReported,
          })
       q.insert(q.end(), of_effect.begin(), of_effect.end());
     return q;

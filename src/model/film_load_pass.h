@@ -92,6 +92,13 @@ struct CellLoads {
   std::array<std::array<double, 4>, 4> power_shape{};  // friction power per corner, against δ
   double contact_force = 0;                            // the cell's contact force
   std::array<double, 3> contact_rigid{};               // its gradient against the arms
+  // With the elastic washer: the force on each corner's hat ∫ p·N_k dA, fluid and contact
+  // (its load on the plate, docs/physics.md section 21), against the arms, the corner
+  // pressures, the corner shapes and each face's Rq at the corners.
+  std::array<double, 4> corner_force{};
+  std::array<std::array<double, 3>, 4> corner_force_rigid{};
+  std::array<std::array<double, 4>, 4> corner_force_p{}, corner_force_shape{};
+  std::array<std::array<double, 4>, 4> corner_force_rest{}, corner_force_turn{};
 };
 
 struct FilmLoadPass {
@@ -107,6 +114,8 @@ struct FilmLoadPass {
   void contact_on_cell(const FilmCell& cell, CellLoads& loads, FilmTotals& tot);  // contact_cell.cpp
   void fluid_on_cell(const FilmCell& cell, CellLoads& loads, FilmTotals& tot);    // fluid_cell.cpp
   void scatter(const FilmCell& cell, const CellLoads& loads, Assembler& a) const;
+  // The corners' forces into the washer plate's rows (with the elastic washer).
+  void load_plate(const FilmCell& cell, const CellLoads& loads, Assembler& a) const;
   // The cell's friction power's slopes in the corners' shapes and Rqs into the film's totals.
   void keep_power_slopes(const FilmCell& cell, const CellLoads& loads, FilmTotals& tot) const;
   // row += c·(slopes in the corners' Rqs), where the faces run in.
@@ -120,6 +129,7 @@ struct FilmLoadPass {
   const Film& film;
   const FilmMesh& mesh;
   bool structural, jac, hydro, heat, contact;
+  bool plate;  // the washer bends: the corners' forces are gathered for its rows
   double omega, cutoff;
   FilmGap gap;
   FilmRoughness roughness;

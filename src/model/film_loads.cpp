@@ -49,6 +49,7 @@ FilmLoadPass::FilmLoadPass(const BearingModel& model, const FilmLoadRules& rules
       hydro(film.pressure_offset >= 0),
       heat(film.sliding && model.scene().effects.thermal),
       contact(model.contact() != nullptr),
+      plate(model.washer_plate().elastic()),
       omega(film.sliding ? model.scene().operating.speed : 0.0),
       cutoff(model.contact_cutoff()),
       gap(model, u, film),
@@ -134,6 +135,7 @@ void FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& l, Assembler& 
       add_roughness_slopes(cell, force_row, 1.0 / ref, l.load_rest[0], l.load_turn[0], a);
     }
   }
+  if (plate) load_plate(cell, l, a);
   // Viscous heat into the film-node rows (friction heat is added once f is known).
   if (!heat) return;
   for (int k = 0; k < 4; ++k) {
@@ -147,6 +149,27 @@ void FilmLoadPass::scatter(const FilmCell& cell, const CellLoads& l, Assembler& 
     if (shaped)
       for (int m = 0; m < 4; ++m) a.add_form(row, sc * l.vheat_shape[k][m], model.shape_form(film, cell.node[m]));
     add_roughness_slopes(cell, row, sc, l.vheat_rest[k], l.vheat_turn[k], a);
+  }
+}
+
+// A corner's force F_k = ∫ p·N_k dA enters the m row of each washer node its ring sits on,
+// weighted as the deflection enters its gap (WasherPlate::shares): [E1]'s right side −F_a,
+// in the row's scale F_ref.
+void FilmLoadPass::load_plate(const FilmCell& cell, const CellLoads& l, Assembler& a) const {
+  const WasherPlate& washer = model.washer_plate();
+  const int nt = mesh.circumferential_nodes();
+  for (int k = 0; k < 4; ++k) {
+    const int ring = cell.node[k] / nt, j = cell.node[k] % nt;
+    for (const WasherPlate::Share& share : washer.of(film, ring)) {
+      const Index row = washer.moment + share.ring * washer.circumferential_nodes + j;
+      const double c = -share.weight / washer.load_ref;
+      a.add_residual(row, c * l.corner_force[k]);
+      if (!jac) continue;
+      for (int d = 0; d < 3; ++d) a.add_derivative(row, rigid_cols[d], c * g[d] * l.corner_force_rigid[k][d]);
+      for (int m = 0; m < 4; ++m) a.add_derivative(row, cell.p_col[m], c * l.corner_force_p[k][m]);
+      for (int m = 0; m < 4; ++m) a.add_form(row, c * l.corner_force_shape[k][m], model.shape_form(film, cell.node[m]));
+      add_roughness_slopes(cell, row, c, l.corner_force_rest[k], l.corner_force_turn[k], a);
+    }
   }
 }
 

@@ -52,6 +52,9 @@ void ThermalShape::add_node_forms(const BearingModel& model, const Film& film, d
       }
       // The dished washer's mid-surface rises by w(r) towards film 2: film 1 (washer
       // above) opens by w, film 2 (washer below) closes by w.
+      // A washer that bends as a plate takes its thermal curvature in its deflection
+      // (docs/physics.md section 21), of which this dish is the uniform part.
+      if (model.washer_plate().elastic()) continue;
       const double towards = film.upper == ComponentId::washer ? 1.0 : -1.0;
       form.add(dishing.unknown, scale * towards * dishing.curvature_ref * dishing_shape(r, ri, ro));
     }

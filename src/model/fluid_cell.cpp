@@ -53,6 +53,12 @@ void FilmLoadPass::fluid_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals&
               for (int k = 0; k < 4; ++k) l.load_p[qd][k] += w * N[k] * p_ref * arm[qd];
           }
           tot.fluid_force += w * p;
+          if (plate)
+            for (int k = 0; k < 4; ++k) {
+              l.corner_force[k] += w * p * N[k];
+              if constexpr (gradients)
+                for (int m = 0; m < 4; ++m) l.corner_force_p[k][m] += w * N[k] * N[m] * p_ref;
+            }
         }
         if (!film.sliding) continue;
         const double v_slide = std::abs(omega) * r;

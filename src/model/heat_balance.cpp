@@ -125,6 +125,14 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
   const UnknownLayout& layout = model.layout();
   const bool deforms = model.deforms();
   const Index dishing_row = model.washer_dishing().unknown;
+  // The plate's w row of node a reads A_a·(1 + ν)·κ_T = (1 + ν)·α/K·Q_a, Q_a the heat crossing
+  // the mid-plane there, half of what enters through film 1 less half of what enters
+  // through film 2 (the shares' signs), in σ_ref ([E1] as ElasticAnnulus writes it).
+  const WasherPlate& plate = model.washer_plate();
+  const Material& washer = model.scene().washer.material;
+  const double plate_per_flow = plate.elastic() ? -(1.0 + washer.poisson_ratio) * washer.thermal_expansion /
+                                                      (2.0 * washer.conductivity * plate.deflection_ref)
+                                                : 0.0;
 
   // Film nodes and their exchange with the bounding components.
   for (const Film& film : model.films()) {
@@ -198,19 +206,25 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
             a.add_form(row, -scale * dflow_dh, shape);
             add_roughness(row, -scale);
           }
-          // The heat crossing the washer dishes it (docs/physics.md section 11, film_shape.cpp).
+          // cw·flow into a row that the heat entering the component reads, with its slopes.
+          const auto add_flow = [&](Index to, double cw) {
+            a.add_residual(to, cw * flow);
+            if (!jac) return;
+            a.add_derivative(to, row, cw * conductance);
+            for (int t = 0; t < face.terms; ++t)
+              a.add_derivative(to, face.column[std::size_t(t)], -cw * conductance * face.weight[std::size_t(t)]);
+            for (int d = 0; d < 3; ++d) a.add_derivative(to, rigid_cols[d], cw * dflow_dh * dh[d]);
+            a.add_form(to, cw * dflow_dh, shape);
+            add_roughness(to, cw);
+          };
+          // The heat crossing the washer dishes it (docs/physics.md section 11, film_shape.cpp)
+          // and, where it bends as a plate, curves it where it crosses (section 21, [E1]).
           if (deforms && sides[side] == ComponentId::washer) {
-            const double cw = model.dishing_row_weight(film);
-            a.add_residual(dishing_row, cw * flow);
-            if (jac) {
-              a.add_derivative(dishing_row, row, cw * conductance);
-              for (int t = 0; t < face.terms; ++t)
-                a.add_derivative(dishing_row, face.column[std::size_t(t)],
-                                 -cw * conductance * face.weight[std::size_t(t)]);
-              for (int d = 0; d < 3; ++d) a.add_derivative(dishing_row, rigid_cols[d], cw * dflow_dh * dh[d]);
-              a.add_form(dishing_row, cw * dflow_dh, shape);
-              add_roughness(dishing_row, cw);
-            }
+            add_flow(dishing_row, model.dishing_row_weight(film));
+            if (plate.elastic())
+              for (const WasherPlate::Share& share : plate.of(film, i))
+                add_flow(plate.deflection + share.ring * plate.circumferential_nodes + j,
+                         plate_per_flow * share.weight);
           }
           for (int t = 0; t < face.terms; ++t) {
             const Index k = face.column[std::size_t(t)];

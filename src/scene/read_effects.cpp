@@ -87,6 +87,7 @@ Effects read_effects(const MapReader& scene) {
       if (effect.name == kAsperityContact) effects.asperity_contact = true;
       if (effect.name == kConvection) effects.convection = true;
       if (effect.name == kWear) effects.wear = true;
+      if (effect.name == kElasticWasher) effects.elastic_washer = true;
     }
     listed.push_back(std::move(effect));
   }

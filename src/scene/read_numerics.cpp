@@ -56,6 +56,13 @@ void read_solver(const MapReader& scene, Scene& out) {
                             "use method: newton",
                             method.path()));
   }
+  // ... nor for a washer that bends.
+  if (s.method == SolverMethod::paper && out.effects.elastic_washer) {
+    const Node method = solver.get("method", "");
+    method.fail(fmt::format("{}: 'paper' solves the paper's rigid bearing; with the effect elastic_washer use "
+                            "method: newton",
+                            method.path()));
+  }
   // ... and its projected SOR is the Reynolds condition's.
   if (s.method == SolverMethod::paper && out.effects.cavitation == CavitationModel::jfo) {
     const Node method = solver.get("method", "");

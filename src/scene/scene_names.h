@@ -93,9 +93,10 @@ inline constexpr std::string_view kThermal = "thermal";
 inline constexpr std::string_view kThermalDeformation = "thermal_deformation";
 inline constexpr std::string_view kConvection = "convection";
 inline constexpr std::string_view kWear = "wear";
-inline constexpr std::array<std::string_view, 7> kEffectNames{kHydrodynamics, kFlowFactors,        kAsperityContact,
+inline constexpr std::string_view kElasticWasher = "elastic_washer";
+inline constexpr std::array<std::string_view, 8> kEffectNames{kHydrodynamics, kFlowFactors,        kAsperityContact,
                                                               kThermal,       kThermalDeformation, kConvection,
-                                                              kWear};
+                                                              kWear,          kElasticWasher};
 
 // The three bodies, in stacking order along z.
 inline constexpr std::array<std::string_view, 3> kComponentNames{"carrier", "washer", "gear"};

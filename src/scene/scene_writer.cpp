@@ -29,6 +29,7 @@ void write_effects(SceneText& w, const Effects& e) {
     w.line(1, fmt::format("- thermal_deformation: {{face_expansion: {}}}", kFaceExpansions.name(e.face_expansion)));
   if (e.convection) w.line(1, "- convection");
   if (e.wear) w.line(1, "- wear");
+  if (e.elastic_washer) w.line(1, "- elastic_washer");
 }
 
 // The width as the scene gave it, which the grid rounds again to the same whole cells (a

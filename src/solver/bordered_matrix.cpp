@@ -11,6 +11,7 @@ namespace twb {
 BorderedMatrix::BorderedMatrix(const SparsePattern& base) : n_(base.rows) {
   if (base.rows != base.cols) throw InternalError("BorderedMatrix: the base matrix must be square");
   pattern_.rows = pattern_.cols = n_ + 1;
+  pattern_.prefers_nested_dissection = base.prefers_nested_dissection;
   pattern_.row_start.reserve(std::size_t(n_ + 2));
   pattern_.column.reserve(std::size_t(base.nnz() + 2 * n_ + 1));
   pattern_.row_start.push_back(0);

@@ -54,6 +54,7 @@ SparsePattern with_capacity_diagonal(const SparsePattern& p, const std::vector<d
   SparsePattern u;
   u.rows = p.rows;
   u.cols = p.cols;
+  u.prefers_nested_dissection = p.prefers_nested_dissection;
   u.row_start.push_back(0);
   for (Index r = 0; r < p.rows; ++r) {
     std::vector<Index> row(p.column.begin() + p.row_start[std::size_t(r)],

@@ -25,7 +25,7 @@ namespace {
 class PseudoTimeStepper {
  public:
   PseudoTimeStepper(const SteadySystem& system, SparseLu& lu)
-      : system_(system), pattern_(system.pattern()), lu_(lu) {
+      : system_(system), pattern_(system.pattern()), lu_(lu), held_(system.held_in_pseudo_time()) {
     for (Index k = 0; k < pattern_.rows; ++k) {
       diagonal_.push_back(pattern_.find(k, k));
       if (diagonal_.back() < 0)
@@ -42,12 +42,13 @@ class PseudoTimeStepper {
   }
   // The candidate becomes the state steps start from.
   void accept() { std::swap(state_, candidate_); }
-  // |∂F_k/∂u_k| at the state, floored at 1e-8: each unknown's own relaxation rate.
+  // |∂F_k/∂u_k| at the state, floored at 1e-8: each unknown's own relaxation rate; none
+  // where the system holds the row at every step.
   std::vector<double> diagonal_weights() const {
     std::vector<double> w(diagonal_.size());
     for (std::size_t k = 0; k < w.size(); ++k) {
       const double d = std::abs(state_.jacobian[std::size_t(diagonal_[k])]);
-      w[k] = std::isfinite(d) && d > 1e-8 ? d : 1e-8;
+      w[k] = !held_.empty() && held_[k] ? 0.0 : std::isfinite(d) && d > 1e-8 ? d : 1e-8;
     }
     return w;
   }
@@ -70,6 +71,7 @@ class PseudoTimeStepper {
   const SparsePattern& pattern_;
   SparseLu& lu_;
   std::vector<Index> diagonal_;
+  std::vector<char> held_;
   Point state_, candidate_;
   std::vector<double> values_;
 };

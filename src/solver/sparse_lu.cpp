@@ -51,7 +51,7 @@ struct SparseLu::Klu {
 SparseLu::SparseLu(const SparsePattern& p, Ordering ordering) : klu_(std::make_unique<Klu>()) {
   if (p.rows != p.cols) throw InternalError("SparseLu: the matrix must be square");
   klu_l_defaults(&klu_->common);
-  if (ordering == Ordering::by_size && p.rows > kNestedDissectionAbove) {
+  if (ordering == Ordering::by_size && (p.rows > kNestedDissectionAbove || p.prefers_nested_dissection)) {
     klu_->common.ordering = 3;
     klu_->common.user_order = nested_dissection_order;
   } else {

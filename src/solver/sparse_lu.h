@@ -29,7 +29,8 @@ class SparseLu {
   // unknowns: 6.2 against 8.6 ms; 615 against 1254 ms on 65×528) and ties below
   // (benchmarks/README.md, "Linear solvers"); the paper's mesh keeps AMD.
   static constexpr Index kNestedDissectionAbove = 5000;
-  // by_size: nested dissection above kNestedDissectionAbove, else AMD. minimum_degree:
+  // by_size: nested dissection above kNestedDissectionAbove or where the pattern prefers
+  // it (SparsePattern::prefers_nested_dissection), else AMD. minimum_degree:
   // AMD at any size, for a solver that factors a few times only (a state refined once
   // for its error bar: METIS's order costs about 80 ms on 17×132, a dozen of its
   // refactorizations' saving; nested_dissection.cpp keeps the orders it found).

@@ -57,6 +57,11 @@ class SteadySystem {
     evaluate(u, residual, jacobian);
   }
 
+  // Unknowns whose rows hold at every pseudo-time step instead of relaxing towards it
+  // (pseudo_transient.h puts no shift on them): a body that answers its loads at once, as
+  // the bearing's elastic washer does, whose own mixed-form rows have no stable
+  // relaxation of their own. Empty: every row relaxes.
+  virtual std::vector<char> held_in_pseudo_time() const { return {}; }
   // Weights KINSOL measures a Newton step with (its maximum step is in these units).
   virtual std::vector<double> step_weights() const { return std::vector<double>(std::size_t(size()), 1.0); }
   // Name of the group of unknowns holding unknown k, for failure reports.

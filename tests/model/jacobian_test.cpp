@@ -49,6 +49,7 @@ struct EffectSet {
   bool worn = false;     // a part of film 1's gap from outside the model (support/prescribed_wear.h)
   bool wear = false;     // the sliding film's faces worn (docs/physics.md section 20)
   bool running_in = false;  // and their roughness run in, to 0.3 of its Rq new
+  bool elastic = false;     // the washer bends as a plate (docs/physics.md section 21)
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -71,6 +72,8 @@ std::vector<double> random_state(const BearingModel& m, std::mt19937& rng) {
       else if (b.effect == BlockEffect::thermal_deformation) u[k] = b.name == "washer dishing curvature" ? 2.0 * unit(rng) - 1.0 : 0.2 + unit(rng);
       else if (b.effect == BlockEffect::asperity_contact) u[k] = 0.2 + unit(rng);
       else if (b.effect == BlockEffect::wear) u[k] = 0.2 + unit(rng);
+      // The plate's deflection (in σ), curvature sum and multipliers, either sign.
+      else if (b.effect == BlockEffect::elastic_washer) u[k] = unit(rng) - 0.5;
     }
   }
   return u;
@@ -103,6 +106,7 @@ std::unique_ptr<BearingModel> model_of(const EffectSet& e) {
   if (e.fed) s.lubricant.supply = OilSupply{2e5, SupplyInlet::both, s.operating.ambient + 15.0};
   s.effects.convection = e.convection;
   s.effects.wear = e.wear;
+  s.effects.elastic_washer = e.elastic;
   if (e.wear)
     for (Component* c : {&s.carrier, &s.washer, &s.gear}) c->roughness.wear_rate = 1e-16;
   if (e.running_in)
@@ -481,7 +485,30 @@ INSTANTIATE_TEST_SUITE_P(
                       // Their roughness run in ([W5]-[W6]): σ per node from the depths.
                       EffectSet{"wear_running_in", true, true, true, true, 545.0, CarrierTemperature::load_frame,
                                 CavitationRow::fischer_burmeister, false, FrictionLaw::empirical,
-                                CavitationModel::reynolds, 0, false, false, false, false, true, true}),
+                                CavitationModel::reynolds, 0, false, false, false, false, true, true},
+                      // The washer as a plate (section 21): its loads from both films, fluid and
+                      // contact; with thermal deformation its thermal curvature from the heat
+                      // crossing it; with contact alone; on faces that wear and run in, by
+                      // fed grooves in film 2.
+                      EffectSet{"elastic_washer", true, true, true, true, 545.0, CarrierTemperature::load_frame,
+                                CavitationRow::fischer_burmeister, true, FrictionLaw::empirical,
+                                CavitationModel::reynolds, 0, false, false, false, false, false, false, true},
+                      EffectSet{"elastic_washer_without_thermal_curvature", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, false,
+                                FrictionLaw::empirical, CavitationModel::reynolds, 0, false, false, false, false,
+                                false, false, true},
+                      EffectSet{"elastic_washer_contact_only", false, false, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
+                                FrictionLaw::empirical, CavitationModel::reynolds, 0, false, false, false, false,
+                                false, false, true},
+                      EffectSet{"elastic_washer_wear_running_in", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
+                                FrictionLaw::empirical, CavitationModel::reynolds, 0, false, false, false, false, true,
+                                true, true},
+                      EffectSet{"elastic_washer_jfo_fed_grooves_convection", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
+                                FrictionLaw::empirical, CavitationModel::jfo, 2, true, true, false, false, false,
+                                false, true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

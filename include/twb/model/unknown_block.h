@@ -9,7 +9,7 @@ namespace twb {
 
 // The effect behind a block of unknowns: the scene's effect that creates it, or the
 // rigid body's mechanics, which every scene has.
-enum class BlockEffect { mechanics, hydrodynamics, thermal, thermal_deformation, asperity_contact, wear };
+enum class BlockEffect { mechanics, hydrodynamics, thermal, thermal_deformation, asperity_contact, wear, elastic_washer };
 
 // The effect's name as scenes and docs/model.md write it.
 inline const char* effect_name(BlockEffect e) {
@@ -20,6 +20,7 @@ inline const char* effect_name(BlockEffect e) {
     case BlockEffect::thermal_deformation: return "thermal_deformation";
     case BlockEffect::asperity_contact: return "asperity_contact";
     case BlockEffect::wear: return "wear";
+    case BlockEffect::elastic_washer: return "elastic_washer";
   }
   return "?";
 }

@@ -65,6 +65,10 @@ struct Effects {
   // docs/physics.md section 20 (needs asperity_contact): the faces of the sliding film wear
   // by Archard's law, their depths parts of its gap.
   bool wear = false;
+  // docs/physics.md section 21: the washer bends as a Kirchhoff plate under the difference
+  // of its films' pressures (and, with thermal_deformation, its through-thickness heat
+  // flux), its deflection a part of both films' gaps.
+  bool elastic_washer = false;
 };
 
 struct Material {
