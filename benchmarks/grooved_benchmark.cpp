@@ -19,27 +19,15 @@
 #include <string>
 #include <vector>
 
-#include "model/bearing_model.h"
-#include "study/study_runner.h"
+#include "failure_run.h"
 #include "twb/scene/scene_loader.h"
 
 namespace {
 
 void run_eight_grooves(benchmark::State& state, const std::vector<std::string>& overrides, int threads = 1) {
-  const twb::Scene s =
-      twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/studies/grooved/eight_grooves.yaml", overrides);
-  twb::RunTimings last;
-  for (auto _ : state) {
-    twb::BearingModel model(s);
-    const twb::StudyOutcome out = twb::run_study(model, {}, twb::RunOptions{.threads = threads});
-    if (out.distress.size() != 1 || !out.distress.front().failure_load) {
-      state.SkipWithError("no failure load");
-      return;
-    }
-    last = out.timings;
-  }
-  state.counters["states"] = double(last.states);
-  state.counters["klu_factorizations"] = double(last.klu_factorizations);
+  twb::bench::run_failure_study(
+      state, twb::load_scene(std::string(TWB_SOURCE_DIR) + "/configs/studies/grooved/eight_grooves.yaml", overrides),
+      threads);
 }
 
 void BM_EightGroovesFailureLoad(benchmark::State& state) {

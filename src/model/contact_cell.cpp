@@ -9,6 +9,31 @@
 #include "model/film_load_pass.h"
 
 namespace twb {
+namespace {
+
+// Each corner's share ∫ p_c·N_k dA of a point's contact force f (its slope k = w·p_c'),
+// the load on the washer's plate (film_loads.cpp), with its slopes in the arms, the corner
+// shapes and, where the faces run in, the corners' Rqs (w·∂p_c/∂Rq of each face).
+template <bool gradients>
+void add_corner_forces(CellLoads& l, const std::array<double, 4>& N, double x, double y, double f, double k, double w,
+                       bool runs_in, const std::array<double, 2>& by_rq) {
+  for (int n = 0; n < 4; ++n) {
+    l.corner_force[n] += f * N[n];
+    if constexpr (!gradients) continue;
+    const double kn = k * N[n];
+    l.corner_force_rigid[n][0] += kn;
+    l.corner_force_rigid[n][1] += kn * y;
+    l.corner_force_rigid[n][2] -= kn * x;
+    for (int m = 0; m < 4; ++m) l.corner_force_shape[n][m] += kn * N[m];
+    if (!runs_in) continue;
+    for (int m = 0; m < 4; ++m) {
+      l.corner_force_rest[n][m] += w * by_rq[0] * N[n] * N[m];
+      l.corner_force_turn[n][m] += w * by_rq[1] * N[n] * N[m];
+    }
+  }
+}
+
+}  // namespace
 
 void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotals& tot) {
   const StatisticalContact& asperities = *model.contact();
@@ -102,23 +127,8 @@ void FilmLoadPass::contact_on_cell(const FilmCell& cell, CellLoads& l, FilmTotal
         }
       }
       if (plate) {
-        // Each corner's share of the force, its load on the washer's plate (film_loads.cpp).
-        const std::array<double, 4> N = corner_hats(s, tt);
-        for (int n = 0; n < 4; ++n) {
-          l.corner_force[n] += f * N[n];
-          if constexpr (gradients) {
-            const double kn = k * N[n];
-            l.corner_force_rigid[n][0] += kn;
-            l.corner_force_rigid[n][1] += kn * y;
-            l.corner_force_rigid[n][2] -= kn * x;
-            for (int m = 0; m < 4; ++m) l.corner_force_shape[n][m] += kn * N[m];
-            if (runs_in)
-              for (int m = 0; m < 4; ++m) {
-                l.corner_force_rest[n][m] += w * contact_by_rq[q][0] * N[n] * N[m];
-                l.corner_force_turn[n][m] += w * contact_by_rq[q][1] * N[n] * N[m];
-              }
-          }
-        }
+        const std::array<double, 2> by_rq = runs_in ? contact_by_rq[q] : std::array<double, 2>{};
+        add_corner_forces<gradients>(l, corner_hats(s, tt), x, y, f, k, w, runs_in, by_rq);
       }
       if (!film.sliding) continue;
       // Friction opposes the sliding whichever way it goes: its power and torque

@@ -243,9 +243,15 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
     }
   }
 
-  // In-plane conduction of each component (eq [21]) and, for carrier and gear, 1-D
-  // conduction across the thickness to the ambient (eqs [25], [28]).
-  for (const ComponentHeat& comp : model.components()) {
+  add_body_conduction(u, a);
+}
+
+// In-plane conduction of each component (eq [21]) and, for carrier and gear, 1-D
+// conduction across the thickness to the ambient (eqs [25], [28]).
+void HeatEffect::add_body_conduction(std::span<const double> u, Assembler& a) const {
+  const bool jac = a.wants_jacobian();
+  const UnknownLayout& layout = model_.layout();
+  for (const ComponentHeat& comp : model_.components()) {
     const FilmMesh& g = comp.grid;
     const double kt = comp.conductivity * comp.thickness;
     const int nr = g.radial_nodes(), nt = comp.axisymmetric ? 1 : g.circumferential_nodes();

@@ -20,6 +20,8 @@ class HeatEffect final : public EffectAssembler {
 
  private:
   void set_row_scales(ModelSetup& setup) const;
+  // The bodies' own conduction: in-plane, and across carrier and gear to the ambient.
+  void add_body_conduction(std::span<const double> u, Assembler& a) const;
 
   const BearingModel& model_;
   // A film node's heat path to the face of one bounding component: the face

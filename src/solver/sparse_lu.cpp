@@ -112,4 +112,6 @@ double SparseLu::pivot_ratio() const {
 
 const SparseLu::Counts& SparseLu::counts() const { return klu_->counts; }
 
+long SparseLu::factor_entries() const { return klu_->numeric ? long(klu_->numeric->lnz + klu_->numeric->unz) : 0; }
+
 }  // namespace twb

@@ -67,6 +67,8 @@ class SparseLu {
     }
   };
   const Counts& counts() const;
+  // The entries of the last factorization's L and U (KLU's lnz + unz), 0 before one: its fill.
+  long factor_entries() const;
   // The same over every SparseLu of the calling thread since it started.
   static const Counts& thread_counts();
 
