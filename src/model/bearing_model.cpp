@@ -350,9 +350,6 @@ std::vector<char> BearingModel::rate_unknowns() const {
   for (const Film& f : films_)
     if (f.pressure_offset >= 0)
       for (const Index k : f.rigid_columns()) reads[std::size_t(k)] = 1;
-  // The washer's deflection, whose rate every film's squeeze reads (reynolds_film.cpp).
-  if (plate_.elastic() && std::any_of(films_.begin(), films_.end(), [](const Film& f) { return f.pressure_offset >= 0; }))
-    std::fill(reads.begin() + plate_.deflection, reads.begin() + plate_.deflection + films_[0].mesh.node_count(), 1);
   return reads;
 }
 

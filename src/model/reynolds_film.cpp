@@ -68,10 +68,9 @@ void ReynoldsEffect::add_terms_in_time(std::span<const double> u, const StateRat
 // outflow: w + squeeze = 0 where the film is full (docs/physics.md section 19). The
 // content is the average gap h̄T with flow factors and the nominal gap without (what the
 // Couette term carries but its shear flow factor's part, a flux, not oil held in the
-// gap); ∂h/∂t is the gap plane's rate in the rigid unknowns' rates, on film 2 the
-// imposed tilt's, and the elastic washer's deflection's, which moves on the squeeze's own
-// time scale (physics §21; thermal deformation's shape moves on the heat's and is not in
-// it: physics §19).
+// gap); ∂h/∂t is the gap plane's rate in the rigid unknowns' rates, and on film 2 the
+// imposed tilt's (the shape's rate, thermal deformation's, is not in it: physics §19;
+// nor the elastic washer's deflection's, quasi-static in real time: physics §21).
 // Each part of a control volume on a relief's edge has its own gap. Its entries are the
 // node's rigid columns and shape form, which every face flux of the node already brings
 // into the pattern (FilmFaceFlows::add_gradient): the structure pass needs none of its
@@ -87,7 +86,6 @@ void ReynoldsEffect::add_squeeze(const StateRates& rates, const Film& film,
   const FilmRoughness& roughness = flows.roughness();
   const std::array<Index, 3> cols = film.rigid_columns();
   const double tilt_rate = film.upper == ComponentId::gear ? rates.imposed_tilt_rate : 0.0;
-  const WasherPlate& plate = model.washer_plate();
   for (int i = 1; i < m.radial_nodes() - 1; ++i) {
     const double r = m.radius(i);
     for (int j = 0; j < m.circumferential_nodes(); ++j) {
@@ -98,16 +96,6 @@ void ReynoldsEffect::add_squeeze(const StateRates& rates, const Film& film,
       const std::array<double, 3> dh = film.gap_gradient(x, y);
       double h_rate = -tilt_rate * x;
       for (std::size_t d = 0; d < 3; ++d) h_rate += dh[d] * rates.rate[std::size_t(cols[d])];
-      // The deflection's columns and their slopes in the gap (its part's form, film_gap.h).
-      std::array<std::pair<Index, double>, 2> bending{};
-      std::size_t bends = 0;
-      if (plate.elastic())
-        for (const WasherPlate::Share& share : plate.of(film, i)) {
-          const Index col = plate.deflection + share.ring * plate.circumferential_nodes + j;
-          const double c = model.deformation_scale() * plate.deflection_ref * share.weight;
-          bending[bends++] = {col, c};
-          h_rate += c * rates.rate[std::size_t(col)];
-        }
       const int node = m.node(i, j);
       const double h = gap.smooth_on_plane(node, x, y);
       const FaceRelief::NodeParts parts = gap.parts(i, j);
@@ -127,7 +115,6 @@ void ReynoldsEffect::add_squeeze(const StateRates& rates, const Film& film,
       if (!jac) continue;
       for (std::size_t d = 0; d < 3; ++d)
         a.add_derivative(row, cols[d], area * dh[d] * (curvature * h_rate + slope * rates.cj));
-      for (std::size_t b = 0; b < bends; ++b) a.add_derivative(row, bending[b].first, area * slope * bending[b].second * rates.cj);
       a.add_form(row, area * curvature * h_rate, model.shape_form(film, node));
       roughness.add_rest(a, row, area * h_rate * slope_by_sigma * rough.sigma_by_rest, node);
       roughness.add_turn(a, row, area * h_rate * slope_by_sigma * rough.sigma_by_turn, node);
