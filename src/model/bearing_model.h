@@ -241,6 +241,8 @@ class BearingModel final : public SegregatedSystem {
   const WasherDishing& washer_dishing() const { return dishing_; }
   // The washer's plate (docs/physics.md section 21): elastic() with the effect elastic_washer.
   const WasherPlate& washer_plate() const { return plate_; }
+  // The washer's deflection (m, towards film 2) at every node of a film, at state u.
+  std::vector<double> washer_deflection_at(std::span<const double> u, const Film& film) const;
   // The washer's area-mean dishing curvature κ̄ (1/m) of state u; 0 without the effect.
   double dishing_curvature(std::span<const double> u) const;
   // The dishing row's weight of a heat flow (W) from a film node into the washer: the

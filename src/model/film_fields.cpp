@@ -18,7 +18,7 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
     const FilmGap gaps(*this, u, film);
     const FilmRoughness roughness(*this, u, film);  // where the faces run in, the summits per node
     const std::size_t n = std::size_t(m.node_count());
-    FilmFields f{film.number, film.sliding, m, {}, {}, {}, {}, {}, {}};
+    FilmFields f{film.number, film.sliding, m, {}, {}, {}, {}, {}, {}, {}};
     for (auto* v : {&f.gap, &f.pressure, &f.contact_pressure, &f.film_temperature, &f.surface_temperature,
                     &f.viscosity})
       v->assign(n, 0.0);
@@ -46,9 +46,24 @@ std::vector<FilmFields> BearingModel::fields(std::span<const double> u) const {
         f.viscosity[k] = viscosity(viscosity_temperature(u, film, i, j, nullptr)).value;
       }
     }
+    if (plate_.elastic()) f.washer_deflection = washer_deflection_at(u, film);
     out.push_back(std::move(f));
   }
   return out;
+}
+
+// The deflection at each node of a film (towards film 2): its part of the gap (film 1's
+// opens by w, film 2's closes by it), from the plate's shares.
+std::vector<double> BearingModel::washer_deflection_at(std::span<const double> u, const Film& film) const {
+  const FilmMesh& m = film.mesh;
+  const double towards = film.upper == ComponentId::washer ? 1.0 : -1.0;
+  std::vector<double> w(std::size_t(m.node_count()), 0.0);
+  for (int i = 0; i < m.radial_nodes(); ++i)
+    for (const WasherPlate::Share& share : plate_.of(film, i))
+      for (int j = 0; j < m.circumferential_nodes(); ++j)
+        w[std::size_t(m.node(i, j))] += towards * share.weight * plate_.deflection_ref *
+                                        u[std::size_t(plate_.deflection + share.ring * plate_.circumferential_nodes + j)];
+  return w;
 }
 
 }  // namespace twb

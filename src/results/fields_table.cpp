@@ -1,5 +1,6 @@
 #include "twb/results/fields_table.h"
 
+#include <algorithm>
 #include <regex>
 #include <set>
 
@@ -18,6 +19,9 @@ ResultTable fields_table(const std::vector<FilmFields>& films) {
              h = t.number("h_m"), p = t.number("p_Pa"), p_contact = t.number("p_contact_Pa"),
              t_film = t.number("T_film_C"), t_surfaces = t.number("T_surfaces_C"),
              viscosity = t.number("viscosity_Pa_s");
+  // The elastic washer's deflection, only where a film has it (physics §21).
+  const bool bends = std::any_of(films.begin(), films.end(), [](const FilmFields& f) { return !f.washer_deflection.empty(); });
+  const auto deflection = bends ? t.number("washer_deflection_m") : ResultTable::Column{};
   for (const FilmFields& f : films) {
     const FilmMesh& m = f.mesh;
     for (int i = 0; i < m.radial_nodes(); ++i)
@@ -33,6 +37,7 @@ ResultTable fields_table(const std::vector<FilmFields>& films) {
         t.put_number(t_film, f.film_temperature[k] - kelvin_offset);
         t.put_number(t_surfaces, f.surface_temperature[k] - kelvin_offset);
         t.put_number(viscosity, f.viscosity[k]);
+        if (bends) t.put_number(deflection, f.washer_deflection.empty() ? 0.0 : f.washer_deflection[k]);
       }
   }
   return t;

@@ -9,7 +9,7 @@ namespace twb {
 
 template <>
 FilmFields blank_record<FilmFields>() {
-  return FilmFields{1, false, FilmMesh(0.0, 1.0, 3, 8), {}, {}, {}, {}, {}, {}};
+  return FilmFields{1, false, FilmMesh(0.0, 1.0, 3, 8), {}, {}, {}, {}, {}, {}, {}};
 }
 
 void RecordWriter::operator()(const std::string& s) {

@@ -65,7 +65,7 @@ void record_fields(A& a, S& s) {
 template <class A, RecordOf<FilmFields> S>
 void record_fields(A& a, S& f) {
   a(f.film), a(f.sliding), a(f.mesh), a(f.gap), a(f.pressure), a(f.contact_pressure), a(f.film_temperature);
-  a(f.surface_temperature), a(f.viscosity);
+  a(f.surface_temperature), a(f.viscosity), a(f.washer_deflection);
 }
 template <class A, RecordOf<SolvedState> S>
 void record_fields(A& a, S& s) {

@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 FilmFields small_film(int number, bool sliding) {
-  FilmFields f{number, sliding, FilmMesh(0.005, 0.011, 2, 3), {}, {}, {}, {}, {}, {}};
+  FilmFields f{number, sliding, FilmMesh(0.005, 0.011, 2, 3), {}, {}, {}, {}, {}, {}, {}};
   for (int k = 0; k < 6; ++k) {
     f.gap.push_back(1e-6 * (k + 1));
     f.pressure.push_back(sliding ? 1000.0 * k : 0.0);
@@ -50,6 +50,20 @@ TEST(FieldsTable, ColumnsAndOneRowPerNodeAndFilm) {
   }
   EXPECT_EQ(rows, 12);
   EXPECT_EQ(last.rfind("2,0,0.011,4.18879", 0), 0u) << last;
+}
+
+// The elastic washer's deflection is a column only where a film has it (physics §21).
+TEST(FieldsTable, TheWashersDeflectionOnlyWhereItBends) {
+  FilmFields bent = small_film(1, true);
+  bent.washer_deflection.assign(6, 2.5e-6);
+  const std::string csv = fields_csv({bent, small_film(2, false)});
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "film,sliding,r_m,theta_rad,h_m,p_Pa,p_contact_Pa,T_film_C,T_surfaces_C,viscosity_Pa_s,"
+                  "washer_deflection_m");
+  std::getline(in, line);
+  EXPECT_EQ(line, "1,1,0.005,0,1e-06,0,25000000,40,30,0.03,2.5e-06");
 }
 
 TEST(FieldsTable, RefusesNaN) {

@@ -25,9 +25,10 @@ SolvedState a_solved_state() {
   s.parameters = {1.0, -2.5};
   s.sliding = SlidingFilm::washer_gear;
   s.branch = Branch::hot;
-  FilmFields f{2, true, FilmMesh(0.01, 0.02, 3, 8), {}, {}, {}, {}, {}, {}};
+  FilmFields f{2, true, FilmMesh(0.01, 0.02, 3, 8), {}, {}, {}, {}, {}, {}, {}};
   f.gap.assign(24, 1e-5);
   f.pressure.assign(24, 2e5);
+  f.washer_deflection.assign(24, -1e-6);
   s.fields.push_back(f);
   return s;
 }
@@ -53,6 +54,7 @@ TEST(RecordBytes, EveryFieldComesBackAsWritten) {
   ASSERT_EQ(back.fields.size(), 1u);
   EXPECT_EQ(back.fields[0].mesh.circumferential_nodes(), 8);
   EXPECT_EQ(back.fields[0].pressure, std::vector<double>(24, 2e5));
+  EXPECT_EQ(back.fields[0].washer_deflection, std::vector<double>(24, -1e-6));
   // Written again, the same bytes: nothing was left out on the way back.
   RecordWriter again;
   again(back);

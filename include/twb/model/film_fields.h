@@ -32,6 +32,9 @@ struct FilmFields {
   std::vector<double> surface_temperature;
   // Viscosity (Pa·s) at the temperature the scene's effects.viscosity_temperature names.
   std::vector<double> viscosity;
+  // With the elastic washer (docs/physics.md section 21): its deflection at the node (m),
+  // towards film 2, from its rigid plane; empty without.
+  std::vector<double> washer_deflection;
 };
 
 }  // namespace twb

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 // The format, the program's version and the journaled structs' layout: an entry written
 // by another build is not read (its search runs again) rather than misread.
-const std::string kMagic = fmt::format("twb-search-journal 11 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
+const std::string kMagic = fmt::format("twb-search-journal 12 {} {} {} {} {} {}\n", TWB_VERSION, sizeof(BearingState),
                                        sizeof(SolvedState), sizeof(DistressRow), sizeof(TrajectorySample),
                                        sizeof(SearchCounts));
 
