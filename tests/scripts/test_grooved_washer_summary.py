@@ -5,14 +5,10 @@
 
 import csv
 import os
-import subprocess
-import sys
-import tempfile
 import unittest
 
-from result_files import write
+from result_files import ScriptOnResults, write
 
-SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "grooved_washer_summary.py")
 
 DISTRESS_HEADER = "speed_rad_s,{}W_fail_N,criterion,W_d_N,W_oil_temperature_N,W_oil_peak_temperature_N\n"
 STATES = ("speed_rad_s,load_N,branch,T_mean_C,T_max_C,heat_carried_W,Q_supply_l_min\n"
@@ -26,17 +22,8 @@ def rows(path):
         return list(csv.DictReader(f))
 
 
-class GroovedWasherSummary(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.root = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def run_script(self, *args):
-        return subprocess.run([sys.executable, SCRIPT, *args], capture_output=True, text=True,
-                              env=dict(os.environ, MPLBACKEND="Agg"))
+class GroovedWasherSummary(ScriptOnResults):
+    SCRIPT = "grooved_washer_summary.py"
 
     def test_variants_and_groove_maps_become_tables_and_figures(self):
         write(os.path.join(self.root, "fed_convection", "distress.csv"),

@@ -5,30 +5,17 @@
 
 import csv
 import os
-import subprocess
-import sys
-import tempfile
 import unittest
 
-from result_files import write
+from result_files import ScriptOnResults, write
 
-SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "path_dependence_summary.py")
 TRAJECTORY = ("t_s,T_mean_C,T_max_C,hmin_over_sigma,contact_share,f_eff,load_N,speed_rad_s,torque_Nm,fluid_share,"
               "regime,heat_generated_W,heat_to_ambient_W,ambient_C,tilt_rad,least_margin,least_margin_criterion\n")
 EVENTS = "t_s,event,criterion,load_N,speed_rad_s,ambient_C,tilt_rad,margin,failure_load_N,failure_criterion\n"
 
 
-class PathDependenceSummary(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.root = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def run_script(self, *args):
-        return subprocess.run([sys.executable, SCRIPT, *args], capture_output=True, text=True,
-                              env=dict(os.environ, MPLBACKEND="Agg"))
+class PathDependenceSummary(ScriptOnResults):
+    SCRIPT = "path_dependence_summary.py"
 
     def write_path(self, name, hot):
         """A path's results: cool (contact share 0.007) or hot (0.61) at its end, with a

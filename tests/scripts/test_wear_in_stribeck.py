@@ -4,28 +4,15 @@
 """
 
 import os
-import subprocess
-import sys
-import tempfile
 import unittest
 
-from result_files import write
+from result_files import ScriptOnResults, write
 
-SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "wear_in_stribeck.py")
 CASES = ("new", "worn", "worn_run_in", "run_in_0.3", "run_in_0.2", "run_in_0.1")
 
 
-class WearInStribeck(unittest.TestCase):
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.root = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def run_script(self, *args):
-        return subprocess.run([sys.executable, SCRIPT, *args], capture_output=True, text=True,
-                              env=dict(os.environ, MPLBACKEND="Agg"))
+class WearInStribeck(ScriptOnResults):
+    SCRIPT = "wear_in_stribeck.py"
 
     def write_case(self, name, branches=("cool", "cool", "cool", "hot")):
         rows = ["load_N,f_eff,stribeck,branch"]
