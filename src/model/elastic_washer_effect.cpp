@@ -3,10 +3,7 @@
 #include "model/elastic_washer_effect.h"
 
 #include <algorithm>
-#include <cmath>
 #include <memory>
-#include <numbers>
-#include <stdexcept>
 
 #include "model/bearing_model.h"
 #include "model/grid_map.h"
@@ -52,7 +49,7 @@ ElasticWasherEffect::ElasticWasherEffect(ModelSetup& setup)
   const int n = annulus_.nodes();
   deflection_ref_ = setup.model.clearance_scale();
   load_ref_ = std::max(scene.operating.load, 1.0);
-  moment_ref_ = getenv("MR") ? deflection_ref_ * grid.node_count() / grid.area() : load_ref_ / rigidity_of(scene.washer);
+  moment_ref_ = load_ref_ / rigidity_of(scene.washer);
   area_ = grid.area();
   outer_ = grid.outer_radius();
 
