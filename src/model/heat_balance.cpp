@@ -226,18 +226,9 @@ void HeatEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTota
                 add_flow(plate.deflection + share.ring * plate.circumferential_nodes + j,
                          plate_per_flow * share.weight);
           }
-          for (int t = 0; t < face.terms; ++t) {
-            const Index k = face.column[std::size_t(t)];
-            const double cw = face.row_scale[std::size_t(t)] * face.weight[std::size_t(t)];
-            a.add_residual(k, cw * flow);
-            if (!jac) continue;
-            a.add_derivative(k, row, cw * conductance);
-            for (int t2 = 0; t2 < face.terms; ++t2)
-              a.add_derivative(k, face.column[std::size_t(t2)], -cw * conductance * face.weight[std::size_t(t2)]);
-            for (int d = 0; d < 3; ++d) a.add_derivative(k, rigid_cols[d], cw * dflow_dh * dh[d]);
-            a.add_form(k, cw * dflow_dh, shape);
-            add_roughness(k, cw);
-          }
+          // The face nodes of the component receive the same flow.
+          for (int t = 0; t < face.terms; ++t)
+            add_flow(face.column[std::size_t(t)], face.row_scale[std::size_t(t)] * face.weight[std::size_t(t)]);
         }
       }
     }
