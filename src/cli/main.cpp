@@ -31,6 +31,7 @@
 #include "twb/results/results_directory.h"
 #include "twb/results/state_quantities.h"
 #include "twb/results/states_table.h"
+#include "twb/scene/material_library.h"
 #include "twb/scene/scene_loader.h"
 #include "twb/study/result_columns.h"
 #include "twb/version.h"
@@ -314,6 +315,9 @@ int main(int argc, char** argv) {
   columns_cmd->add_flag("--markdown", columns_markdown,
                         "instead, the table of states.csv's columns with their units and meanings (docs/results.md)");
 
+  auto* materials_cmd = app.add_subcommand(
+      "materials", "print the library's materials, their values and sources, as Markdown (docs/materials.md)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -335,6 +339,10 @@ int main(int argc, char** argv) {
     if (*check_cmd) return check(scene_path, overrides);
     if (*columns_cmd) {
       if (job.rank() == 0) std::cout << (columns_markdown ? twb::state_quantities_markdown() : twb::result_columns_json());
+      return 0;
+    }
+    if (*materials_cmd) {
+      if (job.rank() == 0) std::cout << twb::material_library_markdown();
       return 0;
     }
     if (*merge_cmd) return merge(slice_dirs, merge_out, merge_quiet, merge_verbose, merge_full_precision);

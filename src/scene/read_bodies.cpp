@@ -1,5 +1,6 @@
-// The three solid bodies: their annuli and thicknesses (geometry), their steels
-// (materials) and their faces' roughness (surfaces). docs/physics.md sections 1, 4 and 10.
+// The three solid bodies: their annuli and thicknesses (geometry), their materials (by
+// name from the library, or field by field) and their faces' roughness (surfaces).
+// docs/physics.md sections 1, 4 and 10; docs/materials.md.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -11,6 +12,8 @@
 #include "scene_names.h"
 #include "scene_sections.h"
 #include "physics/summit_statistics.h"
+#include "key_suggestion.h"
+#include "twb/scene/material_library.h"
 
 namespace twb::scene_io {
 namespace {
@@ -74,33 +77,58 @@ void read_geometry(const MapReader& scene, Scene& out) {
   }
 }
 
+// The library material a scene names at `node` for `component` (docs/materials.md): a
+// bulk one, a coating being a face's layer and never a body.
+Material library_material(const Node& node, std::string_view component) {
+  const std::vector<std::string_view> bulk = library_material_names(MaterialForm::bulk);
+  const std::string name = node.scalar("the name of a library material (docs/materials.md)");
+  if (const LibraryMaterial* found = find_library_material(name); found && found->form == MaterialForm::coating)
+    node.fail(fmt::format("{}: '{}' is a coating, a face's layer and not a body; a body's material is one of: {}",
+                          node.path(), name, join(bulk)));
+  Material m = find_library_material(bulk[node.choice(bulk)])->properties;
+  m.library = name;
+  // A library polymer or bronze may be a carrier or a gear, but its PV limit is a
+  // criterion of the washer's face alone (docs/physics.md section 8).
+  if (component != "washer") m.pv_limit.reset();
+  return m;
+}
+
+// A body's material: a library material by name (`washer: peek`), a map of fields over
+// one (`washer: {material: peek, yield_strength: 80 MPa}`) or over the paper's steel.
 Material read_material(const MapReader& materials, std::string_view component) {
-  const MapReader steel = materials.map(component, {"youngs_modulus", "poisson_ratio", "yield_strength",
+  const std::optional<Node> named = materials.find(component);
+  if (named && named->yaml().IsScalar()) return library_material(*named, component);
+  if (named && named->yaml().IsSequence())
+    named->fail(fmt::format("{}: {} is neither a library material's name (docs/materials.md: {}) nor a map of its "
+                            "values",
+                            named->path(), named->describe_content(),
+                            join(library_material_names(MaterialForm::bulk))));
+  const MapReader fields = materials.map(component, {"material", "youngs_modulus", "poisson_ratio", "yield_strength",
                                                     "conductivity", "density", "specific_heat", "thermal_expansion",
                                                     "max_temperature", "pv_limit"});
-  Material m;
-  m.youngs_modulus = steel.quantity("youngs_modulus", si::stress, bounds::youngs_modulus, m.youngs_modulus);
-  m.poisson_ratio = steel.quantity("poisson_ratio", si::dimensionless,
+  Material m = fields.has("material") ? library_material(fields.get("material", ""), component) : Material{};
+  m.youngs_modulus = fields.quantity("youngs_modulus", si::stress, bounds::youngs_modulus, m.youngs_modulus);
+  m.poisson_ratio = fields.quantity("poisson_ratio", si::dimensionless,
                                    {.low = 0.0, .low_open = true, .high = 0.5, .high_open = true},
                                    m.poisson_ratio);
-  m.yield_strength = steel.quantity("yield_strength", si::stress, bounds::yield_strength, m.yield_strength);
-  m.conductivity = steel.quantity("conductivity", si::conductivity, bounds::solid_conductivity, m.conductivity);
-  m.density = steel.quantity("density", si::density, bounds::density, m.density);
-  m.specific_heat = steel.quantity("specific_heat", si::specific_heat, bounds::specific_heat, m.specific_heat);
+  m.yield_strength = fields.quantity("yield_strength", si::stress, bounds::yield_strength, m.yield_strength);
+  m.conductivity = fields.quantity("conductivity", si::conductivity, bounds::solid_conductivity, m.conductivity);
+  m.density = fields.quantity("density", si::density, bounds::density, m.density);
+  m.specific_heat = fields.quantity("specific_heat", si::specific_heat, bounds::specific_heat, m.specific_heat);
   m.thermal_expansion =
-      steel.quantity("thermal_expansion", si::expansion, bounds::thermal_expansion, m.thermal_expansion);
-  if (steel.has("max_temperature"))
-    m.max_temperature = steel.quantity("max_temperature", si::temperature, bounds::material_temperature);
-  if (steel.has("pv_limit")) {
+      fields.quantity("thermal_expansion", si::expansion, bounds::thermal_expansion, m.thermal_expansion);
+  if (fields.has("max_temperature"))
+    m.max_temperature = fields.quantity("max_temperature", si::temperature, bounds::material_temperature);
+  if (fields.has("pv_limit")) {
     // Only the washer's face rubs against both its neighbours: the carrier and gear are
     // steel, whose data sheets give no PV limit.
     if (component != "washer") {
-      const Node node = steel.get("pv_limit", "");
+      const Node node = fields.get("pv_limit", "");
       node.fail(fmt::format("{}: a PV limit is the washer's (materials.washer.pv_limit): the washer is the bearing's "
                             "bronze or polymer face",
                             node.path()));
     }
-    m.pv_limit = steel.quantity("pv_limit", si::pv, bounds::pv_limit);
+    m.pv_limit = fields.quantity("pv_limit", si::pv, bounds::pv_limit);
   }
   return m;
 }

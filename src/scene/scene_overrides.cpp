@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "scene_names.h"
 #include "yaml_documents.h"
 #include "twb/input_error.h"
 
@@ -28,6 +29,13 @@ bool is_key_character(char c) {
                                "operating.load=800 N",
                                text, why),
                    text);
+}
+
+// A body's material named alone (`materials.washer: peek`) stands for
+// `{material: peek}`: an override of one of its fields opens it into that map.
+bool is_library_shorthand(const std::string& path) {
+  return std::any_of(kComponentNames.begin(), kComponentNames.end(),
+                     [&](std::string_view body) { return path == fmt::format("materials.{}", body); });
 }
 
 std::vector<Segment> split_path(const std::string& text, std::size_t equals) {
@@ -147,6 +155,10 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
       if (!child.IsDefined() || child.IsNull()) {
         replace(parent, key, YAML::Node(YAML::NodeType::Map));
         provenance.assign(child_path, &origin);
+      } else if (child.IsScalar() && is_library_shorthand(child_path)) {
+        YAML::Node named(YAML::NodeType::Map);
+        named["material"] = child;
+        replace(parent, key, named);
       } else if (!child.IsMap()) {
         throw InputError(origin.name, 0, segments[i + 1].column,
                          fmt::format("'{}' is {} in the scene, not a map: it has no key '{}'",

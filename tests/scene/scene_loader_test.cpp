@@ -16,22 +16,11 @@
 namespace twb {
 namespace {
 
+using testing::expect_same_material;
 using testing::kMinimalScene;
 using testing::load_error;
 using testing::source_path;
 using testing::TempScene;
-
-void expect_same_material(const Material& a, const Material& b) {
-  EXPECT_EQ(a.youngs_modulus, b.youngs_modulus);
-  EXPECT_EQ(a.poisson_ratio, b.poisson_ratio);
-  EXPECT_EQ(a.yield_strength, b.yield_strength);
-  EXPECT_EQ(a.conductivity, b.conductivity);
-  EXPECT_EQ(a.density, b.density);
-  EXPECT_EQ(a.specific_heat, b.specific_heat);
-  EXPECT_EQ(a.thermal_expansion, b.thermal_expansion);
-  EXPECT_EQ(a.max_temperature, b.max_temperature);
-  EXPECT_EQ(a.pv_limit, b.pv_limit);
-}
 
 void expect_same_component(const Component& a, const Component& b) {
   EXPECT_EQ(a.inner_radius, b.inner_radius);

@@ -48,6 +48,20 @@ inline const char* const kSceneBodies = TWB_SCENE_BODIES;
 inline const char* const kMinimalScene = TWB_SCENE_BODIES "operating: {load: 1000 N, speed: 545 rad/s}\n";
 #undef TWB_SCENE_BODIES
 
+// Every value of two materials, and the library name they started from.
+inline void expect_same_material(const Material& a, const Material& b) {
+  EXPECT_EQ(a.youngs_modulus, b.youngs_modulus);
+  EXPECT_EQ(a.poisson_ratio, b.poisson_ratio);
+  EXPECT_EQ(a.yield_strength, b.yield_strength);
+  EXPECT_EQ(a.conductivity, b.conductivity);
+  EXPECT_EQ(a.density, b.density);
+  EXPECT_EQ(a.specific_heat, b.specific_heat);
+  EXPECT_EQ(a.thermal_expansion, b.thermal_expansion);
+  EXPECT_EQ(a.max_temperature, b.max_temperature);
+  EXPECT_EQ(a.pv_limit, b.pv_limit);
+  EXPECT_EQ(a.library, b.library);
+}
+
 // The InputError thrown by loading `path`, or a failed test.
 inline InputError load_error(const std::string& path, const std::vector<std::string>& overrides = {}) {
   try {

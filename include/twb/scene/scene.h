@@ -86,6 +86,9 @@ struct Material {
   // pressure times sliding speed its face may run at, a failure criterion (docs/physics.md
   // section 8). The washer's material only; none by default.
   std::optional<double> pv_limit;  // Pa m/s
+  // The library material these values start from (twb/scene/material_library.h,
+  // docs/materials.md), the scene's fields over it; empty: fields over the paper's steel.
+  std::string library;
 };
 
 // Roughness of one component's face(s) touching a film.
