@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "physics/modulus_curve.h"
 #include "scene_test_support.h"
 #include "twb/scene/material_library.h"
 
@@ -110,6 +111,28 @@ TEST(MaterialLibrary, ACoatingIsNotABody) {
 TEST(MaterialLibrary, AListIsNeitherANameNorFields) {
   const std::string what = material_error("materials:\n  washer: [peek]\n").what();
   EXPECT_NE(what.find("materials.washer: a list is neither a library material's name"), std::string::npos) << what;
+}
+
+// A material's modulus is its room-temperature one (23 degC) where it has a curve: the
+// curve starts there with it, and is one the model can take (physics §23, [M1]).
+TEST(MaterialLibrary, ACurveStartsAtTheRoomTemperatureModulus) {
+  int curves = 0;
+  for (const LibraryMaterial& m : material_library()) {
+    if (m.modulus_by_temperature.empty()) continue;
+    SCOPED_TRACE(std::string(m.name));
+    std::vector<double> t, e;
+    for (const ModulusAt& point : m.modulus_by_temperature) {
+      t.push_back(point.temperature);
+      e.push_back(point.modulus);
+    }
+    const ModulusCurve curve(t, e);
+    EXPECT_NEAR(curve.lowest_temperature(), 296.15, 1e-9);
+    // The curve is cubic in ln E (about 22, rounded to 4e-15): exp returns E to that relative error.
+    EXPECT_NEAR(curve.at(curve.lowest_temperature()).modulus, m.properties.youngs_modulus,
+                1e-14 * m.properties.youngs_modulus);
+    ++curves;
+  }
+  EXPECT_GE(curves, 2);  // PEEK and the carbon-filled PEEK
 }
 
 bool is_scene_name(std::string_view name) {
