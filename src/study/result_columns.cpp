@@ -57,7 +57,14 @@ std::string result_columns_json() {
   tables["cycle_events"] = columns(cycle_events_table({}), cycle_events_table({}));
   tables["life"] = columns(life_table({}), life_table({}));
   tables["worn_profile"] = columns(worn_profile_table({}), worn_profile_table({}));
-  tables["fields"] = columns(fields_table({}), fields_table({}));
+  // A bent washer's film declares the deflection, a column only the elastic washer writes.
+  FilmFields bent{.film = 1, .sliding = true, .mesh = FilmMesh(1e-3, 2e-3, 2, 3), .gap = {}, .pressure = {},
+                  .contact_pressure = {}, .film_temperature = {}, .surface_temperature = {}, .viscosity = {},
+                  .washer_deflection = {}};
+  for (std::vector<double>* f : {&bent.gap, &bent.pressure, &bent.contact_pressure, &bent.film_temperature,
+                                 &bent.surface_temperature, &bent.viscosity, &bent.washer_deflection})
+    f->assign(std::size_t(bent.mesh.node_count()), 0.0);
+  tables["fields"] = columns(fields_table({bent}), fields_table({}));
   tables["sensitivity"] = columns(sensitivity_table({}), sensitivity_table({}));
   tables["reliability"] = columns(reliability_table({}), reliability_table({}));
   tables["design_point"] = columns(design_point_table({}), design_point_table({}));

@@ -1216,6 +1216,21 @@ class TwbPlotTest(unittest.TestCase):
                       "film 2 (washer–gear)", "does not slide"):
             self.assertIn(label, text)
 
+    # A washer that bends (elastic_washer) writes its deflection at every node of both
+    # films: the maps gain its panel; a run without it keeps the four.
+    def test_a_bent_washers_deflection_is_mapped(self):
+        d = self.results_dir("bent")
+        os.makedirs(os.path.join(d, "fields"))
+        rows = [f"{row},{-2e-6 * float(row.split(',')[2]) / 11.35e-3:.10g}" for row in fields_rows()]
+        write(self.fields_file(d, 2), [FIELDS_HEADER + ",washer_deflection_m"] + rows)
+        result = plot(d, "--state", "2", "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("washer deflection", self.svg_text(os.path.join(d, "figures", "fields_state_0002.svg")))
+        plain = self.results_dir("flat", fields=(2,))
+        result = plot(plain, "--state", "2", "--format", "svg")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertNotIn("washer deflection", self.svg_text(os.path.join(plain, "figures", "fields_state_0002.svg")))
+
     def test_field_maps_of_a_chosen_state_or_the_last(self):
         d = self.results_dir("chosen", fields=(3, 14))
         result = plot(d, "--state", "3", "--format", "png")

@@ -1,5 +1,6 @@
 """Polar maps of one state's fields (fluid pressure, film thickness, contact pressure,
-film temperature), to see where on the washer the load is carried and the heat is made.
+film temperature, and the washer's deflection where it bends), to see where on the
+washer the load is carried and the heat is made.
 """
 
 import math
@@ -16,6 +17,10 @@ FIELD_PANELS = (
     ("h_m", 1e6, "film thickness $h$ (µm)", "cividis"),
     ("p_contact_Pa", 1e-6, "asperity contact pressure $p_c$ (MPa)", "magma"),
     ("T_film_C", 1.0, "film-node temperature $T_f$ (°C)", "inferno"),
+)
+# Fields only some runs write: a panel where the state's films have them.
+OPTIONAL_PANELS = (
+    ("washer_deflection_m", 1e6, "washer deflection $w$ (µm)", "coolwarm"),
 )
 FILM_NAMES = {1: "film 1 (carrier–washer)", 2: "film 2 (washer–gear)"}
 
@@ -66,7 +71,8 @@ def select_fields(runs, state):
 def figure_fields(films, load, speed, caption):
     """Polar maps, one row per film (the sliding film first), one column per field."""
     order = sorted(films, key=lambda f: (not films[f]["sliding"], f))
-    ncol = len(FIELD_PANELS)
+    panels = FIELD_PANELS + tuple(p for p in OPTIONAL_PANELS if all(p[0] in films[f] for f in order))
+    ncol = len(panels)
     fig = plt.figure(figsize=(3.3 * ncol, 3.3 * len(order) + 0.9))
     for row, film in enumerate(order):
         f = films[film]
@@ -74,7 +80,7 @@ def figure_fields(films, load, speed, caption):
         # Close the periodic seam: θ = 2π repeats θ = 0.
         theta = np.append(f["theta"], f["theta"][0] + 2 * math.pi)
         rr, tt = np.meshgrid(r_mm, theta, indexing="ij")
-        for col, (column, scale, label, cmap) in enumerate(FIELD_PANELS):
+        for col, (column, scale, label, cmap) in enumerate(panels):
             ax = fig.add_subplot(len(order), ncol, row * ncol + col + 1, projection="polar")
             values = f[column] * scale
             values = np.concatenate([values, values[:, :1]], axis=1)

@@ -124,7 +124,8 @@ SLIDING_LABELS = {
     "carrier_washer": "film 1 slides (washer stuck to the gear)",
     "washer_gear": "film 2 slides (washer stuck to the carrier)",
 }
-FIELDS_COLUMNS = tuple(_TABLES["fields"]["columns"])
+FIELDS_OPTIONAL = tuple(_TABLES["fields"]["optional"])
+FIELDS_COLUMNS = tuple(c for c in _TABLES["fields"]["columns"] if c not in FIELDS_OPTIONAL)
 
 
 def _labels_every(what, labels, names):
@@ -534,11 +535,13 @@ def read_fields(path):
     column: 2-D array [radius, angle]}}, checked to be a complete polar grid per film."""
     records = _records(path)
     header = _header(path, records, FIELDS_COLUMNS, "fields")
-    index = {c: header.index(c) for c in FIELDS_COLUMNS}
+    # The optional columns a run wrote (the washer's deflection with elastic_washer).
+    read = FIELDS_COLUMNS + tuple(c for c in FIELDS_OPTIONAL if c in header)
+    index = {c: header.index(c) for c in read}
     rows = {}
     for line, fields in records:
         _check_width(path, line, fields, header)
-        values = {c: _number(path, line, c, fields[index[c]]) for c in FIELDS_COLUMNS}
+        values = {c: _number(path, line, c, fields[index[c]]) for c in read}
         for c, allowed in (("film", (1.0, 2.0)), ("sliding", (0.0, 1.0))):
             if values[c] not in allowed:
                 raise InputError(f"{path}: line {line}: column '{c}': expected "
@@ -555,7 +558,7 @@ def read_fields(path):
             raise InputError(f"{path}: line {entries[-1][0]}: film {film}: expected a complete "
                              f"polar grid (every radius at every angle), got {len(entries)} rows "
                              f"for {r.size} radii and {theta.size} angles")
-        grid = {c: np.full((r.size, theta.size), np.nan) for c in FIELDS_COLUMNS[4:]}
+        grid = {c: np.full((r.size, theta.size), np.nan) for c in read[4:]}
         sliding = set()
         for line, v in entries:
             i, j = np.searchsorted(r, v["r_m"]), np.searchsorted(theta, v["theta_rad"])
