@@ -57,6 +57,22 @@ std::string BearingModel::describe_row(Index k) const {
                          place(f.mesh, int(n / nt), int(n % nt)));
     }
   }
+  if (plate_.elastic()) {
+    // The plate's rows on film 1's grid (physics §21): [E2] then [E3] per node, then the
+    // three conditions that hold the rigid plane (the block after the moments).
+    const FilmMesh& grid = films_.front().mesh;
+    const Index n = grid.node_count(), nt = grid.circumferential_nodes();
+    if (k >= plate_.deflection && k < plate_.deflection + n)
+      return fmt::format("the washer plate's curvature (the moment-free edge's [E2]) at {}",
+                         place(grid, int((k - plate_.deflection) / nt), int((k - plate_.deflection) % nt)));
+    if (k >= plate_.moment && k < plate_.moment + n)
+      return fmt::format("the washer plate's load balance ([E3]) at {}",
+                         place(grid, int((k - plate_.moment) / nt), int((k - plate_.moment) % nt)));
+    static constexpr const char* rigid_plane[] = {"the integral of w dA zero", "the integral of w x dA zero",
+                                                  "the integral of w y dA zero"};
+    if (k >= plate_.moment + n && k < plate_.moment + n + 3)
+      return fmt::format("the washer plate's rigid plane ({})", rigid_plane[k - plate_.moment - n]);
+  }
   for (const ComponentHeat& c : components_) {
     if (k < c.offset || k >= c.offset + c.node_count()) continue;
     const Index n = k - c.offset;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -58,6 +59,25 @@ TEST(ElasticWasherModel, AddsTwoUnknownsPerWasherNodeAndThreeMultipliers) {
   EXPECT_EQ(elastic.size(), plain.size() + 2 * nodes + 3 + 1);
   EXPECT_TRUE(elastic.pattern().prefers_nested_dissection);
   EXPECT_FALSE(plain.pattern().prefers_nested_dissection);
+}
+
+// A solver that fails names the row it failed on: each of the plate's rows says which of
+// its balances it is, and where (row_meaning.cpp), not the block's bare name.
+TEST(ElasticWasherModel, ThePlatesRowsSayWhatTheyBalanceAndWhere) {
+  Scene s = testing::table1_scene(true, true, true, true, 545.0, 150.0);
+  s.effects.elastic_washer = true;
+  const BearingModel model(s);
+  const int nodes = s.mesh.radial_nodes * s.mesh.circumferential_nodes;
+  int curvature = 0, load = 0, rigid = 0;
+  for (Index k = 0; k < model.size(); ++k) {
+    const std::string row = model.describe_row(k);
+    curvature += row.find("the washer plate's curvature") == 0 && row.find(" at node (") != std::string::npos;
+    load += row.find("the washer plate's load balance") == 0 && row.find(" at node (") != std::string::npos;
+    rigid += row.find("the washer plate's rigid plane (the integral of w") == 0;
+  }
+  EXPECT_EQ(curvature, nodes);
+  EXPECT_EQ(load, nodes);
+  EXPECT_EQ(rigid, 3);
 }
 
 // The films carry the load and the washer's three rigid rows balance it (to 1e-8 of the
