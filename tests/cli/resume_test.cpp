@@ -150,9 +150,16 @@ TEST(Resume, AnotherScenesJournalIsRefused) {
   const fs::path out = fs::temp_directory_path() / ("twb_resume_other_" + std::to_string(getpid()));
   fs::remove_all(out);
   const pid_t child = start(map_arguments(out));
-  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  // Killed once its journal holds a search, not after a fixed time: a loaded machine or
+  // the sanitizers' build may not have started one within it, and a journal-less
+  // directory has nothing to refuse (the resume would simply run).
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (std::chrono::steady_clock::now() < give_up && !has_journaled_search(out / ".twb-journal"))
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
   ::kill(child, SIGKILL);
   finish(child);
+  ASSERT_TRUE(has_journaled_search(out / ".twb-journal")) << "no search journaled before the kill";
+  ASSERT_FALSE(fs::exists(out / "run.json")) << "the run finished before its kill";
   std::vector<std::string> other = map_arguments(out);
   other.insert(other.end(), {"--set", "study.load_end=900 N", "--resume"});
   EXPECT_EQ(finish(start(other)), 2);
