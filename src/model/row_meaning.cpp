@@ -58,15 +58,16 @@ std::string BearingModel::describe_row(Index k) const {
     }
   }
   if (plate_.elastic()) {
-    // The plate's rows on film 1's grid (physics §21): [E2] then [E3] per node, then the
-    // three conditions that hold the rigid plane (the block after the moments).
+    // The plate's rows on film 1's grid (physics §21): [E1]'s two per node, the edges'
+    // fluxes from [E2] and [E3], then the three conditions that hold the rigid plane (the
+    // block the layout places after the moments).
     const FilmMesh& grid = films_.front().mesh;
     const Index n = grid.node_count(), nt = grid.circumferential_nodes();
     if (k >= plate_.deflection && k < plate_.deflection + n)
-      return fmt::format("the washer plate's curvature (the moment-free edge's [E2]) at {}",
+      return fmt::format("the washer plate's curvature ([E1], at an edge with the moment-free [E2]) at {}",
                          place(grid, int((k - plate_.deflection) / nt), int((k - plate_.deflection) % nt)));
     if (k >= plate_.moment && k < plate_.moment + n)
-      return fmt::format("the washer plate's load balance ([E3]) at {}",
+      return fmt::format("the washer plate's load balance ([E1], at an edge with the shear-free [E3]) at {}",
                          place(grid, int((k - plate_.moment) / nt), int((k - plate_.moment) % nt)));
     static constexpr const char* rigid_plane[] = {"the integral of w dA zero", "the integral of w x dA zero",
                                                   "the integral of w y dA zero"};

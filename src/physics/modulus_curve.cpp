@@ -58,10 +58,13 @@ ModulusCurve::ModulusCurve(std::span<const double> temperatures, std::span<const
 }
 
 ModulusCurve::Value ModulusCurve::at(double temperature) const {
-  // Held at the data's ends, exactly their values; a single point everywhere.
+  // A NaN would pass both range checks and index past the interpolant's data.
+  if (std::isnan(temperature)) throw std::invalid_argument("a modulus curve at a temperature that is not a number");
+  // A single point is a constant modulus: no data to leave.
+  if (curve_.empty()) return {lowest_modulus_, 0.0, Value::Range::inside};
+  // Held at the data's ends, exactly their values.
   if (temperature < lowest_) return {lowest_modulus_, 0.0, Value::Range::below};
   if (temperature > highest_) return {highest_modulus_, 0.0, Value::Range::above};
-  if (curve_.empty()) return {lowest_modulus_, 0.0, Value::Range::inside};
   const auto& curve = curve_.front();
   const double modulus = std::exp(curve(temperature));
   return {modulus, modulus * curve.prime(temperature), Value::Range::inside};

@@ -13,7 +13,8 @@ namespace twb {
 class ModulusCurve {
  public:
   // temperatures (K) strictly ascending, moduli (Pa) positive, the same count ≥ 1 (one
-  // point: a constant modulus). std::invalid_argument otherwise.
+  // point: a constant modulus, inside its data at every temperature).
+  // std::invalid_argument otherwise.
   ModulusCurve(std::span<const double> temperatures, std::span<const double> moduli);
 
   struct Value {
@@ -22,6 +23,7 @@ class ModulusCurve {
     // Where the temperature lies against the data: inside, or held at an end.
     enum class Range { inside, below, above } range = Range::inside;
   };
+  // std::invalid_argument for a NaN temperature.
   Value at(double temperature) const;
 
   double lowest_temperature() const { return lowest_; }

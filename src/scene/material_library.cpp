@@ -99,7 +99,7 @@ std::vector<LibraryMaterial> shipped_materials() {
                  "0.35 MPa m/s: handbook figures of low confidence. Unfilled PTFE: E 0.4-0.8 GPa, K 0.25."});
   all.push_back({"ptfe_coating", "a resin-bonded PTFE anti-friction coating", MaterialForm::coating,
                  material(2.0 * kGPa, 0.40, 40 * kMPa, 0.25, 1800, 1000, 80e-6, 260.0), {}, std::nullopt,
-                 std::pair{3e-6, 40e-6},
+                 std::pair{3e-6, 42e-6},
                  "thickness: dry-film lubricants 2.5-13 um, PTFE coatings studied from 3 to 42 um; service to 285 "
                  "degC for the coating family, 260 degC for its PTFE (Whitford Xylan brochure); E, nu, yield, K, "
                  "density, c and expansion depend on the binder: handbook figures of low confidence."});

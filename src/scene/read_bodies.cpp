@@ -93,11 +93,36 @@ Material library_material(const Node& node, std::string_view component) {
   return m;
 }
 
+// A library material's values are inputs of the scene as the fields it writes are (a
+// sensitivity study's default differentiates them): noted under their paths, but those
+// the scene gives itself, noted as they were read (the first noting of a path counts).
+void note_library_values(const Node& at, std::string_view component, const Material& m, const MapReader* given) {
+  const Provenance* provenance = at.provenance();
+  if (!provenance || m.library.empty()) return;
+  const auto note = [&](std::string_view key, std::optional<double> value, const SiUnit& unit) {
+    if (!value || (given && given->has(key))) return;
+    provenance->note_quantity(fmt::format("materials.{}.{}", component, key), *value, unit.symbol);
+  };
+  note("youngs_modulus", m.youngs_modulus, si::stress);
+  note("poisson_ratio", m.poisson_ratio, si::dimensionless);
+  note("yield_strength", m.yield_strength, si::stress);
+  note("conductivity", m.conductivity, si::conductivity);
+  note("density", m.density, si::density);
+  note("specific_heat", m.specific_heat, si::specific_heat);
+  note("thermal_expansion", m.thermal_expansion, si::expansion);
+  note("max_temperature", m.max_temperature, si::temperature);
+  note("pv_limit", m.pv_limit, si::pv);
+}
+
 // A body's material: a library material by name (`washer: peek`), a map of fields over
 // one (`washer: {material: peek, yield_strength: 80 MPa}`) or over the paper's steel.
 Material read_material(const MapReader& materials, std::string_view component) {
   const std::optional<Node> named = materials.find(component);
-  if (named && named->yaml().IsScalar()) return library_material(*named, component);
+  if (named && named->yaml().IsScalar()) {
+    const Material m = library_material(*named, component);
+    note_library_values(*named, component, m, nullptr);
+    return m;
+  }
   if (named && named->yaml().IsSequence())
     named->fail(fmt::format("{}: {} is neither a library material's name (docs/materials.md: {}) nor a map of its "
                             "values",
@@ -130,6 +155,7 @@ Material read_material(const MapReader& materials, std::string_view component) {
     }
     m.pv_limit = fields.quantity("pv_limit", si::pv, bounds::pv_limit);
   }
+  if (named) note_library_values(*named, component, m, &fields);
   return m;
 }
 

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "scene_names.h"
+
 namespace twb::scene_io {
 namespace {
 
@@ -58,8 +60,15 @@ YAML::Node merge(const YAML::Node& base, const SceneTree& base_tree, const YAML:
     const YAML::Node value = own_entries[match].second;
     const Origin* oo = origin_in(own_tree, p, own_origin);
     // A map tagged '!replace' stands for itself, without the base's keys.
-    if (base_value.IsMap() && value.IsMap() && value.Tag() != kReplaceTag) {
-      out.force_insert(own_entries[match].first, merge(base_value, base_tree, value, own_tree, p, bo, oo, origins));
+    const bool merges = value.IsMap() && value.Tag() != kReplaceTag;
+    // The base's material named alone, opened so that the file's fields go over it.
+    YAML::Node base_map = base_value;
+    if (merges && base_value.IsScalar() && is_library_shorthand(p)) {
+      base_map = YAML::Node(YAML::NodeType::Map);
+      base_map["material"] = base_value;
+    }
+    if (base_map.IsMap() && merges) {
+      out.force_insert(own_entries[match].first, merge(base_map, base_tree, value, own_tree, p, bo, oo, origins));
       origins[p] = oo;
     } else {
       out.force_insert(own_entries[match].first, value);

@@ -2,6 +2,7 @@
 // so that what is written loads back.
 #pragma once
 
+#include <algorithm>
 #include <string_view>
 
 #include "scene_node.h"
@@ -100,5 +101,15 @@ inline constexpr std::array<std::string_view, 8> kEffectNames{kHydrodynamics, kF
 
 // The three bodies, in stacking order along z.
 inline constexpr std::array<std::string_view, 3> kComponentNames{"carrier", "washer", "gear"};
+
+// A body's material named alone (`materials.washer: peek`) stands for `{material: peek}`:
+// an override of one of its fields, or a derived scene's map of fields, opens it into
+// that map (docs/scenes.md, materials).
+inline bool is_library_shorthand(std::string_view path) {
+  constexpr std::string_view prefix = "materials.";
+  if (path.substr(0, prefix.size()) != prefix) return false;
+  const std::string_view body = path.substr(prefix.size());
+  return std::find(kComponentNames.begin(), kComponentNames.end(), body) != kComponentNames.end();
+}
 
 }  // namespace twb::scene_io

@@ -31,13 +31,6 @@ bool is_key_character(char c) {
                    text);
 }
 
-// A body's material named alone (`materials.washer: peek`) stands for
-// `{material: peek}`: an override of one of its fields opens it into that map.
-bool is_library_shorthand(const std::string& path) {
-  return std::any_of(kComponentNames.begin(), kComponentNames.end(),
-                     [&](std::string_view body) { return path == fmt::format("materials.{}", body); });
-}
-
 std::vector<Segment> split_path(const std::string& text, std::size_t equals) {
   std::vector<Segment> segments;
   std::size_t start = 0;

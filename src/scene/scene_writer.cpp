@@ -79,10 +79,10 @@ void write_materials(SceneText& w, const Scene& s) {
   for (const auto& [name, component] :
        {std::pair{"carrier", &s.carrier}, std::pair{"washer", &s.washer}, std::pair{"gear", &s.gear}}) {
     const Material& m = component->material;
-    w.line(1, fmt::format("{}:", name));
-    // The library's name says where the values came from; every field follows, so the
-    // scene reads back the same whatever a later library holds.
-    if (!m.library.empty()) w.entry(2, "material", m.library);
+    // The library's name only as a note: the values are written out, and a later library
+    // (other values, a limit added, a name gone) must not change the scene read back.
+    w.line(1, m.library.empty() ? fmt::format("{}:", name)
+                                : fmt::format("{}:  # the library's {} (docs/materials.md)", name, m.library));
     w.entry(2, "youngs_modulus", quantity(m.youngs_modulus, "Pa"));
     w.entry(2, "poisson_ratio", quantity(m.poisson_ratio, "1"));
     w.entry(2, "yield_strength", quantity(m.yield_strength, "Pa"));

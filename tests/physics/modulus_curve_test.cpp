@@ -64,7 +64,8 @@ TEST(ModulusCurve, TwoOrThreePointsAreMonotoneToo) {
   for (double t = 300.0; t < 410.0; t += 0.1) EXPECT_GE(three.at(t).modulus, three.at(t + 0.1).modulus) << t;
   const std::vector<double> t1{300.0}, e1{5e9};
   EXPECT_DOUBLE_EQ(ModulusCurve(t1, e1).at(450.0).modulus, 5e9);
-  EXPECT_EQ(ModulusCurve(t1, e1).at(450.0).range, ModulusCurve::Value::Range::above);
+  // A constant modulus has no data to leave (physics §23's criterion must not fire on it).
+  EXPECT_EQ(ModulusCurve(t1, e1).at(450.0).range, ModulusCurve::Value::Range::inside);
 }
 
 TEST(ModulusCurve, RefusesDataThatAreNotACurve) {
@@ -73,6 +74,7 @@ TEST(ModulusCurve, RefusesDataThatAreNotACurve) {
   EXPECT_THROW(ModulusCurve(rising, zero), std::invalid_argument);
   EXPECT_THROW(ModulusCurve(rising, one), std::invalid_argument);
   EXPECT_THROW(ModulusCurve(std::vector<double>{}, std::vector<double>{}), std::invalid_argument);
+  EXPECT_THROW(ModulusCurve(kPeekT, kPeekE).at(std::nan("")), std::invalid_argument);
 }
 
 }  // namespace

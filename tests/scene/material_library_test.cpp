@@ -2,8 +2,11 @@
 // its materials by name, overrides them field by field, and writes them back the same.
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -11,6 +14,7 @@
 #include "physics/modulus_curve.h"
 #include "scene_test_support.h"
 #include "twb/scene/material_library.h"
+#include "twb/scene/scene_inputs.h"
 
 namespace twb {
 namespace {
@@ -55,18 +59,22 @@ TEST(MaterialLibrary, AFieldOverridesTheNamedMaterialAndKeepsTheRest) {
 }
 
 // A scene that names a library material writes it out (twb check, the results' scene.yaml)
-// with every value, so that it reads back the same whatever the library holds later.
+// value by value, its name a comment, so that it reads back the same whatever the library
+// holds later.
 TEST(MaterialLibrary, TheWrittenSceneReadsBackTheSameMaterials) {
   const Scene scene = load_scene_text(std::string(kMinimalScene) +
                                           "materials: {carrier: bearing_steel, washer: {material: pa46, "
                                           "conductivity: 0.4 W/(m K)}, gear: cusn8}\n",
                                       "m.yaml");
   const std::string written = describe_scene(scene);
-  EXPECT_NE(written.find("material: pa46"), std::string::npos) << written;
+  EXPECT_NE(written.find("washer:  # the library's pa46"), std::string::npos) << written;
+  EXPECT_EQ(written.find("material:"), std::string::npos) << written;
   const Scene again = load_scene_text(written, "written.yaml");
   for (const auto& [first, second] : {std::pair{&scene.carrier, &again.carrier}, std::pair{&scene.washer, &again.washer},
                                       std::pair{&scene.gear, &again.gear}}) {
-    expect_same_material(second->material, first->material);
+    Material unnamed = first->material;
+    unnamed.library.clear();
+    expect_same_material(second->material, unnamed);
   }
 }
 
@@ -79,6 +87,52 @@ TEST(MaterialLibrary, AnOverrideOpensAMaterialGivenByName) {
   expected.youngs_modulus = 3e9;
   expect_same_material(scene.washer.material, expected);
   expect_same_material(scene.gear.material, as_read(*find_library_material("pa46"), false));
+}
+
+// A derived scene's fields go over the material its base names alone: the name stands
+// for {material: name} there too, so the base's other values stay the library's.
+TEST(MaterialLibrary, ADerivedScenesFieldsGoOverTheBasesNamedMaterial) {
+  const TempScene base(std::string(kMinimalScene) + "materials: {washer: peek}\n", "_base");
+  const std::string base_name = std::filesystem::path(base.path()).filename().string();
+  const TempScene derived(
+      fmt::format("extends: {}\nmaterials: {{washer: {{yield_strength: 80 MPa}}}}\n", base_name), "_derived");
+  Material expected = as_read(*find_library_material("peek"), true);
+  expected.yield_strength = 80e6;
+  expect_same_material(load_scene(derived.path()).washer.material, expected);
+}
+
+// A named material's values are the scene's inputs like values it writes out
+// (scene_inputs.h): a sensitivity or a calibration can take the library's modulus, and
+// moving it keeps the library's other values.
+TEST(MaterialLibrary, ANamedMaterialsValuesAreTheScenesInputs) {
+  const Scene scene =
+      load_scene_text(std::string(kMinimalScene) + "materials: {washer: {material: peek, conductivity: 0.3 W/(m K)}}\n",
+                      "m.yaml");
+  const LibraryMaterial& peek = *find_library_material("peek");
+  EXPECT_EQ(scene_input(scene, "materials.washer.youngs_modulus").value, *peek.properties.youngs_modulus);
+  EXPECT_EQ(scene_input(scene, "materials.washer.conductivity").value, 0.3);
+  const std::vector<std::pair<std::string, double>> moved{{"materials.washer.youngs_modulus", 5e9}};
+  Material expected = as_read(peek, true);
+  expected.youngs_modulus = 5e9;
+  expected.conductivity = 0.3;
+  expect_same_material(with_inputs(scene, moved).washer.material, expected);
+}
+
+// Every bulk material as a body's, written out (twb check, the results' scene.yaml) and
+// read again, is the same material: the written values stand without the library.
+TEST(MaterialLibrary, EveryBulkMaterialSurvivesTheWrittenScene) {
+  for (const std::string_view name : library_material_names(MaterialForm::bulk)) {
+    SCOPED_TRACE(std::string(name));
+    const Scene scene = load_scene_text(
+        fmt::format("{}materials: {{carrier: {}, washer: {}, gear: {}}}\n", kMinimalScene, name, name, name), "m.yaml");
+    const Scene again = load_scene_text(describe_scene(scene), "written.yaml");
+    for (const auto& [first, second] : {std::pair{&scene.carrier, &again.carrier},
+                                        std::pair{&scene.washer, &again.washer}, std::pair{&scene.gear, &again.gear}}) {
+      Material unnamed = first->material;
+      unnamed.library.clear();
+      expect_same_material(second->material, unnamed);
+    }
+  }
 }
 
 InputError material_error(const std::string& materials) {
@@ -102,7 +156,12 @@ TEST(MaterialLibrary, ACoatingIsNotABody) {
     const InputError e = material_error(fmt::format("materials:\n  washer: {{material: {}}}\n", coating));
     const std::string what = e.what();
     EXPECT_NE(what.find("is a coating"), std::string::npos) << what;
-    EXPECT_EQ(what.find(fmt::format("one of: {}", coating)), std::string::npos) << what;
+    // The list, up to the end of the message's line (the quoted scene line names the coating).
+    const std::size_t list = what.find("one of: ");
+    const std::string allowed = what.substr(list, what.find('\n', list) - list);
+    for (const std::string_view c : library_material_names(MaterialForm::coating))
+      EXPECT_EQ(allowed.find(c), std::string::npos) << what;
+    EXPECT_NE(allowed.find("peek"), std::string::npos) << what;
     EXPECT_EQ(e.line(), 8) << what;
   }
   EXPECT_FALSE(library_material_names(MaterialForm::coating).empty());

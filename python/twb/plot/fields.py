@@ -22,6 +22,7 @@ FIELD_PANELS = (
 OPTIONAL_PANELS = (
     ("washer_deflection_m", 1e6, "washer deflection $w$ (µm)", "coolwarm"),
 )
+SIGNED_FIELDS = ("washer_deflection_m",)
 FILM_NAMES = {1: "film 1 (carrier–washer)", 2: "film 2 (washer–gear)"}
 
 
@@ -90,7 +91,11 @@ def figure_fields(films, load, speed, caption):
                         transform=ax.transAxes, ha="center", va="center", fontsize="small")
                 continue
             ax.grid(False)  # pcolormesh over a grid is deprecated; the grid returns below
-            mesh = ax.pcolormesh(tt, rr, values, shading="gouraud", cmap=cmap)
+            # A signed field (the deflection) is centred on zero: white is no deflection.
+            signed = column in SIGNED_FIELDS
+            reach = float(np.nanmax(np.abs(values))) or 1.0
+            limits = dict(vmin=-reach, vmax=reach) if signed else {}
+            mesh = ax.pcolormesh(tt, rr, values, shading="gouraud", cmap=cmap, **limits)
             # Circles at the film's radii (given in the film's title), unlabelled: labels
             # inside the annulus would hide the field.
             ax.set_ylim(0.0, r_mm[-1])
