@@ -7,6 +7,7 @@
 
 #include "model/bearing_model.h"
 #include "model/grid_map.h"
+#include "scene/material_modulus.h"
 #include "twb/error_family.h"
 #include "twb/model/bearing_state.h"
 
@@ -52,6 +53,8 @@ ElasticWasherEffect::ElasticWasherEffect(ModelSetup& setup)
   moment_ref_ = load_ref_ / rigidity_of(scene.washer);
   area_ = grid.area();
   outer_ = grid.outer_radius();
+  modulus_ = modulus_curve(scene.washer.material);
+  reference_modulus_ = scene.washer.material.youngs_modulus;
 
   WasherPlate& plate = setup.plate;
   plate.deflection = setup.layout.add("washer deflection", BlockEffect::elastic_washer, n);
@@ -112,13 +115,49 @@ double ElasticWasherEffect::row_scale(int k) const {
 // diagonal of their own: an explicit zero keeps one in the pattern (the pseudo-time
 // steps shift every diagonal). orient_rows negates them with the others.
 void ElasticWasherEffect::add_terms(std::span<const double> u, Assembler& a, AssemblyTotals&) const {
+  for (int k = 0; k < 3; ++k) a.add_derivative(multipliers_ + k, multipliers_ + k, 0.0);
+  if (modulus_) {
+    add_terms_with_modulus_curve(u, a);
+    return;
+  }
   for (const ElasticAnnulus::Entry& e : annulus_.entries()) {
     const double v = e.value * column_ref(e.column) * row_scale(e.row);
     const Index row = global(e.row), column = global(e.column);
     a.add_residual(row, v * u[std::size_t(column)]);
     a.add_derivative(row, column, v);
   }
-  for (int k = 0; k < 3; ++k) a.add_derivative(multipliers_ + k, multipliers_ + k, 0.0);
+}
+
+// Physics §23: an m row's flux of node k's m is D(T_k)·(its constant-D coefficient), and
+// an edge's [E3] flux (w columns) takes D at its edge node; T_k the washer's temperature at
+// node k (its mid-plane's, §7), the ambient without the thermal effect.
+void ElasticWasherEffect::add_terms_with_modulus_curve(std::span<const double> u, Assembler& a) const {
+  const int n = annulus_.nodes(), nt = plate_.circumferential_nodes;
+  std::vector<double> factor(static_cast<std::size_t>(n)), slope(static_cast<std::size_t>(n));
+  std::vector<LinearForm> temperature(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    const double t = model_.face_temperature(u, ComponentId::washer, annulus_.radius(k / nt), k % nt,
+                                             &temperature[std::size_t(k)]);
+    const ModulusCurve::Value e = modulus_->at(t);
+    factor[std::size_t(k)] = e.modulus / reference_modulus_;
+    slope[std::size_t(k)] = e.slope / reference_modulus_;
+  }
+  for (const ElasticAnnulus::Entry& e : annulus_.entries()) {
+    const double v = e.value * column_ref(e.column) * row_scale(e.row);
+    const Index row = global(e.row), column = global(e.column);
+    const bool m_row = e.row >= n && e.row < 2 * n;
+    const int node = !m_row || e.column >= 2 * n ? -1 : (e.column < n ? e.row - n : e.column - n);
+    const double x = u[std::size_t(column)];
+    if (node < 0) {
+      a.add_residual(row, v * x);
+      a.add_derivative(row, column, v);
+      continue;
+    }
+    a.add_residual(row, v * factor[std::size_t(node)] * x);
+    a.add_derivative(row, column, v * factor[std::size_t(node)]);
+    for (const auto& [k, w] : temperature[std::size_t(node)].terms)
+      a.add_derivative(row, k, v * x * slope[std::size_t(node)] * w);
+  }
 }
 
 std::vector<double> ElasticWasherEffect::deflection(std::span<const double> u) const {

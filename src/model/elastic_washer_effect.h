@@ -10,14 +10,21 @@
 // Each film's force at a node enters the m rows in the film loads' scatter
 // (film_loads.cpp), the heat crossing the washer the w rows in the heat balance's
 // (heat_balance.cpp, with thermal_deformation: the thermal curvature κ_T).
+//
+// A washer whose material has a modulus over temperature (physics §23) bends with the
+// rigidity D(T) of its mid-plane temperature at each node: the m rows' fluxes are those of
+// D·m, D at the node each flux's m belongs to (the edges' [E3] at the edge node), scaled
+// by E(T)/E_ref from the operator's constant D_ref.
 #pragma once
 
 #include <array>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "model/effect_assembler.h"
 #include "physics/elastic_annulus.h"
+#include "physics/modulus_curve.h"
 
 namespace twb {
 
@@ -48,12 +55,17 @@ class ElasticWasherEffect final : public EffectAssembler {
   double column_ref(int k) const;
   double row_scale(int k) const;
   Index global(int k) const;
+  // The operator's rows with D(T): E(T)/E_ref at each node and its slope in the washer's
+  // temperature unknowns.
+  void add_terms_with_modulus_curve(std::span<const double> u, Assembler& a) const;
 
   const BearingModel& model_;
   ElasticAnnulus annulus_;
   Index multipliers_ = -1;
   double deflection_ref_ = 0, moment_ref_ = 0, load_ref_ = 0, area_ = 0, outer_ = 0;
   WasherPlate plate_;  // a copy of what the model holds
+  std::optional<ModulusCurve> modulus_;  // the washer's E(T); none: constant
+  double reference_modulus_ = 0;         // Pa, the E of the operator's D_ref
 };
 
 }  // namespace twb

@@ -26,7 +26,7 @@ std::string value_row(const LibraryMaterial& m) {
 
 std::string modulus_line(const LibraryMaterial& m) {
   std::string points;
-  for (const ModulusAt& at : m.modulus_by_temperature)
+  for (const ModulusAt& at : m.properties.modulus_by_temperature)
     points += fmt::format("{}{:.4g} degC: {:.3g} GPa", points.empty() ? "" : ", ", at.temperature - kCelsius,
                           1e-9 * at.modulus);
   return fmt::format("- `{}`: {}\n", m.name, points);
@@ -42,7 +42,7 @@ std::string material_library_markdown() {
   for (const LibraryMaterial& m : material_library()) out += value_row(m);
   out += "\nThe modulus over temperature, where the data sheet gives it:\n\n";
   for (const LibraryMaterial& m : material_library())
-    if (!m.modulus_by_temperature.empty()) out += modulus_line(m);
+    if (!m.properties.modulus_by_temperature.empty()) out += modulus_line(m);
   out += "\nThe coatings' usual thicknesses:\n\n";
   for (const LibraryMaterial& m : material_library())
     if (m.coating_thickness)

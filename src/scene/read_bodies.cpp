@@ -11,12 +11,16 @@
 #include "roughness_profile.h"
 #include "scene_names.h"
 #include "scene_sections.h"
+#include "scene/material_modulus.h"
 #include "physics/summit_statistics.h"
 #include "key_suggestion.h"
 #include "twb/scene/material_library.h"
 
 namespace twb::scene_io {
 namespace {
+
+// Where data sheets quote a polymer's modulus: 23 degC (ISO 291's standard atmosphere).
+constexpr double kRoomTemperature = 296.15;
 
 // The gear's imposed tilt must stay a small angle for the model's linearised kinematics.
 
@@ -103,7 +107,9 @@ void note_library_values(const Node& at, std::string_view component, const Mater
     if (!value || (given && given->has(key))) return;
     provenance->note_quantity(fmt::format("materials.{}.{}", component, key), *value, unit.symbol);
   };
-  note("youngs_modulus", m.youngs_modulus, si::stress);
+  // A curve is a list, no input (scene_inputs.h); its room-temperature value is no input
+  // either: setting it would replace the curve by a constant.
+  if (m.modulus_by_temperature.empty()) note("youngs_modulus", m.youngs_modulus, si::stress);
   note("poisson_ratio", m.poisson_ratio, si::dimensionless);
   note("yield_strength", m.yield_strength, si::stress);
   note("conductivity", m.conductivity, si::conductivity);
@@ -112,6 +118,36 @@ void note_library_values(const Node& at, std::string_view component, const Mater
   note("thermal_expansion", m.thermal_expansion, si::expansion);
   note("max_temperature", m.max_temperature, si::temperature);
   note("pv_limit", m.pv_limit, si::pv);
+}
+
+// A modulus over temperature (docs/physics.md section 23): points ascending in
+// temperature, at least two (one is a constant modulus).
+std::vector<ModulusAt> read_modulus_curve(const Node& list) {
+  const std::vector<Node> rows = list.list("a list of points, each {temperature: 23 degC, modulus: 3.7 GPa}");
+  if (rows.size() < 2)
+    list.fail(fmt::format("{}: {} point{}; a modulus over temperature needs at least two (a constant modulus is "
+                          "youngs_modulus)",
+                          list.path(), rows.size(), rows.size() == 1 ? "" : "s"));
+  std::vector<ModulusAt> curve;
+  for (const Node& row : rows) {
+    const MapReader point(row, {"temperature", "modulus"});
+    const double t = point.quantity("temperature", si::temperature, bounds::material_temperature);
+    const double e = point.quantity("modulus", si::stress, bounds::youngs_modulus);
+    if (!curve.empty() && !(t > curve.back().temperature))
+      row.fail(fmt::format("{}: the points must rise in temperature ({:.2f} degC after {:.2f} degC)", row.path(),
+                           t - 273.15, curve.back().temperature - 273.15));
+    curve.push_back({t, e});
+  }
+  return curve;
+}
+
+// The room-temperature modulus (23 degC) of a curve, held at its nearer end outside it;
+// a point the data sheet gives there as given (the curve returns it through exp(ln E),
+// within rounding only).
+double room_temperature_modulus(const Material& m) {
+  for (const ModulusAt& point : m.modulus_by_temperature)
+    if (std::abs(point.temperature - kRoomTemperature) < 1e-9) return point.modulus;
+  return modulus_curve(m)->at(kRoomTemperature).modulus;
 }
 
 // A body's material: a library material by name (`washer: peek`), a map of fields over
@@ -130,9 +166,22 @@ Material read_material(const MapReader& materials, std::string_view component) {
                             join(library_material_names(MaterialForm::bulk))));
   const MapReader fields = materials.map(component, {"material", "youngs_modulus", "poisson_ratio", "yield_strength",
                                                     "conductivity", "density", "specific_heat", "thermal_expansion",
-                                                    "max_temperature", "pv_limit"});
+                                                    "max_temperature", "pv_limit", "modulus_by_temperature"});
   Material m = fields.has("material") ? library_material(fields.get("material", ""), component) : Material{};
-  m.youngs_modulus = fields.quantity("youngs_modulus", si::stress, bounds::youngs_modulus, m.youngs_modulus);
+  // A constant modulus replaces the named material's curve, and a curve its constant.
+  if (fields.has("modulus_by_temperature")) {
+    if (fields.has("youngs_modulus")) {
+      const Node node = fields.get("youngs_modulus", "");
+      node.fail(fmt::format("{}: give either youngs_modulus (a constant modulus) or modulus_by_temperature (its "
+                            "data over temperature), not both",
+                            node.path()));
+    }
+    m.modulus_by_temperature = read_modulus_curve(fields.get("modulus_by_temperature", ""));
+    m.youngs_modulus = room_temperature_modulus(m);
+  } else if (fields.has("youngs_modulus")) {
+    m.modulus_by_temperature.clear();
+    m.youngs_modulus = fields.quantity("youngs_modulus", si::stress, bounds::youngs_modulus);
+  }
   m.poisson_ratio = fields.quantity("poisson_ratio", si::dimensionless,
                                    {.low = 0.0, .low_open = true, .high = 0.5, .high_open = true},
                                    m.poisson_ratio);

@@ -1,5 +1,6 @@
 #include "scene_extends.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -52,6 +53,12 @@ YAML::Node merge(const YAML::Node& base, const SceneTree& base_tree, const YAML:
     for (std::size_t k = 0; named && k < own_entries.size() && match == own_entries.size(); ++k)
       if (!used[k] && own_entries[k].first.IsScalar() && own_entries[k].first.Scalar() == key) match = k;
     if (match == own_entries.size()) {
+      const std::string_view replaced_by = is_library_shorthand(path) ? replaced_material_key(key) : "";
+      const auto gives = [&](std::string_view k) {
+        return std::any_of(own_entries.begin(), own_entries.end(),
+                           [&](const auto& e) { return e.first.IsScalar() && e.first.Scalar() == k; });
+      };
+      if (!replaced_by.empty() && gives(replaced_by)) continue;
       out.force_insert(base_key, base_value);
       keep_origins(base_tree, p, bo, origins);
       continue;
@@ -62,11 +69,11 @@ YAML::Node merge(const YAML::Node& base, const SceneTree& base_tree, const YAML:
     // A map tagged '!replace' stands for itself, without the base's keys.
     const bool merges = value.IsMap() && value.Tag() != kReplaceTag;
     // The base's material named alone, opened so that the file's fields go over it.
-    YAML::Node base_map = base_value;
-    if (merges && base_value.IsScalar() && is_library_shorthand(p)) {
-      base_map = YAML::Node(YAML::NodeType::Map);
-      base_map["material"] = base_value;
-    }
+    // (A new node: assigning to a yaml-cpp node that shares the base's would rewrite the
+    // base's own value.)
+    const bool opened = merges && base_value.IsScalar() && is_library_shorthand(p);
+    YAML::Node base_map(opened ? YAML::Node(YAML::NodeType::Map) : base_value);
+    if (opened) base_map["material"] = base_value;
     if (base_map.IsMap() && merges) {
       out.force_insert(own_entries[match].first, merge(base_map, base_tree, value, own_tree, p, bo, oo, origins));
       origins[p] = oo;

@@ -112,4 +112,13 @@ inline bool is_library_shorthand(std::string_view path) {
   return std::find(kComponentNames.begin(), kComponentNames.end(), body) != kComponentNames.end();
 }
 
+// The key of a body's material that `key` stands in for: a constant modulus and a modulus
+// over temperature (docs/physics.md section 23) replace each other, so a derived scene or
+// an override that gives one drops the other its base gives. Empty for any other key.
+inline std::string_view replaced_material_key(std::string_view key) {
+  if (key == "youngs_modulus") return "modulus_by_temperature";
+  if (key == "modulus_by_temperature") return "youngs_modulus";
+  return {};
+}
+
 }  // namespace twb::scene_io

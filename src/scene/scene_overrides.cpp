@@ -164,6 +164,10 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
       parent.reset(next);
       parent_path = child_path;
     }
+    if (is_library_shorthand(parent_path))
+      if (const std::string_view replaced = replaced_material_key(segments.back().key); !replaced.empty())
+        while (parent.remove(std::string(replaced))) {
+        }
     replace(parent, segments.back().key, value.first);
     provenance.assign(path, &origin);
   }

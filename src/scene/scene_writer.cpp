@@ -83,7 +83,14 @@ void write_materials(SceneText& w, const Scene& s) {
     // (other values, a limit added, a name gone) must not change the scene read back.
     w.line(1, m.library.empty() ? fmt::format("{}:", name)
                                 : fmt::format("{}:  # the library's {} (docs/materials.md)", name, m.library));
-    w.entry(2, "youngs_modulus", quantity(m.youngs_modulus, "Pa"));
+    if (m.modulus_by_temperature.empty()) {
+      w.entry(2, "youngs_modulus", quantity(m.youngs_modulus, "Pa"));
+    } else {
+      w.line(2, fmt::format("modulus_by_temperature:  # {} Pa at 23 degC", m.youngs_modulus));
+      for (const ModulusAt& point : m.modulus_by_temperature)
+        w.line(3, fmt::format("- {{temperature: {}, modulus: {}}}  # {:.2f} degC", quantity(point.temperature, "K"),
+                              quantity(point.modulus, "Pa"), point.temperature - 273.15));
+    }
     w.entry(2, "poisson_ratio", quantity(m.poisson_ratio, "1"));
     w.entry(2, "yield_strength", quantity(m.yield_strength, "Pa"));
     w.entry(2, "conductivity", quantity(m.conductivity, "W/(m K)"));

@@ -158,5 +158,45 @@ TEST(ElasticWasherModel, TheHeatCrossingTheWasherIsItsThermalCurvature) {
   EXPECT_NEAR(thermal, expected, 1e-6 * std::abs(expected));
 }
 
+// A washer whose modulus follows its data over temperature (physics §23) bends, at a
+// uniform temperature, as the washer of the constant modulus E(T) there: the same state to
+// the solver's tolerance (its rows to 1e-10 of their scales; 1e-6 of the bending asked).
+// Without the thermal effect the washer is at the ambient everywhere. The curve's
+// reference modulus (youngs_modulus) is half E(T), so the rigidity's factor is 2, not 1;
+// the asperities still take the reference modulus (§23: their E'(T) is planned), so the
+// constant washer's counterfaces are softened until both films' composite modulus (§4)
+// is the curved washer's. (Without contact this coarse washer does not converge.)
+TEST(ElasticWasherModel, AtAUniformTemperatureTheCurvesWasherIsTheConstantOnes) {
+  Scene curved = coarse_scene(150.0);
+  curved.effects.thermal = false;
+  curved.effects.elastic_washer = true;
+  const double t0 = curved.operating.ambient;
+  // Linear in ln E between the two points: E(t0) = (400 GPa · 100 GPa)^½ = 200 GPa.
+  curved.washer.material.modulus_by_temperature = {{t0 - 50.0, 400e9}, {t0 + 50.0, 100e9}};
+  curved.washer.material.youngs_modulus = 100e9;
+  Scene constant = curved;
+  constant.washer.material.modulus_by_temperature.clear();
+  constant.washer.material.youngs_modulus = 200e9;
+  const double nu_w = curved.washer.material.poisson_ratio;
+  for (Component* c : {&constant.carrier, &constant.gear}) {
+    const double nu = c->material.poisson_ratio;
+    c->material.youngs_modulus =
+        (1.0 - nu * nu) / ((1.0 - nu * nu) / c->material.youngs_modulus + (1.0 - nu_w * nu_w) * (1.0 / 100e9 - 1.0 / 200e9));
+  }
+  const Solved a = solve(curved), b = solve(constant);
+  const std::vector<double> wa = plate_of(*a.model).deflection(a.u), wb = plate_of(*b.model).deflection(b.u);
+  const auto [least, most] = std::minmax_element(wb.begin(), wb.end());
+  const double bending = *most - *least;
+  EXPECT_GT(bending, 0.0);
+  for (std::size_t k = 0; k < wa.size(); ++k) EXPECT_NEAR(wa[k], wb[k], 1e-6 * bending);
+  // and unlike the washer of its reference modulus (the curve ignored), which bends more.
+  Scene reference = curved;
+  reference.washer.material.modulus_by_temperature.clear();
+  const Solved c = solve(reference);
+  const std::vector<double> wc = plate_of(*c.model).deflection(c.u);
+  const auto [least_c, most_c] = std::minmax_element(wc.begin(), wc.end());
+  EXPECT_GT(*most_c - *least_c, 1.2 * bending);
+}
+
 }  // namespace
 }  // namespace twb

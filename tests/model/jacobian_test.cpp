@@ -50,6 +50,9 @@ struct EffectSet {
   bool wear = false;     // the sliding film's faces worn (docs/physics.md section 20)
   bool running_in = false;  // and their roughness run in, to 0.3 of its Rq new
   bool elastic = false;     // the washer bends as a plate (docs/physics.md section 21)
+  // Its modulus over temperature (section 23): a polymer's fall through its glass
+  // transition placed inside the random states' temperatures (ambient + 0..80 K).
+  bool polymer = false;
 };
 
 class JacobianTest : public ::testing::TestWithParam<EffectSet> {};
@@ -107,6 +110,12 @@ std::unique_ptr<BearingModel> model_of(const EffectSet& e) {
   s.effects.convection = e.convection;
   s.effects.wear = e.wear;
   s.effects.elastic_washer = e.elastic;
+  if (e.polymer) {
+    const double t0 = s.operating.ambient;
+    s.washer.material.youngs_modulus = 3.7e9;
+    s.washer.material.modulus_by_temperature = {
+        {t0 - 10.0, 3.7e9}, {t0 + 30.0, 3.0e9}, {t0 + 40.0, 1.5e9}, {t0 + 50.0, 0.6e9}, {t0 + 100.0, 0.4e9}};
+  }
   if (e.wear)
     for (Component* c : {&s.carrier, &s.washer, &s.gear}) c->roughness.wear_rate = 1e-16;
   if (e.running_in)
@@ -508,7 +517,12 @@ INSTANTIATE_TEST_SUITE_P(
                       EffectSet{"elastic_washer_jfo_fed_grooves_convection", true, true, true, true, 545.0,
                                 CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
                                 FrictionLaw::empirical, CavitationModel::jfo, 2, true, true, false, false, false,
-                                false, true}),
+                                false, true},
+                      // Its rigidity D(T) of the washer's temperature at each node (section 23).
+                      EffectSet{"elastic_polymer_washer", true, true, true, true, 545.0,
+                                CarrierTemperature::load_frame, CavitationRow::fischer_burmeister, true,
+                                FrictionLaw::empirical, CavitationModel::reynolds, 0, false, false, false, false,
+                                false, false, true, true}),
     [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -83,8 +84,10 @@ TEST(MaterialLibrary, TheWrittenSceneReadsBackTheSameMaterials) {
 TEST(MaterialLibrary, AnOverrideOpensAMaterialGivenByName) {
   const TempScene file(std::string(kMinimalScene) + "materials: {washer: peek, gear: cusn8}\n");
   const Scene scene = load_scene(file.path(), {"materials.washer.youngs_modulus=3 GPa", "materials.gear=pa46"});
+  // A constant modulus replaces the library's curve (physics §23).
   Material expected = as_read(*find_library_material("peek"), true);
   expected.youngs_modulus = 3e9;
+  expected.modulus_by_temperature.clear();
   expect_same_material(scene.washer.material, expected);
   expect_same_material(scene.gear.material, as_read(*find_library_material("pa46"), false));
 }
@@ -103,19 +106,23 @@ TEST(MaterialLibrary, ADerivedScenesFieldsGoOverTheBasesNamedMaterial) {
 
 // A named material's values are the scene's inputs like values it writes out
 // (scene_inputs.h): a sensitivity or a calibration can take the library's modulus, and
-// moving it keeps the library's other values.
+// moving it keeps the library's other values. A modulus over temperature is a list, no
+// input, and its room-temperature value none either (setting it would drop the curve).
 TEST(MaterialLibrary, ANamedMaterialsValuesAreTheScenesInputs) {
-  const Scene scene =
-      load_scene_text(std::string(kMinimalScene) + "materials: {washer: {material: peek, conductivity: 0.3 W/(m K)}}\n",
-                      "m.yaml");
-  const LibraryMaterial& peek = *find_library_material("peek");
-  EXPECT_EQ(scene_input(scene, "materials.washer.youngs_modulus").value, *peek.properties.youngs_modulus);
+  const Scene scene = load_scene_text(
+      std::string(kMinimalScene) + "materials: {washer: {material: pa46, conductivity: 0.3 W/(m K)}, gear: peek}\n",
+      "m.yaml");
+  const LibraryMaterial& pa46 = *find_library_material("pa46");
+  EXPECT_EQ(scene_input(scene, "materials.washer.youngs_modulus").value, pa46.properties.youngs_modulus);
   EXPECT_EQ(scene_input(scene, "materials.washer.conductivity").value, 0.3);
   const std::vector<std::pair<std::string, double>> moved{{"materials.washer.youngs_modulus", 5e9}};
-  Material expected = as_read(peek, true);
+  Material expected = as_read(pa46, true);
   expected.youngs_modulus = 5e9;
   expected.conductivity = 0.3;
   expect_same_material(with_inputs(scene, moved).washer.material, expected);
+  EXPECT_EQ(scene_input(scene, "materials.gear.yield_strength").value,
+            find_library_material("peek")->properties.yield_strength);
+  EXPECT_THROW(scene_input(scene, "materials.gear.youngs_modulus"), std::invalid_argument);
 }
 
 // Every bulk material as a body's, written out (twb check, the results' scene.yaml) and
@@ -139,6 +146,89 @@ InputError material_error(const std::string& materials) {
   const TempScene file(std::string(kMinimalScene) + materials);
   return testing::load_error(file.path());
 }
+
+// A modulus over temperature (physics §23) as a scene gives it: its points kept, its
+// room-temperature value (23 degC) the curve's there, which the written scene keeps too.
+TEST(MaterialLibrary, ACurveIsReadWithItsRoomTemperatureModulus) {
+  const Scene scene = load_scene_text(
+      std::string(kMinimalScene) +
+          "materials:\n  washer:\n    modulus_by_temperature:\n      - {temperature: 20 degC, modulus: 4 GPa}\n"
+          "      - {temperature: 150 degC, modulus: 1 GPa}\n",
+      "m.yaml");
+  const Material& m = scene.washer.material;
+  ASSERT_EQ(m.modulus_by_temperature.size(), 2u);
+  EXPECT_EQ(m.modulus_by_temperature[1].modulus, 1e9);
+  const std::vector<double> t{m.modulus_by_temperature[0].temperature, m.modulus_by_temperature[1].temperature};
+  const std::vector<double> e{4e9, 1e9};
+  EXPECT_EQ(m.youngs_modulus, ModulusCurve(t, e).at(296.15).modulus);
+  EXPECT_LT(m.youngs_modulus, 4e9);
+  EXPECT_GT(m.youngs_modulus, 3.5e9);  // 3 K down a fall of 3 GPa over 130 K, in ln E
+  expect_same_material(load_scene_text(describe_scene(scene), "written.yaml").washer.material, m);
+}
+
+// A constant modulus and a curve stand for each other: either replaces the other the
+// named material, the base scene or the file gives; given side by side they are refused.
+TEST(MaterialLibrary, AConstantModulusReplacesACurveAndACurveAConstant) {
+  const auto washer = [](const std::string& materials, const std::vector<std::string>& overrides = {}) {
+    const TempScene file(std::string(kMinimalScene) + materials);
+    return load_scene(file.path(), overrides).washer.material;
+  };
+  const Material constant = washer("materials: {washer: {material: peek, youngs_modulus: 4 GPa}}\n");
+  EXPECT_TRUE(constant.modulus_by_temperature.empty());
+  EXPECT_EQ(constant.youngs_modulus, 4e9);
+  const Material curved = washer(
+      "materials: {washer: {material: pa46, modulus_by_temperature: [{temperature: 23 degC, modulus: 3 GPa}, "
+      "{temperature: 100 degC, modulus: 1 GPa}]}}\n");
+  EXPECT_EQ(curved.modulus_by_temperature.size(), 2u);
+  EXPECT_EQ(curved.youngs_modulus, 3e9);
+  const Material set = washer("materials: {washer: peek}\n", {"materials.washer.youngs_modulus=4 GPa"});
+  EXPECT_TRUE(set.modulus_by_temperature.empty());
+  const Material set_over_file = washer(
+      "materials: {washer: {modulus_by_temperature: [{temperature: 23 degC, modulus: 3 GPa}, {temperature: 100 "
+      "degC, modulus: 1 GPa}]}}\n",
+      {"materials.washer.youngs_modulus=4 GPa"});
+  EXPECT_TRUE(set_over_file.modulus_by_temperature.empty());
+  EXPECT_EQ(set_over_file.youngs_modulus, 4e9);
+
+  const TempScene base(std::string(kMinimalScene) +
+                           "materials: {washer: {modulus_by_temperature: [{temperature: 23 degC, modulus: 3 GPa}, "
+                           "{temperature: 100 degC, modulus: 1 GPa}]}}\n",
+                       "_base");
+  const TempScene derived(fmt::format("extends: {}\nmaterials: {{washer: {{youngs_modulus: 4 GPa}}}}\n",
+                                      std::filesystem::path(base.path()).filename().string()),
+                          "_derived");
+  const Material extended = load_scene(derived.path()).washer.material;
+  EXPECT_TRUE(extended.modulus_by_temperature.empty());
+  EXPECT_EQ(extended.youngs_modulus, 4e9);
+
+  const InputError both = material_error(
+      "materials:\n  washer:\n    youngs_modulus: 4 GPa\n    modulus_by_temperature: [{temperature: 23 degC, "
+      "modulus: 3 GPa}, {temperature: 100 degC, modulus: 1 GPa}]\n");
+  EXPECT_NE(std::string(both.what()).find("not both"), std::string::npos) << both.what();
+  EXPECT_EQ(both.line(), 9) << both.what();
+}
+
+// A curve of one point, or one that does not rise in temperature, is refused where it is.
+TEST(MaterialLibrary, ACurveMustRiseInTemperatureOverTwoPointsOrMore) {
+  const InputError one =
+      material_error("materials:\n  washer:\n    modulus_by_temperature: [{temperature: 23 degC, modulus: 3 GPa}]\n");
+  EXPECT_NE(std::string(one.what()).find("1 point; a modulus over temperature needs at least two"), std::string::npos)
+      << one.what();
+  EXPECT_EQ(one.line(), 9) << one.what();
+  const InputError falling = material_error(
+      "materials:\n  washer:\n    modulus_by_temperature:\n      - {temperature: 100 degC, modulus: 3 GPa}\n"
+      "      - {temperature: 23 degC, modulus: 1 GPa}\n");
+  EXPECT_NE(std::string(falling.what()).find("must rise in temperature (23.00 degC after 100.00 degC)"),
+            std::string::npos)
+      << falling.what();
+  EXPECT_EQ(falling.line(), 11) << falling.what();
+  const InputError soft = material_error(
+      "materials:\n  washer:\n    modulus_by_temperature:\n      - {temperature: 23 degC, modulus: 3 GPa}\n"
+      "      - {temperature: 100 degC, modulus: 3 kPa}\n");
+  EXPECT_NE(std::string(soft.what()).find("modulus"), std::string::npos) << soft.what();
+  EXPECT_EQ(soft.line(), 11) << soft.what();
+}
+
 
 TEST(MaterialLibrary, AnUnknownNameIsLocatedWithTheClosestAndTheAllowed) {
   const InputError e = material_error("materials:\n  washer: peak\n");
@@ -177,10 +267,10 @@ TEST(MaterialLibrary, AListIsNeitherANameNorFields) {
 TEST(MaterialLibrary, ACurveStartsAtTheRoomTemperatureModulus) {
   int curves = 0;
   for (const LibraryMaterial& m : material_library()) {
-    if (m.modulus_by_temperature.empty()) continue;
+    if (m.properties.modulus_by_temperature.empty()) continue;
     SCOPED_TRACE(std::string(m.name));
     std::vector<double> t, e;
-    for (const ModulusAt& point : m.modulus_by_temperature) {
+    for (const ModulusAt& point : m.properties.modulus_by_temperature) {
       t.push_back(point.temperature);
       e.push_back(point.modulus);
     }
@@ -211,10 +301,10 @@ TEST(MaterialLibrary, EveryEntryIsNamedSourcedAndOrdered) {
     EXPECT_TRUE(names.insert(m.name).second) << "named twice";
     EXPECT_FALSE(m.sources.empty());
     EXPECT_FALSE(m.description.empty());
-    for (std::size_t i = 0; i < m.modulus_by_temperature.size(); ++i) {
-      EXPECT_GT(m.modulus_by_temperature[i].modulus, 0.0);
+    for (std::size_t i = 0; i < m.properties.modulus_by_temperature.size(); ++i) {
+      EXPECT_GT(m.properties.modulus_by_temperature[i].modulus, 0.0);
       if (i > 0) {
-        EXPECT_GT(m.modulus_by_temperature[i].temperature, m.modulus_by_temperature[i - 1].temperature);
+        EXPECT_GT(m.properties.modulus_by_temperature[i].temperature, m.properties.modulus_by_temperature[i - 1].temperature);
       }
     }
     EXPECT_EQ(m.coating_thickness.has_value(), m.form == MaterialForm::coating);

@@ -60,6 +60,11 @@ inline void expect_same_material(const Material& a, const Material& b) {
   EXPECT_EQ(a.max_temperature, b.max_temperature);
   EXPECT_EQ(a.pv_limit, b.pv_limit);
   EXPECT_EQ(a.library, b.library);
+  ASSERT_EQ(a.modulus_by_temperature.size(), b.modulus_by_temperature.size());
+  for (std::size_t k = 0; k < a.modulus_by_temperature.size(); ++k) {
+    EXPECT_EQ(a.modulus_by_temperature[k].temperature, b.modulus_by_temperature[k].temperature);
+    EXPECT_EQ(a.modulus_by_temperature[k].modulus, b.modulus_by_temperature[k].modulus);
+  }
 }
 
 // The InputError thrown by loading `path`, or a failed test.

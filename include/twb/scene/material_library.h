@@ -17,20 +17,14 @@ namespace twb {
 // A body's bulk material, or a coating: a face's layer, never a body of its own.
 enum class MaterialForm { bulk, coating };
 
-// One point of a data sheet's modulus against temperature.
-struct ModulusAt {
-  double temperature;  // K
-  double modulus;      // Pa
-};
-
 struct LibraryMaterial {
   std::string_view name;         // the scene's spelling
   std::string_view description;  // grade, condition, filler
   MaterialForm form;
-  Material properties;  // youngs_modulus at room temperature (23 degC unless `modulus_note` says)
-  // The data sheet's modulus over temperature, ascending in temperature (empty: none
-  // given). A polymer's falls by an order of magnitude through its glass transition.
-  std::vector<ModulusAt> modulus_by_temperature;
+  // youngs_modulus at room temperature (23 degC), with the data sheet's modulus over
+  // temperature where it gives one (a polymer's falls by an order of magnitude through its
+  // glass transition).
+  Material properties;
   std::optional<double> glass_transition;  // K, polymers
   // A coating's usual thickness range (m), for the docs and for the check of a layer.
   std::optional<std::pair<double, double>> coating_thickness;

@@ -71,8 +71,16 @@ struct Effects {
   bool elastic_washer = false;
 };
 
+// One point of a data sheet's modulus against temperature.
+struct ModulusAt {
+  double temperature;  // K
+  double modulus;      // Pa
+};
+
 struct Material {
-  double youngs_modulus = 201e9;  // Pa
+  // Pa. With a curve below: the curve's value at 23 degC, the room-temperature modulus
+  // data sheets lead with (the model takes the curve where it has one).
+  double youngs_modulus = 201e9;
   double poisson_ratio = 0.296;
   double yield_strength = 0.993e9;  // Pa
   double conductivity = 60.5;       // W/(m K)
@@ -86,6 +94,9 @@ struct Material {
   // pressure times sliding speed its face may run at, a failure criterion (docs/physics.md
   // section 8). The washer's material only; none by default.
   std::optional<double> pv_limit;  // Pa m/s
+  // The modulus over temperature (docs/physics.md section 23, [M1]), ascending in
+  // temperature, at least two points; empty: the constant youngs_modulus.
+  std::vector<ModulusAt> modulus_by_temperature;
   // The library material these values start from (twb/scene/material_library.h,
   // docs/materials.md), the scene's fields over it; empty: fields over the paper's steel.
   std::string library;
