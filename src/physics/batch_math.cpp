@@ -8,9 +8,12 @@
 
 // libmvec's AVX2 variants (x86_64 vector function ABI names: 'd' = AVX2, 4 lanes). They
 // and the loops calling them are compiled for AVX2 only, and called only when the CPU
-// has it.
+// has it. (clang, which builds the scene fuzzer, has no option stack and needs none: the
+// functions carry their target.)
+#if !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC target("avx2,fma")
+#endif
 extern "C" {
 __m256d _ZGVdN4v_exp(__m256d);
 __m256d _ZGVdN4v_log(__m256d);
@@ -32,7 +35,9 @@ __attribute__((target("avx2,fma"))) void map_avx2(const double* x, double* y, st
 }
 
 }  // namespace
+#if !defined(__clang__)
 #pragma GCC pop_options
+#endif
 #endif
 
 namespace twb::batch {
