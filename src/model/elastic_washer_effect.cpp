@@ -129,8 +129,9 @@ void ElasticWasherEffect::add_terms(std::span<const double> u, Assembler& a, Ass
 }
 
 // Physics §23: an m row's flux of node k's m is D(T_k)·(its constant-D coefficient), and
-// an edge's [E3] flux (w columns) takes D at its edge node; T_k the washer's temperature at
-// node k (its mid-plane's, §7), the ambient without the thermal effect.
+// the twisting terms [M2]-[M3] (ElasticAnnulus::twisting_terms) each take D at their node;
+// T_k the washer's temperature at node k (its mid-plane's, §7), the ambient without the
+// thermal effect.
 void ElasticWasherEffect::add_terms_with_modulus_curve(std::span<const double> u, Assembler& a) const {
   const int n = annulus_.nodes(), nt = plate_.circumferential_nodes;
   std::vector<double> factor(static_cast<std::size_t>(n)), slope(static_cast<std::size_t>(n));
@@ -145,8 +146,8 @@ void ElasticWasherEffect::add_terms_with_modulus_curve(std::span<const double> u
   for (const ElasticAnnulus::Entry& e : annulus_.entries()) {
     const double v = e.value * column_ref(e.column) * row_scale(e.row);
     const Index row = global(e.row), column = global(e.column);
-    const bool m_row = e.row >= n && e.row < 2 * n;
-    const int node = !m_row || e.column >= 2 * n ? -1 : (e.column < n ? e.row - n : e.column - n);
+    const int node = annulus_.rigidity_node(e);
+    if (node == ElasticAnnulus::kReplacedByTwisting) continue;
     const double x = u[std::size_t(column)];
     if (node < 0) {
       a.add_residual(row, v * x);
@@ -157,6 +158,15 @@ void ElasticWasherEffect::add_terms_with_modulus_curve(std::span<const double> u
     a.add_derivative(row, column, v * factor[std::size_t(node)]);
     for (const auto& [k, w] : temperature[std::size_t(node)].terms)
       a.add_derivative(row, k, v * x * slope[std::size_t(node)] * w);
+  }
+  for (const ElasticAnnulus::TwistingTerm& t : annulus_.twisting_terms()) {
+    const double v = t.value * column_ref(t.column) * row_scale(t.row);
+    const Index row = global(t.row), column = global(t.column);
+    const double x = u[std::size_t(column)];
+    a.add_residual(row, v * factor[std::size_t(t.node)] * x);
+    a.add_derivative(row, column, v * factor[std::size_t(t.node)]);
+    for (const auto& [k, w] : temperature[std::size_t(t.node)].terms)
+      a.add_derivative(row, k, v * x * slope[std::size_t(t.node)] * w);
   }
 }
 

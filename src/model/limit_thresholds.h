@@ -28,6 +28,9 @@ struct OperatingLimits {
   double washer_area = 0.0, mean_radius = 0.0;  // m², m
   // The critical scuffing temperature (K), where the contact model is on.
   std::optional<double> scuffing_temperature;
+  // The last temperature of each body's modulus data (K; carrier, washer, gear), where its
+  // material has a curve (docs/physics.md section 23).
+  std::array<std::optional<double>, 3> modulus_data_end;
   static OperatingLimits of(const Scene& scene);
 };
 

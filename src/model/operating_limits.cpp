@@ -32,6 +32,10 @@ OperatingLimits OperatingLimits::of(const Scene& scene) {
   l.statistical = scene.effects.asperity_contact || scene.effects.flow_factors;
   l.material_temperature = {scene.carrier.material.max_temperature, scene.washer.material.max_temperature,
                             scene.gear.material.max_temperature};
+  const Material* bodies[] = {&scene.carrier.material, &scene.washer.material, &scene.gear.material};
+  for (std::size_t b = 0; b < 3; ++b)
+    if (!bodies[b]->modulus_by_temperature.empty())
+      l.modulus_data_end[b] = bodies[b]->modulus_by_temperature.back().temperature;
   l.min_film_ratio = scene.limits.min_film_ratio;
   l.pv_limit = scene.washer.material.pv_limit;
   if (scene.effects.asperity_contact) l.scuffing_temperature = scene.limits.scuffing_temperature;
@@ -58,14 +62,20 @@ LimitValues LimitValues::of(const BearingState& s, bool thermal) {
 }
 
 namespace {
-// The body of a material-temperature criterion: 0 carrier, 1 washer, 2 gear.
+constexpr std::array kMaterialTemperature{LimitKind::carrier_temperature, LimitKind::washer_temperature,
+                                          LimitKind::gear_temperature};
+constexpr std::array kModulusData{LimitKind::carrier_modulus_data, LimitKind::washer_modulus_data,
+                                  LimitKind::gear_modulus_data};
+// The body of a criterion on a body's hottest face: 0 carrier, 1 washer, 2 gear.
 std::optional<std::size_t> body_of(LimitKind kind) {
-  switch (kind) {
-    case LimitKind::carrier_temperature: return 0;
-    case LimitKind::washer_temperature: return 1;
-    case LimitKind::gear_temperature: return 2;
-    default: return std::nullopt;
-  }
+  for (std::size_t b = 0; b < 3; ++b)
+    if (kind == kMaterialTemperature[b] || kind == kModulusData[b]) return b;
+  return std::nullopt;
+}
+// The threshold of a criterion on a body's hottest face, where the scene gives one.
+const std::optional<double>& body_threshold(LimitKind kind, std::size_t body, const OperatingLimits& l) {
+  return std::find(kModulusData.begin(), kModulusData.end(), kind) != kModulusData.end() ? l.modulus_data_end[body]
+                                                                                          : l.material_temperature[body];
 }
 }  // namespace
 
@@ -75,8 +85,9 @@ bool is_failure_criterion(LimitKind kind) {
 
 std::optional<double> failure_margin(LimitKind kind, const LimitValues& v, const OperatingLimits& l) {
   if (const auto body = body_of(kind)) {
-    if (!v.thermal || !l.material_temperature[*body]) return std::nullopt;
-    return *l.material_temperature[*body] - v.body_temperature[*body];
+    const std::optional<double>& threshold = body_threshold(kind, *body, l);
+    if (!v.thermal || !threshold) return std::nullopt;
+    return *threshold - v.body_temperature[*body];
   }
   switch (kind) {
     case LimitKind::oil_temperature:
@@ -118,14 +129,15 @@ std::vector<LimitExcess> exceeded_limits(const LimitValues& v, const OperatingLi
     out.push_back({LimitKind::film_below_statistics, v.hmin_over_sigma, l.least_film});
   for (std::size_t b = 0; b < 3; ++b)
     if (v.thermal && l.material_temperature[b] && v.body_temperature[b] > *l.material_temperature[b])
-      out.push_back({std::array{LimitKind::carrier_temperature, LimitKind::washer_temperature,
-                                LimitKind::gear_temperature}[b],
-                     v.body_temperature[b], *l.material_temperature[b]});
+      out.push_back({kMaterialTemperature[b], v.body_temperature[b], *l.material_temperature[b]});
   if (l.min_film_ratio && v.hmin_over_sigma < *l.min_film_ratio)
     out.push_back({LimitKind::film_ratio, v.hmin_over_sigma, *l.min_film_ratio});
   if (l.pv_limit && v.pv(l) > *l.pv_limit) out.push_back({LimitKind::pv, v.pv(l), *l.pv_limit});
   if (l.scuffing_temperature && v.contact_temperature && *v.contact_temperature > *l.scuffing_temperature)
     out.push_back({LimitKind::scuffing, *v.contact_temperature, *l.scuffing_temperature});
+  for (std::size_t b = 0; b < 3; ++b)
+    if (v.thermal && l.modulus_data_end[b] && v.body_temperature[b] > *l.modulus_data_end[b])
+      out.push_back({kModulusData[b], v.body_temperature[b], *l.modulus_data_end[b]});
   return out;
 }
 
@@ -141,6 +153,9 @@ std::string_view limit_name(LimitKind kind) {
     case LimitKind::film_ratio: return "film_ratio";
     case LimitKind::pv: return "pv";
     case LimitKind::scuffing: return "scuffing";
+    case LimitKind::carrier_modulus_data: return "modulus_data:carrier";
+    case LimitKind::washer_modulus_data: return "modulus_data:washer";
+    case LimitKind::gear_modulus_data: return "modulus_data:gear";
   }
   return "?";
 }
@@ -157,6 +172,9 @@ std::string_view criterion_phrase(LimitKind kind) {
     case LimitKind::film_ratio: return "the least film ratio";
     case LimitKind::pv: return "the washer's PV limit";
     case LimitKind::scuffing: return "scuffing";
+    case LimitKind::carrier_modulus_data: return "the carrier's modulus data";
+    case LimitKind::washer_modulus_data: return "the washer's modulus data";
+    case LimitKind::gear_modulus_data: return "the gear's modulus data";
   }
   return "?";
 }
@@ -197,6 +215,14 @@ std::string describe_limit(const LimitExcess& e) {
       return fmt::format("the asperities' contact temperature {:.0f} degC (the faces' plus Blok's flash temperature) "
                          "is above the pair's scuffing temperature {:.0f} degC (limits.scuffing_temperature)",
                          e.value - kCelsius, e.limit - kCelsius);
+    case LimitKind::carrier_modulus_data:
+    case LimitKind::washer_modulus_data:
+    case LimitKind::gear_modulus_data:
+      return fmt::format("the {}'s hottest face {:.0f} degC is beyond its material's modulus data, which end at "
+                         "{:.0f} degC (materials.{}.modulus_by_temperature): the modulus there is the data's last, "
+                         "not known",
+                         limit_name(e.kind).substr(13), e.value - kCelsius, e.limit - kCelsius,
+                         limit_name(e.kind).substr(13));
   }
   return {};
 }

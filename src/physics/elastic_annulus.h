@@ -38,22 +38,49 @@ class ElasticAnnulus {
     double value;
   };
   const std::vector<Entry>& entries() const { return entries_; }
+  // Where the rigidity varies over the plate, D_k = D·f_k at node k (docs/physics.md
+  // section 23, [M2]-[M3]), the operator is entries() with an m row's flux of node k's m
+  // scaled by f_k, the edges' [E3] w entries replaced, and the twisting terms added: the
+  // plate's (1 − ν)·◊⁴(D, w) as the fluxes of cof(∇∇w)·∇D through the control volumes'
+  // faces, and the edges' twisting moment with D at the half angles. Each term is
+  // value·w_column·f_node (N/m·… as the entry it adds to).
+  static constexpr int kReplacedByTwisting = -2;
+  // The node whose f scales an entry; −1: none (the w rows, the rigid modes);
+  // kReplacedByTwisting: the edges' [E3] w entries, which twisting_terms() carry instead.
+  int rigidity_node(const Entry& e) const;
+  struct TwistingTerm {
+    int row, column, node;
+    double value;
+  };
+  const std::vector<TwistingTerm>& twisting_terms() const { return twisting_; }
   // The right side: each node's load F (N) and free thermal curvature κ_T (1/m).
   std::vector<double> right_side(std::span<const double> load, std::span<const double> thermal_curvature) const;
 
   // The deflection under those (Eigen's sparse LU: for checks; the bearing's Newton
-  // solves the same rows within its system).
+  // solves the same rows within its system), with each node's rigidity D·factor where
+  // `rigidity_factor` has one per node (empty: D everywhere).
   struct Deflection {
     std::vector<double> w, m;
     std::array<double, 3> multipliers{};
   };
-  Deflection solve(std::span<const double> load, std::span<const double> thermal_curvature) const;
+  Deflection solve(std::span<const double> load, std::span<const double> thermal_curvature,
+                   std::span<const double> rigidity_factor = {}) const;
 
  private:
   void add(int row, int column, double value) { entries_.push_back({row, column, value}); }
   void add_w_rows();
   void add_m_rows();
   void add_rigid_conditions();
+  void add_twisting_terms();
+  void add_edge_twisting_moment();
+  // The edges' [E3] flux: row `row` (edge node (edge_node, angle)) takes
+  // coefficient·(w_{j+1} − 2w_j + w_{j−1}) on ring radial_node.
+  struct EdgeTwist {
+    int row, edge_node, radial_node, angle;
+    double coefficient;
+  };
+  std::vector<EdgeTwist> edge_twisting() const;
+  void merge_twisting_terms();
   // d/dr at an edge node's radius by the one-sided second-order difference, as weights on
   // radial nodes (i0, i0 ± 1, i0 ± 2): `edge` 0 inner, 1 outer.
   std::array<std::pair<int, double>, 3> edge_slope(int edge) const;
@@ -62,6 +89,7 @@ class ElasticAnnulus {
   int nr_, nt_;
   std::vector<double> area_;
   std::vector<Entry> entries_;
+  std::vector<TwistingTerm> twisting_;
 };
 
 }  // namespace twb

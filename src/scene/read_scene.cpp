@@ -123,6 +123,23 @@ void check_input_axis(const MapReader& scene, Scene& out) {
   }
 }
 
+// A body whose modulus data begin above the ambient takes its first point's modulus down
+// to the ambient (docs/physics.md section 23): said once, as the scene is read, since a
+// cold start or a cool body sits there.
+void warn_of_modulus_data_above_ambient(Scene& scene) {
+  const std::pair<const char*, const Material*> bodies[] = {
+      {"carrier", &scene.carrier.material}, {"washer", &scene.washer.material}, {"gear", &scene.gear.material}};
+  for (const auto& [body, material] : bodies) {
+    if (material->modulus_by_temperature.empty()) continue;
+    const double first = material->modulus_by_temperature.front().temperature;
+    if (scene.operating.ambient < first)
+      scene.warnings.push_back(fmt::format(
+          "materials.{}.modulus_by_temperature begins at {:.1f} degC, above the ambient {:.1f} degC: below its "
+          "first point the modulus is held at that point's",
+          body, first - 273.15, scene.operating.ambient - 273.15));
+  }
+}
+
 }  // namespace
 
 Scene read_scene(const Node& root) {
@@ -132,6 +149,7 @@ Scene read_scene(const Node& root) {
   out.effects = read_effects(scene);
   read_bodies(scene, out);
   read_operation(scene, out);
+  warn_of_modulus_data_above_ambient(out);
   read_numerics(scene, out);
   read_grooves(scene, out);
   check_groove_parameter(scene, out);

@@ -48,13 +48,17 @@ TEST(StudyOutputs, DistressMapWritesOneRowPerSpeed) {
             "W_fail_tolerance_met,W_d_N,bracket_low_N,bracket_high_N,"
             "fold_N,W_d_fine_N,W_d_extrapolated_N,W_d_error_N,W_d_meshes,W_d_order,W_oil_temperature_N,W_oil_peak_temperature_N,"
             "W_material_temperature_carrier_N,W_material_temperature_washer_N,W_material_temperature_gear_N,"
-            "W_film_ratio_N,W_pv_N,W_scuffing_N,W_oil_temperature_error_N,W_oil_peak_temperature_error_N,"
+            "W_film_ratio_N,W_pv_N,W_scuffing_N,W_modulus_data_carrier_N,W_modulus_data_washer_N,W_modulus_data_gear_N,"
+            "W_oil_temperature_error_N,W_oil_peak_temperature_error_N,"
             "W_material_temperature_carrier_error_N,W_material_temperature_washer_error_N,"
             "W_material_temperature_gear_error_N,W_film_ratio_error_N,W_pv_error_N,W_scuffing_error_N,"
+            "W_modulus_data_carrier_error_N,W_modulus_data_washer_error_N,W_modulus_data_gear_error_N,"
             "W_oil_temperature_extrapolated_N,"
             "W_oil_peak_temperature_extrapolated_N,W_material_temperature_carrier_extrapolated_N,"
             "W_material_temperature_washer_extrapolated_N,W_material_temperature_gear_extrapolated_N,"
-            "W_film_ratio_extrapolated_N,W_pv_extrapolated_N,W_scuffing_extrapolated_N,failure,method");
+            "W_film_ratio_extrapolated_N,W_pv_extrapolated_N,W_scuffing_extrapolated_N,"
+            "W_modulus_data_carrier_extrapolated_N,W_modulus_data_washer_extrapolated_N,"
+            "W_modulus_data_gear_extrapolated_N,failure,method");
   EXPECT_EQ(rows[1].rfind("136,", 0), 0u);
   EXPECT_EQ(rows[2].rfind("545,", 0), 0u);
   EXPECT_EQ(rows[2].find("nan"), std::string::npos);

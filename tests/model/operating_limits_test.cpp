@@ -100,6 +100,37 @@ TEST(OperatingLimits, ScuffingIsTheContactTemperatureAgainstThePairs) {
   EXPECT_FALSE(criterion_applies(LimitKind::scuffing, OperatingLimits::of(scene), true));
 }
 
+// modulus_data:<body> (physics §23): a body whose material has a modulus curve is past
+// its data where its hottest face is above the curve's last temperature, the modulus held
+// there; the margin is that temperature less the face's, and a body without a curve (the
+// steel carrier and gear here) has no such criterion.
+TEST(OperatingLimits, ABodyBeyondItsModulusDataIsPastTheirCriterion) {
+  Scene scene = testing::table1_scene(true, true, true, true, 545.0, 100.0);
+  scene.washer.material.modulus_by_temperature = {{296.15, 3.7e9}, {423.15, 3.0e9}, {473.15, 0.45e9}};
+  const OperatingLimits l = OperatingLimits::of(scene);
+  EXPECT_TRUE(criterion_applies(LimitKind::washer_modulus_data, l, true));
+  EXPECT_FALSE(criterion_applies(LimitKind::washer_modulus_data, l, false)) << "no temperatures to be beyond";
+  EXPECT_FALSE(criterion_applies(LimitKind::carrier_modulus_data, l, true));
+  EXPECT_FALSE(criterion_applies(LimitKind::gear_modulus_data, l, true));
+  LimitValues v;
+  v.thermal = true;
+  v.body_temperature = {500.0, 473.15, 500.0};
+  EXPECT_DOUBLE_EQ(*failure_margin(LimitKind::washer_modulus_data, v, l), 0.0);
+  EXPECT_FALSE(has(exceeded_limits(v, l), LimitKind::washer_modulus_data)) << "the data's last point is within them";
+  v.body_temperature[1] = 480.0;
+  EXPECT_DOUBLE_EQ(*failure_margin(LimitKind::washer_modulus_data, v, l), 473.15 - 480.0);
+  const std::vector<LimitExcess> past = exceeded_limits(v, l);
+  ASSERT_TRUE(has(past, LimitKind::washer_modulus_data));
+  EXPECT_EQ(failure_names(past), "modulus_data:washer");
+  EXPECT_NE(describe_limit(past.back()).find("materials.washer.modulus_by_temperature"), std::string::npos)
+      << describe_limit(past.back());
+  // The material's own temperature limit is a criterion of its own, beside it.
+  scene.washer.material.max_temperature = 523.15;
+  const OperatingLimits both = OperatingLimits::of(scene);
+  EXPECT_DOUBLE_EQ(*failure_margin(LimitKind::washer_temperature, v, both), 523.15 - 480.0);
+  EXPECT_DOUBLE_EQ(*failure_margin(LimitKind::washer_modulus_data, v, both), 473.15 - 480.0);
+}
+
 TEST(OperatingLimits, HardnessIsThatOfTheSoftestFace) {
   Scene s = testing::table1_scene(true, true, true, true);
   s.washer.material.yield_strength = 400e6;

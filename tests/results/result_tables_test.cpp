@@ -17,14 +17,17 @@ namespace {
 // Every failure criterion's load, in kFailureCriteria order.
 #define kCriteria                                                                                         \
   "W_oil_temperature_N,W_oil_peak_temperature_N,W_material_temperature_carrier_N,W_material_temperature_washer_N," \
-  "W_material_temperature_gear_N,W_film_ratio_N,W_pv_N,W_scuffing_N,W_oil_temperature_error_N,"                \
+  "W_material_temperature_gear_N,W_film_ratio_N,W_pv_N,W_scuffing_N,W_modulus_data_carrier_N,"                   \
+  "W_modulus_data_washer_N,W_modulus_data_gear_N,W_oil_temperature_error_N,"                                     \
   "W_oil_peak_temperature_error_N," \
   "W_material_temperature_carrier_error_N,W_material_temperature_washer_error_N,"                               \
   "W_material_temperature_gear_error_N,W_film_ratio_error_N,W_pv_error_N,W_scuffing_error_N,"                     \
+  "W_modulus_data_carrier_error_N,W_modulus_data_washer_error_N,W_modulus_data_gear_error_N,"                    \
   "W_oil_temperature_extrapolated_N," \
   "W_oil_peak_temperature_extrapolated_N,W_material_temperature_carrier_extrapolated_N,"                          \
   "W_material_temperature_washer_extrapolated_N,W_material_temperature_gear_extrapolated_N,"                   \
-  "W_film_ratio_extrapolated_N,W_pv_extrapolated_N,W_scuffing_extrapolated_N,"
+  "W_film_ratio_extrapolated_N,W_pv_extrapolated_N,W_scuffing_extrapolated_N,W_modulus_data_carrier_extrapolated_N," \
+  "W_modulus_data_washer_extrapolated_N,W_modulus_data_gear_extrapolated_N,"
 
 // How W_fail's and W_d's mesh-converged values were reached (study.tolerance).
 #define kFailConvergence "W_fail_meshes,W_fail_order,W_fail_tolerance_met,"
@@ -52,13 +55,13 @@ TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
   EXPECT_EQ(distress_csv({found, none}, {"friction_coefficient"}),
             "speed_rad_s,friction_coefficient,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N," kFailConvergence "W_d_N,bracket_low_N,bracket_high_N,fold_N,"
             "W_d_fine_N,W_d_extrapolated_N,W_d_error_N," kFoldConvergence kCriteria "failure,method\n"
-            "545,0.1,,,,,,,,185.25,185,185.5,185.3,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway; fold\n"
-            "136,0.2,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,not reached below 2000 N\n");
+            "545,0.1,,,,,,,,185.25,185,185.5,185.3,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway; fold\n"
+            "136,0.2,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,not reached below 2000 N\n");
   found.parameters.clear();
   EXPECT_EQ(distress_csv({found}, {}),
             "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N," kFailConvergence "W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
             "W_d_error_N," kFoldConvergence kCriteria "failure,method\n"
-            "545,,,,,,,,185.25,185,185.5,185.3,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway; fold\n");
+            "545,,,,,,,,185.25,185,185.5,185.3,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway; fold\n");
   found.fine_fold_load = 195.0;
   found.extrapolated_load = 198.25;
   found.discretization_error = 4.0625;
@@ -69,7 +72,7 @@ TEST(DistressTable, ColumnsWithAndWithoutSecondParameter) {
   EXPECT_EQ(distress_csv({found}, {}),
             "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N," kFailConvergence "W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
             "W_d_error_N," kFoldConvergence kCriteria "failure,method\n"
-            "545,185.25,distress,,,,,,185.25,185,185.5,185.3,195,198.25,4.0625,,,,300.5,,,,,,,,,,,,,,,,,,,,,,,"
+            "545,185.25,distress,,,,,,185.25,185,185.5,185.3,195,198.25,4.0625,,,,300.5,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,"
             "fails at 185.25 N by thermo-viscous distress,runaway; fold\n");
 }
 
@@ -78,7 +81,7 @@ TEST(DistressTable, QuotesAMethodWithCommas) {
   EXPECT_EQ(distress_csv({row}, {}),
             "speed_rad_s,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N," kFailConvergence "W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,W_d_extrapolated_N,"
             "W_d_error_N," kFoldConvergence kCriteria "failure,method\n"
-            "545,,,,,,,,1,1,1,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"a, \"\"b\"\"\"\n");
+            "545,,,,,,,,1,1,1,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"a, \"\"b\"\"\"\n");
 }
 
 TEST(DistressTable, RefusesNaN) {
@@ -167,7 +170,7 @@ TEST(RunColumns, ParameterAndSlidingFilmNameTheRun) {
   EXPECT_EQ(distress_csv({row}, {}, true),
             "speed_rad_s,sliding,W_fail_N,criterion,W_fail_extrapolated_N,W_fail_error_N," kFailConvergence "W_d_N,bracket_low_N,bracket_high_N,fold_N,W_d_fine_N,"
             "W_d_extrapolated_N,W_d_error_N," kFoldConvergence kCriteria "failure,method\n"
-            "953,washer_gear,,,,,,,,400,399,401,400.5,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway\n");
+            "953,washer_gear,,,,,,,,400,399,401,400.5,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,runaway\n");
 }
 
 TEST(SlidingTable, OneRowPerConfigurationWithTheChoiceMarked) {

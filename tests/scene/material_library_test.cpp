@@ -166,6 +166,25 @@ TEST(MaterialLibrary, ACurveIsReadWithItsRoomTemperatureModulus) {
   expect_same_material(load_scene_text(describe_scene(scene), "written.yaml").washer.material, m);
 }
 
+// Below a curve's first point the modulus is held at it (physics §23): a scene whose
+// ambient lies there says so once as it is read, and one whose data cover the ambient
+// says nothing.
+TEST(MaterialLibrary, AnAmbientBelowTheModulusDataIsAWarning) {
+  const auto washer_curve_from = [](const char* first) {
+    return load_scene_text(std::string(kMinimalScene) +
+                               fmt::format("materials:\n  washer:\n    modulus_by_temperature:\n"
+                                           "      - {{temperature: {}, modulus: 4 GPa}}\n"
+                                           "      - {{temperature: 150 degC, modulus: 1 GPa}}\n",
+                                           first),
+                           "m.yaml");
+  };
+  EXPECT_TRUE(washer_curve_from("20 degC").warnings.empty());
+  const Scene cold = washer_curve_from("40 degC");
+  ASSERT_EQ(cold.warnings.size(), 1u);
+  EXPECT_NE(cold.warnings[0].find("materials.washer.modulus_by_temperature begins at 40.0 degC"), std::string::npos)
+      << cold.warnings[0];
+}
+
 // A constant modulus and a curve stand for each other: either replaces the other the
 // named material, the base scene or the file gives; given side by side they are refused.
 TEST(MaterialLibrary, AConstantModulusReplacesACurveAndACurveAConstant) {

@@ -22,8 +22,12 @@
 //    default);
 //  - scuffing: the asperities' hottest contact temperature, the faces' plus Blok's flash
 //    temperature, above the pair's critical scuffing temperature (limits.scuffing_temperature;
-//    only with the contact model).
-// oil_temperature, oil_peak_temperature, material_temperature, film_ratio, pv and scuffing are failure
+//    only with the contact model);
+//  - modulus_data:<body>: the body's hottest face above the last temperature of its
+//    material's modulus data (materials.<body>.modulus_by_temperature; only where given):
+//    the modulus is held at the data's end there, not known (docs/physics.md section 23).
+// oil_temperature, oil_peak_temperature, material_temperature, film_ratio, pv, scuffing and
+// modulus_data are failure
 // criteria (docs/physics.md section 8): the first load where one is crossed on the branch
 // is a failure load beside thermo-viscous distress. contact_pressure and
 // film_below_statistics say where the model stops holding.
@@ -50,6 +54,9 @@ enum class LimitKind {
   film_ratio,
   pv,
   scuffing,
+  carrier_modulus_data,  // modulus_data:carrier
+  washer_modulus_data,   // modulus_data:washer
+  gear_modulus_data,     // modulus_data:gear
 };
 
 // The limits whose crossing is a failure of the bearing (a failure criterion).
@@ -58,7 +65,8 @@ bool is_failure_criterion(LimitKind kind);
 inline constexpr LimitKind kFailureCriteria[] = {LimitKind::oil_temperature, LimitKind::oil_peak_temperature,
                                                  LimitKind::carrier_temperature, LimitKind::washer_temperature,
                                                  LimitKind::gear_temperature, LimitKind::film_ratio, LimitKind::pv,
-                                                 LimitKind::scuffing};
+                                                 LimitKind::scuffing, LimitKind::carrier_modulus_data,
+                                                 LimitKind::washer_modulus_data, LimitKind::gear_modulus_data};
 // One value for each failure criterion, in kFailureCriteria's order: distress.csv's loads,
 // a state's margins.
 template <class T>

@@ -47,11 +47,15 @@ LIMIT_LABELS = {
     "film_ratio": "least film ratio",
     "pv": "washer's PV limit",
     "scuffing": "scuffing (contact temperature)",
+    "modulus_data:carrier": "carrier's modulus data",
+    "modulus_data:washer": "washer's modulus data",
+    "modulus_data:gear": "gear's modulus data",
 }
 LIMIT_STYLES = {"oil_temperature": "tab:purple", "oil_peak_temperature": "tab:orange",
                 "material_temperature:carrier": "tab:brown", "material_temperature:washer": "tab:olive",
                 "material_temperature:gear": "tab:cyan", "film_ratio": "tab:pink",
-                "pv": "tab:gray", "scuffing": "tab:red"}
+                "pv": "tab:gray", "scuffing": "tab:red", "modulus_data:carrier": "darkgoldenrod",
+                "modulus_data:washer": "tab:green", "modulus_data:gear": "teal"}
 
 
 def draw_limit_curves(ax, rows, scale, distress, single, color, tag, ends):
