@@ -55,6 +55,7 @@ ElasticWasherEffect::ElasticWasherEffect(ModelSetup& setup)
   outer_ = grid.outer_radius();
   modulus_ = modulus_curve(scene.washer.material);
   reference_modulus_ = scene.washer.material.youngs_modulus;
+  if (modulus_) twisting_ = annulus_.twisting_terms();
 
   WasherPlate& plate = setup.plate;
   plate.deflection = setup.layout.add("washer deflection", BlockEffect::elastic_washer, n);
@@ -129,7 +130,7 @@ void ElasticWasherEffect::add_terms(std::span<const double> u, Assembler& a, Ass
 }
 
 // Physics §23: an m row's flux of node k's m is D(T_k)·(its constant-D coefficient), and
-// the twisting terms [M2]-[M3] (ElasticAnnulus::twisting_terms) each take D at their node;
+// the twisting terms [M2]-[M3] (twisting_) each take D at their node;
 // T_k the washer's temperature at node k (its mid-plane's, §7), the ambient without the
 // thermal effect.
 void ElasticWasherEffect::add_terms_with_modulus_curve(std::span<const double> u, Assembler& a) const {
@@ -159,7 +160,7 @@ void ElasticWasherEffect::add_terms_with_modulus_curve(std::span<const double> u
     for (const auto& [k, w] : temperature[std::size_t(node)].terms)
       a.add_derivative(row, k, v * x * slope[std::size_t(node)] * w);
   }
-  for (const ElasticAnnulus::TwistingTerm& t : annulus_.twisting_terms()) {
+  for (const ElasticAnnulus::TwistingTerm& t : twisting_) {
     const double v = t.value * column_ref(t.column) * row_scale(t.row);
     const Index row = global(t.row), column = global(t.column);
     const double x = u[std::size_t(column)];

@@ -66,6 +66,8 @@ class ElasticWasherEffect final : public EffectAssembler {
   WasherPlate plate_;  // a copy of what the model holds
   std::optional<ModulusCurve> modulus_;  // the washer's E(T); none: constant
   double reference_modulus_ = 0;         // Pa, the E of the operator's D_ref
+  // The plate's twisting terms (physics §23 [M2]-[M3]), where the modulus has a curve.
+  std::vector<ElasticAnnulus::TwistingTerm> twisting_;
 };
 
 }  // namespace twb

@@ -34,9 +34,6 @@ ElasticAnnulus::ElasticAnnulus(double inner_radius, double outer_radius, int rad
   add_w_rows();
   add_m_rows();
   add_rigid_conditions();
-  add_twisting_terms();
-  add_edge_twisting_moment();
-  merge_twisting_terms();
 }
 
 std::array<std::pair<int, double>, 3> ElasticAnnulus::edge_slope(int edge) const {
@@ -163,22 +160,22 @@ Stencil combined(const Stencil& a, double ca, const Stencil& b, double cb) {
 // circumferential face (i, j+½): H_tt = w_rr, H_nt the same, ∂D/∂n = D_θ/r, ∂D/∂t = D_r;
 // central differences between the face's nodes, one-sided in r at the edges, the
 // circumferential face taken at the node's radius over the control volume's extent.
-void ElasticAnnulus::add_twisting_terms() {
+void ElasticAnnulus::add_twisting_terms(std::vector<TwistingTerm>& out) const {
   const int n = nodes();
   const double twist = (1.0 - poisson_) * rigidity_;
   // Face flux Φ = length·(a·b) between control volumes `from` (outward) and `to`.
   const auto add_flux = [&](int from, int to, double length, const Stencil& w, const Stencil& f) {
     for (const auto& [wk, wv] : w)
       for (const auto& [fk, fv] : f) {
-        twisting_.push_back({n + from, wk, fk, -twist * length * wv * fv});
-        twisting_.push_back({n + to, wk, fk, twist * length * wv * fv});
+        out.push_back({n + from, wk, fk, -twist * length * wv * fv});
+        out.push_back({n + to, wk, fk, twist * length * wv * fv});
       }
   };
   const auto d_r = [&](int i, int j) -> Stencil {
     if (i == 0 || i == nr_ - 1) {
-      Stencil out;
-      for (const auto& [ik, v] : edge_slope(i == 0 ? 0 : 1)) out.emplace_back(node(ik, j), v);
-      return out;
+      Stencil slope;
+      for (const auto& [ik, v] : edge_slope(i == 0 ? 0 : 1)) slope.emplace_back(node(ik, j), v);
+      return slope;
     }
     return {{node(i + 1, j), 0.5 / dr_}, {node(i - 1, j), -0.5 / dr_}};
   };
@@ -238,30 +235,33 @@ std::vector<ElasticAnnulus::EdgeTwist> ElasticAnnulus::edge_twisting() const {
 }
 
 // [M3]: the edge's flux with D at each half angle the mean of its two nodes'.
-void ElasticAnnulus::add_edge_twisting_moment() {
+void ElasticAnnulus::add_edge_twisting_moment(std::vector<TwistingTerm>& out) const {
   for (const EdgeTwist& t : edge_twisting())
     for (const int half : {1, -1}) {  // the flux's part c·(w_{j±1} − w_j) at j ± ½
       const double g = 0.5 * t.coefficient;
       for (const int f : {node(t.edge_node, t.angle), node(t.edge_node, t.angle + half)}) {
-        twisting_.push_back({t.row, node(t.radial_node, t.angle + half), f, g});
-        twisting_.push_back({t.row, node(t.radial_node, t.angle), f, -g});
+        out.push_back({t.row, node(t.radial_node, t.angle + half), f, g});
+        out.push_back({t.row, node(t.radial_node, t.angle), f, -g});
       }
     }
 }
 
-// One term per (row, column, node): the stencils repeat nodes.
-void ElasticAnnulus::merge_twisting_terms() {
-  std::sort(twisting_.begin(), twisting_.end(), [](const TwistingTerm& a, const TwistingTerm& b) {
+std::vector<ElasticAnnulus::TwistingTerm> ElasticAnnulus::twisting_terms() const {
+  std::vector<TwistingTerm> terms;
+  add_twisting_terms(terms);
+  add_edge_twisting_moment(terms);
+  // One term per (row, column, node): the stencils repeat nodes.
+  std::sort(terms.begin(), terms.end(), [](const TwistingTerm& a, const TwistingTerm& b) {
     return std::tie(a.row, a.column, a.node) < std::tie(b.row, b.column, b.node);
   });
   std::vector<TwistingTerm> merged;
-  for (const TwistingTerm& t : twisting_) {
+  for (const TwistingTerm& t : terms) {
     if (!merged.empty() && merged.back().row == t.row && merged.back().column == t.column && merged.back().node == t.node)
       merged.back().value += t.value;
     else
       merged.push_back(t);
   }
-  twisting_ = std::move(merged);
+  return merged;
 }
 
 ElasticAnnulus::Deflection ElasticAnnulus::solve(std::span<const double> load, std::span<const double> thermal_curvature,
@@ -277,7 +277,7 @@ ElasticAnnulus::Deflection ElasticAnnulus::solve(std::span<const double> load, s
       triplets.emplace_back(e.row, e.column, e.value * rigidity_factor[std::size_t(k)]);
   }
   if (!rigidity_factor.empty())
-    for (const TwistingTerm& t : twisting_)
+    for (const TwistingTerm& t : twisting_terms())
       triplets.emplace_back(t.row, t.column, t.value * rigidity_factor[std::size_t(t.node)]);
   Eigen::SparseMatrix<double> k(size(), size());
   k.setFromTriplets(triplets.begin(), triplets.end());

@@ -52,7 +52,9 @@ class ElasticAnnulus {
     int row, column, node;
     double value;
   };
-  const std::vector<TwistingTerm>& twisting_terms() const { return twisting_; }
+  // Built on each call (one term per (row, column, node)): only a plate whose rigidity
+  // varies needs them, so a constant plate's construction does not pay for them.
+  std::vector<TwistingTerm> twisting_terms() const;
   // The right side: each node's load F (N) and free thermal curvature κ_T (1/m).
   std::vector<double> right_side(std::span<const double> load, std::span<const double> thermal_curvature) const;
 
@@ -71,8 +73,8 @@ class ElasticAnnulus {
   void add_w_rows();
   void add_m_rows();
   void add_rigid_conditions();
-  void add_twisting_terms();
-  void add_edge_twisting_moment();
+  void add_twisting_terms(std::vector<TwistingTerm>& out) const;
+  void add_edge_twisting_moment(std::vector<TwistingTerm>& out) const;
   // The edges' [E3] flux: row `row` (edge node (edge_node, angle)) takes
   // coefficient·(w_{j+1} − 2w_j + w_{j−1}) on ring radial_node.
   struct EdgeTwist {
@@ -80,7 +82,6 @@ class ElasticAnnulus {
     double coefficient;
   };
   std::vector<EdgeTwist> edge_twisting() const;
-  void merge_twisting_terms();
   // d/dr at an edge node's radius by the one-sided second-order difference, as weights on
   // radial nodes (i0, i0 ± 1, i0 ± 2): `edge` 0 inner, 1 outer.
   std::array<std::pair<int, double>, 3> edge_slope(int edge) const;
@@ -89,7 +90,6 @@ class ElasticAnnulus {
   int nr_, nt_;
   std::vector<double> area_;
   std::vector<Entry> entries_;
-  std::vector<TwistingTerm> twisting_;
 };
 
 }  // namespace twb
